@@ -1,0 +1,31 @@
+#pragma once
+// What every subcommand shares: --config, --set, --print-config, --out, --force, --quiet, and
+// turning them into a validated Config (DESIGN.md §Command line).
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+#include "util/config.h"
+
+namespace mb {
+
+struct CommonOptions {
+  std::string config_file;
+  std::vector<std::string> sets;
+  bool print_config = false;
+  std::string out;
+  bool force = false;
+  bool quiet = false;
+};
+
+void add_common_options(CLI::App& command, CommonOptions& options, bool has_output = true);
+// Defaults, then the config file, then every --set in order.
+Config resolve_config(std::vector<OptionSpec> specs, const CommonOptions& options);
+// The argv of this process, for run metadata.
+const std::vector<std::string>& process_arguments();
+void set_process_arguments(int argc, char** argv);
+
+// Option declarations shared by the commands that read a dataset.
+std::vector<OptionSpec> dataset_option_specs();
+
+}  // namespace mb

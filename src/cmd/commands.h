@@ -1,0 +1,10 @@
+#pragma once
+// One register function per subcommand; each sets `action` when its subcommand is chosen.
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace mb {
+
+void register_render_command(CLI::App& app, std::function<int()>& action);
+
+}  // namespace mb

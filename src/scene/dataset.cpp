@@ -1,0 +1,42 @@
+#include "scene/dataset.h"
+
+#include <filesystem>
+
+#include "util/error.h"
+#include "util/yaml_reader.h"
+
+namespace mb {
+
+namespace fs = std::filesystem;
+
+std::string resolve_dataset_path(const std::string& name_or_path) {
+  if (fs::exists(name_or_path)) return name_or_path;
+  bool bare_name = name_or_path.find('/') == std::string::npos && fs::path(name_or_path).extension().empty();
+  if (bare_name) {
+    fs::path builtin = fs::path(MOMENTBENCH_SOURCE_DIR) / "configs" / "datasets" / (name_or_path + ".yaml");
+    if (fs::exists(builtin)) return builtin.string();
+    std::string names;
+    for (const auto& entry : fs::directory_iterator(builtin.parent_path()))
+      if (entry.path().extension() == ".yaml") names += (names.empty() ? "" : ", ") + entry.path().stem().string();
+    throw InputError("dataset '" + name_or_path + "' not found; built-in datasets: " + names);
+  }
+  throw InputError(name_or_path + ": dataset file not found");
+}
+
+DatasetDesc load_dataset(const std::string& name_or_path) {
+  DatasetDesc desc;
+  desc.file = resolve_dataset_path(name_or_path);
+  YamlMap root = YamlMap::load_file(desc.file);
+  desc.name = root.string("name").value_or(fs::path(desc.file).stem().string());
+  desc.resolution = int(root.integer("resolution", 0, 0, 16384));
+  fs::path base = fs::path(desc.file).parent_path();
+  for (const auto& scene : root.strings("scenes")) {
+    fs::path path = fs::path(scene).is_absolute() ? fs::path(scene) : base / scene;
+    desc.scene_files.push_back(path.lexically_normal().string());
+  }
+  if (desc.scene_files.empty()) root.fail("scenes", "a dataset needs at least one scene");
+  root.finish();
+  return desc;
+}
+
+}  // namespace mb

@@ -1,0 +1,21 @@
+#pragma once
+// A dataset: the scenes (and so the light views) an evaluation runs on (REFERENCE.md §3: the
+// paper used four views of three scenes).
+#include <string>
+#include <vector>
+
+namespace mb {
+
+struct DatasetDesc {
+  std::string name;
+  std::string file;
+  std::vector<std::string> scene_files;  // resolved paths
+  int resolution = 0;                    // > 0 overrides every view's resolution
+};
+
+// `name_or_path` is a YAML file, or a name looked up in the source tree's configs/datasets/.
+DatasetDesc load_dataset(const std::string& name_or_path);
+// The file a dataset name resolves to (or the path itself).
+std::string resolve_dataset_path(const std::string& name_or_path);
+
+}  // namespace mb

@@ -1,0 +1,50 @@
+#pragma once
+// A scene: parts (mesh files or procedural generators, each with a transform) and the light views
+// that look at it. Parsed from YAML into description structs first, then built into triangles.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "scene/light_view.h"
+#include "scene/mesh.h"
+
+namespace mb {
+
+struct TransformDesc {
+  Eigen::Vector3d translate = Eigen::Vector3d::Zero();
+  Eigen::Vector3d rotate_deg = Eigen::Vector3d::Zero();  // about x, then y, then z
+  Eigen::Vector3d scale = Eigen::Vector3d::Ones();
+};
+
+struct PartDesc {
+  std::string kind;                                 // "mesh" or a generator name
+  std::string mesh_file;                            // for kind == "mesh", resolved path
+  std::map<std::string, std::vector<double>> params;  // generator parameters, validated
+  double fit = 0;  // mesh only: scale so the largest extent is `fit`, centred, resting on y = 0
+  bool two_sided = false;
+  TransformDesc transform;
+  std::string where;  // "file:line" for errors found while building
+};
+
+struct SceneDesc {
+  std::string name;
+  std::string file;
+  std::vector<PartDesc> parts;
+  std::vector<LightViewDesc> views;
+};
+
+struct Scene {
+  std::string name;
+  TriangleMesh mesh;               // all parts, world coordinates
+  std::vector<uint8_t> two_sided;  // per triangle
+  std::vector<LightViewDesc> views;
+};
+
+// The generator names a part may use, with their parameters (for errors and docs).
+std::vector<std::string> generator_names();
+
+SceneDesc parse_scene(const std::string& file);
+// Builds triangles; fails on an empty scene or non-finite coordinates after transforms.
+Scene build_scene(const SceneDesc& desc);
+
+}  // namespace mb

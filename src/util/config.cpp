@@ -1,0 +1,241 @@
+#include "util/config.h"
+
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+#include "util/error.h"
+
+namespace mb {
+
+namespace {
+const char* type_name(OptionType type) {
+  switch (type) {
+    case OptionType::Integer: return "an integer";
+    case OptionType::Number: return "a finite number";
+    case OptionType::Boolean: return "true or false";
+    case OptionType::String: return "a string";
+    case OptionType::StringList: return "a list of strings";
+  }
+  return "";
+}
+
+std::string number_text(double v) {
+  std::ostringstream s;
+  s.precision(17);
+  s << v;
+  return s.str();
+}
+
+std::string emit(const YAML::Node& node) {
+  YAML::Emitter out;
+  out.SetSeqFormat(YAML::Flow);
+  out << node;
+  return out.c_str();
+}
+}  // namespace
+
+Config::Config(std::vector<OptionSpec> specs) : specs_(std::move(specs)) {
+  for (const auto& s : specs_) assign(s.name, YAML::Load(s.default_value), "default");
+}
+
+const OptionSpec& Config::spec(const std::string& name) const {
+  for (const auto& s : specs_)
+    if (s.name == name) return s;
+  throw std::logic_error("option '" + name + "' read but never declared");
+}
+
+std::string Config::canonical(const std::string& name) const {
+  for (const auto& s : specs_)
+    if (s.name == name) return name;
+  std::vector<std::string> names;
+  for (const auto& s : specs_) names.push_back(s.name);
+  std::string hint = closest_match(name, names);
+  throw InputError("unknown key '" + name + "'" + (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
+}
+
+void Config::assign(const std::string& name, const YAML::Node& node, const std::string& origin) {
+  const OptionSpec& s = spec(name);
+  auto bad = [&](const std::string& why) {
+    std::string value = node.IsScalar() ? node.Scalar() : node.IsSequence() ? "a list" : "a map";
+    throw InputError(origin + ": key '" + name + "': expected " + why + ", got '" + value + "'");
+  };
+  auto check_choice = [&](const std::string& v) {
+    if (s.choices.empty()) return;
+    for (const auto& c : s.choices)
+      if (c == v) return;
+    std::string all;
+    for (const auto& c : s.choices) all += (all.empty() ? "" : ", ") + c;
+    std::string hint = closest_match(v, s.choices);
+    throw InputError(origin + ": key '" + name + "': unknown value '" + v + "'" +
+                     (hint.empty() ? "" : " (did you mean '" + hint + "'?)") + "; valid: " + all);
+  };
+  YAML::Node stored;
+  switch (s.type) {
+    case OptionType::Integer: {
+      int64_t v;
+      if (!node.IsScalar() || !YAML::convert<int64_t>::decode(node, v)) bad(type_name(s.type));
+      if (v < s.min || v > s.max) bad("an integer in [" + number_text(s.min) + ", " + number_text(s.max) + "]");
+      stored = YAML::Node(v);
+      break;
+    }
+    case OptionType::Number: {
+      double v;
+      if (!node.IsScalar() || !YAML::convert<double>::decode(node, v) || !std::isfinite(v)) bad(type_name(s.type));
+      if (v < s.min || v > s.max) bad("a number in [" + number_text(s.min) + ", " + number_text(s.max) + "]");
+      stored = YAML::Node(number_text(v));
+      break;
+    }
+    case OptionType::Boolean: {
+      bool v;
+      if (!node.IsScalar() || !YAML::convert<bool>::decode(node, v)) bad(type_name(s.type));
+      stored = YAML::Node(v ? "true" : "false");
+      break;
+    }
+    case OptionType::String:
+      if (!node.IsScalar()) bad(type_name(s.type));
+      check_choice(node.Scalar());
+      stored = YAML::Node(node.Scalar());
+      break;
+    case OptionType::StringList: {
+      stored = YAML::Node(YAML::NodeType::Sequence);
+      if (node.IsScalar() && !node.Scalar().empty()) {
+        // "--set techniques=vsm,esm" is accepted as a comma-separated list.
+        std::stringstream in(node.Scalar());
+        for (std::string item; std::getline(in, item, ',');) {
+          check_choice(item);
+          stored.push_back(item);
+        }
+      } else if (node.IsSequence()) {
+        for (const auto& item : node) {
+          if (!item.IsScalar()) bad(type_name(s.type));
+          check_choice(item.Scalar());
+          stored.push_back(item.Scalar());
+        }
+      } else if (!(node.IsNull() || (node.IsScalar() && node.Scalar().empty()))) {
+        bad(type_name(s.type));
+      }
+      break;
+    }
+  }
+  values_[name] = Value{stored, origin};
+}
+
+void Config::flatten(const YAML::Node& node, const std::string& prefix, const std::string& file) {
+  for (auto it = node.begin(); it != node.end(); ++it) {
+    std::string key = prefix.empty() ? it->first.Scalar() : prefix + "." + it->first.Scalar();
+    YAML::Mark mark = it->first.Mark();
+    std::string where = located(file, mark.line + 1, mark.column + 1, "");
+    where.resize(where.size() - 2);  // drop the ": " that `located` appends before a message
+    bool declared = false, is_prefix = false;
+    for (const auto& s : specs_) {
+      declared |= s.name == key;
+      is_prefix |= s.name.rfind(key + ".", 0) == 0;
+    }
+    if (it->second.IsMap() && is_prefix && !declared) {
+      flatten(it->second, key, file);
+    } else if (declared) {
+      assign(key, it->second, where);
+    } else {
+      try {
+        canonical(key);
+      } catch (const InputError& e) {
+        throw InputError(where + ": " + e.what());
+      }
+    }
+  }
+}
+
+void Config::load_file(const std::string& file) {
+  if (!std::filesystem::exists(file)) throw InputError(file + ": config file not found");
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(file);
+  } catch (const YAML::Exception& e) {
+    throw InputError(located(file, e.mark.line + 1, e.mark.column + 1, "YAML syntax: " + e.msg));
+  }
+  if (root.IsNull()) return;  // an empty file changes nothing
+  if (!root.IsMap()) throw InputError(file + ": expected a YAML map of options at the top level");
+  flatten(root, "", file);
+}
+
+void Config::set(const std::string& assignment) {
+  auto eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw InputError("--set '" + assignment + "': expected key=value");
+  std::string key = assignment.substr(0, eq);
+  try {
+    key = canonical(key);
+  } catch (const InputError& e) {
+    throw InputError(std::string("--set: ") + e.what());
+  }
+  YAML::Node node;
+  try {
+    node = YAML::Load(assignment.substr(eq + 1));
+  } catch (const YAML::Exception& e) {
+    throw InputError("--set '" + assignment + "': " + e.msg);
+  }
+  if (node.IsNull()) node = YAML::Node(std::string());
+  assign(key, node, "--set");
+}
+
+int64_t Config::integer(const std::string& name) const {
+  if (spec(name).type != OptionType::Integer) throw std::logic_error(name + " is not an integer option");
+  return values_.at(name).node.as<int64_t>();
+}
+double Config::number(const std::string& name) const {
+  if (spec(name).type != OptionType::Number) throw std::logic_error(name + " is not a number option");
+  return values_.at(name).node.as<double>();
+}
+bool Config::boolean(const std::string& name) const {
+  if (spec(name).type != OptionType::Boolean) throw std::logic_error(name + " is not a boolean option");
+  return values_.at(name).node.as<bool>();
+}
+std::string Config::string(const std::string& name) const {
+  if (spec(name).type != OptionType::String) throw std::logic_error(name + " is not a string option");
+  return values_.at(name).node.Scalar();
+}
+std::vector<std::string> Config::strings(const std::string& name) const {
+  if (spec(name).type != OptionType::StringList) throw std::logic_error(name + " is not a list option");
+  std::vector<std::string> out;
+  for (const auto& item : values_.at(name).node) out.push_back(item.Scalar());
+  return out;
+}
+
+std::string Config::to_yaml() const {
+  std::ostringstream out;
+  for (const auto& s : specs_) {
+    out << "# " << s.doc;
+    if (s.type == OptionType::Integer || s.type == OptionType::Number) {
+      if (std::isfinite(s.min) || std::isfinite(s.max))
+        out << " Range [" << number_text(s.min) << ", " << number_text(s.max) << "].";
+    }
+    if (!s.choices.empty()) {
+      out << " One of:";
+      for (const auto& c : s.choices) out << " " << c;
+      out << ".";
+    }
+    out << "\n" << s.name << ": " << emit(values_.at(s.name).node) << "\n";
+  }
+  return out.str();
+}
+
+std::vector<std::string> Config::non_default() const {
+  std::vector<std::string> out;
+  for (const auto& s : specs_) {
+    Config defaults_only({s});
+    std::string now = emit(values_.at(s.name).node);
+    if (now != emit(defaults_only.values_.at(s.name).node)) out.push_back(s.name + ": " + now);
+  }
+  return out;
+}
+
+std::string Config::options_markdown() const {
+  std::ostringstream out;
+  out << "| key | type | default | meaning |\n|---|---|---|---|\n";
+  for (const auto& s : specs_)
+    out << "| `" << s.name << "` | " << type_name(s.type) << " | `" << s.default_value << "` | " << s.doc << " |\n";
+  return out.str();
+}
+
+}  // namespace mb

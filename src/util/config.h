@@ -1,0 +1,64 @@
+#pragma once
+// Command configuration: every option is declared once (name, type, default, range, doc) in a
+// table that drives validation, `--print-config` and the README's option list (DESIGN.md §Style,
+// after HiGHS). A key in a file or `--set` that is not declared is an error naming file and line.
+#include <yaml-cpp/yaml.h>
+
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace mb {
+
+enum class OptionType { Integer, Number, Boolean, String, StringList };
+
+struct OptionSpec {
+  std::string name;  // dotted, e.g. "raster.threads"; a YAML file may nest it as raster: {threads: }
+  OptionType type;
+  std::string default_value;  // YAML text
+  std::string doc;
+  double min = -std::numeric_limits<double>::infinity();
+  double max = std::numeric_limits<double>::infinity();
+  std::vector<std::string> choices;  // for strings (and string lists): the allowed values, if any
+};
+
+class Config {
+ public:
+  explicit Config(std::vector<OptionSpec> specs);
+
+  // Reads a YAML file; nested maps are flattened into dotted keys.
+  void load_file(const std::string& file);
+  // "key=value" as given to --set; the value is parsed as YAML.
+  void set(const std::string& assignment);
+
+  int64_t integer(const std::string& name) const;
+  double number(const std::string& name) const;
+  bool boolean(const std::string& name) const;
+  std::string string(const std::string& name) const;
+  std::vector<std::string> strings(const std::string& name) const;
+
+  // The effective configuration as YAML that `load_file` reads back, one documented key a line.
+  std::string to_yaml() const;
+  // "key: value" for every option whose value differs from its default (for report headers).
+  std::vector<std::string> non_default() const;
+  const std::vector<OptionSpec>& specs() const { return specs_; }
+  // A markdown table of all options (for the README).
+  std::string options_markdown() const;
+
+ private:
+  struct Value {
+    YAML::Node node;
+    std::string origin;  // "default", "file:line" or "--set"
+  };
+  const OptionSpec& spec(const std::string& name) const;
+  void assign(const std::string& name, const YAML::Node& node, const std::string& origin);
+  void flatten(const YAML::Node& node, const std::string& prefix, const std::string& file);
+  std::string canonical(const std::string& name) const;
+
+  std::vector<OptionSpec> specs_;
+  std::map<std::string, Value> values_;
+};
+
+}  // namespace mb

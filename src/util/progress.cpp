@@ -1,0 +1,63 @@
+#include "util/progress.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+
+namespace mb {
+
+ProgressBar::ProgressBar(std::string label, uint64_t total, bool quiet)
+    : label_(std::move(label)), total_(total), enabled_(!quiet && isatty(STDERR_FILENO)) {
+  start_ = last_draw_ = std::chrono::steady_clock::now();
+}
+
+ProgressBar::~ProgressBar() { finish(); }
+
+std::string format_duration(double seconds) {
+  char buffer[32];
+  if (seconds < 60) {
+    std::snprintf(buffer, sizeof buffer, "%.1fs", seconds);
+  } else if (seconds < 3600) {
+    std::snprintf(buffer, sizeof buffer, "%dm%02ds", int(seconds) / 60, int(seconds) % 60);
+  } else {
+    std::snprintf(buffer, sizeof buffer, "%dh%02dm", int(seconds) / 3600, (int(seconds) / 60) % 60);
+  }
+  return buffer;
+}
+
+void ProgressBar::advance(uint64_t amount) {
+  uint64_t done = done_.fetch_add(amount) + amount;
+  if (!enabled_) return;
+  auto now = std::chrono::steady_clock::now();
+  // Nothing for the first second: short work stays silent.
+  if (now - start_ < std::chrono::seconds(1) || now - last_draw_ < std::chrono::milliseconds(200)) return;
+  std::unique_lock lock(draw_mutex_, std::try_to_lock);
+  if (!lock.owns_lock()) return;
+  last_draw_ = now;
+  draw(done, false);
+}
+
+void ProgressBar::draw(uint64_t done, bool final) {
+  double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  double fraction = total_ ? double(done) / double(total_) : 1.0;
+  int width = 30, filled = int(fraction * width);
+  std::string bar(filled, '#');
+  bar.resize(width, '.');
+  double rate = elapsed > 0 ? done / elapsed : 0;
+  std::string eta = final ? "done in " + format_duration(elapsed)
+                          : "ETA " + format_duration(rate > 0 ? (total_ - done) / rate : 0);
+  std::fprintf(stderr, "\r%s [%s] %llu/%llu (%.0f/s) %s   ", label_.c_str(), bar.c_str(),
+               (unsigned long long)done, (unsigned long long)total_, rate, eta.c_str());
+  if (final) std::fputc('\n', stderr);
+  std::fflush(stderr);
+  drawn_ = true;
+}
+
+void ProgressBar::finish() {
+  if (finished_) return;
+  finished_ = true;
+  std::lock_guard lock(draw_mutex_);
+  if (enabled_ && drawn_) draw(done_.load(), true);
+}
+
+}  // namespace mb

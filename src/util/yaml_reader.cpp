@@ -1,0 +1,183 @@
+#include "util/yaml_reader.h"
+
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+#include "util/error.h"
+
+namespace mb {
+
+namespace {
+std::string quoted(const YAML::Node& node) {
+  if (node.IsScalar()) return "'" + node.Scalar() + "'";
+  if (node.IsSequence()) return "a list";
+  if (node.IsMap()) return "a map";
+  return "nothing";
+}
+std::string range_text(double min, double max) {
+  auto text = [](double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+  };
+  return "[" + text(min) + ", " + text(max) + "]";
+}
+}  // namespace
+
+YamlMap YamlMap::load_file(const std::string& file) {
+  if (!std::filesystem::exists(file)) throw InputError(file + ": file not found");
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(file);
+  } catch (const YAML::Exception& e) {
+    throw InputError(located(file, e.mark.line + 1, e.mark.column + 1, "YAML syntax: " + e.msg));
+  }
+  if (!root.IsMap()) throw InputError(file + ": expected a YAML map at the top level");
+  return YamlMap(root, file, "");
+}
+
+YamlMap::YamlMap(YAML::Node node, std::string file, std::string path)
+    : node_(std::move(node)), file_(std::move(file)), path_(std::move(path)) {}
+
+bool YamlMap::has(const std::string& key) const { return bool(node_[key]); }
+
+std::string YamlMap::describe(const std::string& key) const {
+  return "key '" + (path_.empty() ? key : path_ + "." + key) + "'";
+}
+
+void YamlMap::fail(const std::string& key, const std::string& message) const {
+  YAML::Mark mark = node_.Mark();
+  if (!key.empty()) {
+    // The mark of the key itself, so the line number points at the offending key.
+    for (auto it = node_.begin(); it != node_.end(); ++it)
+      if (it->first.Scalar() == key) mark = it->first.Mark();
+  }
+  std::string what = key.empty() ? (path_.empty() ? "" : "'" + path_ + "': ") : describe(key) + ": ";
+  throw InputError(located(file_, mark.line + 1, mark.column + 1, what + message));
+}
+
+YAML::Node YamlMap::at(const std::string& key) {
+  read_.insert(key);
+  return node_[key];
+}
+
+std::optional<double> YamlMap::number(const std::string& key, double min, double max) {
+  YAML::Node v = at(key);
+  if (!v) return std::nullopt;
+  double x;
+  if (!v.IsScalar() || !YAML::convert<double>::decode(v, x) || !std::isfinite(x))
+    fail(key, "expected a finite number, got " + quoted(v));
+  if (x < min || x > max) fail(key, "expected a number in " + range_text(min, max) + ", got " + v.Scalar());
+  return x;
+}
+
+double YamlMap::number(const std::string& key, double fallback, double min, double max) {
+  return number(key, min, max).value_or(fallback);
+}
+
+std::optional<int64_t> YamlMap::integer(const std::string& key, int64_t min, int64_t max) {
+  YAML::Node v = at(key);
+  if (!v) return std::nullopt;
+  int64_t x;
+  if (!v.IsScalar() || !YAML::convert<int64_t>::decode(v, x))
+    fail(key, "expected an integer, got " + quoted(v));
+  if (x < min || x > max)
+    fail(key, "expected an integer in [" + std::to_string(min) + ", " + std::to_string(max) +
+                  "], got " + v.Scalar());
+  return x;
+}
+
+int64_t YamlMap::integer(const std::string& key, int64_t fallback, int64_t min, int64_t max) {
+  return integer(key, min, max).value_or(fallback);
+}
+
+bool YamlMap::boolean(const std::string& key, bool fallback) {
+  YAML::Node v = at(key);
+  if (!v) return fallback;
+  bool x;
+  if (!v.IsScalar() || !YAML::convert<bool>::decode(v, x))
+    fail(key, "expected true or false, got " + quoted(v));
+  return x;
+}
+
+std::optional<std::string> YamlMap::string(const std::string& key) {
+  YAML::Node v = at(key);
+  if (!v) return std::nullopt;
+  if (!v.IsScalar()) fail(key, "expected a string, got " + quoted(v));
+  return v.Scalar();
+}
+
+std::string YamlMap::require_string(const std::string& key) {
+  auto s = string(key);
+  if (!s) fail("", "missing required key '" + key + "'");
+  return *s;
+}
+
+std::optional<std::vector<double>> YamlMap::numbers(const std::string& key, size_t count) {
+  YAML::Node v = at(key);
+  if (!v) return std::nullopt;
+  std::string expected = count ? "a list of " + std::to_string(count) + " numbers" : "a list of numbers";
+  if (!v.IsSequence() || (count && v.size() != count)) fail(key, "expected " + expected + ", got " + quoted(v));
+  std::vector<double> out;
+  for (const auto& item : v) {
+    double x;
+    if (!item.IsScalar() || !YAML::convert<double>::decode(item, x) || !std::isfinite(x))
+      fail(key, "expected " + expected + ", got element " + quoted(item));
+    out.push_back(x);
+  }
+  return out;
+}
+
+std::vector<std::string> YamlMap::strings(const std::string& key) {
+  YAML::Node v = at(key);
+  if (!v) return {};
+  if (!v.IsSequence()) fail(key, "expected a list of strings, got " + quoted(v));
+  std::vector<std::string> out;
+  for (const auto& item : v) {
+    if (!item.IsScalar()) fail(key, "expected a list of strings, got element " + quoted(item));
+    out.push_back(item.Scalar());
+  }
+  return out;
+}
+
+YamlMap YamlMap::map(const std::string& key) {
+  YAML::Node v = at(key);
+  if (!v) return YamlMap(YAML::Node(YAML::NodeType::Map), file_, path_.empty() ? key : path_ + "." + key);
+  if (!v.IsMap()) fail(key, "expected a map, got " + quoted(v));
+  return YamlMap(v, file_, path_.empty() ? key : path_ + "." + key);
+}
+
+std::vector<YamlMap> YamlMap::maps(const std::string& key) {
+  YAML::Node v = at(key);
+  std::vector<YamlMap> out;
+  if (!v) return out;
+  if (!v.IsSequence()) fail(key, "expected a list of maps, got " + quoted(v));
+  std::string base = path_.empty() ? key : path_ + "." + key;
+  for (size_t i = 0; i < v.size(); ++i) {
+    if (!v[i].IsMap()) fail(key, "expected a list of maps, element " + std::to_string(i) + " is " + quoted(v[i]));
+    out.emplace_back(v[i], file_, base + "[" + std::to_string(i) + "]");
+  }
+  return out;
+}
+
+bool YamlMap::is_sequence(const std::string& key) const { return node_[key] && node_[key].IsSequence(); }
+
+void YamlMap::finish() const {
+  std::vector<std::string> known(read_.begin(), read_.end());
+  known.insert(known.end(), suggest_.begin(), suggest_.end());
+  for (auto it = node_.begin(); it != node_.end(); ++it) {
+    const std::string key = it->first.Scalar();
+    if (read_.count(key)) continue;
+    std::string hint = closest_match(key, known);
+    std::string message = "unknown key '" + (path_.empty() ? key : path_ + "." + key) + "'";
+    if (!hint.empty()) message += " (did you mean '" + hint + "'?)";
+    std::string all;
+    for (const auto& k : known) all += (all.empty() ? "" : ", ") + k;
+    if (!all.empty()) message += "; valid keys here: " + all;
+    YAML::Mark mark = it->first.Mark();
+    throw InputError(located(file_, mark.line + 1, mark.column + 1, message));
+  }
+}
+
+}  // namespace mb
