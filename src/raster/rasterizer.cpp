@@ -114,6 +114,28 @@ void rasterize_tile(const TriangleSetup& s, uint32_t triangle, int tile_col0, in
   }
 }
 
+// Orders a tile's fragments by (texel, depth, triangle): a stable counting sort by texel, then
+// a stable insertion sort by depth inside each texel (a handful of layers). Fragments arrive in
+// triangle order, so stability makes the triangle index the tie-breaker.
+void sort_tile_fragments(std::vector<TileFragment>& fragments, std::vector<TileFragment>& scratch) {
+  uint32_t start[kTile * kTile + 1] = {};
+  for (const auto& f : fragments) ++start[f.texel + 1];
+  for (int t = 0; t < kTile * kTile; ++t) start[t + 1] += start[t];
+  scratch.resize(fragments.size());
+  uint32_t cursor[kTile * kTile];
+  std::copy(start, start + kTile * kTile, cursor);
+  for (const auto& f : fragments) scratch[cursor[f.texel]++] = f;
+  for (int t = 0; t < kTile * kTile; ++t) {
+    for (uint32_t i = start[t] + 1; i < start[t + 1]; ++i) {
+      TileFragment f = scratch[i];
+      uint32_t j = i;
+      for (; j > start[t] && scratch[j - 1].depth > f.depth; --j) scratch[j] = scratch[j - 1];
+      scratch[j] = f;
+    }
+  }
+  fragments.swap(scratch);
+}
+
 }  // namespace
 
 LayerStack rasterize(const RasterInput& in, int threads) {
@@ -148,21 +170,21 @@ LayerStack rasterize(const RasterInput& in, int threads) {
   stack.width = in.width;
   stack.height = in.height;
   stack.offsets.assign(stack.texel_count() + 1, 0);
-#pragma omp parallel for schedule(dynamic) num_threads(threads)
+#pragma omp parallel num_threads(threads)
+  {
+  std::vector<TileFragment> scratch;
+#pragma omp for schedule(dynamic)
   for (size_t tile = 0; tile < tile_count; ++tile) {
     int col0 = int(tile % tiles_x) * kTile, row0 = int(tile / tiles_x) * kTile;
     auto& fragments = tile_fragments[tile];
     for (uint32_t k = bin_offsets[tile]; k < bin_offsets[tile + 1]; ++k)
       rasterize_tile(setups[bins[k]], bins[k], col0, row0, fragments);
-    std::sort(fragments.begin(), fragments.end(), [](const TileFragment& a, const TileFragment& b) {
-      if (a.texel != b.texel) return a.texel < b.texel;
-      if (a.depth != b.depth) return a.depth < b.depth;
-      return a.triangle < b.triangle;
-    });
+    sort_tile_fragments(fragments, scratch);
     for (const auto& f : fragments) {
       size_t texel = size_t(row0 + f.texel / kTile) * in.width + (col0 + f.texel % kTile);
       ++stack.offsets[texel + 1];
     }
+  }
   }
   for (size_t t = 0; t < stack.texel_count(); ++t) stack.offsets[t + 1] += stack.offsets[t];
   const size_t total = stack.offsets.back();

@@ -15,6 +15,7 @@ LayerStack render_view(const Scene& scene, const LightViewDesc& view, int thread
   for (size_t v = 0; v < scene.mesh.vertices.size(); ++v) input.vertices[v] = frame.to_raster(scene.mesh.vertices[v]);
   input.triangles = scene.mesh.triangles;
   input.facing.resize(scene.mesh.triangles.size());
+#pragma omp parallel for schedule(static) num_threads(threads)
   for (size_t t = 0; t < scene.mesh.triangles.size(); ++t) {
     const auto& tri = scene.mesh.triangles[t];
     const auto &a = scene.mesh.vertices[tri[0]], &b = scene.mesh.vertices[tri[1]], &c = scene.mesh.vertices[tri[2]];
