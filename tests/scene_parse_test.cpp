@@ -8,18 +8,13 @@
 #include "scene/procedural.h"
 #include "scene/scene.h"
 #include "util/error.h"
+#include "test_support.h"
 
 namespace mb {
 namespace {
 
-std::string write_temp(const std::string& name, const std::string& text) {
-  auto path = std::filesystem::temp_directory_path() / name;
-  std::ofstream(path) << text;
-  return path.string();
-}
-
 std::string parse_error(const std::string& yaml) {
-  std::string file = write_temp("mb_scene.yaml", yaml);
+  std::string file = testing_support::write_temp_file("mb_scene.yaml", yaml);
   try {
     build_scene(parse_scene(file));
   } catch (const InputError& e) {

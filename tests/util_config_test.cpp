@@ -6,6 +6,7 @@
 
 #include "util/config.h"
 #include "util/error.h"
+#include "test_support.h"
 
 namespace mb {
 namespace {
@@ -18,25 +19,10 @@ std::vector<OptionSpec> specs() {
           {"techniques", OptionType::StringList, "[vsm, esm]", "Techniques.", -1, 1, {"vsm", "esm", "pcf"}}};
 }
 
-std::string write_temp(const std::string& name, const std::string& text) {
-  auto path = std::filesystem::temp_directory_path() / name;
-  std::ofstream(path) << text;
-  return path.string();
-}
-
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
-}
-
 TEST(Config, DefaultsFileAndSetApplyInOrder) {
   Config config(specs());
   EXPECT_EQ(config.integer("raster.resolution"), 512);
-  config.load_file(write_temp("mb_cfg1.yaml", "raster:\n  resolution: 64\nshadow.sigma: 1.5\n"));
+  config.load_file(testing_support::write_temp_file("mb_cfg1.yaml", "raster:\n  resolution: 64\nshadow.sigma: 1.5\n"));
   EXPECT_EQ(config.integer("raster.resolution"), 64);
   EXPECT_DOUBLE_EQ(config.number("shadow.sigma"), 1.5);
   config.set("raster.resolution=32");
@@ -48,22 +34,22 @@ TEST(Config, DefaultsFileAndSetApplyInOrder) {
 
 TEST(Config, UnknownKeyNamesFileLineAndSuggestion) {
   Config config(specs());
-  std::string file = write_temp("mb_cfg2.yaml", "dataset: tiny\nraster:\n  resolutoin: 64\n");
-  std::string message = error_of([&] { config.load_file(file); });
+  std::string file = testing_support::write_temp_file("mb_cfg2.yaml", "dataset: tiny\nraster:\n  resolutoin: 64\n");
+  std::string message = testing_support::input_error_of([&] { config.load_file(file); });
   EXPECT_NE(message.find(file + ":3:"), std::string::npos) << message;
   EXPECT_NE(message.find("did you mean 'raster.resolution'"), std::string::npos) << message;
-  EXPECT_NE(error_of([&] { config.set("previewz=false"); }).find("did you mean 'previews'"), std::string::npos);
+  EXPECT_NE(testing_support::input_error_of([&] { config.set("previewz=false"); }).find("did you mean 'previews'"), std::string::npos);
 }
 
 TEST(Config, WrongTypeRangeAndChoiceAreErrors) {
   Config config(specs());
-  EXPECT_NE(error_of([&] { config.set("raster.resolution=abc"); }).find("expected an integer"), std::string::npos);
-  EXPECT_NE(error_of([&] { config.set("raster.resolution=0"); }).find("[1, 16384]"), std::string::npos);
-  EXPECT_NE(error_of([&] { config.set("shadow.sigma=-1"); }).find("shadow.sigma"), std::string::npos);
-  EXPECT_NE(error_of([&] { config.set("previews=maybe"); }).find("true or false"), std::string::npos);
-  EXPECT_NE(error_of([&] { config.set("techniques=vsn"); }).find("did you mean 'vsm'"), std::string::npos);
-  std::string file = write_temp("mb_cfg3.yaml", "previews: 3\n");
-  EXPECT_NE(error_of([&] { config.load_file(file); }).find(file + ":1:"), std::string::npos);
+  EXPECT_NE(testing_support::input_error_of([&] { config.set("raster.resolution=abc"); }).find("expected an integer"), std::string::npos);
+  EXPECT_NE(testing_support::input_error_of([&] { config.set("raster.resolution=0"); }).find("[1, 16384]"), std::string::npos);
+  EXPECT_NE(testing_support::input_error_of([&] { config.set("shadow.sigma=-1"); }).find("shadow.sigma"), std::string::npos);
+  EXPECT_NE(testing_support::input_error_of([&] { config.set("previews=maybe"); }).find("true or false"), std::string::npos);
+  EXPECT_NE(testing_support::input_error_of([&] { config.set("techniques=vsn"); }).find("did you mean 'vsm'"), std::string::npos);
+  std::string file = testing_support::write_temp_file("mb_cfg3.yaml", "previews: 3\n");
+  EXPECT_NE(testing_support::input_error_of([&] { config.load_file(file); }).find(file + ":1:"), std::string::npos);
 }
 
 TEST(Config, PrintedConfigReadsBackToTheSameValues) {
@@ -74,7 +60,7 @@ TEST(Config, PrintedConfigReadsBackToTheSameValues) {
   config.set("dataset=some/path.yaml");
   std::string printed = config.to_yaml();
   Config back(specs());
-  back.load_file(write_temp("mb_cfg4.yaml", printed));
+  back.load_file(testing_support::write_temp_file("mb_cfg4.yaml", printed));
   EXPECT_EQ(back.to_yaml(), printed);
   EXPECT_DOUBLE_EQ(back.number("shadow.sigma"), 0.1);
   EXPECT_EQ(back.string("dataset"), "some/path.yaml");
