@@ -1,0 +1,38 @@
+#pragma once
+// The answer of an LP backend: a *call* status (did the solver run) kept apart from the
+// *problem* status (what the LP is), as in HiGHS (DESIGN.md §Types).
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "lp/problem.h"
+
+namespace mb::lp {
+
+enum class ProblemStatus { Optimal, Infeasible, Unstable };
+enum class CallStatus { Ok, Failed };
+const char* to_string(ProblemStatus status);
+
+struct Solution {
+  CallStatus call = CallStatus::Ok;
+  std::string call_message;
+  ProblemStatus status = ProblemStatus::Unstable;
+  double G = 0;                   // the sharp lower bound (the LP optimum)
+  std::vector<int> support;       // indices into Problem::points with positive weight
+  std::vector<double> weights;    // same length as support
+  std::vector<double> duals;      // y, one per (transformed) row: a certificate of optimality
+  int iterations = 0;
+};
+
+class Backend {
+ public:
+  virtual ~Backend() = default;
+  virtual std::string name() const = 0;
+  virtual Solution solve(const Problem& problem) = 0;
+};
+
+// "fast" (our exact dense simplex) or "glpk" (the reference).
+std::unique_ptr<Backend> make_backend(const std::string& name);
+std::vector<std::string> backend_names();
+
+}  // namespace mb::lp

@@ -1,0 +1,207 @@
+#include "moments/basis.h"
+
+#include <muParser.h>
+
+#include <Eigen/SVD>
+#include <cmath>
+#include <map>
+#include <mutex>
+#include <numbers>
+
+#include "util/error.h"
+
+namespace mb {
+
+namespace {
+constexpr double kPi = std::numbers::pi;
+
+// REFERENCE.md §5. Built in (not parsed) so the sweep evaluates them at full speed and exactly
+// as written; their names are the stable identifiers stored in results.
+const std::vector<std::pair<std::string, std::function<double(double)>>>& catalog() {
+  static const std::vector<std::pair<std::string, std::function<double(double)>>> table = {
+      {"z", [](double z) { return z; }},
+      {"z^2", [](double z) { return z * z; }},
+      {"z^3", [](double z) { return z * z * z; }},
+      {"z^4", [](double z) { return (z * z) * (z * z); }},
+      {"z^5", [](double z) { return (z * z) * (z * z) * z; }},
+      {"z^6", [](double z) { return (z * z * z) * (z * z * z); }},
+      {"exp(z)", [](double z) { return std::exp(z); }},
+      {"exp(-z)", [](double z) { return std::exp(-z); }},
+      {"exp(2z)", [](double z) { return std::exp(2 * z); }},
+      {"exp(-2z)", [](double z) { return std::exp(-2 * z); }},
+      {"exp(4z)", [](double z) { return std::exp(4 * z); }},
+      {"exp(-4z)", [](double z) { return std::exp(-4 * z); }},
+      {"exp(8z)", [](double z) { return std::exp(8 * z); }},
+      {"exp(-8z)", [](double z) { return std::exp(-8 * z); }},
+      {"sin(pi z)", [](double z) { return std::sin(kPi * z); }},
+      {"cos(pi z)", [](double z) { return std::cos(kPi * z); }},
+      {"sin(2 pi z)", [](double z) { return std::sin(2 * kPi * z); }},
+      {"cos(2 pi z)", [](double z) { return std::cos(2 * kPi * z); }},
+      {"sin(3 pi z)", [](double z) { return std::sin(3 * kPi * z); }},
+      {"cos(3 pi z)", [](double z) { return std::cos(3 * kPi * z); }},
+      {"sin(4 pi z)", [](double z) { return std::sin(4 * kPi * z); }},
+      {"cos(4 pi z)", [](double z) { return std::cos(4 * kPi * z); }},
+      {"sin(pi z / 2)", [](double z) { return std::sin(kPi * z / 2); }},
+      {"1/(1+z)", [](double z) { return 1 / (1 + z); }},
+      {"1/(1+z)^2", [](double z) { return 1 / ((1 + z) * (1 + z)); }},
+      {"1/(2-z)", [](double z) { return 1 / (2 - z); }},
+      {"1/(1+z^2)", [](double z) { return 1 / (1 + z * z); }},
+      {"z/(1+z^2)", [](double z) { return z / (1 + z * z); }},
+      {"1/(1+4z)", [](double z) { return 1 / (1 + 4 * z); }},
+      {"log(1+z)", [](double z) { return std::log1p(z); }},
+      {"log(1+4z)", [](double z) { return std::log1p(4 * z); }},
+      {"atan(4z)", [](double z) { return std::atan(4 * z); }},
+      {"tanh(4(z-1/2))", [](double z) { return std::tanh(4 * (z - 0.5)); }},
+      {"exp(-z^2)", [](double z) { return std::exp(-z * z); }},
+      {"exp(-16(z-1/2)^2)", [](double z) { return std::exp(-16 * (z - 0.5) * (z - 0.5)); }},
+      {"z exp(z)", [](double z) { return z * std::exp(z); }},
+      {"sqrt(1+z)", [](double z) { return std::sqrt(1 + z); }},
+  };
+  return table;
+}
+
+std::string normalized(const std::string& s) {
+  std::string out;
+  for (char c : s)
+    if (c != ' ' && c != '*') out += c;
+  return out;
+}
+}  // namespace
+
+// muparser evaluates one expression object at a time; each BasisFunction owns its parser and
+// serialises access (expressions are evaluated once per grid or map, not in inner loops).
+struct ExpressionEvaluator {
+  mu::Parser parser;
+  double z = 0;
+  std::mutex mutex;
+};
+
+const std::vector<std::string>& catalog_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n;
+    for (const auto& [name, _] : catalog()) n.push_back(name);
+    return n;
+  }();
+  return names;
+}
+
+std::vector<std::string> named_basis_set(const std::string& name) {
+  static const std::map<std::string, std::vector<std::string>> sets = {
+      {"power4", {"z", "z^2", "z^3", "z^4"}},
+      {"power6", {"z", "z^2", "z^3", "z^4", "z^5", "z^6"}},
+      {"power2", {"z", "z^2"}},
+      {"trig4", {"sin(2 pi z)", "cos(2 pi z)", "sin(4 pi z)", "cos(4 pi z)"}},
+      {"trig2", {"sin(2 pi z)", "cos(2 pi z)"}},
+  };
+  auto it = sets.find(name);
+  return it == sets.end() ? std::vector<std::string>{} : it->second;
+}
+
+BasisFunction BasisFunction::parse(const std::string& text) {
+  BasisFunction f;
+  for (const auto& [name, function] : catalog()) {
+    if (normalized(name) == normalized(text)) {
+      f.name_ = name;
+      f.scalar_ = function;
+      return f;
+    }
+  }
+  auto evaluator = std::make_shared<ExpressionEvaluator>();
+  try {
+    evaluator->parser.DefineVar("z", &evaluator->z);
+    evaluator->parser.DefineConst("pi", kPi);
+    evaluator->parser.SetExpr(text);
+    evaluator->z = 0.5;
+    evaluator->parser.Eval();  // syntax errors surface here
+  } catch (const mu::Parser::exception_type& e) {
+    throw InputError("basis function '" + text + "': not a catalog name and not a valid expression in z (" +
+                     e.GetMsg() + ")");
+  }
+  f.name_ = text;
+  f.expression_ = evaluator;
+  return f;
+}
+
+double BasisFunction::operator()(double z) const {
+  if (scalar_) return scalar_(z);
+  std::lock_guard lock(expression_->mutex);
+  expression_->z = z;
+  return expression_->parser.Eval();
+}
+
+void BasisFunction::evaluate(std::span<const double> z, std::span<double> out) const {
+  if (scalar_) {
+    for (size_t i = 0; i < z.size(); ++i) out[i] = scalar_(z[i]);
+    return;
+  }
+  std::lock_guard lock(expression_->mutex);
+  for (size_t i = 0; i < z.size(); ++i) {
+    expression_->z = z[i];
+    out[i] = expression_->parser.Eval();
+  }
+}
+
+Basis Basis::parse(const std::vector<std::string>& items) {
+  std::vector<BasisFunction> functions;
+  for (const auto& item : items) {
+    auto set = named_basis_set(item);
+    if (!set.empty()) {
+      for (const auto& name : set) functions.push_back(BasisFunction::parse(name));
+    } else {
+      functions.push_back(BasisFunction::parse(item));
+    }
+  }
+  if (functions.empty()) throw InputError("basis: no functions given");
+  return Basis(std::move(functions));
+}
+
+std::vector<std::string> Basis::names() const {
+  std::vector<std::string> out;
+  for (const auto& f : functions_) out.push_back(f.name());
+  return out;
+}
+
+void Basis::check_independent(double lo, double hi) const {
+  // Columns 1, b_1..b_m sampled densely on [lo, hi] and scaled to unit norm; a relative
+  // singular value below 1e-10 means the LP rows are numerically dependent (z^5, z^6 next to the
+  // lower powers sit near 1e-6 on [0, 1] and pass).
+  const int samples = 2048, m = int(functions_.size());
+  std::vector<double> z(samples);
+  for (int i = 0; i < samples; ++i) z[i] = lo + (hi - lo) * i / (samples - 1);
+  Eigen::MatrixXd A(samples, m + 1);
+  A.col(0).setOnes();
+  std::vector<double> values(samples);
+  for (int j = 0; j < m; ++j) {
+    functions_[j].evaluate(z, values);
+    for (int i = 0; i < samples; ++i) {
+      if (!std::isfinite(values[i]))
+        throw InputError("basis function '" + functions_[j].name() + "' is not finite at z = " +
+                         std::to_string(z[i]) + " on [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+      A(i, j + 1) = values[i];
+    }
+  }
+  auto smallest_relative_singular_value = [](Eigen::MatrixXd M) {
+    for (int c = 0; c < M.cols(); ++c) {
+      double norm = M.col(c).norm();
+      if (norm > 0) M.col(c) /= norm;
+    }
+    Eigen::JacobiSVD<Eigen::MatrixXd> svd(M);
+    const auto& s = svd.singularValues();
+    return s(s.size() - 1) / s(0);
+  };
+  const double kTolerance = 1e-10;
+  if (smallest_relative_singular_value(A) >= kTolerance) return;
+  // Name the culprit: the function whose removal makes the rest independent.
+  std::string culprits;
+  for (int j = 0; j < m; ++j) {
+    Eigen::MatrixXd rest(samples, m);
+    rest << A.leftCols(j + 1), A.rightCols(m - j - 1);
+    if (smallest_relative_singular_value(rest) >= kTolerance) culprits += (culprits.empty() ? "" : ", ") + functions_[j].name();
+  }
+  std::string all;
+  for (const auto& f : functions_) all += (all.empty() ? "" : ", ") + f.name();
+  throw InputError("basis {" + all + "} is linearly dependent together with the constant on [" + std::to_string(lo) +
+                   ", " + std::to_string(hi) + "]" + (culprits.empty() ? "" : "; remove one of: " + culprits));
+}
+
+}  // namespace mb

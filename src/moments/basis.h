@@ -1,0 +1,49 @@
+#pragma once
+// Basis functions b : I -> R^m (REFERENCE.md §1): the 37-function catalog of §5 under stable
+// names, and user-defined expressions (muparser, variable `z`). Evaluated on arrays.
+#include <functional>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace mb {
+
+class BasisFunction {
+ public:
+  // A catalog name ("z^2", "exp(-4z)", "sin(2 pi z)"; spaces and '*' are ignored when matching)
+  // or an expression in z ("z^2*exp(-z)", "sin(2*_pi*z)"; `pi` is defined).
+  static BasisFunction parse(const std::string& name_or_expression);
+  const std::string& name() const { return name_; }
+  void evaluate(std::span<const double> z, std::span<double> out) const;
+  double operator()(double z) const;
+
+ private:
+  std::string name_;
+  std::function<double(double)> scalar_;
+  std::shared_ptr<struct ExpressionEvaluator> expression_;
+};
+
+class Basis {
+ public:
+  Basis() = default;
+  explicit Basis(std::vector<BasisFunction> functions) : functions_(std::move(functions)) {}
+  // Comma-separated names/expressions, or a named set: power4, trig4, power2 (VSM), power6.
+  static Basis parse(const std::vector<std::string>& items);
+  size_t size() const { return functions_.size(); }
+  const BasisFunction& operator[](size_t j) const { return functions_[j]; }
+  std::vector<std::string> names() const;
+  // Rejects (InputError naming the functions) a basis that is numerically linearly dependent
+  // together with the constant on [lo, hi].
+  void check_independent(double lo, double hi) const;
+
+ private:
+  std::vector<BasisFunction> functions_;
+};
+
+// The 37 catalog names of REFERENCE.md §5, in catalog order (candidate ranks use this order).
+const std::vector<std::string>& catalog_names();
+// Named sets: "power4" -> {z, z^2, z^3, z^4}, ...; empty when `name` is not a set.
+std::vector<std::string> named_basis_set(const std::string& name);
+
+}  // namespace mb
