@@ -6,5 +6,6 @@
 namespace mb {
 
 void register_render_command(CLI::App& app, std::function<int()>& action);
+void register_solve_command(CLI::App& app, std::function<int()>& action);
 
 }  // namespace mb

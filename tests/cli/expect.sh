@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# expect.sh fail|pass REGEX OUTDIR -- COMMAND...
+# expect.sh fail|pass REGEX OUTDIR -- COMMAND...  (REGEX is matched against the output joined into one line)
 # Runs COMMAND; checks its exit code (non-zero for fail), that stdout+stderr match REGEX, and for
 # fail that OUTDIR was not created (bad input leaves no partial output).
 set -u
@@ -17,5 +17,5 @@ if [ "$mode" = fail ]; then
 else
   [ $code -eq 0 ] || { echo "expect.sh: expected exit 0, got $code"; exit 1; }
 fi
-echo "$output" | grep -Eq -- "$regex" || { echo "expect.sh: output does not match /$regex/"; exit 1; }
+echo "$output" | tr "\n" " " | grep -Eq -- "$regex" || { echo "expect.sh: output does not match /$regex/"; exit 1; }
 exit 0
