@@ -207,13 +207,7 @@ class FastSimplex {
       int entering = choose_entering(bland);
       if (entering < 0) return true;
       double u[kMaxRows];
-      double u_max = 0;
-      for (int i = 0; i < k_; ++i) {
-        double v = 0;
-        for (int r = 0; r < k_; ++r) v += binv_(i, r) * p_.at(r, entering);
-        u[i] = v;
-        u_max = std::max(u_max, std::abs(v));
-      }
+      column_in_basis(entering, u);
       // Harris ratio test: a relaxed bound first, then the largest pivot within it.
       double theta_max = std::numeric_limits<double>::infinity();
       for (int i = 0; i < k_; ++i)
@@ -236,6 +230,15 @@ class FastSimplex {
       ++s.iterations;
     }
     return false;
+  }
+
+  // u = B^{-1} a_j, the entering column in basis coordinates (shared by primal and dual steps).
+  void column_in_basis(int j, double* u) const {
+    for (int i = 0; i < k_; ++i) {
+      double v = 0;
+      for (int r = 0; r < k_; ++r) v += binv_(i, r) * p_.at(r, j);
+      u[i] = v;
+    }
   }
 
   // Product-form update of the explicit inverse: column `entering` replaces basis row `leave`.
@@ -284,11 +287,7 @@ class FastSimplex {
           entering = j, best_alpha = -alpha[j];
       if (entering < 0) return false;  // would mean primal infeasible: not for a feasible LP
       double u[kMaxRows];
-      for (int i = 0; i < k_; ++i) {
-        double v = 0;
-        for (int r = 0; r < k_; ++r) v += binv_(i, r) * p_.at(r, entering);
-        u[i] = v;
-      }
+      column_in_basis(entering, u);
       double theta = x_[leave] / u[leave];
       for (int i = 0; i < k_; ++i) x_[i] -= theta * u[i];
       x_[leave] = theta;
