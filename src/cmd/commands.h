@@ -6,6 +6,7 @@
 namespace mb {
 
 void register_render_command(CLI::App& app, std::function<int()>& action);
+void register_eval_command(CLI::App& app, std::function<int()>& action);
 void register_solve_command(CLI::App& app, std::function<int()>& action);
 
 }  // namespace mb

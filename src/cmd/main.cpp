@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", MOMENTBENCH_VERSION);
   std::function<int()> action;
   mb::register_render_command(app, action);
+  mb::register_eval_command(app, action);
   mb::register_solve_command(app, action);
   try {
     app.parse(argc, argv);

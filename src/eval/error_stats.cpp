@@ -1,0 +1,34 @@
+#include "eval/error_stats.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mb {
+
+void ErrorStats::add(double pcf, double g) {
+  const double e = std::abs(pcf - g);
+  ++count;
+  sum_abs += e;
+  if (pcf > g) sum_leak += pcf - g;
+  else sum_dark += g - pcf;
+  max = std::max(max, e);
+  if (e > 0.1) ++over_tenth;
+  ++histogram[std::min(int(e * kHistogramBins), kHistogramBins - 1)];
+}
+
+void ErrorStats::add_all(std::span<const double> pcf, std::span<const double> g) {
+  for (size_t i = 0; i < pcf.size(); ++i) add(pcf[i], g[i]);
+}
+
+void ErrorStats::merge(const ErrorStats& o) {
+  count += o.count;
+  over_tenth += o.over_tenth;
+  failures += o.failures;
+  sum_abs += o.sum_abs;
+  sum_leak += o.sum_leak;
+  sum_dark += o.sum_dark;
+  max = std::max(max, o.max);
+  for (int i = 0; i < kHistogramBins; ++i) histogram[i] += o.histogram[i];
+}
+
+}  // namespace mb

@@ -1,0 +1,28 @@
+#pragma once
+// The L1 error of a technique against PCF (REFERENCE.md §3): mean |PCF - G| over receivers, split
+// into light leaking (PCF > G) and over-darkening (G > PCF), with the maximum, the share of
+// fragments off by more than 0.1, and a histogram of per-fragment errors.
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace mb {
+
+struct ErrorStats {
+  static constexpr int kHistogramBins = 100;  // |PCF - G| in bins of 0.01 over [0, 1]
+  uint64_t count = 0, over_tenth = 0, failures = 0;
+  double sum_abs = 0, sum_leak = 0, sum_dark = 0, max = 0;
+  std::vector<uint64_t> histogram = std::vector<uint64_t>(kHistogramBins, 0);
+
+  void add(double pcf, double g);
+  // Adds every fragment in order (the sums are then independent of the thread count).
+  void add_all(std::span<const double> pcf, std::span<const double> g);
+  void merge(const ErrorStats& other);
+  double mean() const { return count ? sum_abs / count : 0; }
+  double leak() const { return count ? sum_leak / count : 0; }
+  double dark() const { return count ? sum_dark / count : 0; }
+  double share_over_tenth() const { return count ? double(over_tenth) / count : 0; }
+};
+
+}  // namespace mb

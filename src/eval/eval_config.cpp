@@ -1,0 +1,70 @@
+#include "eval/eval_config.h"
+
+#include <cstdio>
+#include <limits>
+
+#include "util/error.h"
+
+namespace mb {
+
+std::vector<OptionSpec> shadow_option_specs() {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  return {
+      {"kernel.size", OptionType::Integer, "9", "Filter taps per axis (odd), for PCF and moment maps."},
+      {"kernel.sigma", OptionType::Number, "2.4", "Gaussian standard deviation in texels."},
+      {"pcf.receiver_plane", OptionType::Boolean, "true", "PCF compares taps against the fragment's triangle plane."},
+      {"pcf.constant_bias", OptionType::Number, "1e-4", "PCF: constant subtracted from the reference depth.", 0, 1},
+      {"depth_bias", OptionType::Number, "1e-3", "delta: moment techniques see z_f - delta (REFERENCE.md §3).", 0, 1},
+      {"hamburger4.alpha", OptionType::Number, "1e-10", "Moment bias of Hamburger 4MSM in double."},
+      {"hamburger4_float.alpha", OptionType::Number, "5e-6", "Moment bias of Hamburger 4MSM in float32."},
+      {"hamburger4_16bit.alpha", OptionType::Number, "3e-5", "Moment bias of Hamburger 4MSM from 16-bit maps."},
+      {"hausdorff4.alpha", OptionType::Number, "1e-10", "Moment bias of Hausdorff 4MSM."},
+      {"hamburger6.alpha", OptionType::Number, "1e-10", "Moment bias of six-moment Hamburger MSM."},
+      {"hamburger.beta", OptionType::Number, "0", "G + beta * (weight at z_f): 0 lower bound, 1 upper (seed 004).", 0, 1},
+      {"esm.c", OptionType::Number, "80", "ESM exponent c.", 1e-6, 700},
+      {"vsm.min_variance", OptionType::Number, "0", "VSM variance clamp.", 0, 1},
+      {"lp.grid", OptionType::Integer, "256", "LP techniques: uniform grid points on the interval.", 2, 1e7},
+      {"lp.lo", OptionType::Number, "0", "LP techniques: admissible interval, lower end."},
+      {"lp.hi", OptionType::Number, "1", "LP techniques: admissible interval, upper end."},
+      {"lp.quantize", OptionType::Boolean, "false", "LP techniques: round depths to the grid instead of adding them."},
+      {"lp.backend", OptionType::String, "fast", "LP backend.", -kInf, kInf, {"fast", "glpk"}},
+  };
+}
+
+EvalSettings shadow_settings_from(const Config& config, int threads) {
+  EvalSettings s;
+  s.kernel = make_gaussian_kernel(int(config.integer("kernel.size")), config.number("kernel.sigma"));
+  s.pcf.receiver_plane = config.boolean("pcf.receiver_plane");
+  s.pcf.constant_bias = config.number("pcf.constant_bias");
+  s.depth_bias = config.number("depth_bias");
+  auto& t = s.technique;
+  t.hamburger4_alpha = config.number("hamburger4.alpha");
+  t.hamburger4_float_alpha = config.number("hamburger4_float.alpha");
+  t.hamburger4_16bit_alpha = config.number("hamburger4_16bit.alpha");
+  t.hausdorff4_alpha = config.number("hausdorff4.alpha");
+  t.hamburger6_alpha = config.number("hamburger6.alpha");
+  t.beta = config.number("hamburger.beta");
+  t.esm_c = config.number("esm.c");
+  t.vsm_min_variance = config.number("vsm.min_variance");
+  t.lp.grid = int(config.integer("lp.grid"));
+  t.lp.lo = config.number("lp.lo");
+  t.lp.hi = config.number("lp.hi");
+  t.lp.quantize = config.boolean("lp.quantize");
+  t.lp_backend = config.string("lp.backend");
+  if (!(t.lp.lo < t.lp.hi)) throw InputError("lp.lo, lp.hi: expected lo < hi");
+  s.threads = threads;
+  return s;
+}
+
+std::string describe_settings(const EvalSettings& s) {
+  char buffer[512];
+  std::snprintf(buffer, sizeof buffer,
+                "kernel %dx%d Gaussian, sigma %g texels; PCF receiver-plane bias %s, constant bias %g; moment depth "
+                "bias delta %g; LP grid %d on [%g, %g]%s, backend %s",
+                s.kernel.size, s.kernel.size, s.kernel.sigma, s.pcf.receiver_plane ? "on" : "off",
+                s.pcf.constant_bias, s.depth_bias, s.technique.lp.grid, s.technique.lp.lo, s.technique.lp.hi,
+                s.technique.lp.quantize ? " (quantized depths)" : "", s.technique.lp_backend.c_str());
+  return buffer;
+}
+
+}  // namespace mb

@@ -1,0 +1,17 @@
+#pragma once
+// The options that decide how shadows are evaluated (kernel, PCF bias, moment bias, technique
+// parameters, LP discretisation), declared once for `eval`, `sweep` and `verify`.
+#include <vector>
+
+#include "eval/evaluation.h"
+#include "util/config.h"
+
+namespace mb {
+
+std::vector<OptionSpec> shadow_option_specs();
+// Validated settings from a resolved config (InputError naming the key on bad values).
+EvalSettings shadow_settings_from(const Config& config, int threads);
+// One report line per setting that matters for reproducing numbers.
+std::string describe_settings(const EvalSettings& settings);
+
+}  // namespace mb

@@ -1,0 +1,72 @@
+#include "eval/evaluation.h"
+
+#include <omp.h>
+
+#include "raster/render_view.h"
+#include "shadow/moment_map.h"
+
+namespace mb {
+
+std::vector<ViewData> prepare_views(const DatasetDesc& dataset, int resolution, const EvalSettings& settings,
+                                    bool quiet) {
+  std::vector<Scene> scenes;
+  for (const auto& file : dataset.scene_files) scenes.push_back(build_scene(parse_scene(file)));
+  if (resolution == 0) resolution = dataset.resolution;
+  std::vector<ViewData> views;
+  size_t total = 0;
+  for (const auto& scene : scenes) total += scene.views.size();
+  ProgressBar bar("render", total, quiet);
+  for (const auto& scene : scenes)
+    for (auto view : scene.views) {
+      if (resolution > 0) view.resolution = resolution;
+      LayerStack stack = render_view(scene, view, settings.threads);
+      ViewData data{scene.name, view.name, layer0_shadow_map(stack),
+                    collect_receivers(stack, settings.kernel, settings.pcf, settings.threads)};
+      views.push_back(std::move(data));
+      bar.advance();
+    }
+  return views;
+}
+
+TechniqueResult evaluate_technique(const ViewData& view, const std::string& technique_name,
+                                   const EvalSettings& settings, ProgressBar* progress) {
+  const Fragments& f = view.fragments;
+  TechniqueResult result;
+  result.shadow.resize(f.size());
+  auto probe = make_technique(technique_name, settings.technique);
+  MomentMap moments;
+  if (probe->basis().size() > 0)
+    moments = compute_moment_map(view.map, probe->basis(), settings.kernel, probe->storage(), settings.threads);
+  const size_t taps = size_t(settings.kernel.size) * settings.kernel.size;
+  const size_t chunk = 1024;
+  size_t failures = 0;
+#pragma omp parallel num_threads(settings.threads) reduction(+ : failures)
+  {
+    auto technique = make_technique(technique_name, settings.technique);
+    const bool needs_distribution = technique->needs_distribution();
+    std::vector<double> depths(taps), weights(taps);
+#pragma omp for schedule(dynamic, 1)
+    for (size_t begin = 0; begin < f.size(); begin += chunk) {
+      const size_t end = std::min(f.size(), begin + chunk);
+      for (size_t k = begin; k < end; ++k) {
+        const size_t texel = f.texel[k];
+        FragmentInput in;
+        if (moments.m > 0) in.moments = moments.at(texel);
+        in.zf = f.zf[k] - settings.depth_bias;
+        in.pcf = f.pcf[k];
+        if (needs_distribution) {
+          kernel_distribution(view.map, settings.kernel, int(texel % f.width), int(texel / f.width), depths, weights);
+          in.kernel_depths = depths;
+          in.kernel_weights = weights;
+        }
+        result.shadow[k] = technique->shadow(in);
+      }
+      if (progress) progress->advance(end - begin);
+    }
+    failures += technique->failures();
+  }
+  result.failures = failures;
+  return result;
+}
+
+}  // namespace mb

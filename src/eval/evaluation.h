@@ -1,0 +1,43 @@
+#pragma once
+// Technique x view -> one shadow intensity per receiver fragment (DESIGN.md data flow).
+#include <string>
+#include <vector>
+
+#include "eval/technique.h"
+#include "scene/dataset.h"
+#include "shadow/fragments.h"
+#include "shadow/gaussian_kernel.h"
+#include "util/progress.h"
+
+namespace mb {
+
+// One light view, ready to evaluate: its shadow map and receivers with the PCF reference.
+struct ViewData {
+  std::string scene, view;
+  ShadowMap map;
+  Fragments fragments;
+};
+
+struct EvalSettings {
+  GaussianKernel kernel = make_gaussian_kernel(9, 2.4);
+  PcfParams pcf;
+  double depth_bias = 1e-3;  // delta: techniques see z_f - delta (REFERENCE.md §3)
+  TechniqueParams technique;
+  int threads = 1;
+};
+
+// Renders every view of the dataset (resolution > 0 overrides the dataset's, which overrides the
+// scene's) and collects its receivers.
+std::vector<ViewData> prepare_views(const DatasetDesc& dataset, int resolution, const EvalSettings& settings,
+                                    bool quiet);
+
+struct TechniqueResult {
+  std::vector<double> shadow;  // G per fragment, in fragment order
+  size_t failures = 0;
+};
+
+// Runs `technique_name` on every receiver of `view` with one technique instance per thread.
+TechniqueResult evaluate_technique(const ViewData& view, const std::string& technique_name,
+                                   const EvalSettings& settings, ProgressBar* progress);
+
+}  // namespace mb

@@ -1,0 +1,62 @@
+#include "eval/lp_technique.h"
+
+#include "lp/solution.h"
+#include "util/error.h"
+
+namespace mb {
+
+namespace {
+
+class LpTechnique : public Technique {
+ public:
+  LpTechnique(const std::string& name, Basis basis, const lp::Discretization& disc, const std::string& backend)
+      : Technique(name, std::move(basis), double_storage()), disc_(disc), backend_(lp::make_backend(backend)) {
+    this->basis().check_independent(disc.lo, disc.hi);
+  }
+  bool needs_distribution() const override { return true; }
+
+  double shadow(const FragmentInput& in) override {
+    // REFERENCE.md §2: G <= F_Z(z_f), so F_Z(z_f) = 0 gives G = 0 without solving.
+    double cdf = 0;
+    for (size_t t = 0; t < in.kernel_depths.size(); ++t)
+      if (in.kernel_depths[t] < in.zf) cdf += in.kernel_weights[t];
+    if (cdf == 0) return 0;
+    // The kernel's own distribution fixes the moments, so the program is feasible by construction.
+    lp::Problem problem =
+        lp::make_problem_from_distribution(basis(), disc_, in.kernel_depths, in.kernel_weights, in.zf);
+    lp::Solution s = backend_->solve(problem);
+    if (s.call != lp::CallStatus::Ok || s.status != lp::ProblemStatus::Optimal) {
+      ++failures_;
+      return 0;
+    }
+    return std::clamp(s.G, 0.0, 1.0);
+  }
+  size_t failures() const override { return failures_; }
+
+ private:
+  lp::Discretization disc_;
+  std::unique_ptr<lp::Backend> backend_;
+  size_t failures_ = 0;
+};
+
+}  // namespace
+
+std::vector<std::string> lp_technique_basis(const std::string& name) {
+  std::string spec = name.substr(3);
+  std::vector<std::string> items;
+  size_t start = 0;
+  for (size_t i = 0; i <= spec.size(); ++i)
+    if (i == spec.size() || spec[i] == ';' || spec[i] == ',') {
+      if (i > start) items.push_back(spec.substr(start, i - start));
+      start = i + 1;
+    }
+  if (items.empty()) throw InputError("technique '" + name + "': expected lp:<basis>, e.g. lp:power4");
+  return items;
+}
+
+std::unique_ptr<Technique> make_lp_technique(const std::string& name, const lp::Discretization& disc,
+                                             const std::string& backend) {
+  return std::make_unique<LpTechnique>(name, Basis::parse(lp_technique_basis(name)), disc, backend);
+}
+
+}  // namespace mb

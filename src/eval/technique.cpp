@@ -1,0 +1,125 @@
+#include "eval/technique.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "eval/lp_technique.h"
+#include "moments/canonical.h"
+#include "moments/chebyshev.h"
+#include "moments/hamburger.h"
+#include "moments/hausdorff.h"
+#include "util/error.h"
+
+namespace mb {
+
+namespace {
+
+class PcfTechnique : public Technique {
+ public:
+  PcfTechnique() : Technique("pcf", Basis(), double_storage()) {}
+  double shadow(const FragmentInput& in) override { return in.pcf; }
+};
+
+class VsmTechnique : public Technique {
+ public:
+  explicit VsmTechnique(double min_variance)
+      : Technique("vsm", Basis::parse({"power2"}), double_storage()), min_variance_(min_variance) {}
+  double shadow(const FragmentInput& in) override { return vsm_bound(in.moments.data(), in.zf, min_variance_); }
+
+ private:
+  double min_variance_;
+};
+
+class EsmTechnique : public Technique {
+ public:
+  explicit EsmTechnique(double c)
+      : Technique("esm", Basis::parse({"exp(" + std::to_string(c) + "*z)"}), double_storage()), c_(c) {}
+  double shadow(const FragmentInput& in) override { return esm_bound(in.moments[0], in.zf, c_); }
+
+ private:
+  double c_;
+};
+
+// The power-moment solvers share the bias towards b* = (1/2, .., 1/2) (REFERENCE.md §4: the
+// moments of half the mass at 0 and half at 1) and the beta blend of seed 004.
+enum class PowerSolver { Hamburger4, Hamburger4Float, Hausdorff4, Hamburger6 };
+
+class PowerMomentTechnique : public Technique {
+ public:
+  PowerMomentTechnique(std::string name, PowerSolver solver, MomentStorage storage, double alpha, double beta)
+      : Technique(std::move(name), Basis::parse({solver == PowerSolver::Hamburger6 ? "power6" : "power4"}),
+                  std::move(storage)),
+        solver_(solver), alpha_(alpha), beta_(beta) {}
+
+  double shadow(const FragmentInput& in) override {
+    const int m = int(in.moments.size());
+    if (solver_ == PowerSolver::Hamburger4Float) {
+      float b[4], star[4] = {0.5f, 0.5f, 0.5f, 0.5f};
+      for (int j = 0; j < 4; ++j) b[j] = float(in.moments[j]);
+      bias_moments(b, 4, float(alpha_), star);
+      MsmBound<float> r = hamburger4(b, float(in.zf));
+      return finish(r.lower + float(beta_) * r.at_zf);
+    }
+    double b[6], star[6] = {0.5, 0.5, 0.5, 0.5, 0.5, 0.5};
+    std::copy(in.moments.begin(), in.moments.end(), b);
+    bias_moments(b, m, alpha_, star);
+    MsmBound<double> r = solver_ == PowerSolver::Hausdorff4 ? hausdorff4(b, in.zf)
+                         : solver_ == PowerSolver::Hamburger6 ? hamburger6(b, in.zf)
+                                                              : hamburger4(b, in.zf);
+    return finish(r.lower + beta_ * r.at_zf);
+  }
+  size_t failures() const override { return failures_; }
+
+ private:
+  // A singular Hankel matrix (alpha = 0 and a kernel of one or two depths) gives NaN: counted,
+  // reported, and shown as fully lit so it cannot hide inside the mean.
+  double finish(double g) {
+    if (std::isfinite(g)) return std::clamp(g, 0.0, 1.0);
+    ++failures_;
+    return 0;
+  }
+  PowerSolver solver_;
+  double alpha_, beta_;
+  size_t failures_ = 0;
+};
+
+void check_alpha(const char* key, double alpha) {
+  if (!(alpha >= 0 && alpha < 1)) throw InputError(std::string(key) + ": expected alpha in [0, 1), got " + std::to_string(alpha));
+}
+
+}  // namespace
+
+std::vector<std::string> closed_form_technique_names() {
+  return {"pcf", "vsm", "esm", "hamburger4", "hamburger4_float", "hamburger4_16bit", "hausdorff4", "hamburger6"};
+}
+
+std::unique_ptr<Technique> make_technique(const std::string& name, const TechniqueParams& p) {
+  check_alpha("hamburger4.alpha", p.hamburger4_alpha);
+  check_alpha("hamburger4_float.alpha", p.hamburger4_float_alpha);
+  check_alpha("hamburger4_16bit.alpha", p.hamburger4_16bit_alpha);
+  check_alpha("hausdorff4.alpha", p.hausdorff4_alpha);
+  check_alpha("hamburger6.alpha", p.hamburger6_alpha);
+  if (name == "pcf") return std::make_unique<PcfTechnique>();
+  if (name == "vsm") return std::make_unique<VsmTechnique>(p.vsm_min_variance);
+  if (name == "esm") return std::make_unique<EsmTechnique>(p.esm_c);
+  if (name == "hamburger4")
+    return std::make_unique<PowerMomentTechnique>(name, PowerSolver::Hamburger4, double_storage(), p.hamburger4_alpha, p.beta);
+  if (name == "hamburger4_float")
+    return std::make_unique<PowerMomentTechnique>(name, PowerSolver::Hamburger4Float, float32_storage(),
+                                                  p.hamburger4_float_alpha, p.beta);
+  if (name == "hamburger4_16bit")
+    return std::make_unique<PowerMomentTechnique>(name, PowerSolver::Hamburger4, unorm16_power4_storage(),
+                                                  p.hamburger4_16bit_alpha, p.beta);
+  if (name == "hausdorff4")
+    return std::make_unique<PowerMomentTechnique>(name, PowerSolver::Hausdorff4, double_storage(), p.hausdorff4_alpha, p.beta);
+  if (name == "hamburger6")
+    return std::make_unique<PowerMomentTechnique>(name, PowerSolver::Hamburger6, double_storage(), p.hamburger6_alpha, p.beta);
+  if (name.rfind("lp:", 0) == 0) return make_lp_technique(name, p.lp, p.lp_backend);
+  std::string valid;
+  for (const auto& n : closed_form_technique_names()) valid += n + ", ";
+  std::string guess = closest_match(name, closed_form_technique_names());
+  throw InputError("unknown technique '" + name + "'" + (guess.empty() ? "" : " (did you mean '" + guess + "'?)") +
+                   "; valid: " + valid + "lp:<basis> (e.g. lp:power4, lp:trig4, lp:z;exp(-z);sin(pi z);z^3)");
+}
+
+}  // namespace mb

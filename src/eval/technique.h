@@ -1,0 +1,63 @@
+#pragma once
+// A shadow technique (DESIGN.md §Types): a name, the basis whose filtered moment map it reads,
+// how that map is stored, and shadow(b, z_f) -> G. Closed forms (moments/) and LPs (lp/) both
+// implement it, so they appear in the same error tables.
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "lp/problem.h"
+#include "moments/basis.h"
+#include "moments/storage.h"
+
+namespace mb {
+
+struct FragmentInput {
+  std::span<const double> moments;  // the filtered moment map at the fragment's texel
+  double zf = 0;                    // the fragment depth, moment bias already applied (z_f - delta)
+  double pcf = 0;                   // the reference (for the `pcf` sanity row)
+  // The kernel's depth distribution (layer-0 depths and weights), for techniques that need it.
+  std::span<const double> kernel_depths, kernel_weights;
+};
+
+// Every technique parameter, with the defaults of the eval options table.
+struct TechniqueParams {
+  double hamburger4_alpha = 1e-10, hamburger4_float_alpha = 5e-6, hamburger4_16bit_alpha = 3e-5;
+  double hausdorff4_alpha = 1e-10, hamburger6_alpha = 1e-10;
+  double beta = 0;  // Hamburger: G + beta * (weight at z_f); 0 = lower bound, 1 = upper (seed 004)
+  double esm_c = 80;
+  double vsm_min_variance = 0;
+  lp::Discretization lp;
+  std::string lp_backend = "fast";
+};
+
+class Technique {
+ public:
+  virtual ~Technique() = default;
+  const std::string& name() const { return name_; }
+  const Basis& basis() const { return basis_; }
+  const MomentStorage& storage() const { return storage_; }
+  virtual bool needs_distribution() const { return false; }
+  // Not thread-safe (LP backends keep state): make one instance per thread.
+  virtual double shadow(const FragmentInput& input) = 0;
+  // Fragments the technique could not answer (LP infeasible or unstable), for the report.
+  virtual size_t failures() const { return 0; }
+
+ protected:
+  Technique(std::string name, Basis basis, MomentStorage storage)
+      : name_(std::move(name)), basis_(std::move(basis)), storage_(std::move(storage)) {}
+
+ private:
+  std::string name_;
+  Basis basis_;
+  MomentStorage storage_;
+};
+
+// "pcf", "vsm", "esm", "hamburger4", "hamburger4_float", "hamburger4_16bit", "hausdorff4",
+// "hamburger6", or "lp:<basis>" (a named set such as power4, or functions separated by ';').
+// Unknown names are an InputError listing the valid ones.
+std::unique_ptr<Technique> make_technique(const std::string& name, const TechniqueParams& params);
+std::vector<std::string> closed_form_technique_names();
+
+}  // namespace mb

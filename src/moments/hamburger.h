@@ -1,0 +1,22 @@
+#pragma once
+// Hamburger moment shadow mapping (REFERENCE.md §4; seed 000 Algorithm 3 with the authors'
+// corrections, seed 004 for six moments): the sharp lower bound of Problem 1 for I = R and the
+// power basis, from the canonical distribution with a node at z_f.
+namespace mb {
+
+template <class Real>
+struct MsmBound {
+  Real lower = 0;      // G: the sharp lower bound on Z(z < z_f)
+  Real at_zf = 0;      // the canonical distribution's weight at z_f: upper bound = lower + at_zf
+  Real nodes[4] = {};  // z_f and the other nodes (ascending after z_f), for tests
+  Real weights[4] = {};
+  int node_count = 0;
+};
+
+// b = (b1, b2, b3, b4), already biased. Real = float or double.
+template <class Real>
+MsmBound<Real> hamburger4(const Real* b, Real zf);
+// b = (b1, .., b6), already biased (double).
+MsmBound<double> hamburger6(const double* b, double zf);
+
+}  // namespace mb

@@ -1,0 +1,59 @@
+#include "moments/storage.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mb {
+
+std::string MomentStorage::name() const {
+  switch (kind) {
+    case StorageKind::Double: return "double";
+    case StorageKind::Float32: return "float32";
+    case StorageKind::Unorm16: return "unorm16";
+  }
+  return "?";
+}
+
+MomentStorage double_storage() { return {}; }
+MomentStorage float32_storage() { return {StorageKind::Float32, {}, {}}; }
+
+MomentStorage unorm16_power4_storage() {
+  MomentStorage s{StorageKind::Unorm16, Eigen::MatrixXd(4, 4), Eigen::VectorXd::Zero(4)};
+  // REFERENCE.md §4 (seed 000, Section 4.3): maps [0,1] into [0,1]^4, gaining ~12.3 bits.
+  s.transform << -2.07224649, 32.23703778, -68.571074599, 39.3703274134,  //
+      13.7948857237, -59.4683975703, 82.0359750338, -35.364903257,        //
+      0.105877704, -1.9077466311, 9.3496555107, -6.6543490743,            //
+      9.7924062118, -33.7652110555, 47.9456096605, -23.9728048165;
+  s.offset(0) = 0.035955884801;
+  return s;
+}
+
+MomentStorage unorm16_power2_storage() {
+  MomentStorage s{StorageKind::Unorm16, Eigen::MatrixXd(2, 2), Eigen::VectorXd::Zero(2)};
+  s.transform << 1, 0, 4, -4;
+  return s;
+}
+
+void store_moments(const MomentStorage& storage, std::span<double> b) {
+  switch (storage.kind) {
+    case StorageKind::Double: return;
+    case StorageKind::Float32:
+      for (double& v : b) v = double(float(v));
+      return;
+    case StorageKind::Unorm16: {
+      Eigen::Map<Eigen::VectorXd> v(b.data(), Eigen::Index(b.size()));
+      Eigen::VectorXd q = storage.transform * v + storage.offset;
+      for (Eigen::Index i = 0; i < q.size(); ++i) v(i) = std::round(std::clamp(q(i), 0.0, 1.0) * 65535.0) / 65535.0;
+      return;
+    }
+  }
+}
+
+void load_moments(const MomentStorage& storage, std::span<double> q) {
+  if (storage.kind != StorageKind::Unorm16) return;
+  Eigen::Map<Eigen::VectorXd> v(q.data(), Eigen::Index(q.size()));
+  Eigen::VectorXd b = storage.transform.partialPivLu().solve(v - storage.offset);
+  v = b;
+}
+
+}  // namespace mb

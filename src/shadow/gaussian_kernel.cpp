@@ -1,0 +1,28 @@
+#include "shadow/gaussian_kernel.h"
+
+#include <cmath>
+#include <string>
+
+#include "util/error.h"
+
+namespace mb {
+
+GaussianKernel make_gaussian_kernel(int size, double sigma) {
+  if (size <= 0 || size % 2 == 0)
+    throw InputError("kernel.size: expected an odd number of taps >= 1, got " + std::to_string(size));
+  if (!(sigma > 0) || !std::isfinite(sigma))
+    throw InputError("kernel.sigma: expected a positive number of texels, got " + std::to_string(sigma));
+  GaussianKernel k;
+  k.size = size;
+  k.sigma = sigma;
+  k.weights.resize(size);
+  double total = 0;
+  for (int i = 0; i < size; ++i) {
+    double d = i - k.radius();
+    total += k.weights[i] = std::exp(-d * d / (2 * sigma * sigma));
+  }
+  for (double& w : k.weights) w /= total;
+  return k;
+}
+
+}  // namespace mb
