@@ -52,6 +52,27 @@ MsmBound<Real> hamburger4(const Real* b, Real zf) {
   return r;
 }
 
+void hamburger4_lower_batch(const double* b, const double* zf_in, double* lower, size_t count, double alpha) {
+#pragma omp simd
+  for (size_t k = 0; k < count; ++k) {
+    const double b1 = (1 - alpha) * b[4 * k] + alpha * 0.5, b2 = (1 - alpha) * b[4 * k + 1] + alpha * 0.5;
+    const double b3 = (1 - alpha) * b[4 * k + 2] + alpha * 0.5, b4 = (1 - alpha) * b[4 * k + 3] + alpha * 0.5;
+    const double zf = zf_in[k];
+    const double d11 = b2 - b1 * b1, e = b3 - b1 * b2;
+    const double l21 = e / d11, d22 = (b4 - b2 * b2) - l21 * e;
+    const double y1 = (zf - b1) / d11;
+    const double c2 = (zf * zf - b2 - l21 * (zf - b1)) / d22, c1 = y1 - l21 * c2, c0 = 1 - b1 * c1 - b2 * c2;
+    const double root = std::sqrt(std::max(0.0, c1 * c1 - 4 * c2 * c0));
+    const double q = -(c1 + std::copysign(root, c1)) / 2;
+    const double r1 = q / c2, r2 = c0 / q;
+    const double z2 = std::min(r1, r2), z3 = std::max(r1, r2);
+    const double w_zf = (z2 * z3 - b1 * (z2 + z3) + b2) / ((zf - z2) * (zf - z3));
+    const double w2 = (zf * z3 - b1 * (zf + z3) + b2) / ((z2 - zf) * (z2 - z3));
+    const double g = zf <= z2 ? 0.0 : zf <= z3 ? w2 : 1 - w_zf;
+    lower[k] = std::min(1.0, std::max(0.0, g));
+  }
+}
+
 MsmBound<double> hamburger6(const double* b, double zf) {
   Eigen::Matrix4d hankel;
   const double m[7] = {1, b[0], b[1], b[2], b[3], b[4], b[5]};

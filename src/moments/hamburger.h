@@ -2,6 +2,8 @@
 // Hamburger moment shadow mapping (REFERENCE.md §4; seed 000 Algorithm 3 with the authors'
 // corrections, seed 004 for six moments): the sharp lower bound of Problem 1 for I = R and the
 // power basis, from the canonical distribution with a node at z_f.
+#include <cstddef>
+
 namespace mb {
 
 template <class Real>
@@ -16,6 +18,10 @@ struct MsmBound {
 // b = (b1, b2, b3, b4), already biased. Real = float or double.
 template <class Real>
 MsmBound<Real> hamburger4(const Real* b, Real zf);
+// The lower bound alone for a stream of fragments: b holds 4 moments per fragment (unbiased),
+// biased here towards b* = (1/2, ..) by alpha. Branch-free and vectorised (AVX-512 where
+// available); the same arithmetic as hamburger4, so results agree to rounding.
+void hamburger4_lower_batch(const double* b, const double* zf, double* lower, size_t count, double alpha);
 // b = (b1, .., b6), already biased (double).
 MsmBound<double> hamburger6(const double* b, double zf);
 
