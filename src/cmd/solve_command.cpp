@@ -46,7 +46,7 @@ json solve_one(lp::Backend& backend, const std::vector<std::string>& basis_names
   if (s.status == lp::ProblemStatus::Optimal) {
     out["G"] = s.G;
     json support = json::array();
-    for (size_t k = 0; k < s.support.size(); ++k) support.push_back({problem.points[s.support[k]], s.weights[k]});
+    for (size_t k = 0; k < s.support.size(); ++k) support.push_back({problem.point(s.support[k]), s.weights[k]});
     out["support"] = support;
   }
   out["iterations"] = s.iterations;

@@ -13,173 +13,191 @@ namespace mb::lp {
 
 namespace {
 
-// Tolerances. Weights are probabilities (<= 1) and the rows are orthonormal, so absolute
-// tolerances are meaningful: 1e-11 keeps the certified optimum well inside the 1e-9 promise.
-constexpr double kFeasibilityTolerance = 1e-11;  // x_B >= -tol counts as feasible
+// Tolerances. Weights are probabilities (sum w = 1 is the first row) and the rows are
+// orthonormal, so absolute tolerances are meaningful. By weak duality with sum w = 1, a basis
+// whose reduced costs are >= -eps is within eps of the optimum: the certificate's 1e-11 keeps G
+// two orders inside the promised 1e-9.
+constexpr double kFeasibilityTolerance = 1e-11;  // Harris: x_B >= -tol during iterations
 constexpr double kOptimalityTolerance = 1e-11;   // reduced cost >= -tol counts as optimal
 constexpr double kPivotTolerance = 1e-9;         // smallest |u_i| accepted as a pivot
 constexpr double kPhase1Tolerance = 1e-10;       // residual artificial mass that means infeasible
-// A fresh factorisation of a degenerate basis (boundary moment vectors: basic columns at zero
-// level) reproduces x_B only to about cond(B) * 1e-16; on wide intervals ([-4, 5], powers to z^4)
-// that reaches 1e-10. The certificate therefore accepts 1e-9, the accuracy promised for G.
-constexpr double kCertifyTolerance = 1e-9;
+constexpr double kCertifyPrimal = 1e-12;         // dual cleanup: x_B below this must leave
+constexpr double kCertifyBound = 1e-9;          // certified bound on |G - G*| (see certify)
+constexpr double kLargestDual = 1e6;
 constexpr int kRefactorInterval = 16;            // rank-1 updates between fresh inverses
 constexpr int kDegenerateBeforeBland = 24;       // degenerate pivots in a row before Bland's rule
 
-using SmallMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxRows, kMaxRows>;
+// In-place LU with partial pivoting and inverse for k <= 8, in long double: the certificate's
+// x_B and y then carry ~3 more digits than the double iterations (cond(B) of boundary instances
+// reaches 1e8).
+bool invert_long_double(int k, long double a[kMaxRows][kMaxRows], long double inv[kMaxRows][kMaxRows]) {
+  int perm[kMaxRows];
+  for (int i = 0; i < k; ++i) perm[i] = i;
+  long double largest = 0;
+  for (int i = 0; i < k; ++i)
+    for (int j = 0; j < k; ++j) largest = std::max(largest, std::abs(a[i][j]));
+  for (int c = 0; c < k; ++c) {
+    int p = c;
+    for (int r = c + 1; r < k; ++r)
+      if (std::abs(a[r][c]) > std::abs(a[p][c])) p = r;
+    if (std::abs(a[p][c]) <= 1e-14L * largest) return false;
+    if (p != c) {
+      for (int j = 0; j < k; ++j) std::swap(a[p][j], a[c][j]);
+      std::swap(perm[p], perm[c]);
+    }
+    for (int r = c + 1; r < k; ++r) {
+      long double f = a[r][c] /= a[c][c];
+      for (int j = c + 1; j < k; ++j) a[r][j] -= f * a[c][j];
+    }
+  }
+  for (int col = 0; col < k; ++col) {
+    long double v[kMaxRows];
+    for (int i = 0; i < k; ++i) v[i] = perm[i] == col ? 1.0L : 0.0L;
+    for (int i = 0; i < k; ++i)
+      for (int j = 0; j < i; ++j) v[i] -= a[i][j] * v[j];
+    for (int i = k - 1; i >= 0; --i) {
+      for (int j = i + 1; j < k; ++j) v[i] -= a[i][j] * v[j];
+      v[i] /= a[i][i];
+    }
+    for (int i = 0; i < k; ++i) inv[i][col] = v[i];
+  }
+  return true;
+}
 
 class FastSimplex {
  public:
-  explicit FastSimplex(const Problem& p) : p_(p), k_(p.rows), n_(p.cols) {
+  Solution run(const Problem& p) {
+    p_ = &p;
+    k_ = p.rows;
+    n_ = p.cols();
+    g_ = p.grid_size();
+    e_ = p.extra.size();
+    composite_ = n_ + k_;
     reduced_.resize(n_);
-  }
+    // Costs once per problem: the grid is ascending, so its cost is a prefix of ones.
+    cost_.resize(n_);
+    for (int j = 0; j < n_; ++j) cost_[j] = p.cost(j);
+    composite_cost_ = 0;
+    for (size_t t = 0; t < p.start_support.size(); ++t) composite_cost_ += p.start_weights[t] * cost_[p.start_support[t]];
 
-  Solution run() {
     Solution s;
-    // With a known feasible distribution, start phase 2 from it (no phase 1 at all).
-    if (!p_.start_support.empty() && start_from_distribution()) {
+    if (!p.start_support.empty() && start_from_distribution()) {
       phase_ = 2;
-      for (int attempt = 0; attempt < 3; ++attempt) {
-        if (!iterate(s)) break;
-        if (certify(s)) return s;
-        if (!dual_cleanup(s)) break;
-        if (certify(s)) return s;
-      }
+      if (solve_phase2(s)) return s;
       s = Solution();
     }
     start_with_artificials();
-    // Phase 1: minimise the artificial mass.
     phase_ = 1;
     if (!iterate(s)) return unstable(s);
     double artificial = 0;
     for (int i = 0; i < k_; ++i)
-      if (basis_[i] >= n_) artificial += x_[i];
+      if (is_artificial(basis_[i])) artificial += x_[i];
     if (artificial > kPhase1Tolerance) {
       s.status = ProblemStatus::Infeasible;
       return s;
     }
     if (!drive_out_artificials()) return unstable(s);
     phase_ = 2;
-    // Phase 2, then certification from a fresh factorisation; a failed certificate resumes.
-    for (int attempt = 0; attempt < 3; ++attempt) {
-      if (!iterate(s)) return unstable(s);
-      if (certify(s)) return s;
-      if (!dual_cleanup(s)) return unstable(s);
-      if (certify(s)) return s;
-    }
+    if (solve_phase2(s)) return s;
     return unstable(s);
   }
 
  private:
+  bool is_artificial(int j) const { return j >= n_ && j < n_ + k_; }
+
   Solution& unstable(Solution& s) {
     s.status = ProblemStatus::Unstable;
     return s;
   }
 
-  double column(int j, int r) const {
-    if (j < n_) return p_.at(r, j);
+  double column_entry(int j, int r) const {
+    if (j < n_) return p_->at(r, j);
+    if (j == composite_) return p_->rhs[r];
     return r == j - n_ ? artificial_sign_[r] : 0.0;
   }
   double cost(int j) const {
-    if (phase_ == 1) return j >= n_ ? 1.0 : 0.0;
-    return j >= n_ ? 0.0 : double(p_.cost[j]);
+    if (phase_ == 1) return is_artificial(j) ? 1.0 : 0.0;
+    if (j < n_) return cost_[j];
+    return j == composite_ ? composite_cost_ : 0.0;
+  }
+
+  // Phase 2, then certification; a failed certificate resumes from the accurate basis.
+  bool solve_phase2(Solution& s) {
+    for (int attempt = 0; attempt < 3; ++attempt) {
+      if (!iterate(s)) return false;
+      if (certify(s)) return true;
+      if (!dual_cleanup(s)) return false;
+      if (certify(s)) return true;
+    }
+    return false;
   }
 
   void start_with_artificials() {
     for (int r = 0; r < k_; ++r) {
-      artificial_sign_[r] = p_.rhs[r] >= 0 ? 1.0 : -1.0;
+      artificial_sign_[r] = p_->rhs[r] >= 0 ? 1.0 : -1.0;
       basis_[r] = n_ + r;
-      x_[r] = std::abs(p_.rhs[r]);
+      x_[r] = std::abs(p_->rhs[r]);
     }
-    binv_ = SmallMatrix::Zero(k_, k_);
-    for (int r = 0; r < k_; ++r) binv_(r, r) = artificial_sign_[r];
+    for (int i = 0; i < k_; ++i)
+      for (int r = 0; r < k_; ++r) binv_[i][r] = i == r ? artificial_sign_[r] : 0.0;
     updates_ = 0;
   }
 
-  // Carathéodory: reduce the known distribution to affinely independent support (moving along
-  // null vectors of its columns until a weight reaches zero), then complete the basis with grid
-  // columns at zero level that keep it nonsingular.
+  // The known distribution as one composite column (its moment vector, which is the rhs, at its
+  // cost F_Z(z_f)): a convex combination of columns, so adding it leaves the optimum unchanged,
+  // and with weight 1 it is a feasible basic solution. The other k - 1 basic columns are grid
+  // columns spread over I, at level zero. No phase 1, no Carathéodory reduction.
   bool start_from_distribution() {
-    std::vector<int> support = p_.start_support;
-    std::vector<double> weights = p_.start_weights;
-    for (int guard = 0; guard < 64; ++guard) {
-      const int s = int(support.size());
-      Eigen::MatrixXd a(k_, s);
-      for (int c = 0; c < s; ++c)
-        for (int r = 0; r < k_; ++r) a(r, c) = p_.at(r, support[c]);
-      Eigen::FullPivLU<Eigen::MatrixXd> lu(a);
-      lu.setThreshold(1e-12);
-      if (lu.rank() == s) break;
-      Eigen::VectorXd v = lu.kernel().col(0);
-      if (v.maxCoeff() <= 0) v = -v;
-      double t = std::numeric_limits<double>::infinity();
-      for (int c = 0; c < s; ++c)
-        if (v(c) > 0) t = std::min(t, weights[c] / v(c));
-      std::vector<int> next_support;
-      std::vector<double> next_weights;
-      for (int c = 0; c < s; ++c) {
-        double w = weights[c] - t * v(c);
-        if (w > 1e-15) next_support.push_back(support[c]), next_weights.push_back(w);
+    for (int shift = 0; shift < 4; ++shift) {
+      basis_[0] = composite_;
+      for (int i = 1; i < k_; ++i) {
+        int j = int((i - 0.5 + 0.2 * shift) * (g_ - 1) / (k_ - 1));
+        basis_[i] = std::clamp(j, 0, g_ - 1);
       }
-      support.swap(next_support);
-      weights.swap(next_weights);
+      if (refactor()) {
+        for (int i = 0; i < k_; ++i) x_[i] = i == 0 ? 1.0 : 0.0;  // exact: B e_1 = rhs
+        return true;
+      }
     }
-    if (int(support.size()) > k_) return false;
-    int count = 0;
-    for (int j : support) basis_[count++] = j;
-    // Complete with columns spread over I, each kept only if it raises the rank.
-    for (int stride = std::max(1, n_ / (2 * k_)), j = 0; count < k_ && j < n_ * 2; j += stride) {
-      int candidate = (j % n_ + j / n_) % n_;
-      if (std::find(basis_, basis_ + count, candidate) != basis_ + count) continue;
-      Eigen::MatrixXd a(k_, count + 1);
-      for (int c = 0; c <= count; ++c)
-        for (int r = 0; r < k_; ++r) a(r, c) = p_.at(r, c < count ? basis_[c] : candidate);
-      Eigen::FullPivLU<Eigen::MatrixXd> lu(a);
-      lu.setThreshold(1e-9);
-      if (lu.rank() == count + 1) basis_[count++] = candidate;
-    }
-    if (count < k_ || !refactor()) return false;
-    for (int i = 0; i < k_; ++i)
-      if (x_[i] < -kCertifyTolerance) return false;
-    return true;
+    return false;
   }
 
   bool refactor() {
-    SmallMatrix b(k_, k_);
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxRows, kMaxRows> b(k_, k_);
     for (int i = 0; i < k_; ++i)
-      for (int r = 0; r < k_; ++r) b(r, i) = column(basis_[i], r);
-    Eigen::FullPivLU<SmallMatrix> lu(b);
+      for (int r = 0; r < k_; ++r) b(r, i) = column_entry(basis_[i], r);
+    Eigen::FullPivLU<decltype(b)> lu(b);
     // Eigen's default singularity threshold (size * epsilon) rejects the merely ill-conditioned
     // bases of tiny-valued columns (z^6 near 0); 1e-13 of the largest pivot still catches rank loss.
     lu.setThreshold(1e-13);
     if (!lu.isInvertible()) return false;
-    binv_ = lu.inverse();
+    auto inv = lu.inverse();
     for (int i = 0; i < k_; ++i) {
       double v = 0;
-      for (int r = 0; r < k_; ++r) v += binv_(i, r) * p_.rhs[r];
+      for (int r = 0; r < k_; ++r) v += (binv_[i][r] = inv(i, r)) * p_->rhs[r];
       x_[i] = v;
     }
     updates_ = 0;
     return true;
   }
 
-  // y = B^{-T} c_B, then reduced costs of all structural columns in one vectorised pass.
+  // y = B^{-T} c_B, then reduced costs of all structural columns, block by block (vectorised).
   void price() {
     for (int r = 0; r < k_; ++r) {
       double v = 0;
-      for (int i = 0; i < k_; ++i) v += cost(basis_[i]) * binv_(i, r);
+      for (int i = 0; i < k_; ++i) v += cost(basis_[i]) * binv_[i][r];
       y_[r] = v;
     }
     double* d = reduced_.data();
-    if (phase_ == 1) {
-      std::fill(d, d + n_, 0.0);
-    } else {
-      for (int j = 0; j < n_; ++j) d[j] = p_.cost[j];
-    }
+    if (phase_ == 1) std::fill(d, d + n_, 0.0);
+    else std::copy(cost_.begin(), cost_.end(), d);
     for (int r = 0; r < k_; ++r) {
-      const double* row = &p_.matrix[size_t(r) * n_];
       const double yr = y_[r];
-      for (int j = 0; j < n_; ++j) d[j] -= yr * row[j];
+      const double* row = &p_->grid->values[size_t(r) * g_];
+      for (int j = 0; j < g_; ++j) d[j] -= yr * row[j];
+      const double* extra = &p_->extra.values[size_t(r) * e_];
+      double* de = d + g_;
+      for (int j = 0; j < e_; ++j) de[j] -= yr * extra[j];
     }
   }
 
@@ -194,6 +212,17 @@ class FastSimplex {
       }
     }
     return best;
+  }
+
+  // u = B^{-1} a_j, the entering column in basis coordinates.
+  void column_in_basis(int j, double* u) const {
+    double a[kMaxRows];
+    for (int r = 0; r < k_; ++r) a[r] = column_entry(j, r);
+    for (int i = 0; i < k_; ++i) {
+      double v = 0;
+      for (int r = 0; r < k_; ++r) v += binv_[i][r] * a[r];
+      u[i] = v;
+    }
   }
 
   // One simplex run to optimality for the current phase. False on numerical failure.
@@ -214,7 +243,6 @@ class FastSimplex {
         if (u[i] > kPivotTolerance) theta_max = std::min(theta_max, (x_[i] + kFeasibilityTolerance) / u[i]);
       if (!std::isfinite(theta_max)) return false;  // unbounded: impossible with sum w = 1
       int leave = -1;
-      // (theta_max < 0 only when a basic value is already below -tolerance: step 0 on it.)
       double best_pivot = 0;
       for (int i = 0; i < k_; ++i) {
         if (u[i] <= kPivotTolerance || x_[i] / u[i] > std::max(theta_max, 0.0)) continue;
@@ -223,7 +251,6 @@ class FastSimplex {
       }
       double theta = std::max(x_[leave], 0.0) / u[leave];
       degenerate = theta == 0 ? degenerate + 1 : 0;
-      // Basic values may go slightly negative (Harris); the certificate judges the final basis.
       for (int i = 0; i < k_; ++i) x_[i] -= theta * u[i];
       x_[leave] = theta;
       pivot(leave, entering, u);
@@ -232,22 +259,13 @@ class FastSimplex {
     return false;
   }
 
-  // u = B^{-1} a_j, the entering column in basis coordinates (shared by primal and dual steps).
-  void column_in_basis(int j, double* u) const {
-    for (int i = 0; i < k_; ++i) {
-      double v = 0;
-      for (int r = 0; r < k_; ++r) v += binv_(i, r) * p_.at(r, j);
-      u[i] = v;
-    }
-  }
-
   // Product-form update of the explicit inverse: column `entering` replaces basis row `leave`.
   void pivot(int leave, int entering, const double* u) {
-    double p = u[leave];
-    for (int r = 0; r < k_; ++r) binv_(leave, r) /= p;
+    const double p = u[leave];
+    for (int r = 0; r < k_; ++r) binv_[leave][r] /= p;
     for (int i = 0; i < k_; ++i) {
       if (i == leave || u[i] == 0) continue;
-      for (int r = 0; r < k_; ++r) binv_(i, r) -= u[i] * binv_(leave, r);
+      for (int r = 0; r < k_; ++r) binv_[i][r] -= u[i] * binv_[leave][r];
     }
     basis_[leave] = entering;
     ++updates_;
@@ -257,35 +275,34 @@ class FastSimplex {
   // ill-conditioned instances (z^3, z^6 near z = 0) can end the primal phase with: the most
   // negative basic variable leaves, the entering column keeps every reduced cost >= 0.
   bool dual_cleanup(Solution& s) {
+    alpha_.resize(n_);
     for (int step = 0; step < 4 * k_ + 16; ++step) {
       if (!refactor()) return false;
       int leave = -1;
-      double worst = -kCertifyTolerance;
+      double worst = -kCertifyPrimal;
       for (int i = 0; i < k_; ++i)
         if (x_[i] < worst) leave = i, worst = x_[i];
       if (leave < 0) return true;
       price();
       // Dual Harris ratio test: a relaxed bound on the step in the duals, then the largest
       // |alpha| within it, so that the new basis stays well conditioned.
-      std::vector<double>& alpha = alpha_;
-      alpha.resize(n_);
       double alpha_max = 0;
       for (int j = 0; j < n_; ++j) {
         double a = 0;
-        for (int r = 0; r < k_; ++r) a += binv_(leave, r) * p_.at(r, j);
-        alpha[j] = a;
+        for (int r = 0; r < k_; ++r) a += binv_[leave][r] * p_->at(r, j);
+        alpha_[j] = a;
         alpha_max = std::max(alpha_max, -a);
       }
       const double pivot_floor = std::max(kPivotTolerance, 1e-7 * alpha_max);
       double bound = std::numeric_limits<double>::infinity();
       for (int j = 0; j < n_; ++j)
-        if (alpha[j] < -pivot_floor) bound = std::min(bound, (reduced_[j] + kOptimalityTolerance) / -alpha[j]);
+        if (alpha_[j] < -pivot_floor) bound = std::min(bound, (reduced_[j] + kOptimalityTolerance) / -alpha_[j]);
       int entering = -1;
       double best_alpha = 0;
       for (int j = 0; j < n_; ++j)
-        if (alpha[j] < -pivot_floor && reduced_[j] / -alpha[j] <= bound && -alpha[j] > best_alpha)
-          entering = j, best_alpha = -alpha[j];
-      if (entering < 0) return false;  // would mean primal infeasible: not for a feasible LP
+        if (alpha_[j] < -pivot_floor && reduced_[j] / -alpha_[j] <= bound && -alpha_[j] > best_alpha)
+          entering = j, best_alpha = -alpha_[j];
+      if (entering < 0) return false;
       double u[kMaxRows];
       column_in_basis(entering, u);
       double theta = x_[leave] / u[leave];
@@ -298,17 +315,16 @@ class FastSimplex {
   }
 
   // After phase 1 every artificial left in the basis sits at zero; pivot each out on the
-  // structural column with the largest entry in its row of B^{-1} A (rows are independent after
-  // orthonormalisation, so one exists).
+  // structural column with the largest entry in its row of B^{-1} A.
   bool drive_out_artificials() {
     for (int i = 0; i < k_; ++i) {
-      if (basis_[i] < n_) continue;
+      if (!is_artificial(basis_[i])) continue;
       int best = -1;
       double best_value = 1e-7;
       for (int j = 0; j < n_; ++j) {
         if (std::find(basis_, basis_ + k_, j) != basis_ + k_) continue;
         double v = 0;
-        for (int r = 0; r < k_; ++r) v += binv_(i, r) * p_.at(r, j);
+        for (int r = 0; r < k_; ++r) v += binv_[i][r] * p_->at(r, j);
         if (std::abs(v) > best_value) best = j, best_value = std::abs(v);
       }
       if (best < 0) return false;
@@ -318,35 +334,91 @@ class FastSimplex {
     return refactor();
   }
 
-  // Fresh inverse, x_B and y: accept only a primal and dual feasible basis.
+  // The certificate: B inverted afresh in long double; negative basic values clamped to zero,
+  // and accepted when the same first-order bound on |G - G*| as the KKT checker's (|y| times the
+  // residual the clamping leaves, plus dual infeasibility) is <= 1e-10. On failure the accurate
+  // inverse and x_B are kept, so the caller resumes from them.
   bool certify(Solution& s) {
-    if (!refactor()) return false;
+    long double b[kMaxRows][kMaxRows], inv[kMaxRows][kMaxRows];
     for (int i = 0; i < k_; ++i)
-      if (x_[i] < -kCertifyTolerance) return false;
-    price();
-    for (int j = 0; j < n_; ++j)
-      if (reduced_[j] < -kCertifyTolerance) return false;
+      for (int r = 0; r < k_; ++r) b[r][i] = column_entry(basis_[i], r);
+    if (!invert_long_double(k_, b, inv)) return false;
+    long double x[kMaxRows], clamped[kMaxRows];
+    for (int i = 0; i < k_; ++i) {
+      long double v = 0;
+      for (int r = 0; r < k_; ++r) v += inv[i][r] * (long double)p_->rhs[r];
+      x[i] = v;
+      clamped[i] = v < 0 ? -v : 0.0L;
+      x_[i] = double(v);
+      for (int r = 0; r < k_; ++r) binv_[i][r] = double(inv[i][r]);
+    }
+    updates_ = 0;
+    long double y[kMaxRows];
+    for (int r = 0; r < k_; ++r) {
+      long double v = 0;
+      for (int i = 0; i < k_; ++i) v += (long double)cost(basis_[i]) * inv[i][r];
+      y[r] = v;
+    }
+    // Duals beyond 1e6 make any answer rounded to double uncertifiable at 1e-9 (the residual of
+    // double weights, ~1e-16, times |y|): such a basis is reported, not trusted.
+    for (int r = 0; r < k_; ++r)
+      if (std::abs(y[r]) > kLargestDual) return false;
+    long double bound = 0;
+    for (int r = 0; r < k_; ++r) {
+      long double residual = 0;  // B (x_clamped - x) in row r
+      for (int i = 0; i < k_; ++i) residual += (long double)column_entry(basis_[i], r) * clamped[i];
+      bound += std::abs(y[r] * residual);
+    }
+    if (bound > kCertifyBound) return false;
+    price();  // double pricing with the rounded accurate duals, then the suspects in long double
+    for (int j = 0; j < n_; ++j) {
+      if (reduced_[j] >= -kCertifyBound) continue;
+      long double d = cost_[j];
+      for (int r = 0; r < k_; ++r) d -= y[r] * (long double)p_->at(r, j);
+      if (d < 0) bound += -d;
+      if (bound > kCertifyBound) return false;
+    }
     s.status = ProblemStatus::Optimal;
-    s.G = 0;
+    long double objective = 0;
     s.support.clear();
     s.weights.clear();
     for (int i = 0; i < k_; ++i) {
-      double w = std::max(x_[i], 0.0);
-      s.G += p_.cost[basis_[i]] * w;
-      if (w > 0) s.support.push_back(basis_[i]), s.weights.push_back(w);
+      const long double w = std::max(x[i], 0.0L);
+      objective += (long double)cost(basis_[i]) * w;
+      if (w <= 0) continue;
+      if (basis_[i] == composite_) {
+        // The composite column stands for the known distribution: report its atoms.
+        for (size_t t = 0; t < p_->start_support.size(); ++t)
+          add_support(s, p_->start_support[t], double(w * p_->start_weights[t]));
+      } else {
+        add_support(s, basis_[i], double(w));
+      }
     }
-    s.duals.assign(y_, y_ + k_);
+    s.G = double(objective);
+    s.duals.assign(k_, 0.0);
+    for (int r = 0; r < k_; ++r) s.duals[r] = double(y[r]);
     return true;
   }
 
-  const Problem& p_;
-  const int k_, n_;
+  static void add_support(Solution& s, int j, double w) {
+    for (size_t t = 0; t < s.support.size(); ++t)
+      if (s.support[t] == j) {
+        s.weights[t] += w;
+        return;
+      }
+    s.support.push_back(j);
+    s.weights.push_back(w);
+  }
+
+  const Problem* p_ = nullptr;
+  int k_ = 0, n_ = 0, g_ = 0, e_ = 0, composite_ = 0;
   int phase_ = 1;
   int basis_[kMaxRows];
   double x_[kMaxRows], y_[kMaxRows], artificial_sign_[kMaxRows];
-  SmallMatrix binv_;
+  double binv_[kMaxRows][kMaxRows];
+  double composite_cost_ = 0;
   int updates_ = 0;
-  std::vector<double> reduced_, alpha_;
+  std::vector<double> reduced_, alpha_, cost_;
 };
 
 class FastBackend : public Backend {
@@ -359,24 +431,24 @@ class FastBackend : public Backend {
       s.call_message = "the fast backend handles at most " + std::to_string(kMaxRows - 1) + " basis functions";
       return s;
     }
-    Solution s = FastSimplex(p).run();
+    Solution s = simplex_.run(p);
     if (s.status != ProblemStatus::Unstable) return s;
-    // The rare instance our simplex cannot certify (ill-conditioned columns such as z^3, z^6
-    // near z = 0, where neighbouring columns differ by 1e-10) goes to GLPK, and its answer is
-    // accepted only if the independent KKT checker certifies it; otherwise it stays unstable.
+    // The rare instance our simplex cannot certify goes to GLPK, and its answer is accepted only
+    // if the independent KKT checker certifies it; otherwise it stays unstable.
     if (!glpk_) glpk_ = make_glpk_backend();
     Solution reference = glpk_->solve(p);
     ++fallbacks_;
-    if (reference.status == ProblemStatus::Optimal && check_kkt(p, reference, kCertifyTolerance).ok) {
+    if (reference.status == ProblemStatus::Optimal && check_kkt(p, reference, 1e-9).ok) {
       reference.iterations += s.iterations;
       return reference;
     }
-    if (reference.status == ProblemStatus::Infeasible) return reference;
+    // GLPK's "infeasible" is wrong by construction when a feasible distribution is known.
+    if (reference.status == ProblemStatus::Infeasible && p.start_support.empty()) return reference;
     return s;
   }
-  int fallbacks() const { return fallbacks_; }
 
  private:
+  FastSimplex simplex_;
   std::unique_ptr<Backend> glpk_;
   int fallbacks_ = 0;
 };

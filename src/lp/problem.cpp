@@ -8,11 +8,6 @@
 
 namespace mb::lp {
 
-int Problem::index_of(double z) const {
-  auto it = std::lower_bound(points.begin(), points.end(), z);
-  return it != points.end() && *it == z ? int(it - points.begin()) : -1;
-}
-
 std::vector<double> grid_points(const Discretization& disc) {
   if (disc.grid < 2) throw InputError("grid: at least 2 points are needed, got " + std::to_string(disc.grid));
   if (!(disc.lo < disc.hi)) throw InputError("interval: expected lo < hi");
@@ -28,119 +23,189 @@ double quantize_to_grid(const Discretization& disc, double z) {
   return k == disc.grid - 1 ? disc.hi : disc.lo + (disc.hi - disc.lo) * k / (disc.grid - 1);
 }
 
-namespace {
-
-std::vector<double> point_set(const Discretization& disc, std::span<const double> extra, double zf) {
-  std::vector<double> points = grid_points(disc);
-  for (double z : extra) {
-    if (!std::isfinite(z)) throw InputError("points: a depth is not finite");
-    points.push_back(disc.quantize ? quantize_to_grid(disc, z) : z);
-  }
-  if (!std::isfinite(zf)) throw InputError("zf: not finite");
-  // z_f joins I only where it is admissible; outside [lo, hi] it changes nothing but the cost.
-  if (zf >= disc.lo && zf <= disc.hi) points.push_back(zf);
-  std::sort(points.begin(), points.end());
-  points.erase(std::unique(points.begin(), points.end()), points.end());
-  return points;
-}
-
-// Evaluates (1, b(z_i)) and orthonormalises the rows: A^T = Q R, rows := R^{-T} A = Q^T.
-// Returns R^{-T} applied through `transform` for right-hand sides.
-struct RowTransform {
-  Eigen::MatrixXd r_upper;  // (m+1) x (m+1)
-  Eigen::VectorXd apply(const Eigen::VectorXd& v) const {
-    return r_upper.transpose().triangularView<Eigen::Lower>().solve(v);
-  }
-};
-
-RowTransform fill_rows(const Basis& basis, Problem& p) {
-  const int n = int(p.points.size()), k = int(basis.size()) + 1;
+ProblemFactory::ProblemFactory(const Basis& basis, const Discretization& disc) : basis_(basis), disc_(disc) {
+  auto grid = std::make_shared<ColumnBlock>();
+  grid->points = grid_points(disc);
+  const int n = disc.grid, k = int(basis.size()) + 1;
+  if (n < k) throw InputError("grid: fewer points than the basis has functions plus one");
+  rows_ = k;
+  // Evaluate (1, b(z_i)) on the grid and orthonormalise: A^T = Q R, rows := R^{-T} A = Q^T.
   Eigen::MatrixXd at(n, k);
   at.col(0).setOnes();
   std::vector<double> values(n);
   for (int j = 0; j + 1 < k; ++j) {
-    basis[j].evaluate(p.points, values);
+    basis[j].evaluate(grid->points, values);
     for (int i = 0; i < n; ++i) {
       if (!std::isfinite(values[i]))
-        throw InputError("basis function '" + basis[j].name() + "' is not finite at z = " + std::to_string(p.points[i]));
+        throw InputError("basis function '" + basis[j].name() + "' is not finite at z = " + std::to_string(grid->points[i]));
       at(i, j + 1) = values[i];
     }
   }
-  if (n < k) throw InputError("the depth set has fewer points than the basis has functions plus one");
   Eigen::HouseholderQR<Eigen::MatrixXd> qr(at);
-  RowTransform t;
-  t.r_upper = qr.matrixQR().topRows(k).triangularView<Eigen::Upper>();
-  double largest = t.r_upper.diagonal().cwiseAbs().maxCoeff();
+  Eigen::MatrixXd r_upper = qr.matrixQR().topRows(k).triangularView<Eigen::Upper>();
+  double largest = r_upper.diagonal().cwiseAbs().maxCoeff();
   for (int r = 0; r < k; ++r)
-    if (std::abs(t.r_upper(r, r)) < 1e-12 * largest)
-      throw InputError("basis {" + [&] {
-        std::string s;
-        for (const auto& name : basis.names()) s += (s.empty() ? "" : ", ") + name;
-        return s;
-      }() + "} is linearly dependent together with the constant on the depth set");
-  // Q^T = R^{-T} A^T^T: solve R^T X = A for X (k x n).
-  Eigen::MatrixXd rows = t.r_upper.transpose().triangularView<Eigen::Lower>().solve(at.transpose());
-  p.rows = k;
-  p.cols = n;
-  p.matrix.resize(size_t(k) * n);
+    if (std::abs(r_upper(r, r)) < 1e-12 * largest) {
+      std::string names;
+      for (const auto& name : basis.names()) names += (names.empty() ? "" : ", ") + name;
+      throw InputError("basis {" + names + "} is linearly dependent together with the constant on the grid");
+    }
+  Eigen::MatrixXd t = r_upper.transpose().triangularView<Eigen::Lower>().solve(Eigen::MatrixXd::Identity(k, k));
+  transform_.resize(size_t(k) * k);
   for (int r = 0; r < k; ++r)
-    for (int i = 0; i < n; ++i) p.matrix[size_t(r) * n + i] = rows(r, i);
-  p.cost.resize(n);
-  for (int i = 0; i < n; ++i) p.cost[i] = p.points[i] < p.zf;
-  return t;
+    for (int c = 0; c < k; ++c) transform_[size_t(r) * k + c] = c <= r ? t(r, c) : 0.0;
+  Eigen::MatrixXd rows = r_upper.transpose().triangularView<Eigen::Lower>().solve(at.transpose());
+  grid->values.resize(size_t(k) * n);
+  for (int r = 0; r < k; ++r)
+    for (int i = 0; i < n; ++i) grid->values[size_t(r) * n + i] = rows(r, i);
+  grid_ = std::move(grid);
+}
+
+void ProblemFactory::transform(const double* v, double* out) const {
+  for (int r = 0; r < rows_; ++r) {
+    double s = 0;
+    for (int c = 0; c <= r; ++c) s += transform_[size_t(r) * rows_ + c] * v[c];
+    out[r] = s;
+  }
+}
+
+void ProblemFactory::column(double z, double* out) const {
+  double raw[16];
+  raw[0] = 1;
+  for (size_t j = 0; j < basis_.size(); ++j) {
+    raw[j + 1] = basis_[j](z);
+    if (!std::isfinite(raw[j + 1]))
+      throw InputError("basis function '" + basis_[j].name() + "' is not finite at z = " + std::to_string(z));
+  }
+  transform(raw, out);
+}
+
+namespace {
+
+// Appends point z (and its column) to the block; values are kept column by column in `staging`
+// and transposed at the end.
+void finish_block(int rows, const std::vector<double>& staging, ColumnBlock& block) {
+  const int n = block.size();
+  block.values.resize(size_t(rows) * n);
+  for (int j = 0; j < n; ++j)
+    for (int r = 0; r < rows; ++r) block.values[size_t(r) * n + j] = staging[size_t(j) * rows + r];
 }
 
 }  // namespace
 
-Problem make_problem(const Basis& basis, const Discretization& disc, std::span<const double> moments, double zf,
-                     std::span<const double> extra_points) {
-  if (moments.size() != basis.size())
-    throw InputError("moments: expected " + std::to_string(basis.size()) + " values (one per basis function), got " +
+Problem ProblemFactory::from_moments(std::span<const double> moments, double zf,
+                                     std::span<const double> extra_points) const {
+  if (moments.size() != basis_.size())
+    throw InputError("moments: expected " + std::to_string(basis_.size()) + " values (one per basis function), got " +
                      std::to_string(moments.size()));
+  if (!std::isfinite(zf)) throw InputError("zf: not finite");
   Problem p;
+  p.rows = rows_;
+  p.grid = grid_;
   p.zf = zf;
-  p.points = point_set(disc, extra_points, zf);
-  RowTransform t = fill_rows(basis, p);
-  Eigen::VectorXd b(p.rows);
-  b(0) = 1;
+  std::vector<double> points;
+  for (double z : extra_points) {
+    if (!std::isfinite(z)) throw InputError("points: a depth is not finite");
+    points.push_back(disc_.quantize ? quantize_to_grid(disc_, z) : z);
+  }
+  // z_f joins I only where it is admissible; outside [lo, hi] it changes nothing but the cost.
+  if (zf >= disc_.lo && zf <= disc_.hi) points.push_back(zf);
+  std::sort(points.begin(), points.end());
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  std::vector<double> staging(points.size() * rows_);
+  for (size_t j = 0; j < points.size(); ++j) column(points[j], &staging[j * rows_]);
+  p.extra.points = points;
+  finish_block(rows_, staging, p.extra);
+  std::vector<double> raw(rows_);
+  raw[0] = 1;
   for (size_t j = 0; j < moments.size(); ++j) {
     if (!std::isfinite(moments[j])) throw InputError("moments: value " + std::to_string(j + 1) + " is not finite");
-    b(j + 1) = moments[j];
+    raw[j + 1] = moments[j];
   }
-  Eigen::VectorXd r = t.apply(b);
-  p.rhs.assign(r.data(), r.data() + r.size());
+  p.rhs.resize(rows_);
+  transform(raw.data(), p.rhs.data());
   p.moments.assign(moments.begin(), moments.end());
   return p;
 }
 
-Problem make_problem_from_distribution(const Basis& basis, const Discretization& disc, std::span<const double> depths,
-                                       std::span<const double> weights, double zf) {
+Problem ProblemFactory::from_distribution(std::span<const double> depths, std::span<const double> weights,
+                                          double zf) const {
   if (depths.size() != weights.size() || depths.empty())
     throw InputError("distribution: expected as many weights as depths, at least one");
-  Problem p;
-  p.zf = zf;
-  p.points = point_set(disc, depths, zf);
-  fill_rows(basis, p);
-  // rhs = rows * w for the distribution itself, accumulated in a fixed order.
-  p.rhs.assign(p.rows, 0.0);
-  p.moments.assign(basis.size(), 0.0);
-  double total = 0;
-  for (size_t d = 0; d < depths.size(); ++d) total += weights[d];
-  for (size_t d = 0; d < depths.size(); ++d) {
-    double z = disc.quantize ? quantize_to_grid(disc, depths[d]) : depths[d];
-    int i = p.index_of(z);
-    double w = weights[d] / total;
-    for (int r = 0; r < p.rows; ++r) p.rhs[r] += w * p.at(r, i);
-    auto known = std::find(p.start_support.begin(), p.start_support.end(), i);
-    if (known == p.start_support.end()) {
-      p.start_support.push_back(i);
-      p.start_weights.push_back(w);
-    } else {
-      p.start_weights[known - p.start_support.begin()] += w;  // quantized depths may coincide
-    }
-    for (size_t j = 0; j < basis.size(); ++j) p.moments[j] += w * basis[j](z);
+  std::vector<double> columns(depths.size() * rows_);
+  std::vector<const double*> pointers(depths.size());
+  std::vector<double> used(depths.size());
+  for (size_t t = 0; t < depths.size(); ++t) {
+    if (!std::isfinite(depths[t])) throw InputError("distribution: a depth is not finite");
+    used[t] = disc_.quantize ? quantize_to_grid(disc_, depths[t]) : depths[t];
+    column(used[t], &columns[t * rows_]);
+    pointers[t] = &columns[t * rows_];
   }
+  Problem p;
+  from_distribution(used, weights, pointers, zf, p);
   return p;
+}
+
+void ProblemFactory::from_distribution(std::span<const double> depths, std::span<const double> weights,
+                                       std::span<const double* const> depth_columns, double zf, Problem& p) const {
+  p.rows = rows_;
+  p.grid = grid_;
+  p.zf = zf;
+  p.extra.points.clear();
+  p.start_support.clear();
+  p.start_weights.clear();
+  p.rhs.assign(rows_, 0.0);
+  double total = 0;
+  for (double w : weights) total += w;
+  // Distinct depths become extra columns (a kernel often sees one surface many times); the rhs is
+  // the distribution's own moment vector, accumulated in tap order.
+  thread_local std::vector<double> staging;
+  staging.clear();
+  const int g = grid_->size();
+  for (size_t t = 0; t < depths.size(); ++t) {
+    if (weights[t] == 0) continue;
+    const double w = weights[t] / total;
+    for (int r = 0; r < rows_; ++r) p.rhs[r] += w * depth_columns[t][r];
+    // Equal depths are usually neighbours in tap order: look back a few slots only (a duplicate
+    // column that slips through is harmless, a quadratic search per fragment is not).
+    int slot = -1;
+    for (int e = int(p.extra.points.size()) - 1, seen = 0; e >= 0 && seen < 4; --e, ++seen)
+      if (p.extra.points[e] == depths[t]) slot = e;
+    if (slot < 0) {
+      slot = int(p.extra.points.size());
+      p.extra.points.push_back(depths[t]);
+      staging.insert(staging.end(), depth_columns[t], depth_columns[t] + rows_);
+      p.start_support.push_back(g + slot);
+      p.start_weights.push_back(0);
+    }
+    p.start_weights[slot] += w;
+  }
+  if (zf >= disc_.lo && zf <= disc_.hi &&
+      std::find(p.extra.points.begin(), p.extra.points.end(), zf) == p.extra.points.end()) {
+    p.extra.points.push_back(zf);
+    staging.resize(staging.size() + rows_);
+    column(zf, &staging[staging.size() - rows_]);
+  }
+  finish_block(rows_, staging, p.extra);
+  // The untransformed moments, for reports: invert T on the rhs.
+  p.moments.assign(rows_ - 1, 0.0);
+  std::vector<double> raw(rows_);
+  for (int r = 0; r < rows_; ++r) {
+    double s = p.rhs[r];
+    for (int c = 0; c < r; ++c) s -= transform_[size_t(r) * rows_ + c] * raw[c];
+    raw[r] = s / transform_[size_t(r) * rows_ + r];
+  }
+  for (int j = 1; j < rows_; ++j) p.moments[j - 1] = raw[j];
+}
+
+Problem make_problem(const Basis& basis, const Discretization& disc, std::span<const double> moments, double zf,
+                     std::span<const double> extra_points) {
+  return ProblemFactory(basis, disc).from_moments(moments, zf, extra_points);
+}
+
+Problem make_problem_from_distribution(const Basis& basis, const Discretization& disc, std::span<const double> depths,
+                                       std::span<const double> weights, double zf) {
+  return ProblemFactory(basis, disc).from_distribution(depths, weights, zf);
 }
 
 }  // namespace mb::lp

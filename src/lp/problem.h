@@ -1,10 +1,15 @@
 #pragma once
 // Problem 1 as a linear program on a finite depth set (REFERENCE.md §2, Algorithm 1):
 //   minimise sum_{z_i < z_f} w_i  subject to  sum_i w_i (1, b(z_i)) = (1, b),  w >= 0.
-// The m+1 equality rows are orthonormalised over the points before any backend sees them: the
+// The m+1 equality rows are orthonormalised over the grid before any backend sees them: the
 // feasible set is unchanged by an invertible transform of the rows, and the transformed system
 // is well conditioned even for badly scaled bases (exp(8z) reaches ~3000, z^5 ~ z^6).
+//
+// Columns come in two blocks: the grid (shared by every problem of one basis and discretisation,
+// built once by a ProblemFactory) and the extra points of one fragment (the kernel's depths and
+// z_f). Column j < grid size is a grid column, the rest are extra columns.
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -22,30 +27,72 @@ struct Discretization {
   bool quantize = false;
 };
 
+// Points and their transformed columns (1, b(z)) -> T (1, b(z)), row-major: values[r * size + j].
+struct ColumnBlock {
+  std::vector<double> points;
+  std::vector<double> values;
+  int size() const { return int(points.size()); }
+};
+
 struct Problem {
-  std::vector<double> points;   // the depth set I, ascending, distinct
-  int rows = 0, cols = 0;       // m + 1, n
-  std::vector<double> matrix;   // rows x cols, row-major, orthonormalised rows
-  std::vector<double> rhs;      // the moment vector in the same transformed coordinates
-  std::vector<uint8_t> cost;    // [points[i] < z_f]
+  int rows = 0;                               // m + 1
+  std::shared_ptr<const ColumnBlock> grid;    // ascending grid points
+  ColumnBlock extra;                          // the fragment's own points
+  std::vector<double> rhs;                    // the moment vector in the transformed coordinates
   double zf = 0;
-  std::vector<double> moments;  // the untransformed b_1..b_m, for reports
-  // A known feasible distribution (indices into points, weights), when the problem was built
-  // from one: backends may start from it instead of searching for feasibility.
+  std::vector<double> moments;                // the untransformed b_1..b_m, for reports
+  // A known feasible distribution (column indices and weights), when the problem was built from
+  // one: backends may start from it instead of searching for feasibility.
   std::vector<int> start_support;
   std::vector<double> start_weights;
 
-  double at(int r, int j) const { return matrix[size_t(r) * cols + j]; }
-  // The index of `z` in `points`, or -1.
-  int index_of(double z) const;
+  int grid_size() const { return grid ? grid->size() : 0; }
+  int cols() const { return grid_size() + extra.size(); }
+  double at(int r, int j) const {
+    const int g = grid_size();
+    return j < g ? grid->values[size_t(r) * g + j] : extra.values[size_t(r) * extra.size() + (j - g)];
+  }
+  double point(int j) const { return j < grid_size() ? grid->points[j] : extra.points[j - grid_size()]; }
+  // The objective: 1 for mass strictly in front of z_f (REFERENCE.md §1).
+  double cost(int j) const { return point(j) < zf ? 1.0 : 0.0; }
 };
 
-// From a given moment vector b (m values), e.g. from `solve --moments`.
+// Everything that depends only on the basis and the discretisation: the grid columns and the row
+// transform. Build once, then make many problems (one per fragment) cheaply.
+class ProblemFactory {
+ public:
+  ProblemFactory(const Basis& basis, const Discretization& disc);
+  int rows() const { return rows_; }
+  const Discretization& discretization() const { return disc_; }
+  const Basis& basis() const { return basis_; }
+  const std::shared_ptr<const ColumnBlock>& grid() const { return grid_; }
+  // T (1, b(z)) for one depth (`out` has rows() values). InputError if b(z) is not finite.
+  void column(double z, double* out) const;
+  // T v for an untransformed (1, b) vector.
+  void transform(const double* untransformed, double* out) const;
+
+  // From a given moment vector b (m values), e.g. from `solve --moments`.
+  Problem from_moments(std::span<const double> moments, double zf, std::span<const double> extra_points = {}) const;
+  // From a depth distribution (the kernel's depths and weights): its depths join I, and the
+  // moment vector is recomputed from them in the transformed coordinates, so that distribution
+  // is exactly feasible (REFERENCE.md §2: 0 <= G <= F_Z(z_f) then holds without rounding trouble).
+  Problem from_distribution(std::span<const double> depths, std::span<const double> weights, double zf) const;
+  // The same, with the depths' transformed columns already known (the sweep computes them once per
+  // texel): column(depths[t]) == depth_columns[t]. Reuses `out`'s storage.
+  void from_distribution(std::span<const double> depths, std::span<const double> weights,
+                         std::span<const double* const> depth_columns, double zf, Problem& out) const;
+
+ private:
+  Basis basis_;
+  Discretization disc_;
+  int rows_ = 0;
+  std::vector<double> transform_;  // rows x rows, row-major, lower triangular (R^{-T})
+  std::shared_ptr<const ColumnBlock> grid_;
+};
+
+// One-off conveniences (build a factory each time).
 Problem make_problem(const Basis& basis, const Discretization& disc, std::span<const double> moments, double zf,
                      std::span<const double> extra_points = {});
-// From a depth distribution (the kernel's depths and weights): its points join I, and the moment
-// vector is recomputed from them in the transformed coordinates, so that distribution is exactly
-// feasible (REFERENCE.md §2: 0 <= G <= F_Z(z_f) then holds without rounding trouble).
 Problem make_problem_from_distribution(const Basis& basis, const Discretization& disc, std::span<const double> depths,
                                        std::span<const double> weights, double zf);
 // The grid of a discretisation, and rounding to it (quantize mode).
