@@ -10,9 +10,9 @@ namespace {
 class LpTechnique : public Technique {
  public:
   LpTechnique(const std::string& name, Basis basis, const lp::Discretization& disc, const std::string& backend)
-      : Technique(name, std::move(basis), double_storage()), disc_(disc), backend_(lp::make_backend(backend)) {
-    this->basis().check_independent(disc.lo, disc.hi);
-  }
+      : Technique(name, std::move(basis), double_storage()),
+        factory_((this->basis().check_independent(disc.lo, disc.hi), this->basis()), disc),
+        backend_(lp::make_backend(backend)) {}
   bool needs_distribution() const override { return true; }
 
   double shadow(const FragmentInput& in) override {
@@ -22,8 +22,9 @@ class LpTechnique : public Technique {
       if (in.kernel_depths[t] < in.zf) cdf += in.kernel_weights[t];
     if (cdf == 0) return 0;
     // The kernel's own distribution fixes the moments, so the program is feasible by construction.
-    lp::Problem problem =
-        lp::make_problem_from_distribution(basis(), disc_, in.kernel_depths, in.kernel_weights, in.zf);
+    // The grid columns are shared (built once per technique instance); only the kernel's depths
+    // and z_f are new per fragment.
+    lp::Problem problem = factory_.from_distribution(in.kernel_depths, in.kernel_weights, in.zf);
     lp::Solution s = backend_->solve(problem);
     if (s.call != lp::CallStatus::Ok || s.status != lp::ProblemStatus::Optimal) {
       ++failures_;
@@ -34,7 +35,7 @@ class LpTechnique : public Technique {
   size_t failures() const override { return failures_; }
 
  private:
-  lp::Discretization disc_;
+  lp::ProblemFactory factory_;
   std::unique_ptr<lp::Backend> backend_;
   size_t failures_ = 0;
 };

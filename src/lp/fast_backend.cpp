@@ -3,6 +3,8 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 
 #include "lp/glpk_backend.h"
@@ -23,7 +25,6 @@ constexpr double kPivotTolerance = 1e-9;         // smallest |u_i| accepted as a
 constexpr double kPhase1Tolerance = 1e-10;       // residual artificial mass that means infeasible
 constexpr double kCertifyPrimal = 1e-12;         // dual cleanup: x_B below this must leave
 constexpr double kCertifyBound = 1e-9;          // certified bound on |G - G*| (see certify)
-constexpr double kLargestDual = 1e6;
 constexpr int kRefactorInterval = 16;            // rank-1 updates between fresh inverses
 constexpr int kDegenerateBeforeBland = 24;       // degenerate pivots in a row before Bland's rule
 
@@ -84,7 +85,9 @@ class FastSimplex {
     if (!p.start_support.empty() && start_from_distribution()) {
       phase_ = 2;
       if (solve_phase2(s)) return s;
+      const int spent = s.iterations;
       s = Solution();
+      s.iterations = spent;
     }
     start_with_artificials();
     phase_ = 1;
@@ -148,12 +151,20 @@ class FastSimplex {
   // and with weight 1 it is a feasible basic solution. The other k - 1 basic columns are grid
   // columns spread over I, at level zero. No phase 1, no Carathéodory reduction.
   bool start_from_distribution() {
-    for (int shift = 0; shift < 4; ++shift) {
+    // Where the mass and z_f are, on the grid: the optimal support lies around them, so the start
+    // columns do too (spread over all of I, narrow kernels took ~100 pivots instead of ~10).
+    double lo = p_->zf, hi = p_->zf;
+    for (int j : p_->start_support) lo = std::min(lo, p_->point(j)), hi = std::max(hi, p_->point(j));
+    const auto& grid = p_->grid->points;
+    int first = int(std::lower_bound(grid.begin(), grid.end(), lo) - grid.begin()) - 1;
+    int last = int(std::lower_bound(grid.begin(), grid.end(), hi) - grid.begin()) + 1;
+    for (int widen = 0; widen < 6; ++widen) {
+      first = std::max(0, first - widen * (k_ - 1));
+      last = std::min(g_ - 1, last + widen * (k_ - 1));
+      if (last - first + 1 < k_ - 1) continue;
       basis_[0] = composite_;
-      for (int i = 1; i < k_; ++i) {
-        int j = int((i - 0.5 + 0.2 * shift) * (g_ - 1) / (k_ - 1));
-        basis_[i] = std::clamp(j, 0, g_ - 1);
-      }
+      for (int i = 1; i < k_; ++i) basis_[i] = first + int(std::lround(double(i - 1) * (last - first) / (k_ - 2 > 0 ? k_ - 2 : 1)));
+      if (k_ == 2) basis_[1] = (first + last) / 2;
       if (refactor()) {
         for (int i = 0; i < k_; ++i) x_[i] = i == 0 ? 1.0 : 0.0;  // exact: B e_1 = rhs
         return true;
@@ -188,6 +199,9 @@ class FastSimplex {
       for (int i = 0; i < k_; ++i) v += cost(basis_[i]) * binv_[i][r];
       y_[r] = v;
     }
+    reduced_costs();
+  }
+  void reduced_costs() {
     double* d = reduced_.data();
     if (phase_ == 1) std::fill(d, d + n_, 0.0);
     else std::copy(cost_.begin(), cost_.end(), d);
@@ -201,18 +215,38 @@ class FastSimplex {
     }
   }
 
-  int choose_entering(bool bland) const {
-    int best = -1;
-    double best_value = -kOptimalityTolerance;
-    for (int j = 0; j < n_; ++j) {
-      if (reduced_[j] < best_value) {
-        best = j;
-        if (bland) return j;
-        best_value = reduced_[j];
-      }
+  // Dantzig (or Bland) over non-basic columns. The tolerance grows with |y|: with |y| ~ 1e8
+  // (narrow kernels) reduced costs carry ~1e-16 |y| of rounding, and basic columns would look
+  // attractive; the long double certificate, not this tolerance, decides optimality.
+  int choose_entering(bool bland) {
+    double largest_dual = 0;
+    for (int r = 0; r < k_; ++r) largest_dual = std::max(largest_dual, std::abs(y_[r]));
+    const double tolerance = std::max(kOptimalityTolerance, 1e-15 * largest_dual);
+    if (bland) {
+      for (int j = 0; j < n_; ++j)
+        if (reduced_[j] < -tolerance && !is_basic(j)) return j;
+      return -1;
     }
+    // Basic columns out of the race, then a vectorised minimum and the first index holding it.
+    double saved[kMaxRows];
+    for (int i = 0; i < k_; ++i)
+      if (basis_[i] < n_) saved[i] = reduced_[basis_[i]], reduced_[basis_[i]] = 0;
+    const double* d = reduced_.data();
+    double smallest = 0;
+#pragma omp simd reduction(min : smallest)
+    for (int j = 0; j < n_; ++j) smallest = std::min(smallest, d[j]);
+    int best = -1;
+    if (smallest < -tolerance)
+      for (int j = 0; j < n_; ++j)
+        if (d[j] == smallest) {
+          best = j;
+          break;
+        }
+    for (int i = 0; i < k_; ++i)
+      if (basis_[i] < n_) reduced_[basis_[i]] = saved[i];
     return best;
   }
+  bool is_basic(int j) const { return std::find(basis_, basis_ + k_, j) != basis_ + k_; }
 
   // u = B^{-1} a_j, the entering column in basis coordinates.
   void column_in_basis(int j, double* u) const {
@@ -237,20 +271,32 @@ class FastSimplex {
       if (entering < 0) return true;
       double u[kMaxRows];
       column_in_basis(entering, u);
-      // Harris ratio test: a relaxed bound first, then the largest pivot within it.
-      double theta_max = std::numeric_limits<double>::infinity();
-      for (int i = 0; i < k_; ++i)
-        if (u[i] > kPivotTolerance) theta_max = std::min(theta_max, (x_[i] + kFeasibilityTolerance) / u[i]);
-      if (!std::isfinite(theta_max)) return false;  // unbounded: impossible with sum w = 1
       int leave = -1;
-      double best_pivot = 0;
-      for (int i = 0; i < k_; ++i) {
-        if (u[i] <= kPivotTolerance || x_[i] / u[i] > std::max(theta_max, 0.0)) continue;
-        bool better = bland ? (leave < 0 || basis_[i] < basis_[leave]) : u[i] > best_pivot;
-        if (better) leave = i, best_pivot = u[i];
+      if (!bland) {
+        // Harris ratio test: a relaxed bound first, then the largest pivot within it.
+        double theta_max = std::numeric_limits<double>::infinity();
+        for (int i = 0; i < k_; ++i)
+          if (u[i] > kPivotTolerance) theta_max = std::min(theta_max, (x_[i] + kFeasibilityTolerance) / u[i]);
+        if (!std::isfinite(theta_max)) return false;  // unbounded: impossible with sum w = 1
+        double best_pivot = 0;
+        for (int i = 0; i < k_; ++i) {
+          if (u[i] <= kPivotTolerance || x_[i] / u[i] > std::max(theta_max, 0.0)) continue;
+          if (u[i] > best_pivot) leave = i, best_pivot = u[i];
+        }
+      } else {
+        // Bland's rule needs the textbook ratio test (Harris' relaxation can cycle): the minimum
+        // ratio, ties to the smallest column index.
+        double best_ratio = std::numeric_limits<double>::infinity();
+        for (int i = 0; i < k_; ++i) {
+          if (u[i] <= kPivotTolerance) continue;
+          double ratio = std::max(x_[i], 0.0) / u[i];
+          if (ratio < best_ratio || (ratio == best_ratio && basis_[i] < basis_[leave])) leave = i, best_ratio = ratio;
+        }
       }
+      if (leave < 0) return false;
       double theta = std::max(x_[leave], 0.0) / u[leave];
-      degenerate = theta == 0 ? degenerate + 1 : 0;
+      // Near-zero steps count as degenerate too: Harris steps of 1e-18 can cycle as well.
+      degenerate = theta < 1e-12 ? degenerate + 1 : 0;
       for (int i = 0; i < k_; ++i) x_[i] -= theta * u[i];
       x_[leave] = theta;
       pivot(leave, entering, u);
@@ -359,10 +405,6 @@ class FastSimplex {
       for (int i = 0; i < k_; ++i) v += (long double)cost(basis_[i]) * inv[i][r];
       y[r] = v;
     }
-    // Duals beyond 1e6 make any answer rounded to double uncertifiable at 1e-9 (the residual of
-    // double weights, ~1e-16, times |y|): such a basis is reported, not trusted.
-    for (int r = 0; r < k_; ++r)
-      if (std::abs(y[r]) > kLargestDual) return false;
     long double bound = 0;
     for (int r = 0; r < k_; ++r) {
       long double residual = 0;  // B (x_clamped - x) in row r
@@ -370,9 +412,11 @@ class FastSimplex {
       bound += std::abs(y[r] * residual);
     }
     if (bound > kCertifyBound) return false;
-    price();  // double pricing with the rounded accurate duals, then the suspects in long double
+    // Double pricing with the rounded duals finds the suspects, long double judges them.
+    for (int r = 0; r < k_; ++r) y_[r] = double(y[r]);
+    reduced_costs();
     for (int j = 0; j < n_; ++j) {
-      if (reduced_[j] >= -kCertifyBound) continue;
+      if (reduced_[j] >= -1e-9) continue;
       long double d = cost_[j];
       for (int r = 0; r < k_; ++r) d -= y[r] * (long double)p_->at(r, j);
       if (d < 0) bound += -d;
@@ -396,7 +440,7 @@ class FastSimplex {
     }
     s.G = double(objective);
     s.duals.assign(k_, 0.0);
-    for (int r = 0; r < k_; ++r) s.duals[r] = double(y[r]);
+    for (int r = 0; r < k_; ++r) s.duals[r] = y[r];
     return true;
   }
 

@@ -20,7 +20,10 @@ struct Solution {
   double G = 0;                   // the sharp lower bound (the LP optimum)
   std::vector<int> support;       // indices into Problem::points with positive weight
   std::vector<double> weights;    // same length as support
-  std::vector<double> duals;      // y, one per (transformed) row: a certificate of optimality
+  // y, one per (transformed) row: a certificate of optimality. Long double because narrow kernels
+  // (a sloped receiver covers depths 0.77..0.79) need |y| ~ 1e8, and y rounded to double then
+  // misstates reduced costs by ~1e-8.
+  std::vector<long double> duals;
   int iterations = 0;
 };
 

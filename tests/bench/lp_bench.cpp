@@ -1,0 +1,84 @@
+// LP throughput on real fragments (issue 4): identical Problem 1 instances from the default
+// dataset's receivers (F_Z(z_f - delta) > 0, sampled deterministically), solved by our backend and
+// by GLPK in one run; power and trigonometric bases, grids of 256 and 1024 points. The ratio of
+// the two items_per_second is the speed-up. Falls back to the tiny dataset without data/.
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <map>
+
+#include "eval/evaluation.h"
+#include "lp/problem.h"
+#include "lp/solution.h"
+
+namespace mb {
+namespace {
+
+constexpr int kInstances = 1500;
+
+const std::vector<ViewData>& views() {
+  static std::vector<ViewData> v = [] {
+    bool have_data = std::filesystem::exists(std::string(MOMENTBENCH_SOURCE_DIR) + "/data/buildings.obj");
+    EvalSettings settings;
+    settings.threads = 2;
+    return prepare_views(load_dataset(have_data ? "default" : "tiny"), 0, settings, true);
+  }();
+  return v;
+}
+
+const std::vector<lp::Problem>& problems(const std::string& basis_name, int grid) {
+  static std::map<std::pair<std::string, int>, std::vector<lp::Problem>> cache;
+  auto& out = cache[{basis_name, grid}];
+  if (!out.empty()) return out;
+  lp::ProblemFactory factory(Basis::parse({basis_name}), lp::Discretization{0, 1, grid, false});
+  GaussianKernel kernel = make_gaussian_kernel(9, 2.4);
+  std::vector<double> depths(81), weights(81);
+  size_t total = 0;
+  for (const auto& v : views()) total += v.fragments.size();
+  const size_t stride = std::max<size_t>(1, total / (8 * kInstances));
+  size_t index = 0;
+  for (const auto& v : views())
+    for (size_t k = 0; k < v.fragments.size() && int(out.size()) < kInstances; ++k, ++index) {
+      if (index % stride) continue;
+      const size_t t = v.fragments.texel[k];
+      const int x = int(t % v.map.width), y = int(t / v.map.width);
+      const double zf = v.fragments.zf[k] - 1e-3;
+      if (kernel_cdf(v.map, kernel, x, y, zf) == 0) continue;  // skipped exactly in eval and sweep
+      kernel_distribution(v.map, kernel, x, y, depths, weights);
+      out.push_back(factory.from_distribution(depths, weights, zf));
+    }
+  return out;
+}
+
+void BM_Solve(benchmark::State& state, const std::string& backend, const std::string& basis, int grid) {
+  const auto& list = problems(basis, grid);
+  auto solver = lp::make_backend(backend);
+  size_t unstable = 0, iterations = 0, solved = 0;
+  for (auto _ : state) {
+    for (const auto& p : list) {
+      lp::Solution s = solver->solve(p);
+      unstable += s.status != lp::ProblemStatus::Optimal;
+      iterations += s.iterations;
+      benchmark::DoNotOptimize(s.G);
+    }
+    solved += list.size();
+  }
+  state.SetItemsProcessed(int64_t(solved));
+  state.counters["pivots"] = double(iterations) / double(solved);
+  state.counters["not_optimal"] = double(unstable) / double(solved);
+}
+
+BENCHMARK_CAPTURE(BM_Solve, fast_power4_256, "fast", "power4", 256)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Solve, glpk_power4_256, "glpk", "power4", 256)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Solve, fast_trig4_256, "fast", "trig4", 256)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Solve, glpk_trig4_256, "glpk", "trig4", 256)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Solve, fast_power4_1024, "fast", "power4", 1024)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Solve, glpk_power4_1024, "glpk", "power4", 1024)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Solve, fast_trig4_1024, "fast", "trig4", 1024)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Solve, glpk_trig4_1024, "glpk", "trig4", 1024)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace mb
+
+BENCHMARK_MAIN();
