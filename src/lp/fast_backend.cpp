@@ -411,6 +411,20 @@ class FastSimplex {
       for (int i = 0; i < k_; ++i) residual += (long double)column_entry(basis_[i], r) * clamped[i];
       bound += std::abs(y[r] * residual);
     }
+    // Complementarity as the KKT checker sees it: basic reduced costs, zero in exact arithmetic,
+    // are |y| times rounding in practice.
+    auto reduced_cost = [&](int j) {
+      long double d = cost_[j];
+      for (int r = 0; r < k_; ++r) d -= y[r] * (long double)p_->at(r, j);
+      return d;
+    };
+    for (int i = 0; i < k_; ++i) {
+      if (x[i] <= 0) continue;
+      if (basis_[i] < n_) bound += x[i] * std::abs(reduced_cost(basis_[i]));
+      if (basis_[i] == composite_)  // reported as its atoms, so their reduced costs count
+        for (size_t t = 0; t < p_->start_support.size(); ++t)
+          bound += x[i] * p_->start_weights[t] * std::abs(reduced_cost(p_->start_support[t]));
+    }
     if (bound > kCertifyBound) return false;
     // Double pricing with the rounded duals finds the suspects, long double judges them.
     for (int r = 0; r < k_; ++r) y_[r] = double(y[r]);
