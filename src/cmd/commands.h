@@ -8,5 +8,8 @@ namespace mb {
 void register_render_command(CLI::App& app, std::function<int()>& action);
 void register_eval_command(CLI::App& app, std::function<int()>& action);
 void register_solve_command(CLI::App& app, std::function<int()>& action);
+void register_sweep_command(CLI::App& app, std::function<int()>& action);
+void register_merge_command(CLI::App& app, std::function<int()>& action);
+void register_report_command(CLI::App& app, std::function<int()>& action);
 
 }  // namespace mb

@@ -16,6 +16,9 @@ int main(int argc, char** argv) {
   mb::register_render_command(app, action);
   mb::register_eval_command(app, action);
   mb::register_solve_command(app, action);
+  mb::register_sweep_command(app, action);
+  mb::register_merge_command(app, action);
+  mb::register_report_command(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -46,11 +46,17 @@ void ProgressBar::draw(uint64_t done, bool final) {
   double rate = elapsed > 0 ? done / elapsed : 0;
   std::string eta = final ? "done in " + format_duration(elapsed)
                           : "ETA " + format_duration(rate > 0 ? (total_ - done) / rate : 0);
-  std::fprintf(stderr, "\r%s [%s] %llu/%llu (%.0f/s) %s   ", label_.c_str(), bar.c_str(),
-               (unsigned long long)done, (unsigned long long)total_, rate, eta.c_str());
+  std::fprintf(stderr, "\r%s [%s] %llu/%llu (%.3g/min) %s%s%s   ", label_.c_str(), bar.c_str(),
+               (unsigned long long)done, (unsigned long long)total_, rate * 60, eta.c_str(), note_.empty() ? "" : ", ",
+               note_.c_str());
   if (final) std::fputc('\n', stderr);
   std::fflush(stderr);
   drawn_ = true;
+}
+
+void ProgressBar::set_note(std::string note) {
+  std::lock_guard lock(draw_mutex_);
+  note_ = std::move(note);
 }
 
 void ProgressBar::finish() {

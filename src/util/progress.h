@@ -15,6 +15,8 @@ class ProgressBar {
   ~ProgressBar();
   // Thread-safe; redraws at most a few times a second.
   void advance(uint64_t amount = 1);
+  // Extra text after the counts (rates of the work, e.g. "41.2k LP/s"); thread-safe.
+  void set_note(std::string note);
   void finish();
 
  private:
@@ -26,6 +28,7 @@ class ProgressBar {
   std::chrono::steady_clock::time_point start_, last_draw_;
   std::mutex draw_mutex_;
   bool drawn_ = false, finished_ = false;
+  std::string note_;
 };
 
 // "1h02m", "3m05s", "12.3s"

@@ -1,0 +1,107 @@
+#include "eval/candidate_evaluation.h"
+
+#include <omp.h>
+
+#include "lp/problem.h"
+#include "lp/solution.h"
+
+namespace mb {
+
+CandidateEvaluator::CandidateEvaluator(const std::vector<ViewData>& views, const EvalSettings& settings)
+    : views_(views), settings_(settings) {
+  for (const auto& v : views) {
+    std::vector<uint32_t> list;
+    for (size_t k = 0; k < v.fragments.size(); ++k) {
+      const size_t t = v.fragments.texel[k];
+      const double zf = v.fragments.zf[k] - settings.depth_bias;
+      if (kernel_cdf(v.map, settings.kernel, int(t % v.map.width), int(t / v.map.width), zf) > 0)
+        list.push_back(uint32_t(k));
+    }
+    needs_lp_.push_back(std::move(list));
+  }
+}
+
+uint64_t CandidateEvaluator::lp_fragments() const {
+  uint64_t n = 0;
+  for (const auto& l : needs_lp_) n += l.size();
+  return n;
+}
+
+CandidateResult CandidateEvaluator::evaluate(const Basis& basis) const {
+  const lp::Discretization& disc = settings_.technique.lp;
+  lp::ProblemFactory factory(basis, disc);
+  const int k = factory.rows(), m = int(basis.size());
+  const GaussianKernel& kernel = settings_.kernel;
+  const int r = kernel.radius(), taps = kernel.size * kernel.size;
+  CandidateResult result;
+  uint64_t solved = 0, infeasible = 0, unstable = 0;
+  for (size_t v = 0; v < views_.size(); ++v) {
+    const ViewData& view = views_[v];
+    const ShadowMap& map = view.map;
+    // Transformed columns T (1, b(z)) of every texel's layer-0 depth, and of the far plane.
+    std::vector<double> depth(map.depth);
+    if (disc.quantize)
+      for (double& z : depth) z = lp::quantize_to_grid(disc, z);
+    depth.push_back(disc.quantize ? lp::quantize_to_grid(disc, 1.0) : 1.0);  // outside the map
+    const size_t texels = depth.size();
+    std::vector<double> raw(texels * k), columns(texels * k), values(texels);
+    for (size_t t = 0; t < texels; ++t) raw[t * k] = 1;
+    for (int j = 0; j < m; ++j) {
+      basis[j].evaluate(depth, values);
+      for (size_t t = 0; t < texels; ++t) raw[t * k + j + 1] = values[t];
+    }
+#pragma omp parallel for schedule(static) num_threads(settings_.threads)
+    for (size_t t = 0; t < texels; ++t) factory.transform(&raw[t * k], &columns[t * k]);
+    const size_t far = texels - 1;
+
+    const auto& list = needs_lp_[v];
+    std::vector<double> g(view.fragments.size(), 0.0);  // skipped fragments: G = 0 exactly
+#pragma omp parallel num_threads(settings_.threads) reduction(+ : solved, infeasible, unstable)
+    {
+      auto backend = lp::make_backend(settings_.technique.lp_backend);
+      lp::Problem problem;
+      std::vector<double> tap_depth(taps), tap_weight(taps);
+      std::vector<const double*> tap_column(taps);
+#pragma omp for schedule(dynamic, 64)
+      for (size_t i = 0; i < list.size(); ++i) {
+        const size_t f = list[i], t = view.fragments.texel[f];
+        const int x = int(t % map.width), y = int(t / map.width);
+        int n = 0;
+        for (int dy = -r; dy <= r; ++dy)
+          for (int dx = -r; dx <= r; ++dx, ++n) {
+            const int xx = x + dx, yy = y + dy;
+            const bool inside = xx >= 0 && yy >= 0 && xx < map.width && yy < map.height;
+            const size_t texel = inside ? size_t(yy) * map.width + xx : far;
+            tap_depth[n] = depth[texel];
+            tap_weight[n] = kernel.weight(dx, dy);
+            tap_column[n] = &columns[texel * k];
+          }
+        factory.from_distribution(tap_depth, tap_weight, tap_column, view.fragments.zf[f] - settings_.depth_bias,
+                                  problem);
+        lp::Solution s = backend->solve(problem);
+        if (s.call == lp::CallStatus::Ok && s.status == lp::ProblemStatus::Optimal) {
+          g[f] = std::clamp(s.G, 0.0, 1.0);
+          ++solved;
+        } else if (s.status == lp::ProblemStatus::Infeasible) {
+          ++infeasible;  // shown lit (G = 0), counted
+        } else {
+          ++unstable;
+        }
+      }
+    }
+    ErrorStats stats;
+    stats.add_all(view.fragments.pcf, g);
+    result.overall.merge(stats);
+    result.per_view.push_back(std::move(stats));
+  }
+  result.solved = solved;
+  result.infeasible = infeasible;
+  result.unstable = unstable;
+  result.overall.failures = infeasible + unstable;
+  uint64_t total = 0;
+  for (const auto& v : views_) total += v.fragments.size();
+  result.skipped = total - solved - infeasible - unstable;
+  return result;
+}
+
+}  // namespace mb

@@ -1,0 +1,34 @@
+#pragma once
+// One sweep candidate (a basis) on every view of a dataset with the LP (REFERENCE.md §3, §5;
+// DESIGN.md §Performance shape): basis columns of every texel's layer-0 depth once per view,
+// exact skip of fragments with F_Z(z_f - delta) = 0 (G = 0 there, REFERENCE.md §2), one LP per
+// remaining fragment, errors reduced in fragment order so the result is independent of threads.
+#include <cstdint>
+#include <vector>
+
+#include "eval/error_stats.h"
+#include "eval/evaluation.h"
+#include "moments/basis.h"
+
+namespace mb {
+
+struct CandidateResult {
+  ErrorStats overall;
+  std::vector<ErrorStats> per_view;
+  uint64_t solved = 0, skipped = 0, infeasible = 0, unstable = 0;
+};
+
+class CandidateEvaluator {
+ public:
+  // Keeps a reference to `views`; finds the fragments that need an LP (candidate-independent).
+  CandidateEvaluator(const std::vector<ViewData>& views, const EvalSettings& settings);
+  CandidateResult evaluate(const Basis& basis) const;
+  uint64_t lp_fragments() const;  // LPs per candidate
+
+ private:
+  const std::vector<ViewData>& views_;
+  EvalSettings settings_;
+  std::vector<std::vector<uint32_t>> needs_lp_;  // per view: fragment indices with F_Z > 0
+};
+
+}  // namespace mb

@@ -1,0 +1,56 @@
+#pragma once
+// The sweep's results (DESIGN.md data flow: ResultsStore): a SQLite database with one row per
+// candidate, written in its own transaction, so a killed sweep (kill -9, power loss) keeps every
+// finished candidate and nothing half-written; plus the reference techniques and the metadata
+// (config and its hash) a resume or a merge must match.
+#include <sqlite3.h>
+
+#include <cstdint>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "eval/error_stats.h"
+
+namespace mb {
+
+struct ResultRow {
+  uint64_t id = 0;         // candidate rank (references: 0, ordered by name)
+  std::string name;        // the functions, "z; z^2; z^3; z^4", or the technique name
+  uint64_t fragments = 0, solved = 0, skipped = 0, infeasible = 0, unstable = 0;
+  double mean = 0, leak = 0, dark = 0, max = 0, share_over_tenth = 0;
+  std::string view_errors;  // JSON object: "scene/view" -> mean error
+  std::string histogram;    // comma-separated counts of ErrorStats::kHistogramBins bins
+  double seconds = 0;       // wall time (not part of the results' identity)
+};
+
+class ResultsStore {
+ public:
+  // Creates a new database (the file must not exist) with these metadata.
+  static ResultsStore create(const std::string& path, const std::map<std::string, std::string>& meta);
+  static ResultsStore open(const std::string& path);
+  ResultsStore(ResultsStore&& other) noexcept;
+  ~ResultsStore();
+
+  std::map<std::string, std::string> meta() const;
+  std::set<uint64_t> candidate_ids() const;
+  void put_candidate(const ResultRow& row);  // one committed transaction
+  void put_reference(const ResultRow& row);
+  std::vector<ResultRow> candidates() const;  // by id
+  std::vector<ResultRow> references() const;  // by name
+
+ private:
+  ResultsStore(sqlite3* db, std::string path) : db_(db), path_(std::move(path)) {}
+  void exec(const std::string& sql) const;
+  void put(const char* table, const ResultRow& row);
+  std::vector<ResultRow> rows(const char* table, const char* order) const;
+  sqlite3* db_ = nullptr;
+  std::string path_;
+};
+
+// A row from an evaluation's statistics.
+ResultRow make_result_row(uint64_t id, const std::string& name, const ErrorStats& overall,
+                          const std::vector<std::pair<std::string, double>>& view_errors);
+
+}  // namespace mb
