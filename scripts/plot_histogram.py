@@ -6,6 +6,7 @@ import argparse
 import csv
 
 import matplotlib
+import matplotlib.ticker
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -35,6 +36,7 @@ def main():
         ax.axvline(error, color=colours[i % len(colours)], linestyle="--", linewidth=1)
         ax.text(error, top * (0.95 - 0.08 * (i % 6)), " " + name, color=colours[i % len(colours)], fontsize=7,
                 rotation=0, va="top")
+    ax.yaxis.set_major_locator(matplotlib.ticker.MaxNLocator(integer=True))
     ax.set_xlabel("mean |PCF - G| over receiver fragments (%)")
     ax.set_ylabel("candidates")
     ax.set_title("Sweep candidates by mean error")
