@@ -104,7 +104,9 @@ int run_sweep(const SweepOptions& options) {
     if (meta["shard"] != shard_text)
       throw InputError(db_path.string() + ": that sweep is shard " + meta["shard"] + ", not " + shard_text);
   } else {
-    if (fs::exists(out)) throw InputError(out.string() + ": output directory exists (use --resume to continue its sweep)");
+    if (fs::exists(out) && !options.common.force)
+      throw InputError(out.string() + ": output directory exists (use --resume to continue its sweep, --force to replace it)");
+    if (fs::exists(out)) fs::remove_all(out);
     std::error_code ec;
     fs::create_directories(out, ec);
     if (ec) throw InputError(out.string() + ": cannot create the output directory: " + ec.message());
