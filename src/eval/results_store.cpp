@@ -38,6 +38,8 @@ ResultsStore ResultsStore::create(const std::string& path, const std::map<std::s
     sqlite3_close(db);
     throw InputError(path + ": cannot create results database: " + message);
   }
+  // A reader (report, a monitoring script) may hold the lock briefly: wait, do not fail a sweep.
+  sqlite3_busy_timeout(db, 60000);
   ResultsStore store(db, path);
   store.exec("BEGIN");
   store.exec(kSchema);
@@ -59,6 +61,7 @@ ResultsStore ResultsStore::open(const std::string& path) {
     sqlite3_close(db);
     throw InputError(path + ": cannot open results database: " + message);
   }
+  sqlite3_busy_timeout(db, 60000);
   ResultsStore store(db, path);
   store.exec("SELECT count(*) FROM meta");  // fails clearly on a file that is not ours
   return store;
