@@ -20,11 +20,16 @@ void finish_bound(MsmBound<Real>& r, const Real* moments, Real zf) {
   r.at_zf = std::clamp(r.weights[0], Real(0), Real(1));
 }
 
-}  // namespace
+// Steps 1-3 of Algorithm 3 for one fragment, shared by the scalar solver and the stream form
+// (which inlines it to vectorise): the nodes z2 <= z3 of the canonical distribution with a node
+// at z_f, its weights at z_f and at z2, and the lower bound.
+template <class Real>
+struct Hamburger4Core {
+  Real z2, z3, w_zf, w2, lower;
+};
 
 template <class Real>
-MsmBound<Real> hamburger4(const Real* b, Real zf) {
-  const Real b1 = b[0], b2 = b[1], b3 = b[2], b4 = b[3];
+inline Hamburger4Core<Real> hamburger4_core(Real b1, Real b2, Real b3, Real b4, Real zf) {
   // Step 1: B c = (1, z_f, z_f^2) by LDL^T of the Hankel matrix [[1,b1,b2],[b1,b2,b3],[b2,b3,b4]].
   const Real d11 = b2 - b1 * b1;
   const Real l21 = (b3 - b1 * b2) / d11;
@@ -34,41 +39,43 @@ MsmBound<Real> hamburger4(const Real* b, Real zf) {
   y1 /= d11;
   y2 /= d22;
   const Real c2 = y2, c1 = y1 - l21 * c2, c0 = 1 - b1 * c1 - b2 * c2;
-  // Step 2: the other two nodes of the canonical distribution.
-  MsmBound<Real> r;
-  r.node_count = 3;
-  r.nodes[0] = zf;
-  quadratic_roots(c2, c1, c0, r.nodes[1], r.nodes[2]);
+  // Step 2: the other two nodes.
+  Hamburger4Core<Real> r;
+  quadratic_roots(c2, c1, c0, r.z2, r.z3);
   // Step 3: weights reproducing 1, b1, b2 on {z_f, z2, z3} (Lagrange, written out: this is the
   // hot path of eval), then the mass strictly below z_f.
-  const Real z2 = r.nodes[1], z3 = r.nodes[2];
-  r.weights[0] = (z2 * z3 - b1 * (z2 + z3) + b2) / ((zf - z2) * (zf - z3));
-  r.weights[1] = (zf * z3 - b1 * (zf + z3) + b2) / ((z2 - zf) * (z2 - z3));
-  // Not 1 - w1 - w2: a far node's tiny weight would lose its relative precision.
-  r.weights[2] = (zf * z2 - b1 * (zf + z2) + b2) / ((z3 - zf) * (z3 - z2));
-  const Real lower = zf <= z2 ? Real(0) : zf <= z3 ? r.weights[1] : 1 - r.weights[0];
-  r.lower = std::clamp(lower, Real(0), Real(1));
-  r.at_zf = std::clamp(r.weights[0], Real(0), Real(1));
+  r.w_zf = (r.z2 * r.z3 - b1 * (r.z2 + r.z3) + b2) / ((zf - r.z2) * (zf - r.z3));
+  r.w2 = (zf * r.z3 - b1 * (zf + r.z3) + b2) / ((r.z2 - zf) * (r.z2 - r.z3));
+  r.lower = zf <= r.z2 ? Real(0) : zf <= r.z3 ? r.w2 : 1 - r.w_zf;
   return r;
 }
 
-void hamburger4_lower_batch(const double* b, const double* zf_in, double* lower, size_t count, double alpha) {
+}  // namespace
+
+template <class Real>
+MsmBound<Real> hamburger4(const Real* b, Real zf) {
+  const Hamburger4Core<Real> c = hamburger4_core(b[0], b[1], b[2], b[3], zf);
+  MsmBound<Real> r;
+  r.node_count = 3;
+  r.nodes[0] = zf;
+  r.nodes[1] = c.z2;
+  r.nodes[2] = c.z3;
+  r.weights[0] = c.w_zf;
+  r.weights[1] = c.w2;
+  // Not 1 - w1 - w2: a far node's tiny weight would lose its relative precision.
+  r.weights[2] = (zf * c.z2 - b[0] * (zf + c.z2) + b[1]) / ((c.z3 - zf) * (c.z3 - c.z2));
+  r.lower = std::clamp(c.lower, Real(0), Real(1));
+  r.at_zf = std::clamp(c.w_zf, Real(0), Real(1));
+  return r;
+}
+
+void hamburger4_lower_batch(const double* b, const double* zf, double* lower, size_t count, double alpha) {
 #pragma omp simd
   for (size_t k = 0; k < count; ++k) {
-    const double b1 = (1 - alpha) * b[4 * k] + alpha * 0.5, b2 = (1 - alpha) * b[4 * k + 1] + alpha * 0.5;
-    const double b3 = (1 - alpha) * b[4 * k + 2] + alpha * 0.5, b4 = (1 - alpha) * b[4 * k + 3] + alpha * 0.5;
-    const double zf = zf_in[k];
-    const double d11 = b2 - b1 * b1, e = b3 - b1 * b2;
-    const double l21 = e / d11, d22 = (b4 - b2 * b2) - l21 * e;
-    const double y1 = (zf - b1) / d11;
-    const double c2 = (zf * zf - b2 - l21 * (zf - b1)) / d22, c1 = y1 - l21 * c2, c0 = 1 - b1 * c1 - b2 * c2;
-    const double root = std::sqrt(std::max(0.0, c1 * c1 - 4 * c2 * c0));
-    const double q = -(c1 + std::copysign(root, c1)) / 2;
-    const double r1 = q / c2, r2 = c0 / q;
-    const double z2 = std::min(r1, r2), z3 = std::max(r1, r2);
-    const double w_zf = (z2 * z3 - b1 * (z2 + z3) + b2) / ((zf - z2) * (zf - z3));
-    const double w2 = (zf * z3 - b1 * (zf + z3) + b2) / ((z2 - zf) * (z2 - z3));
-    const double g = zf <= z2 ? 0.0 : zf <= z3 ? w2 : 1 - w_zf;
+    const double* m = b + 4 * k;
+    const double g = hamburger4_core((1 - alpha) * m[0] + alpha * 0.5, (1 - alpha) * m[1] + alpha * 0.5,
+                                     (1 - alpha) * m[2] + alpha * 0.5, (1 - alpha) * m[3] + alpha * 0.5, zf[k])
+                         .lower;
     lower[k] = std::min(1.0, std::max(0.0, g));
   }
 }
