@@ -41,11 +41,6 @@ std::string file_stem(const std::string& name) {
   return out;
 }
 
-std::string percent(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.4f", 100 * v);
-  return b;
-}
 std::string number(double v) {
   char b[32];
   std::snprintf(b, sizeof b, "%.6g", v);
@@ -61,8 +56,8 @@ struct Row {
 std::string table_row(const Row& r) {
   std::ostringstream s;
   s << "| " << r.technique << " | " << r.scene << (r.view.empty() ? "" : "/" + r.view) << " | " << r.stats.count
-    << " | " << percent(r.stats.mean()) << " | " << percent(r.stats.leak()) << " | " << percent(r.stats.dark())
-    << " | " << number(r.stats.max) << " | " << percent(r.stats.share_over_tenth()) << " | " << r.stats.failures
+    << " | " << percent_text(r.stats.mean()) << " | " << percent_text(r.stats.leak()) << " | " << percent_text(r.stats.dark())
+    << " | " << number(r.stats.max) << " | " << percent_text(r.stats.share_over_tenth()) << " | " << r.stats.failures
     << " |";
   return s.str();
 }

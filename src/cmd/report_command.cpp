@@ -9,7 +9,9 @@
 
 #include "cmd/command_common.h"
 #include "cmd/commands.h"
+#include "eval/error_stats.h"
 #include "eval/results_store.h"
+#include "moments/basis.h"
 #include "util/error.h"
 #include "util/output_dir.h"
 
@@ -23,21 +25,19 @@ struct ReportOptions {
   int bins = 60;
 };
 
-std::string pct(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.4f", 100 * v);
-  return b;
-}
-
 std::string row_line(size_t rank, const ResultRow& r) {
   std::ostringstream s;
-  s << "| " << rank << " | " << r.id << " | " << r.name << " | " << pct(r.mean) << " | " << pct(r.leak) << " | "
-    << pct(r.dark) << " | " << r.solved << " | " << (r.infeasible + r.unstable) << " |";
+  s << "| " << rank << " | " << r.id << " | " << r.name << " | " << percent_text(r.mean) << " | " << percent_text(r.leak) << " | "
+    << percent_text(r.dark) << " | " << r.solved << " | " << (r.infeasible + r.unstable) << " |";
   return s.str();
 }
 
-const char* kPower = "z; z^2; z^3; z^4";
-const char* kTrig = "sin(2 pi z); cos(2 pi z); sin(4 pi z); cos(4 pi z)";
+// A candidate's name as the sweep writes it ("f1; f2; ..."), for a named basis set.
+std::string candidate_name(const std::string& set) {
+  std::string name;
+  for (const auto& f : named_basis_set(set)) name += (name.empty() ? "" : "; ") + f;
+  return name;
+}
 
 int run_report(const ReportOptions& o) {
   std::string db = std::filesystem::is_directory(o.results)
@@ -66,26 +66,26 @@ int run_report(const ReportOptions& o) {
   uint64_t failures = 0, lps = 0;
   for (const auto& r : candidates) failures += r.infeasible + r.unstable, lps += r.solved + r.infeasible + r.unstable;
   md << "- LPs: " << lps << ", of which infeasible or unstable: " << failures << " ("
-     << pct(lps ? double(failures) / lps : 0) << " %; these fragments count as lit)\n\n";
+     << percent_text(lps ? double(failures) / lps : 0) << " %; these fragments count as lit)\n\n";
 
   md << "## Reference techniques on the same dataset\n\n| technique | mean error % | leak % | over-darkening % | "
         "rank among candidates |\n|---|---|---|---|---|\n";
   refs << "technique,mean_error,leak,over_darkening\n";
   for (const auto& r : references) {
-    md << "| " << r.name << " | " << pct(r.mean) << " | " << pct(r.leak) << " | " << pct(r.dark) << " | "
+    md << "| " << r.name << " | " << percent_text(r.mean) << " | " << percent_text(r.leak) << " | " << percent_text(r.dark) << " | "
        << (r.name == "pcf" ? std::string("-") : std::to_string(rank_of(r.mean))) << " |\n";
     refs << '"' << r.name << "\"," << r.mean << "," << r.leak << "," << r.dark << "\n";
   }
   md << "\n## Power and trigonometric bases among the candidates\n\n";
-  for (const auto& [label, name, reference] :
-       {std::tuple{"power moments", kPower, "lp:power4"}, std::tuple{"trigonometric moments", kTrig, "lp:trig4"}}) {
+  for (const auto& [label, set] : {std::pair{"power moments", "power4"}, std::pair{"trigonometric moments", "trig4"}}) {
+    const std::string name = candidate_name(set), reference = std::string("lp:") + set;
     auto it = std::find_if(candidates.begin(), candidates.end(), [&](const auto& r) { return r.name == name; });
     auto ref = std::find_if(references.begin(), references.end(), [&](const auto& r) { return r.name == reference; });
     if (it == candidates.end() && ref == references.end()) continue;
     double mean = it != candidates.end() ? it->mean : ref->mean;
     const size_t better = rank_of(mean) - 1;
-    md << "- " << label << " (" << name << "): mean error " << pct(mean) << " %; " << better << " of "
-       << candidates.size() << " candidates are better (percentile " << pct(double(better) / candidates.size())
+    md << "- " << label << " (" << name << "): mean error " << percent_text(mean) << " %; " << better << " of "
+       << candidates.size() << " candidates are better (percentile " << percent_text(double(better) / candidates.size())
        << ")"
        << (it == candidates.end() ? ", from the reference row (not among the evaluated candidates)" : "") << "\n";
   }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace mb {
 
@@ -29,6 +30,12 @@ void ErrorStats::merge(const ErrorStats& o) {
   sum_dark += o.sum_dark;
   max = std::max(max, o.max);
   for (int i = 0; i < kHistogramBins; ++i) histogram[i] += o.histogram[i];
+}
+
+std::string percent_text(double fraction) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.4f", 100 * fraction);
+  return buffer;
 }
 
 }  // namespace mb

@@ -25,4 +25,7 @@ struct ErrorStats {
   double share_over_tenth() const { return count ? double(over_tenth) / count : 0; }
 };
 
+// A fraction as a percentage with four decimals ("12.3456"), as every error table prints it.
+std::string percent_text(double fraction);
+
 }  // namespace mb
