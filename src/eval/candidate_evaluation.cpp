@@ -32,7 +32,7 @@ CandidateResult CandidateEvaluator::evaluate(const Basis& basis) const {
   lp::ProblemFactory factory(basis, disc);
   const int k = factory.rows(), m = int(basis.size());
   const GaussianKernel& kernel = settings_.kernel;
-  const int r = kernel.radius(), taps = kernel.size * kernel.size;
+  const int taps = kernel.size * kernel.size;
   CandidateResult result;
   uint64_t solved = 0, infeasible = 0, unstable = 0;
   for (size_t v = 0; v < views_.size(); ++v) {
@@ -42,7 +42,7 @@ CandidateResult CandidateEvaluator::evaluate(const Basis& basis) const {
     std::vector<double> depth(map.depth);
     if (disc.quantize)
       for (double& z : depth) z = lp::quantize_to_grid(disc, z);
-    depth.push_back(disc.quantize ? lp::quantize_to_grid(disc, 1.0) : 1.0);  // outside the map
+    depth.push_back(disc.quantize ? lp::quantize_to_grid(disc, 1.0) : 1.0);  // outside: index = map size
     const size_t texels = depth.size();
     std::vector<double> raw(texels * k), columns(texels * k), values(texels);
     for (size_t t = 0; t < texels; ++t) raw[t * k] = 1;
@@ -52,7 +52,6 @@ CandidateResult CandidateEvaluator::evaluate(const Basis& basis) const {
     }
 #pragma omp parallel for schedule(static) num_threads(settings_.threads)
     for (size_t t = 0; t < texels; ++t) factory.transform(&raw[t * k], &columns[t * k]);
-    const size_t far = texels - 1;
 
     const auto& list = needs_lp_[v];
     std::vector<double> g(view.fragments.size(), 0.0);  // skipped fragments: G = 0 exactly
@@ -62,20 +61,18 @@ CandidateResult CandidateEvaluator::evaluate(const Basis& basis) const {
       lp::Problem problem;
       std::vector<double> tap_depth(taps), tap_weight(taps);
       std::vector<const double*> tap_column(taps);
+      std::vector<size_t> tap_texel(taps);
 #pragma omp for schedule(dynamic, 64)
       for (size_t i = 0; i < list.size(); ++i) {
         const size_t f = list[i], t = view.fragments.texel[f];
         const int x = int(t % map.width), y = int(t / map.width);
-        int n = 0;
-        for (int dy = -r; dy <= r; ++dy)
-          for (int dx = -r; dx <= r; ++dx, ++n) {
-            const int xx = x + dx, yy = y + dy;
-            const bool inside = xx >= 0 && yy >= 0 && xx < map.width && yy < map.height;
-            const size_t texel = inside ? size_t(yy) * map.width + xx : far;
-            tap_depth[n] = depth[texel];
-            tap_weight[n] = kernel.weight(dx, dy);
-            tap_column[n] = &columns[texel * k];
-          }
+        // The same taps, in the same order, as eval's lp: technique; the extra texel index picks
+        // the column (the far plane's, one past the map, for taps outside it).
+        kernel_distribution(map, kernel, x, y, tap_depth, tap_weight, tap_texel);
+        for (int n = 0; n < taps; ++n) {
+          tap_depth[n] = depth[tap_texel[n]];  // quantized in quantize mode
+          tap_column[n] = &columns[tap_texel[n] * k];
+        }
         factory.from_distribution(tap_depth, tap_weight, tap_column, view.fragments.zf[f] - settings_.depth_bias,
                                   problem);
         lp::Solution s = backend->solve(problem);

@@ -49,13 +49,17 @@ Fragments collect_receivers(const LayerStack& stack, const GaussianKernel& kerne
 }
 
 void kernel_distribution(const ShadowMap& map, const GaussianKernel& kernel, int x, int y, std::span<double> depths,
-                         std::span<double> weights) {
+                         std::span<double> weights, std::span<size_t> texels) {
   const int r = kernel.radius();
   size_t k = 0;
   for (int dy = -r; dy <= r; ++dy)
     for (int dx = -r; dx <= r; ++dx, ++k) {
       depths[k] = map.at(x + dx, y + dy);
       weights[k] = kernel.weight(dx, dy);
+      if (texels.empty()) continue;
+      const int xx = x + dx, yy = y + dy;
+      const bool inside = xx >= 0 && yy >= 0 && xx < map.width && yy < map.height;
+      texels[k] = inside ? size_t(yy) * map.width + xx : map.depth.size();
     }
 }
 
