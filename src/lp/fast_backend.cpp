@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
 
 #include "lp/glpk_backend.h"
@@ -165,8 +163,8 @@ class FastSimplex {
       last = std::min(g_ - 1, last + widen * (k_ - 1));
       if (last - first + 1 < k_ - 1) continue;
       basis_[0] = composite_;
-      for (int i = 1; i < k_; ++i) basis_[i] = first + int(std::lround(double(i - 1) * (last - first) / (k_ - 2 > 0 ? k_ - 2 : 1)));
-      if (k_ == 2) basis_[1] = (first + last) / 2;
+      for (int i = 1; i < k_; ++i)  // k - 1 columns spread evenly over [first, last]
+        basis_[i] = k_ == 2 ? (first + last) / 2 : first + int(std::lround(double(i - 1) * (last - first) / (k_ - 2)));
       if (refactor()) {
         for (int i = 0; i < k_; ++i) x_[i] = i == 0 ? 1.0 : 0.0;  // exact: B e_1 = rhs
         return true;
@@ -496,7 +494,6 @@ class FastBackend : public Backend {
     // if the independent KKT checker certifies it; otherwise it stays unstable.
     if (!glpk_) glpk_ = make_glpk_backend();
     Solution reference = glpk_->solve(p);
-    ++fallbacks_;
     if (reference.status == ProblemStatus::Optimal && check_kkt(p, reference, 1e-9).ok) {
       reference.iterations += s.iterations;
       return reference;
@@ -509,7 +506,6 @@ class FastBackend : public Backend {
  private:
   FastSimplex simplex_;
   std::unique_ptr<Backend> glpk_;
-  int fallbacks_ = 0;
 };
 
 }  // namespace

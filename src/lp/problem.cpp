@@ -82,8 +82,8 @@ void ProblemFactory::column(double z, double* out) const {
 
 namespace {
 
-// Appends point z (and its column) to the block; values are kept column by column in `staging`
-// and transposed at the end.
+// The block's columns were staged one after the other (column-major, `rows` values each); the
+// block stores them row-major, so each row is one contiguous array for pricing.
 void finish_block(int rows, const std::vector<double>& staging, ColumnBlock& block) {
   const int n = block.size();
   block.values.resize(size_t(rows) * n);
