@@ -23,7 +23,7 @@ std::vector<OptionSpec> eval_specs() {
   auto specs = dataset_option_specs();
   for (auto& s : shadow_option_specs()) specs.push_back(s);
   specs.push_back({"techniques", OptionType::StringList,
-                   "[pcf, vsm, esm, hamburger4, hamburger4_float, hamburger4_16bit, hausdorff4, hamburger6]",
+                   "[pcf, vsm, esm, hamburger4, hamburger4_float, hamburger4_16bit, hausdorff4, hamburger6, tmsm, tmsm_float]",
                    "Techniques to evaluate: closed forms, pcf, or lp:<basis> (e.g. lp:power4, lp:trig4)."});
   specs.push_back({"images", OptionType::Boolean, "true", "Write shadow and error images per view and technique."});
   specs.push_back({"error_scale", OptionType::Number, "0.5", "|PCF - G| at the top of the error colour bar.", 1e-6, 1});

@@ -7,6 +7,7 @@
 
 #include "cmd/command_common.h"
 #include "cmd/commands.h"
+#include "eval/technique.h"
 #include "lp/kkt_checker.h"
 #include "lp/problem.h"
 #include "lp/solution.h"
@@ -24,6 +25,8 @@ struct SolveOptions {
   std::vector<double> moments, points;
   double zf = 0.5;
   std::string backend = "fast";
+  std::string technique;  // a closed form instead of the LP
+  double alpha = -1;      // its moment bias (< 0: the technique's default)
   std::string input, output;
   bool check = false, quantize = false;
 };
@@ -55,12 +58,38 @@ json solve_one(lp::Backend& backend, const std::vector<std::string>& basis_names
   return out;
 }
 
+// A closed-form technique (REFERENCE.md §4) on the given moments, e.g. to re-run a worst case of
+// `verify`; alpha >= 0 replaces every solver's default moment bias.
+json solve_closed_form(const std::string& name, double alpha, const std::vector<double>& moments, double zf) {
+  if (name == "pcf" || name.rfind("lp:", 0) == 0)
+    throw InputError("technique: '" + name + "' is not a closed form of the moments (use basis for an LP)");
+  TechniqueParams params;
+  if (alpha >= 0)
+    for (double* a : {&params.hamburger4_alpha, &params.hamburger4_float_alpha, &params.hamburger4_16bit_alpha,
+                      &params.hausdorff4_alpha, &params.hamburger6_alpha, &params.tmsm_alpha, &params.tmsm_float_alpha})
+      *a = alpha;
+  auto technique = make_technique(name, params);
+  if (moments.size() != technique->basis().size())
+    throw InputError("moments: technique '" + name + "' reads " + std::to_string(technique->basis().size()) +
+                     " moments, got " + std::to_string(moments.size()));
+  FragmentInput in;
+  in.moments = moments;
+  in.zf = zf;
+  const double g = technique->shadow(in);
+  json out;
+  out["status"] = technique->failures() ? "numerically_unstable" : "optimal";
+  if (!technique->failures()) out["G"] = g;
+  out["backend"] = "closed_form";
+  out["technique"] = name;
+  return out;
+}
+
 int run_solve(const SolveOptions& o) {
   auto backend = lp::make_backend(o.backend);
   if (o.interval.size() != 2) throw InputError("--interval: expected lo,hi");
   lp::Discretization disc{o.interval[0], o.interval[1], o.grid, o.quantize};
   if (o.input.empty()) {
-    json r = solve_one(*backend, o.basis, disc, o.moments, o.zf, o.points, o.check);
+    json r = !o.technique.empty() ? solve_closed_form(o.technique, o.alpha, o.moments, o.zf) : solve_one(*backend, o.basis, disc, o.moments, o.zf, o.points, o.check);
     std::printf("%s\n", r.dump(2).c_str());
     return r["status"] == "optimal" ? 0 : 3;
   }
@@ -76,6 +105,12 @@ int run_solve(const SolveOptions& o) {
     try {
       json q = json::parse(line);
       out["id"] = q.value("id", json(number));
+      if (q.contains("technique")) {
+        out.update(solve_closed_form(q.at("technique").get<std::string>(), q.value("alpha", -1.0),
+                                     q.at("moments").get<std::vector<double>>(), q.at("zf").get<double>()));
+        results << out.dump() << "\n";
+        continue;
+      }
       std::vector<std::string> basis = q.at("basis").get<std::vector<std::string>>();
       std::vector<double> interval = q.value("interval", std::vector<double>{0, 1});
       if (interval.size() != 2) throw InputError("interval: expected [lo, hi]");
@@ -112,6 +147,10 @@ void register_solve_command(CLI::App& app, std::function<int()>& action) {
   c->add_option("--points", o->points, "Extra points of I (e.g. the kernel's depths)")->delimiter(',');
   c->add_option("--zf", o->zf, "Fragment depth z_f");
   c->add_option("--backend", o->backend, "LP backend")->check(CLI::IsMember({"fast", "glpk"}));
+  c->add_option("--technique", o->technique,
+                 "A closed form instead of the LP (hamburger4, hausdorff4, tmsm, vsm, esm, ...); --basis is ignored");
+  c->add_option("--alpha", o->alpha, "Moment bias for --technique (default: the technique's own)")
+      ->check(CLI::Range(0.0, 0.999999));
   c->add_option("--input", o->input, "JSON Lines file of instances");
   c->add_option("--output", o->output, "JSON Lines results (written atomically; stdout if absent)");
   c->add_flag("--check", o->check, "Run the independent KKT checker on every optimal answer");

@@ -34,7 +34,7 @@ std::vector<OptionSpec> sweep_specs() {
                    "Explicit candidates, each 'f1; f2; ...'; empty = all (or a sample)."});
   specs.push_back({"sample", OptionType::Integer, "0", "Evaluate a seeded random sample of this many; 0 = all.", 0, 1e12});
   specs.push_back({"sample_seed", OptionType::Integer, "1", "Seed of the sample.", 0, 1e18});
-  specs.push_back({"references", OptionType::StringList, "[pcf, vsm, esm, hamburger4, hausdorff4, lp:power4, lp:trig4]",
+  specs.push_back({"references", OptionType::StringList, "[pcf, vsm, esm, hamburger4, hausdorff4, tmsm, lp:power4, lp:trig4]",
                    "Techniques evaluated once on the same dataset, for the report."});
   return specs;
 }

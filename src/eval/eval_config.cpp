@@ -20,6 +20,8 @@ std::vector<OptionSpec> shadow_option_specs() {
       {"hamburger4_16bit.alpha", OptionType::Number, "3e-5", "Moment bias of Hamburger 4MSM from 16-bit maps."},
       {"hausdorff4.alpha", OptionType::Number, "1e-10", "Moment bias of Hausdorff 4MSM."},
       {"hamburger6.alpha", OptionType::Number, "1e-10", "Moment bias of six-moment Hamburger MSM."},
+      {"tmsm.alpha", OptionType::Number, "1e-10", "Moment bias of trigonometric MSM in double (towards 0)."},
+      {"tmsm_float.alpha", OptionType::Number, "5e-6", "Moment bias of trigonometric MSM in float32."},
       {"hamburger.beta", OptionType::Number, "0", "G + beta * (weight at z_f): 0 lower bound, 1 upper (seed 004).", 0, 1},
       {"esm.c", OptionType::Number, "80", "ESM exponent c.", 1e-6, 700},
       {"vsm.min_variance", OptionType::Number, "0", "VSM variance clamp.", 0, 1},
@@ -43,6 +45,8 @@ EvalSettings shadow_settings_from(const Config& config, int threads) {
   t.hamburger4_16bit_alpha = config.number("hamburger4_16bit.alpha");
   t.hausdorff4_alpha = config.number("hausdorff4.alpha");
   t.hamburger6_alpha = config.number("hamburger6.alpha");
+  t.tmsm_alpha = config.number("tmsm.alpha");
+  t.tmsm_float_alpha = config.number("tmsm_float.alpha");
   t.beta = config.number("hamburger.beta");
   t.esm_c = config.number("esm.c");
   t.vsm_min_variance = config.number("vsm.min_variance");

@@ -8,6 +8,7 @@
 #include "moments/chebyshev.h"
 #include "moments/hamburger.h"
 #include "moments/hausdorff.h"
+#include "moments/tmsm.h"
 #include "util/error.h"
 
 namespace mb {
@@ -83,6 +84,37 @@ class PowerMomentTechnique : public Technique {
   size_t failures_ = 0;
 };
 
+// Trigonometric moment shadow mapping (moments/tmsm.md): bias towards the uniform distribution.
+class TmsmTechnique : public Technique {
+ public:
+  TmsmTechnique(std::string name, bool in_float, double alpha, double beta)
+      : Technique(std::move(name), Basis::parse({"trig4"}), in_float ? float32_storage() : double_storage()),
+        in_float_(in_float), alpha_(alpha), beta_(beta) {}
+  double shadow(const FragmentInput& in) override {
+    if (in_float_) return finish(solve<float>(in));
+    return finish(solve<double>(in));
+  }
+  size_t failures() const override { return failures_; }
+
+ private:
+  template <class Real>
+  double solve(const FragmentInput& in) const {
+    Real b[4];
+    for (int j = 0; j < 4; ++j) b[j] = Real(in.moments[j]);
+    bias_trigonometric_moments(b, Real(alpha_));
+    MsmBound<Real> r = tmsm(b, Real(in.zf));
+    return double(r.lower + Real(beta_) * r.at_zf);
+  }
+  double finish(double g) {
+    if (std::isfinite(g)) return std::clamp(g, 0.0, 1.0);
+    ++failures_;
+    return 0;
+  }
+  bool in_float_;
+  double alpha_, beta_;
+  size_t failures_ = 0;
+};
+
 void check_alpha(const char* key, double alpha) {
   if (!(alpha >= 0 && alpha < 1)) throw InputError(std::string(key) + ": expected alpha in [0, 1), got " + std::to_string(alpha));
 }
@@ -90,7 +122,8 @@ void check_alpha(const char* key, double alpha) {
 }  // namespace
 
 std::vector<std::string> closed_form_technique_names() {
-  return {"pcf", "vsm", "esm", "hamburger4", "hamburger4_float", "hamburger4_16bit", "hausdorff4", "hamburger6"};
+  return {"pcf", "vsm", "esm", "hamburger4", "hamburger4_float", "hamburger4_16bit", "hausdorff4", "hamburger6",
+          "tmsm", "tmsm_float"};
 }
 
 std::unique_ptr<Technique> make_technique(const std::string& name, const TechniqueParams& p) {
@@ -99,6 +132,8 @@ std::unique_ptr<Technique> make_technique(const std::string& name, const Techniq
   check_alpha("hamburger4_16bit.alpha", p.hamburger4_16bit_alpha);
   check_alpha("hausdorff4.alpha", p.hausdorff4_alpha);
   check_alpha("hamburger6.alpha", p.hamburger6_alpha);
+  check_alpha("tmsm.alpha", p.tmsm_alpha);
+  check_alpha("tmsm_float.alpha", p.tmsm_float_alpha);
   if (name == "pcf") return std::make_unique<PcfTechnique>();
   if (name == "vsm") return std::make_unique<VsmTechnique>(p.vsm_min_variance);
   if (name == "esm") return std::make_unique<EsmTechnique>(p.esm_c);
@@ -114,6 +149,8 @@ std::unique_ptr<Technique> make_technique(const std::string& name, const Techniq
     return std::make_unique<PowerMomentTechnique>(name, PowerSolver::Hausdorff4, double_storage(), p.hausdorff4_alpha, p.beta);
   if (name == "hamburger6")
     return std::make_unique<PowerMomentTechnique>(name, PowerSolver::Hamburger6, double_storage(), p.hamburger6_alpha, p.beta);
+  if (name == "tmsm") return std::make_unique<TmsmTechnique>(name, false, p.tmsm_alpha, p.beta);
+  if (name == "tmsm_float") return std::make_unique<TmsmTechnique>(name, true, p.tmsm_float_alpha, p.beta);
   if (name.rfind("lp:", 0) == 0) return make_lp_technique(name, p.lp, p.lp_backend);
   std::string valid;
   for (const auto& n : closed_form_technique_names()) valid += n + ", ";

@@ -25,6 +25,7 @@ struct FragmentInput {
 struct TechniqueParams {
   double hamburger4_alpha = 1e-10, hamburger4_float_alpha = 5e-6, hamburger4_16bit_alpha = 3e-5;
   double hausdorff4_alpha = 1e-10, hamburger6_alpha = 1e-10;
+  double tmsm_alpha = 1e-10, tmsm_float_alpha = 5e-6;
   double beta = 0;  // Hamburger: G + beta * (weight at z_f); 0 = lower bound, 1 = upper (seed 004)
   double esm_c = 80;
   double vsm_min_variance = 0;
@@ -55,7 +56,7 @@ class Technique {
 };
 
 // "pcf", "vsm", "esm", "hamburger4", "hamburger4_float", "hamburger4_16bit", "hausdorff4",
-// "hamburger6", or "lp:<basis>" (a named set such as power4, or functions separated by ';').
+// "hamburger6", "tmsm", "tmsm_float", or "lp:<basis>" (a named set such as power4, or functions separated by ';').
 // Unknown names are an InputError listing the valid ones.
 std::unique_ptr<Technique> make_technique(const std::string& name, const TechniqueParams& params);
 std::vector<std::string> closed_form_technique_names();

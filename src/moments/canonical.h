@@ -48,4 +48,11 @@ void quadratic_roots(Real c2, Real c1, Real c0, Real& low, Real& high) {
 // a depressed cubic, each polished by two Newton steps. Returns the number of roots found.
 int cubic_roots(double c3, double c2, double c1, double c0, double* roots);
 
+// The real roots of c4 z^4 + c3 z^3 + c2 z^2 + c1 z + c0 (ascending; 0, 2 or 4 of them, a
+// double root counted twice), by Ferrari's method: the largest root of the resolvent cubic
+// splits the depressed quartic into two quadratics; each root is then polished by two Newton
+// steps on the quartic. Falls back to the cubic when c4 is negligible. Real = float or double.
+template <class Real>
+int quartic_roots(Real c4, Real c3, Real c2, Real c1, Real c0, Real* roots);
+
 }  // namespace mb
