@@ -25,7 +25,7 @@ struct FragmentInput {
 struct TechniqueParams {
   double hamburger4_alpha = 1e-10, hamburger4_float_alpha = 5e-6, hamburger4_16bit_alpha = 3e-5;
   double hausdorff4_alpha = 1e-10, hamburger6_alpha = 1e-10;
-  double tmsm_alpha = 1e-10, tmsm_float_alpha = 5e-6;
+  double tmsm_alpha = 1e-10, tmsm_float_alpha = 5e-5;
   double beta = 0;  // Hamburger: G + beta * (weight at z_f); 0 = lower bound, 1 = upper (seed 004)
   double esm_c = 80;
   double vsm_min_variance = 0;

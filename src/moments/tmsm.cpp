@@ -28,7 +28,7 @@ struct Candidate {
   Real x[2] = {};         // the free points a, c
   Real w[4] = {};         // probabilities at z_f, a, c, cut
   Real lower = 0;         // mass with x < x_f
-  Real worst_weight = 0;  // the most negative weight relative to its rounding scale
+  Real worst_weight = 0;  // the most negative weight, less its rounding allowance
 };
 
 template <class Real>
@@ -90,8 +90,8 @@ class TmsmSolver {
     Candidate<Real> k;
     k.x[0] = a;
     k.x[1] = c;
-    // Each weight with the size of the terms it comes from, so that admissibility is judged
-    // relative to its own rounding error ((1 + x^2)^2 magnifies both far from z = 1/2).
+    // Each weight with the size of the terms it comes from, so that admissibility allows for its
+    // own rounding error ((1 + x^2)^2 magnifies both far from z = 1/2).
     Real v[3], size[4];
     if (kind != Kind::NoZf) {
       if (a == xf || c == xf) return;
@@ -118,11 +118,13 @@ class TmsmSolver {
     const Real finite4 = v[0] * xf2 * xf2 + v[1] * a2 * a2 + v[2] * c2 * c2;
     k.w[3] = kind == Kind::NoCut ? Real(0) : (m[4] - finite4) / 8;
     size[3] = (std::abs(m[4]) + std::abs(v[0]) * xf2 * xf2 + std::abs(v[1]) * a2 * a2 + std::abs(v[2]) * c2 * c2) / 8;
+    // A weight is negative for real unless it is within a few roundings of its terms.
+    constexpr Real kRounding = 8 * std::numeric_limits<Real>::epsilon();
     k.worst_weight = std::numeric_limits<Real>::infinity();
-    for (int i = 0; i < 4; ++i) k.worst_weight = std::min(k.worst_weight, k.w[i] / std::max(Real(1), size[i]));
+    for (int i = 0; i < 4; ++i) k.worst_weight = std::min(k.worst_weight, k.w[i] + kRounding * size[i]);
     k.lower = (a < xf ? k.w[1] : Real(0)) + (c < xf ? k.w[2] : Real(0));
     if (!std::isfinite(k.lower) || !std::isfinite(k.worst_weight)) return;
-    const Real tolerance = std::is_same_v<Real, float> ? Real(1e-4) : Real(1e-9);
+    const Real tolerance = std::is_same_v<Real, float> ? Real(1e-6) : Real(1e-12);
     const bool admissible = k.worst_weight >= -tolerance;
     if (admissible ? (!best_admissible_ || k.lower < best_.lower)
                    : (!best_admissible_ && (!have_best_ || k.worst_weight > best_.worst_weight))) {
