@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   mb::register_sweep_command(app, action);
   mb::register_merge_command(app, action);
   mb::register_report_command(app, action);
+  mb::register_verify_command(app, action);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,69 @@
+#pragma once
+// `momentbench verify` (REFERENCE.md §6): every closed form against the LP with the matching basis
+// and interval, on seeded random depth distributions and on real kernels of a dataset, at several
+// LP grid sizes.
+#include <functional>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "eval/technique.h"
+
+namespace mb {
+
+// One row of REFERENCE.md §6: a closed form and its LP ground truth.
+struct VerifyTarget {
+  std::string technique;
+  std::vector<std::string> lp_basis;
+  double lo = 0, hi = 1;  // the LP's admissible interval
+  bool exact = false;     // double precision, alpha = 0: must match; otherwise reported only
+};
+
+// The §6 table for the given technique names (InputError for names without an LP counterpart).
+std::vector<VerifyTarget> verify_targets(const std::vector<std::string>& techniques, const TechniqueParams& params);
+// The technique parameters verify uses: exact solvers without bias, the others with their own.
+TechniqueParams verify_params(TechniqueParams params);
+
+// A depth distribution and a fragment depth: where an instance came from, for the report.
+struct VerifyInstance {
+  std::string source;
+  std::vector<double> depths, weights;
+  double zf = 0;
+};
+
+// Seeded random instances: 1..8 atoms on [0, 1] and mixtures of two smooth bumps.
+std::vector<VerifyInstance> random_verify_instances(int count, uint64_t seed);
+
+struct VerifyCase {
+  size_t instance = 0;
+  std::vector<double> moments;  // what the closed form read (after storage emulation)
+  double closed_form = 0;
+  std::vector<double> lp;       // per grid; NaN where the LP failed
+};
+
+struct VerifyGridStats {
+  int grid = 0;
+  size_t compared = 0, lp_failures = 0;
+  double max_difference = 0, mean_difference = 0;
+};
+
+struct VerifySolverResult {
+  VerifyTarget target;
+  size_t instances = 0, undefined = 0;  // undefined: the closed form returned no number
+  std::vector<VerifyGridStats> grids;
+  size_t beyond_tolerance = 0;  // |dG| > tolerance on the finest grid
+  size_t above_lp = 0;          // G_cf > G_LP + 1e-9 on some grid: impossible for a correct infimum
+  std::vector<VerifyCase> worst;  // by |dG| on the finest grid, largest first
+  bool passed() const { return !target.exact || (beyond_tolerance == 0 && above_lp == 0); }
+};
+
+using TechniqueMaker = std::function<std::unique_ptr<Technique>()>;
+
+// Compares `make()`'s technique with the LP on every instance and grid (grids ascending).
+// Deterministic for any thread count.
+VerifySolverResult verify_solver(const VerifyTarget& target, const TechniqueMaker& make,
+                                 std::span<const VerifyInstance> instances, const std::vector<int>& grids,
+                                 double tolerance, int worst_count, int threads);
+
+}  // namespace mb
