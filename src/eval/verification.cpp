@@ -13,16 +13,21 @@
 
 namespace mb {
 
+// How far a closed form may sit above an LP before it counts as impossible: the LP's own
+// certificate is 1e-9, the closed forms at alpha = 0 lose digits on near-singular moments.
+constexpr double kAboveLpSlack = 1e-6;
+
 std::vector<VerifyTarget> verify_targets(const std::vector<std::string>& techniques, const TechniqueParams& params) {
   // REFERENCE.md §6. I = R is represented by a wide interval that contains the extremal nodes of
   // nearly every instance; where it does not, the difference is "grid-limited" and shows up in the
-  // worst cases. ESM's e^{cz} needs points far enough below 0 that e^{cz} ~ 0; the LP uses
+  // worst cases (VSM: Cantelli's second point mu - sigma^2 / (z_f - mu) runs far out when z_f ~ mu,
+  // hence its wider interval). ESM's e^{cz} needs points far enough below 0 that e^{cz} ~ 0; the LP uses
   // e^{c(z-1)}, the same span scaled by e^{-c}, whose values stay <= 1 (the LP recomputes the
   // moments from the distribution, so the scale of the closed form's moment does not matter).
   const std::string esm_basis = "exp(" + std::to_string(params.esm_c) + "*(z-1))";
   std::vector<VerifyTarget> all = {
       {"hamburger4", {"power4"}, -4, 5, true},   {"hausdorff4", {"power4"}, 0, 1, true},
-      {"tmsm", {"trig4"}, 0, 1, true},           {"vsm", {"power2"}, -4, 5, true},
+      {"tmsm", {"trig4"}, 0, 1, true},           {"vsm", {"power2"}, -20, 21, true},
       {"esm", {esm_basis}, -1, 1, true},         {"hamburger6", {"power6"}, -2, 3, true},
       {"hamburger4_float", {"power4"}, -4, 5, false}, {"hamburger4_16bit", {"power4"}, -4, 5, false},
       {"tmsm_float", {"trig4"}, 0, 1, false},
@@ -148,7 +153,7 @@ VerifySolverResult verify_solver(const VerifyTarget& target, const TechniqueMake
       ++s.compared;
       s.max_difference = std::max(s.max_difference, d);
       s.mean_difference += d;
-      above = above || c.closed_form > c.lp[k] + 1e-9;
+      above = above || c.closed_form > c.lp[k] + kAboveLpSlack;
     }
     result.above_lp += above;
     if (std::isfinite(c.lp.back())) {

@@ -53,7 +53,7 @@ struct VerifySolverResult {
   size_t instances = 0, undefined = 0;  // undefined: the closed form returned no number
   std::vector<VerifyGridStats> grids;
   size_t beyond_tolerance = 0;  // |dG| > tolerance on the finest grid
-  size_t above_lp = 0;          // G_cf > G_LP + 1e-9 on some grid: impossible for a correct infimum
+  size_t above_lp = 0;          // G_cf > G_LP + 1e-6 on some grid: impossible for a correct infimum
   std::vector<VerifyCase> worst;  // by |dG| on the finest grid, largest first
   bool passed() const { return !target.exact || (beyond_tolerance == 0 && above_lp == 0); }
 };

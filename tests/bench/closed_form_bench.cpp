@@ -9,6 +9,7 @@
 #include "moments/chebyshev.h"
 #include "moments/hamburger.h"
 #include "moments/hausdorff.h"
+#include "moments/tmsm.h"
 #include "scene/procedural.h"
 
 namespace mb {
@@ -18,6 +19,8 @@ struct Stream {
   static constexpr int kFragments = 1 << 16;
   std::vector<double> b6, zf;  // 6 moments per fragment
   std::vector<float> b4f, zff;
+  std::vector<double> trig;  // (sin 2πz, cos 2πz, sin 4πz, cos 4πz) moments of the same atoms
+  std::vector<float> trigf;
   Stream() {
     SeededRandom rng(2026);
     const double star[6] = {0.5, 0.5, 0.5, 0.5, 0.5, 0.5};
@@ -27,6 +30,14 @@ struct Stream {
       for (int a = 0; a < atoms; ++a) total += w[a] = rng.uniform(0.05, 1), z[a] = rng.uniform(0, 1);
       for (int a = 0; a < atoms; ++a)
         for (int j = 0, p = 1; j < 6; ++j, ++p) b[j] += w[a] / total * std::pow(z[a], p);
+      double t[4] = {};
+      for (int a = 0; a < atoms; ++a) {
+        const double phi = 2 * 3.141592653589793 * z[a];
+        t[0] += w[a] / total * std::sin(phi), t[1] += w[a] / total * std::cos(phi);
+        t[2] += w[a] / total * std::sin(2 * phi), t[3] += w[a] / total * std::cos(2 * phi);
+      }
+      bias_trigonometric_moments(t, 5e-5);
+      for (int j = 0; j < 4; ++j) trig.push_back(t[j]), trigf.push_back(float(t[j]));
       bias_moments(b, 6, 3e-5, star);
       for (int j = 0; j < 6; ++j) b6.push_back(b[j]);
       for (int j = 0; j < 4; ++j) b4f.push_back(float(b[j]));
@@ -80,7 +91,15 @@ void BM_Hamburger6(benchmark::State& state) {
 void BM_Vsm(benchmark::State& state) {
   run(state, [](const Stream& s, int k) { return vsm_bound(&s.b6[6 * k], s.zf[k], 0); });
 }
+void BM_TmsmDouble(benchmark::State& state) {
+  run(state, [](const Stream& s, int k) { return tmsm(&s.trig[4 * k], s.zf[k]).lower; });
+}
+void BM_TmsmFloat(benchmark::State& state) {
+  run(state, [](const Stream& s, int k) { return double(tmsm(&s.trigf[4 * k], s.zff[k]).lower); });
+}
 BENCHMARK(BM_Hamburger4Double);
+BENCHMARK(BM_TmsmDouble);
+BENCHMARK(BM_TmsmFloat);
 BENCHMARK(BM_Hamburger4Float);
 BENCHMARK(BM_Hausdorff4);
 BENCHMARK(BM_Hamburger6);

@@ -1,0 +1,85 @@
+// `verify` (REFERENCE.md §6): the exact closed forms pass against the LP on a seeded set, and
+// deliberately wrong solvers are caught, both too low (beyond tolerance) and too high (above an
+// LP, which no correct infimum can be).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "eval/verification.h"
+#include "util/error.h"
+
+namespace mb {
+namespace {
+
+// A closed form with a deliberate error: another technique's answer, shifted.
+class WrongTechnique : public Technique {
+ public:
+  WrongTechnique(std::unique_ptr<Technique> inner, double shift)
+      : Technique("wrong", inner->basis(), inner->storage()), inner_(std::move(inner)), shift_(shift) {}
+  double shadow(const FragmentInput& in) override { return std::clamp(inner_->shadow(in) + shift_, 0.0, 1.0); }
+
+ private:
+  std::unique_ptr<Technique> inner_;
+  double shift_;
+};
+
+class Verify : public ::testing::Test {
+ protected:
+  Verify() : params_(verify_params(TechniqueParams{})), instances_(random_verify_instances(400, 77)) {
+    params_.esm_c = 10;
+  }
+  VerifySolverResult run(const std::string& target_name, const TechniqueMaker& make) {
+    const VerifyTarget target = verify_targets({target_name}, params_).front();
+    return verify_solver(target, make, instances_, {256, 1024, 4096}, 5e-3, 3, 2);
+  }
+  TechniqueParams params_;
+  std::vector<VerifyInstance> instances_;
+};
+
+TEST_F(Verify, ExactClosedFormsMatchTheLpAndConvergeAsTheGridRefines) {
+  for (const char* name : {"hausdorff4", "tmsm", "hamburger4", "esm"}) {
+    VerifySolverResult r = run(name, [&] { return make_technique(name, params_); });
+    EXPECT_TRUE(r.passed()) << name << ": " << r.beyond_tolerance << " beyond, " << r.above_lp << " above";
+    EXPECT_EQ(r.undefined, 0u) << name;
+    ASSERT_EQ(r.grids.size(), 3u);
+    EXPECT_GE(r.grids.back().compared, 390u) << name;
+    // Refining the grid brings the LP to the closed form.
+    EXPECT_LE(r.grids[2].mean_difference, r.grids[0].mean_difference + 1e-12) << name;
+    EXPECT_EQ(r.worst.size(), 3u);
+  }
+}
+
+TEST_F(Verify, AWrongSolverIsCaughtTooLowAndTooHigh) {
+  // Hamburger's infimum over R answered for Hausdorff's [0, 1]: too low where nodes leave [0, 1].
+  VerifySolverResult low = run("hausdorff4", [&] { return make_technique("hamburger4", params_); });
+  EXPECT_FALSE(low.passed());
+  EXPECT_GT(low.beyond_tolerance, 0u);
+  // TMSM shifted up by 0.01: above the LP on every instance with G < 0.99.
+  VerifySolverResult high = run("tmsm", [&] { return std::make_unique<WrongTechnique>(make_technique("tmsm", params_), 0.01); });
+  EXPECT_FALSE(high.passed());
+  EXPECT_GT(high.above_lp, 100u);
+  // A shift well inside the tolerance is still caught by the above-LP rule.
+  VerifySolverResult subtle = run("tmsm", [&] { return std::make_unique<WrongTechnique>(make_technique("tmsm", params_), 1e-4); });
+  EXPECT_FALSE(subtle.passed());
+  EXPECT_EQ(subtle.beyond_tolerance, 0u);
+}
+
+TEST_F(Verify, ResultsDoNotDependOnTheThreadCount) {
+  const VerifyTarget target = verify_targets({"tmsm"}, params_).front();
+  auto make = [&] { return make_technique("tmsm", params_); };
+  VerifySolverResult one = verify_solver(target, make, instances_, {64, 256}, 5e-3, 5, 1);
+  VerifySolverResult two = verify_solver(target, make, instances_, {64, 256}, 5e-3, 5, 2);
+  for (size_t k = 0; k < 2; ++k) {
+    EXPECT_EQ(one.grids[k].max_difference, two.grids[k].max_difference);
+    EXPECT_EQ(one.grids[k].mean_difference, two.grids[k].mean_difference);
+  }
+  ASSERT_EQ(one.worst.size(), two.worst.size());
+  for (size_t k = 0; k < one.worst.size(); ++k) EXPECT_EQ(one.worst[k].instance, two.worst[k].instance);
+}
+
+TEST_F(Verify, TechniquesWithoutAnLpCounterpartAreRejected) {
+  EXPECT_THROW(verify_targets({"pcf"}, params_), InputError);
+}
+
+}  // namespace
+}  // namespace mb
