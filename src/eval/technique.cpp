@@ -102,7 +102,7 @@ class TmsmTechnique : public Technique {
     Real b[4];
     for (int j = 0; j < 4; ++j) b[j] = Real(in.moments[j]);
     bias_trigonometric_moments(b, Real(alpha_));
-    MsmBound<Real> r = tmsm(b, Real(in.zf));
+    MsmBound<Real> r = tmsm(b, Real(in.zf), false);
     return double(r.lower + Real(beta_) * r.at_zf);
   }
   double finish(double g) {

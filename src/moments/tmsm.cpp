@@ -47,7 +47,7 @@ class TmsmSolver {
     for (int k = 0; k < 4; ++k) e_[k] = m_[k + 1] - xf_ * m_[k];  // E_k = E_nu[(x - x_f) x^k]
   }
 
-  MsmBound<Real> solve() {
+  MsmBound<Real> solve(bool with_support) {
     const Real *m = m_, *e = e_;
     // (b) no mass at the cut: s E1 - p E0 = E2, s E2 - p E1 = E3.
     const Real d = e[0] * e[2] - e[1] * e[1];
@@ -67,7 +67,7 @@ class TmsmSolver {
       const Real a = roots[k];
       consider(a, (e[2] - a * e[1]) / (e[1] - a * e[0]), Kind::Stationary);
     }
-    return finish();
+    return finish(with_support);
   }
 
  private:
@@ -134,20 +134,21 @@ class TmsmSolver {
     }
   }
 
-  MsmBound<Real> finish() const {
+  MsmBound<Real> finish(bool with_support) const {
     MsmBound<Real> r;
     if (!have_best_) {  // every formula failed: not a moment vector this solver can read
       r.lower = std::numeric_limits<Real>::quiet_NaN();
       return r;
     }
+    r.lower = std::clamp(best_.lower, Real(0), Real(1));
+    r.at_zf = std::clamp(best_.w[0], Real(0), Real(1));
+    if (!with_support) return r;  // the depths cost two atan2, as much as the rest
     r.node_count = 4;
     r.nodes[0] = zf_;
     r.nodes[1] = depth_of(best_.x[0]);
     r.nodes[2] = depth_of(best_.x[1]);
     r.nodes[3] = 1;
     for (int i = 0; i < 4; ++i) r.weights[i] = best_.w[i];
-    r.lower = std::clamp(best_.lower, Real(0), Real(1));
-    r.at_zf = std::clamp(best_.w[0], Real(0), Real(1));
     return r;
   }
 
@@ -178,17 +179,17 @@ Real lower_at_one(const Real* b) {
 }  // namespace
 
 template <class Real>
-MsmBound<Real> tmsm(const Real* b, Real zf) {
+MsmBound<Real> tmsm(const Real* b, Real zf, bool with_support) {
   MsmBound<Real> r;
   if (!(zf > 0)) return r;  // A = (0, z_f) is empty
   if (zf >= 1) {
     r.lower = zf > 1 ? Real(1) : lower_at_one(b);
     return r;
   }
-  return TmsmSolver<Real>(b, zf).solve();
+  return TmsmSolver<Real>(b, zf).solve(with_support);
 }
 
-template MsmBound<float> tmsm<float>(const float*, float);
-template MsmBound<double> tmsm<double>(const double*, double);
+template MsmBound<float> tmsm<float>(const float*, float, bool);
+template MsmBound<double> tmsm<double>(const double*, double, bool);
 
 }  // namespace mb

@@ -8,9 +8,9 @@ namespace mb {
 
 // b = (E sin 2πz, E cos 2πz, E sin 4πz, E cos 4πz), already biased. Real = float or double.
 // nodes/weights: the extremal distribution in depth (the cut reported as depth 1, where it
-// does not shadow); at_zf: its weight at z_f.
+// does not shadow); at_zf: its weight at z_f. Without with_support only lower and at_zf are set.
 template <class Real>
-MsmBound<Real> tmsm(const Real* b, Real zf);
+MsmBound<Real> tmsm(const Real* b, Real zf, bool with_support = true);
 
 // The bias of tmsm.md §6: towards the uniform distribution, whose trigonometric moments are 0.
 template <class Real>

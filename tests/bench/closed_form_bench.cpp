@@ -92,10 +92,10 @@ void BM_Vsm(benchmark::State& state) {
   run(state, [](const Stream& s, int k) { return vsm_bound(&s.b6[6 * k], s.zf[k], 0); });
 }
 void BM_TmsmDouble(benchmark::State& state) {
-  run(state, [](const Stream& s, int k) { return tmsm(&s.trig[4 * k], s.zf[k]).lower; });
+  run(state, [](const Stream& s, int k) { return tmsm(&s.trig[4 * k], s.zf[k], false).lower; });
 }
 void BM_TmsmFloat(benchmark::State& state) {
-  run(state, [](const Stream& s, int k) { return double(tmsm(&s.trigf[4 * k], s.zff[k]).lower); });
+  run(state, [](const Stream& s, int k) { return double(tmsm(&s.trigf[4 * k], s.zff[k], false).lower); });
 }
 BENCHMARK(BM_Hamburger4Double);
 BENCHMARK(BM_TmsmDouble);
