@@ -14,25 +14,12 @@
 #include "moments/hausdorff.h"
 #include "moments/storage.h"
 #include "scene/procedural.h"
+#include "test_distribution.h"
 
 namespace mb {
 namespace {
 
-struct Distribution {
-  std::vector<double> z, w;
-  double cdf(double at) const {
-    double s = 0;
-    for (size_t i = 0; i < z.size(); ++i) s += z[i] < at ? w[i] : 0;
-    return s;
-  }
-  // E[Z^1..Z^count]
-  std::vector<double> power_moments(int count) const {
-    std::vector<double> b(count, 0.0);
-    for (size_t i = 0; i < z.size(); ++i)
-      for (int j = 0; j < count; ++j) b[j] += w[i] * std::pow(z[i], j + 1);
-    return b;
-  }
-};
+using testing_support::Distribution;
 
 Distribution random_distribution(SeededRandom& rng, int atoms) {
   Distribution d;

@@ -15,29 +15,12 @@
 #include "moments/canonical.h"
 #include "moments/tmsm.h"
 #include "scene/procedural.h"
+#include "test_distribution.h"
 
 namespace mb {
 namespace {
 
-struct Distribution {
-  std::vector<double> z, w;
-  double cdf(double at) const {
-    double s = 0;
-    for (size_t i = 0; i < z.size(); ++i) s += z[i] < at ? w[i] : 0;
-    return s;
-  }
-  std::vector<double> trig_moments() const {
-    std::vector<double> b(4, 0.0);
-    for (size_t i = 0; i < z.size(); ++i) {
-      const double phi = 2 * std::numbers::pi * z[i];
-      b[0] += w[i] * std::sin(phi);
-      b[1] += w[i] * std::cos(phi);
-      b[2] += w[i] * std::sin(2 * phi);
-      b[3] += w[i] * std::cos(2 * phi);
-    }
-    return b;
-  }
-};
+using testing_support::Distribution;
 
 // Atoms anywhere, clustered near the cut, or a discretised continuous mixture.
 Distribution random_distribution(SeededRandom& rng, int atoms, int flavour) {

@@ -108,15 +108,14 @@ int run_solve(const SolveOptions& o) {
       if (q.contains("technique")) {
         out.update(solve_closed_form(q.at("technique").get<std::string>(), q.value("alpha", -1.0),
                                      q.at("moments").get<std::vector<double>>(), q.at("zf").get<double>()));
-        results << out.dump() << "\n";
-        continue;
+      } else {
+        std::vector<std::string> basis = q.at("basis").get<std::vector<std::string>>();
+        std::vector<double> interval = q.value("interval", std::vector<double>{0, 1});
+        if (interval.size() != 2) throw InputError("interval: expected [lo, hi]");
+        lp::Discretization d{interval[0], interval[1], q.value("grid", o.grid), o.quantize};
+        out.update(solve_one(*backend, basis, d, q.at("moments").get<std::vector<double>>(),
+                             q.at("zf").get<double>(), q.value("points", std::vector<double>{}), o.check));
       }
-      std::vector<std::string> basis = q.at("basis").get<std::vector<std::string>>();
-      std::vector<double> interval = q.value("interval", std::vector<double>{0, 1});
-      if (interval.size() != 2) throw InputError("interval: expected [lo, hi]");
-      lp::Discretization d{interval[0], interval[1], q.value("grid", o.grid), o.quantize};
-      out.update(solve_one(*backend, basis, d, q.at("moments").get<std::vector<double>>(), q.at("zf").get<double>(),
-                           q.value("points", std::vector<double>{}), o.check));
     } catch (const std::exception& e) {
       // A malformed line is reported with its number and does not stop the others.
       ++failures;

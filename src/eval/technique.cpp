@@ -43,12 +43,31 @@ class EsmTechnique : public Technique {
 
 // The power-moment solvers share the bias towards b* = (1/2, .., 1/2) (REFERENCE.md §4: the
 // moments of half the mass at 0 and half at 1) and the beta blend of seed 004.
+// Closed forms share what happens to an answer: a NaN (a singular Hankel or Toeplitz matrix at
+// alpha = 0 with a kernel of one or two depths) is counted, reported, and shown as fully lit so it
+// cannot hide inside the mean; anything else is clamped to [0, 1].
+class ClosedFormTechnique : public Technique {
+ public:
+  size_t failures() const override { return failures_; }
+
+ protected:
+  using Technique::Technique;
+  double finish(double g) {
+    if (std::isfinite(g)) return std::clamp(g, 0.0, 1.0);
+    ++failures_;
+    return 0;
+  }
+
+ private:
+  size_t failures_ = 0;
+};
+
 enum class PowerSolver { Hamburger4, Hamburger4Float, Hausdorff4, Hamburger6 };
 
-class PowerMomentTechnique : public Technique {
+class PowerMomentTechnique : public ClosedFormTechnique {
  public:
   PowerMomentTechnique(std::string name, PowerSolver solver, MomentStorage storage, double alpha, double beta)
-      : Technique(std::move(name), Basis::parse({solver == PowerSolver::Hamburger6 ? "power6" : "power4"}),
+      : ClosedFormTechnique(std::move(name), Basis::parse({solver == PowerSolver::Hamburger6 ? "power6" : "power4"}),
                   std::move(storage)),
         solver_(solver), alpha_(alpha), beta_(beta) {}
 
@@ -69,32 +88,22 @@ class PowerMomentTechnique : public Technique {
                                                               : hamburger4(b, in.zf);
     return finish(r.lower + beta_ * r.at_zf);
   }
-  size_t failures() const override { return failures_; }
 
  private:
-  // A singular Hankel matrix (alpha = 0 and a kernel of one or two depths) gives NaN: counted,
-  // reported, and shown as fully lit so it cannot hide inside the mean.
-  double finish(double g) {
-    if (std::isfinite(g)) return std::clamp(g, 0.0, 1.0);
-    ++failures_;
-    return 0;
-  }
   PowerSolver solver_;
   double alpha_, beta_;
-  size_t failures_ = 0;
 };
 
 // Trigonometric moment shadow mapping (moments/tmsm.md): bias towards the uniform distribution.
-class TmsmTechnique : public Technique {
+class TmsmTechnique : public ClosedFormTechnique {
  public:
   TmsmTechnique(std::string name, bool in_float, double alpha, double beta)
-      : Technique(std::move(name), Basis::parse({"trig4"}), in_float ? float32_storage() : double_storage()),
+      : ClosedFormTechnique(std::move(name), Basis::parse({"trig4"}), in_float ? float32_storage() : double_storage()),
         in_float_(in_float), alpha_(alpha), beta_(beta) {}
   double shadow(const FragmentInput& in) override {
     if (in_float_) return finish(solve<float>(in));
     return finish(solve<double>(in));
   }
-  size_t failures() const override { return failures_; }
 
  private:
   template <class Real>
@@ -105,14 +114,8 @@ class TmsmTechnique : public Technique {
     MsmBound<Real> r = tmsm(b, Real(in.zf), false);
     return double(r.lower + Real(beta_) * r.at_zf);
   }
-  double finish(double g) {
-    if (std::isfinite(g)) return std::clamp(g, 0.0, 1.0);
-    ++failures_;
-    return 0;
-  }
   bool in_float_;
   double alpha_, beta_;
-  size_t failures_ = 0;
 };
 
 void check_alpha(const char* key, double alpha) {
