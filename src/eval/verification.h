@@ -3,6 +3,7 @@
 // and interval, on seeded random depth distributions and on real kernels of a dataset, at several
 // LP grid sizes.
 #include <functional>
+#include <limits>
 #include <memory>
 #include <span>
 #include <string>
@@ -40,6 +41,9 @@ struct VerifyCase {
   std::vector<double> moments;  // what the closed form read (after storage emulation)
   double closed_form = 0;
   std::vector<double> lp;       // per grid; NaN where the LP failed
+  // max over grids of G_cf(moments of the LP's distribution) - (its mass below z_f): > 0 is
+  // impossible for a correct infimum (see verification.cpp).
+  double above_witness = -std::numeric_limits<double>::infinity();
 };
 
 struct VerifyGridStats {
@@ -53,8 +57,9 @@ struct VerifySolverResult {
   size_t instances = 0, undefined = 0;  // undefined: the closed form returned no number
   std::vector<VerifyGridStats> grids;
   size_t beyond_tolerance = 0;  // |dG| > tolerance on the finest grid
-  size_t above_lp = 0;          // G_cf > G_LP + 1e-6 on some grid: impossible for a correct infimum
-  std::vector<VerifyCase> worst;  // by |dG| on the finest grid, largest first
+  size_t above_lp = 0;          // above_witness > 1e-6: impossible for a correct infimum
+  std::vector<VerifyCase> worst;        // by |dG| on the finest grid, largest first
+  std::vector<VerifyCase> worst_above;  // above an LP witness, by how far (largest first)
   bool passed() const { return !target.exact || (beyond_tolerance == 0 && above_lp == 0); }
 };
 
