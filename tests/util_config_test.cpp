@@ -16,7 +16,8 @@ std::vector<OptionSpec> specs() {
           {"raster.resolution", OptionType::Integer, "512", "Resolution.", 1, 16384},
           {"shadow.sigma", OptionType::Number, "2.4", "Sigma.", 1e-6, 100},
           {"previews", OptionType::Boolean, "true", "Previews."},
-          {"techniques", OptionType::StringList, "[vsm, esm]", "Techniques.", -1, 1, {"vsm", "esm", "pcf"}}};
+          {"techniques", OptionType::StringList, "[vsm, esm]", "Techniques.", -1, 1, {"vsm", "esm", "pcf"}},
+          {"depths", OptionType::NumberList, "[0.25, 0.5]", "Depths.", 0, 1}};
 }
 
 TEST(Config, DefaultsFileAndSetApplyInOrder) {
@@ -29,7 +30,11 @@ TEST(Config, DefaultsFileAndSetApplyInOrder) {
   config.set("techniques=pcf,vsm");
   EXPECT_EQ(config.integer("raster.resolution"), 32);
   EXPECT_EQ(config.strings("techniques"), (std::vector<std::string>{"pcf", "vsm"}));
-  EXPECT_EQ(config.non_default().size(), 3u);
+  config.set("depths=[0.125, 1]");
+  EXPECT_EQ(config.numbers("depths"), (std::vector<double>{0.125, 1}));
+  config.set("depths=0.75,0.5");
+  EXPECT_EQ(config.numbers("depths"), (std::vector<double>{0.75, 0.5}));
+  EXPECT_EQ(config.non_default().size(), 4u);
 }
 
 TEST(Config, UnknownKeyNamesFileLineAndSuggestion) {
@@ -48,6 +53,12 @@ TEST(Config, WrongTypeRangeAndChoiceAreErrors) {
   EXPECT_NE(testing_support::input_error_of([&] { config.set("shadow.sigma=-1"); }).find("shadow.sigma"), std::string::npos);
   EXPECT_NE(testing_support::input_error_of([&] { config.set("previews=maybe"); }).find("true or false"), std::string::npos);
   EXPECT_NE(testing_support::input_error_of([&] { config.set("techniques=vsn"); }).find("did you mean 'vsm'"), std::string::npos);
+  EXPECT_NE(testing_support::input_error_of([&] { config.set("depths=[0.5, nan]"); }).find("item 2 'nan': expected a finite number"),
+            std::string::npos);
+  EXPECT_NE(testing_support::input_error_of([&] { config.set("depths=0.5,2"); }).find("item 2 '2': expected a number in [0, 1]"),
+            std::string::npos);
+  EXPECT_NE(testing_support::input_error_of([&] { config.set("depths=[0.1, [0.2]]"); }).find("list of finite numbers"),
+            std::string::npos);
   std::string file = testing_support::write_temp_file("mb_cfg3.yaml", "previews: 3\n");
   EXPECT_NE(testing_support::input_error_of([&] { config.load_file(file); }).find(file + ":1:"), std::string::npos);
 }
@@ -58,12 +69,14 @@ TEST(Config, PrintedConfigReadsBackToTheSameValues) {
   config.set("shadow.sigma=0.1");
   config.set("techniques=esm");
   config.set("dataset=some/path.yaml");
+  config.set("depths=[0.1, 0.30000000000000004]");
   std::string printed = config.to_yaml();
   Config back(specs());
   back.load_file(testing_support::write_temp_file("mb_cfg4.yaml", printed));
   EXPECT_EQ(back.to_yaml(), printed);
   EXPECT_DOUBLE_EQ(back.number("shadow.sigma"), 0.1);
   EXPECT_EQ(back.string("dataset"), "some/path.yaml");
+  EXPECT_EQ(back.numbers("depths"), (std::vector<double>{0.1, 0.30000000000000004}));
 }
 
 }  // namespace

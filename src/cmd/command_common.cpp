@@ -1,5 +1,11 @@
 #include "cmd/command_common.h"
 
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+
+#include "util/error.h"
+
 namespace mb {
 
 namespace {
@@ -35,6 +41,21 @@ std::vector<OptionSpec> dataset_option_specs() {
        16384},
       {"threads", OptionType::Integer, "0", "OpenMP threads; 0 uses every core.", 0, 4096},
   };
+}
+
+std::string run_plot_script(const std::string& script, const std::string& arguments, const std::string& out_stem,
+                            const std::string& caption, bool quiet) {
+  if (std::system("/usr/bin/python3 -c 'import matplotlib' >/dev/null 2>&1") != 0) {
+    std::string note = "No plot: /usr/bin/python3 with matplotlib is not available (apt install python3-matplotlib).\n\n";
+    if (!quiet) std::fprintf(stderr, "%s", note.c_str());
+    return note;
+  }
+  const std::string path = std::string(MOMENTBENCH_SOURCE_DIR) + "/scripts/" + script;
+  const std::string command =
+      "/usr/bin/python3 '" + path + "' " + arguments + " --out '" + out_stem + "'" + (quiet ? " >/dev/null" : "");
+  if (std::system(command.c_str()) != 0) throw InputError("plot failed: " + command);
+  const std::string name = std::filesystem::path(out_stem).filename().string();
+  return "![" + caption + "](" + name + ".png) (also " + name + ".pdf)\n\n";
 }
 
 }  // namespace mb

@@ -28,4 +28,10 @@ void set_process_arguments(int argc, char** argv);
 // Option declarations shared by the commands that read a dataset.
 std::vector<OptionSpec> dataset_option_specs();
 
+// Runs scripts/<script> with Debian's /usr/bin/python3 when matplotlib is there (DESIGN.md: plots
+// stay in Python). Returns the Markdown line for the report: the image `<out_stem>.png` (and
+// .pdf), or a note saying why there is no plot. InputError when the script itself fails.
+std::string run_plot_script(const std::string& script, const std::string& arguments, const std::string& out_stem,
+                            const std::string& caption, bool quiet);
+
 }  // namespace mb

@@ -12,5 +12,6 @@ void register_sweep_command(CLI::App& app, std::function<int()>& action);
 void register_merge_command(CLI::App& app, std::function<int()>& action);
 void register_report_command(CLI::App& app, std::function<int()>& action);
 void register_verify_command(CLI::App& app, std::function<int()>& action);
+void register_bounds_command(CLI::App& app, std::function<int()>& action);
 
 }  // namespace mb

@@ -118,21 +118,12 @@ int run_report(const ReportOptions& o) {
   write_file_atomically(out / "candidates.csv", csv.str());
   write_file_atomically(out / "references.csv", refs.str());
   write_file_atomically(out / "histogram.csv", hist.str());
-  // The plot: Python and matplotlib (DESIGN.md: plots stay in Python), when available.
-  std::string script = std::string(MOMENTBENCH_SOURCE_DIR) + "/scripts/plot_histogram.py";
   std::string plot_note;
-  if (o.plot) {
-    if (std::system("/usr/bin/python3 -c 'import matplotlib' >/dev/null 2>&1") == 0) {
-      std::string command = "/usr/bin/python3 '" + script + "' --histogram '" + (out / "histogram.csv").string() +
-                            "' --references '" + (out / "references.csv").string() + "' --out '" +
-                            (out / "histogram").string() + "'" + (o.quiet ? " >/dev/null" : "");
-      if (std::system(command.c_str()) != 0) throw InputError("plot failed: " + command);
-      plot_note = "![candidate histogram](histogram.png) (also histogram.pdf)\n\n";
-    } else {
-      plot_note = "No plot: /usr/bin/python3 with matplotlib is not available (apt install python3-matplotlib).\n\n";
-      if (!o.quiet) std::fprintf(stderr, "report: %s", plot_note.c_str());
-    }
-  }
+  if (o.plot)
+    plot_note = run_plot_script("plot_histogram.py",
+                                "--histogram '" + (out / "histogram.csv").string() + "' --references '" +
+                                    (out / "references.csv").string() + "'",
+                                (out / "histogram").string(), "candidate histogram", o.quiet);
   std::string text = md.str();
   text.insert(text.find("## Reference techniques"), "## Histogram\n\n" + plot_note);
   write_file_atomically(out / "report.md", text);

@@ -33,9 +33,23 @@ std::vector<OptionSpec> shadow_option_specs() {
   };
 }
 
+GaussianKernel kernel_from(const Config& config) {
+  return make_gaussian_kernel(int(config.integer("kernel.size")), config.number("kernel.sigma"));
+}
+
+lp::Discretization lp_discretization_from(const Config& config) {
+  lp::Discretization d;
+  d.grid = int(config.integer("lp.grid"));
+  d.lo = config.number("lp.lo");
+  d.hi = config.number("lp.hi");
+  d.quantize = config.boolean("lp.quantize");
+  if (!(d.lo < d.hi)) throw InputError("lp.lo, lp.hi: expected lo < hi");
+  return d;
+}
+
 EvalSettings shadow_settings_from(const Config& config, int threads) {
   EvalSettings s;
-  s.kernel = make_gaussian_kernel(int(config.integer("kernel.size")), config.number("kernel.sigma"));
+  s.kernel = kernel_from(config);
   s.pcf.receiver_plane = config.boolean("pcf.receiver_plane");
   s.pcf.constant_bias = config.number("pcf.constant_bias");
   s.depth_bias = config.number("depth_bias");
@@ -50,12 +64,8 @@ EvalSettings shadow_settings_from(const Config& config, int threads) {
   t.beta = config.number("hamburger.beta");
   t.esm_c = config.number("esm.c");
   t.vsm_min_variance = config.number("vsm.min_variance");
-  t.lp.grid = int(config.integer("lp.grid"));
-  t.lp.lo = config.number("lp.lo");
-  t.lp.hi = config.number("lp.hi");
-  t.lp.quantize = config.boolean("lp.quantize");
+  t.lp = lp_discretization_from(config);
   t.lp_backend = config.string("lp.backend");
-  if (!(t.lp.lo < t.lp.hi)) throw InputError("lp.lo, lp.hi: expected lo < hi");
   s.threads = threads;
   return s;
 }

@@ -9,6 +9,9 @@
 namespace mb {
 
 std::vector<OptionSpec> shadow_option_specs();
+// The kernel.* and lp.* keys alone (commands that need no technique parameters).
+GaussianKernel kernel_from(const Config& config);
+lp::Discretization lp_discretization_from(const Config& config);
 // Validated settings from a resolved config (InputError naming the key on bad values).
 EvalSettings shadow_settings_from(const Config& config, int threads);
 // One report line per setting that matters for reproducing numbers.

@@ -16,6 +16,7 @@ const char* type_name(OptionType type) {
     case OptionType::Boolean: return "true or false";
     case OptionType::String: return "a string";
     case OptionType::StringList: return "a list of strings";
+    case OptionType::NumberList: return "a list of finite numbers";
   }
   return "";
 }
@@ -117,6 +118,33 @@ void Config::assign(const std::string& name, const YAML::Node& node, const std::
       }
       break;
     }
+    case OptionType::NumberList: {
+      // A YAML list, or "--set bounds.depths=0.2,0.5" as a comma-separated one.
+      std::vector<std::string> items;
+      if (node.IsScalar() && !node.Scalar().empty()) {
+        std::stringstream in(node.Scalar());
+        for (std::string item; std::getline(in, item, ',');) items.push_back(item);
+      } else if (node.IsSequence()) {
+        for (const auto& item : node) {
+          if (!item.IsScalar()) bad(type_name(s.type));
+          items.push_back(item.Scalar());
+        }
+      } else if (!(node.IsNull() || (node.IsScalar() && node.Scalar().empty()))) {
+        bad(type_name(s.type));
+      }
+      stored = YAML::Node(YAML::NodeType::Sequence);
+      for (size_t k = 0; k < items.size(); ++k) {
+        double v;
+        const std::string where = "item " + std::to_string(k + 1) + " '" + items[k] + "'";
+        if (!YAML::convert<double>::decode(YAML::Node(items[k]), v) || !std::isfinite(v))
+          throw InputError(origin + ": key '" + name + "': " + where + ": expected a finite number");
+        if (v < s.min || v > s.max)
+          throw InputError(origin + ": key '" + name + "': " + where + ": expected a number in [" +
+                           number_text(s.min) + ", " + number_text(s.max) + "]");
+        stored.push_back(number_text(v));
+      }
+      break;
+    }
   }
   values_[name] = Value{stored, origin};
 }
@@ -202,11 +230,18 @@ std::vector<std::string> Config::strings(const std::string& name) const {
   return out;
 }
 
+std::vector<double> Config::numbers(const std::string& name) const {
+  if (spec(name).type != OptionType::NumberList) throw std::logic_error(name + " is not a number-list option");
+  std::vector<double> out;
+  for (const auto& item : values_.at(name).node) out.push_back(item.as<double>());
+  return out;
+}
+
 std::string Config::to_yaml() const {
   std::ostringstream out;
   for (const auto& s : specs_) {
     out << "# " << s.doc;
-    if (s.type == OptionType::Integer || s.type == OptionType::Number) {
+    if (s.type == OptionType::Integer || s.type == OptionType::Number || s.type == OptionType::NumberList) {
       if (std::isfinite(s.min) || std::isfinite(s.max))
         out << " Range [" << number_text(s.min) << ", " << number_text(s.max) << "].";
     }

@@ -12,14 +12,14 @@
 
 namespace mb {
 
-enum class OptionType { Integer, Number, Boolean, String, StringList };
+enum class OptionType { Integer, Number, Boolean, String, StringList, NumberList };
 
 struct OptionSpec {
   std::string name;  // dotted, e.g. "raster.threads"; a YAML file may nest it as raster: {threads: }
   OptionType type;
   std::string default_value;  // YAML text
   std::string doc;
-  double min = -std::numeric_limits<double>::infinity();
+  double min = -std::numeric_limits<double>::infinity();  // numbers, integers, each item of a number list
   double max = std::numeric_limits<double>::infinity();
   std::vector<std::string> choices;  // for strings (and string lists): the allowed values, if any
 };
@@ -38,6 +38,7 @@ class Config {
   bool boolean(const std::string& name) const;
   std::string string(const std::string& name) const;
   std::vector<std::string> strings(const std::string& name) const;
+  std::vector<double> numbers(const std::string& name) const;  // each item within [min, max]
 
   // The effective configuration as YAML that `load_file` reads back, one documented key a line.
   std::string to_yaml() const;

@@ -1,0 +1,174 @@
+// `momentbench bounds` (the seed paper's Figure 3): for one kernel, from a dataset texel or given
+// depths and weights, the true CDF and the sharp lower bounds of Problem 1 for m = 2, 3, 4 (the
+// first m functions of each basis) as functions of z_f; CSV, Markdown and a plot.
+#include <cstdio>
+#include <sstream>
+
+#include "cmd/command_common.h"
+#include "cmd/commands.h"
+#include "eval/bound_curves.h"
+#include "eval/eval_config.h"
+#include "eval/evaluation.h"
+#include "scene/dataset.h"
+#include "util/error.h"
+#include "util/output_dir.h"
+#include "util/run_metadata.h"
+
+namespace mb {
+
+namespace {
+
+std::vector<OptionSpec> bounds_specs() {
+  auto specs = dataset_option_specs();
+  for (auto& s : shadow_option_specs())
+    if (s.name.rfind("kernel.", 0) == 0 || s.name.rfind("lp.", 0) == 0) specs.push_back(s);
+  for (auto& s : specs)
+    if (s.name == "lp.grid") s.default_value = "1024";  // one kernel: a fine grid costs nothing
+  specs.push_back({"bounds.depths", OptionType::NumberList, "[0.2, 0.35, 0.5, 0.8]",
+                   "The kernel's depths (used when bounds.view is empty)."});
+  specs.push_back({"bounds.weights", OptionType::NumberList, "[0.3, 0.2, 0.35, 0.15]",
+                   "Their weights (normalised; one per depth)."});
+  specs.push_back({"bounds.view", OptionType::String, "''",
+                   "Take the kernel from this view of the dataset instead ('scene/view' or 'view')."});
+  specs.push_back({"bounds.texel", OptionType::NumberList, "[0, 0]", "With bounds.view: the texel x, y.", 0, 16384});
+  specs.push_back({"bounds.bases", OptionType::StringList, "[power4, trig4]",
+                   "Bases, each a named set or 'f1; f2; f3; f4'; the first m functions give the m-series."});
+  specs.push_back({"bounds.sizes", OptionType::NumberList, "[2, 3, 4]", "m values (numbers of functions).", 1, 7});
+  specs.push_back({"bounds.samples", OptionType::Integer, "401", "z_f values, uniform on bounds.zf_range.", 2, 1e6});
+  specs.push_back({"bounds.zf_range", OptionType::NumberList, "[0, 1]", "z_f from, to."});
+  return specs;
+}
+
+std::string num(double v, const char* format = "%.17g") {
+  char b[40];
+  std::snprintf(b, sizeof b, format, v);
+  return b;
+}
+
+// The kernel distribution at a dataset texel: the same taps as PCF and the moment maps see.
+std::string texel_distribution(const Config& config, BoundCurveRequest& request, const GaussianKernel& kernel,
+                               bool quiet) {
+  const std::string wanted = config.string("bounds.view");
+  const auto texel = config.numbers("bounds.texel");
+  if (texel.size() != 2 || texel[0] != int(texel[0]) || texel[1] != int(texel[1]))
+    throw InputError("bounds.texel: expected two integers [x, y]");
+  DatasetDesc dataset = load_dataset(config.string("dataset"));
+  EvalSettings settings;
+  settings.kernel = kernel;
+  settings.threads = request.threads;
+  const auto views = prepare_views(dataset, int(config.integer("resolution")), settings, quiet);
+  std::string names, matches;
+  const ViewData* found = nullptr;
+  for (const auto& v : views) {
+    const std::string full = v.scene + "/" + v.view;
+    names += (names.empty() ? "" : ", ") + full;
+    if (wanted != full && wanted != v.view) continue;
+    matches += (matches.empty() ? "" : ", ") + full;
+    if (found) throw InputError("bounds.view: '" + wanted + "' names several views (" + matches + "); write scene/view");
+    found = &v;
+  }
+  if (!found) throw InputError("bounds.view: no view '" + wanted + "' in dataset " + dataset.name + "; views: " + names);
+  const ViewData& v = *found;
+  const int x = int(texel[0]), y = int(texel[1]);
+  if (x >= v.map.width || y >= v.map.height)
+    throw InputError("bounds.texel: (" + std::to_string(x) + ", " + std::to_string(y) + ") lies outside view " + v.scene +
+                     "/" + v.view + " (" + std::to_string(v.map.width) + "x" + std::to_string(v.map.height) + ")");
+  const size_t taps = size_t(kernel.size) * kernel.size;
+  request.depths.assign(taps, 0);
+  request.weights.assign(taps, 0);
+  kernel_distribution(v.map, kernel, x, y, request.depths, request.weights);
+  return "dataset " + dataset.name + ", view " + v.scene + "/" + v.view + ", texel (" + std::to_string(x) + ", " +
+         std::to_string(y) + "), " + std::to_string(kernel.size) + "x" + std::to_string(kernel.size) +
+         " Gaussian kernel";
+}
+
+int run_bounds(const CommonOptions& options) {
+  Config config = resolve_config(bounds_specs(), options);
+  if (options.print_config) {
+    std::fputs(config.to_yaml().c_str(), stdout);
+    return 0;
+  }
+  BoundCurveRequest request;
+  request.threads = resolve_thread_count(int(config.integer("threads")));
+  request.lp = lp_discretization_from(config);
+  request.backend = config.string("lp.backend");
+  request.bases = config.strings("bounds.bases");
+  request.sizes.clear();
+  for (double m : config.numbers("bounds.sizes")) {
+    if (m != int(m)) throw InputError("bounds.sizes: expected whole numbers, got " + num(m, "%g"));
+    request.sizes.push_back(int(m));
+  }
+  request.samples = int(config.integer("bounds.samples"));
+  const auto range = config.numbers("bounds.zf_range");
+  if (range.size() != 2) throw InputError("bounds.zf_range: expected [from, to]");
+  request.zf_lo = range[0];
+  request.zf_hi = range[1];
+  const GaussianKernel kernel = kernel_from(config);
+  std::string source = "given depths and weights";
+  if (!config.string("bounds.view").empty()) {
+    source = texel_distribution(config, request, kernel, options.quiet);
+  } else {
+    request.depths = config.numbers("bounds.depths");
+    request.weights = config.numbers("bounds.weights");
+  }
+  StagedOutputDir out(options.out, options.force);
+  const BoundCurves curves = compute_bound_curves(request);
+
+  std::ostringstream csv, dist, md;
+  csv << "zf,cdf";
+  for (const auto& s : curves.series) csv << ",\"" << s.basis << " m=" << s.m << "\"";
+  csv << "\n";
+  for (size_t i = 0; i < curves.zf.size(); ++i) {
+    csv << num(curves.zf[i]) << "," << num(curves.cdf[i]);
+    for (const auto& s : curves.series) csv << "," << (std::isnan(s.lower[i]) ? std::string() : num(s.lower[i]));
+    csv << "\n";
+  }
+  dist << "depth,weight\n";
+  for (size_t t = 0; t < request.depths.size(); ++t)
+    if (request.weights[t] > 0) dist << num(request.depths[t]) << "," << num(request.weights[t]) << "\n";
+
+  RunMetadata meta = collect_run_metadata(request.threads, process_arguments());
+  md << "# Sharp lower bounds of Problem 1 for one kernel (seed 000, Figure 3)\n\n"
+     << "Made by momentbench " << meta.version << " (git " << meta.git_sha << "), " << request.threads << " threads, "
+     << meta.started_utc << ".\n\n"
+     << "- Distribution: " << source << "\n"
+     << "- LP: I = " << request.lp.grid << "-point grid on [" << num(request.lp.lo, "%g") << ", "
+     << num(request.lp.hi, "%g") << "] ∪ the distribution's depths ∪ {z_f} (REFERENCE.md §2), backend "
+     << request.backend << "; " << request.samples << " values of z_f on [" << num(request.zf_lo, "%g") << ", "
+     << num(request.zf_hi, "%g") << "]\n"
+     << "- Gap = F_Z(z_f) − G(b, z_f) ≥ 0; its mean over z_f is the area between the CDF and the bound.\n\n"
+     << "| basis | m | functions | mean gap | max gap | LPs not optimal |\n|---|---|---|---|---|---|\n";
+  for (const auto& s : curves.series) {
+    std::string functions;
+    for (const auto& f : s.functions) functions += (functions.empty() ? "" : ", ") + f;
+    md << "| " << s.basis << " | " << s.m << " | " << functions << " | " << num(s.mean_gap, "%.5f") << " | "
+       << num(s.max_gap, "%.5f") << " | " << s.failures << " |\n";
+  }
+  write_file_atomically(out / "bounds.csv", csv.str());
+  write_file_atomically(out / "distribution.csv", dist.str());
+  const std::string plot = run_plot_script(
+      "plot_bounds.py",
+      "--bounds '" + (out / "bounds.csv").string() + "' --distribution '" + (out / "distribution.csv").string() + "'",
+      (out / "bounds").string(), "CDF and sharp lower bounds", options.quiet);
+  md << "\n" << plot;
+  write_file_atomically(out / "bounds.md", md.str());
+  write_file_atomically(out / "config.yaml", config.to_yaml());
+  write_file_atomically(out / "run.yaml", to_yaml(meta));
+  out.commit();
+  const std::string text = md.str();
+  std::fputs(text.substr(0, text.rfind("\n\n![")).c_str(), stdout);
+  std::fputs("\n", stdout);
+  return 0;
+}
+
+}  // namespace
+
+void register_bounds_command(CLI::App& app, std::function<int()>& action) {
+  auto options = std::make_shared<CommonOptions>();
+  CLI::App* command =
+      app.add_subcommand("bounds", "CDF and sharp lower bounds for m = 2, 3, 4 of one kernel (Figure 3)");
+  add_common_options(*command, *options);
+  command->callback([options, &action] { action = [options] { return run_bounds(*options); }; });
+}
+
+}  // namespace mb
