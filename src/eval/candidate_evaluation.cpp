@@ -7,7 +7,8 @@
 
 namespace mb {
 
-CandidateEvaluator::CandidateEvaluator(const std::vector<ViewData>& views, const EvalSettings& settings)
+CandidateEvaluator::CandidateEvaluator(const std::vector<ViewData>& views,
+                                       const EvalSettings& settings)
     : views_(views), settings_(settings) {
   for (const auto& v : views) {
     std::vector<uint32_t> list;
@@ -42,7 +43,8 @@ CandidateResult CandidateEvaluator::evaluate(const Basis& basis) const {
     std::vector<double> depth(map.depth);
     if (disc.quantize)
       for (double& z : depth) z = lp::quantize_to_grid(disc, z);
-    depth.push_back(disc.quantize ? lp::quantize_to_grid(disc, 1.0) : 1.0);  // outside: index = map size
+    depth.push_back(disc.quantize ? lp::quantize_to_grid(disc, 1.0)
+                                  : 1.0);  // outside: index = map size
     const size_t texels = depth.size();
     std::vector<double> raw(texels * k), columns(texels * k), values(texels);
     for (size_t t = 0; t < texels; ++t) raw[t * k] = 1;
@@ -54,6 +56,15 @@ CandidateResult CandidateEvaluator::evaluate(const Basis& basis) const {
     for (size_t t = 0; t < texels; ++t) factory.transform(&raw[t * k], &columns[t * k]);
 
     const auto& list = needs_lp_[v];
+    // Warm-start runs (lp::kWarmStartRun fragments by fragment index): each run is solved in order
+    // by one thread, first from scratch, so the answers do not depend on the schedule and equal
+    // eval's lp: technique, which cuts its runs the same way.
+    std::vector<size_t> run_begin;
+    for (size_t i = 0; i < list.size(); ++i)
+      if (i == 0 || list[i] / lp::kWarmStartRun != list[i - 1] / lp::kWarmStartRun)
+        run_begin.push_back(i);
+    run_begin.push_back(list.size());
+    const size_t runs = run_begin.size() - 1;
     std::vector<double> g(view.fragments.size(), 0.0);  // skipped fragments: G = 0 exactly
 #pragma omp parallel num_threads(settings_.threads) reduction(+ : solved, infeasible, unstable)
     {
@@ -62,29 +73,32 @@ CandidateResult CandidateEvaluator::evaluate(const Basis& basis) const {
       std::vector<double> tap_depth(taps), tap_weight(taps);
       std::vector<const double*> tap_column(taps);
       std::vector<size_t> tap_texel(taps);
-#pragma omp for schedule(dynamic, 64)
-      for (size_t i = 0; i < list.size(); ++i) {
-        const size_t f = list[i], t = view.fragments.texel[f];
-        const int x = int(t % map.width), y = int(t / map.width);
-        // The same taps, in the same order, as eval's lp: technique; the extra texel index picks
-        // the column (the far plane's, one past the map, for taps outside it).
-        kernel_distribution(map, kernel, x, y, tap_depth, tap_weight, tap_texel);
-        for (int n = 0; n < taps; ++n) {
-          tap_depth[n] = depth[tap_texel[n]];  // quantized in quantize mode
-          tap_column[n] = &columns[tap_texel[n] * k];
+#pragma omp for schedule(dynamic, 1)
+      for (size_t run = 0; run < runs; ++run)
+        for (size_t i = run_begin[run]; i < run_begin[run + 1]; ++i) {
+          const size_t f = list[i], t = view.fragments.texel[f];
+          const int x = int(t % map.width), y = int(t / map.width);
+          // The same taps, in the same order, as eval's lp: technique; the extra texel index picks
+          // the column (the far plane's, one past the map, for taps outside it).
+          kernel_distribution(map, kernel, x, y, tap_depth, tap_weight, tap_texel);
+          for (int n = 0; n < taps; ++n) {
+            tap_depth[n] = depth[tap_texel[n]];  // quantized in quantize mode
+            tap_column[n] = &columns[tap_texel[n] * k];
+          }
+          factory.from_distribution(tap_depth, tap_weight, tap_column,
+                                    view.fragments.zf[f] - settings_.depth_bias, problem);
+          lp::Solution s = i == run_begin[run]
+                               ? backend->solve(problem)
+                               : backend->solve_next(problem, view.fragments.layer[f]);
+          if (s.call == lp::CallStatus::Ok && s.status == lp::ProblemStatus::Optimal) {
+            g[f] = std::clamp(s.G, 0.0, 1.0);
+            ++solved;
+          } else if (s.status == lp::ProblemStatus::Infeasible) {
+            ++infeasible;  // shown lit (G = 0), counted
+          } else {
+            ++unstable;
+          }
         }
-        factory.from_distribution(tap_depth, tap_weight, tap_column, view.fragments.zf[f] - settings_.depth_bias,
-                                  problem);
-        lp::Solution s = backend->solve(problem);
-        if (s.call == lp::CallStatus::Ok && s.status == lp::ProblemStatus::Optimal) {
-          g[f] = std::clamp(s.G, 0.0, 1.0);
-          ++solved;
-        } else if (s.status == lp::ProblemStatus::Infeasible) {
-          ++infeasible;  // shown lit (G = 0), counted
-        } else {
-          ++unstable;
-        }
-      }
     }
     ErrorStats stats;
     stats.add_all(view.fragments.pcf, g);

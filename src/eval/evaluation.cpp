@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include "lp/solution.h"
 #include "raster/render_view.h"
 #include "shadow/moment_map.h"
 
@@ -38,7 +39,7 @@ TechniqueResult evaluate_technique(const ViewData& view, const std::string& tech
   if (probe->basis().size() > 0)
     moments = compute_moment_map(view.map, probe->basis(), settings.kernel, probe->storage(), settings.threads);
   const size_t taps = size_t(settings.kernel.size) * settings.kernel.size;
-  const size_t chunk = 1024;
+  const size_t chunk = 4 * lp::kWarmStartRun;  // whole warm-start runs per thread
   size_t failures = 0;
 #pragma omp parallel num_threads(settings.threads) reduction(+ : failures)
   {
@@ -54,6 +55,8 @@ TechniqueResult evaluate_technique(const ViewData& view, const std::string& tech
         if (moments.m > 0) in.moments = moments.at(texel);
         in.zf = f.zf[k] - settings.depth_bias;
         in.pcf = f.pcf[k];
+        in.fragment = k;
+        in.layer = f.layer[k];
         if (needs_distribution) {
           kernel_distribution(view.map, settings.kernel, int(texel % f.width), int(texel / f.width), depths, weights);
           in.kernel_depths = depths;

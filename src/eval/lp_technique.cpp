@@ -9,7 +9,8 @@ namespace {
 
 class LpTechnique : public Technique {
  public:
-  LpTechnique(const std::string& name, Basis basis, const lp::Discretization& disc, const std::string& backend)
+  LpTechnique(const std::string& name, Basis basis, const lp::Discretization& disc,
+              const std::string& backend)
       : Technique(name, std::move(basis), double_storage()),
         factory_((this->basis().check_independent(disc.lo, disc.hi), this->basis()), disc),
         backend_(lp::make_backend(backend)) {}
@@ -25,7 +26,13 @@ class LpTechnique : public Technique {
     // The grid columns are shared (built once per technique instance); only the kernel's depths
     // and z_f are new per fragment.
     lp::Problem problem = factory_.from_distribution(in.kernel_depths, in.kernel_weights, in.zf);
-    lp::Solution s = backend_->solve(problem);
+    // Along a warm-start run (the same runs as the sweep's), continue from the lane's last basis.
+    const bool continues = solved_any_ &&
+                           in.fragment / lp::kWarmStartRun == last_fragment_ / lp::kWarmStartRun &&
+                           in.fragment > last_fragment_;
+    lp::Solution s = continues ? backend_->solve_next(problem, in.layer) : backend_->solve(problem);
+    solved_any_ = true;
+    last_fragment_ = in.fragment;
     if (s.call != lp::CallStatus::Ok || s.status != lp::ProblemStatus::Optimal) {
       ++failures_;
       return 0;
@@ -38,6 +45,8 @@ class LpTechnique : public Technique {
   lp::ProblemFactory factory_;
   std::unique_ptr<lp::Backend> backend_;
   size_t failures_ = 0;
+  bool solved_any_ = false;
+  size_t last_fragment_ = 0;
 };
 
 }  // namespace
@@ -51,11 +60,13 @@ std::vector<std::string> lp_technique_basis(const std::string& name) {
       if (i > start) items.push_back(spec.substr(start, i - start));
       start = i + 1;
     }
-  if (items.empty()) throw InputError("technique '" + name + "': expected lp:<basis>, e.g. lp:power4");
+  if (items.empty())
+    throw InputError("technique '" + name + "': expected lp:<basis>, e.g. lp:power4");
   return items;
 }
 
-std::unique_ptr<Technique> make_lp_technique(const std::string& name, const lp::Discretization& disc,
+std::unique_ptr<Technique> make_lp_technique(const std::string& name,
+                                             const lp::Discretization& disc,
                                              const std::string& backend) {
   return std::make_unique<LpTechnique>(name, Basis::parse(lp_technique_basis(name)), disc, backend);
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "lp/glpk_backend.h"
@@ -21,7 +22,7 @@ constexpr double kOptimalityTolerance = 1e-11;   // reduced cost >= -tol counts 
 constexpr double kPivotTolerance = 1e-9;         // smallest |u_i| accepted as a pivot
 constexpr double kPhase1Tolerance = 1e-10;       // residual artificial mass that means infeasible
 constexpr double kCertifyPrimal = 1e-12;         // dual cleanup: x_B below this must leave
-constexpr double kCertifyBound = 1e-9;          // certified bound on |G - G*| (see certify)
+constexpr double kCertifyBound = 1e-9;           // certified bound on |G - G*| (see certify)
 constexpr int kRefactorInterval = 16;            // rank-1 updates between fresh inverses
 constexpr int kDegenerateBeforeBland = 24;       // degenerate pivots in a row before Bland's rule
 
@@ -65,9 +66,32 @@ bool invert_small(int k, Real a[kMaxRows][kMaxRows], Real inv[kMaxRows][kMaxRows
   return true;
 }
 
+// The previous fragment's optimal basis, in terms that carry over to a neighbouring fragment:
+// grid columns by index, kernel columns by the tap they came from (the same tap of the next
+// kernel sees a nearby surface at the same offset), z_f's column and the composite column by role.
+enum class Role { Grid, Tap, Zf, Composite };
+struct WarmBasis {
+  bool valid = false;
+  int rows = 0, grid = 0;
+  Role role[kMaxRows];
+  int index[kMaxRows];
+};
+
 class FastSimplex {
  public:
-  Solution run(const Problem& p) {
+  // lane < 0: from scratch, and every lane forgets its basis; otherwise try the lane's previous
+  // optimal basis first (Backend::solve_next).
+  Solution run(const Problem& p, int lane) {
+    if (lane < 0)
+      for (auto& w : lanes_) w.valid = false;
+    WarmBasis& warm = lanes_[std::clamp(lane, 0, kWarmLanes - 1)];
+    Solution s = solve(p, lane >= 0 ? &warm : nullptr);
+    remember_basis(s, warm);
+    return s;
+  }
+
+ private:
+  Solution solve(const Problem& p, const WarmBasis* warm) {
     p_ = &p;
     k_ = p.rows;
     n_ = p.cols();
@@ -77,11 +101,22 @@ class FastSimplex {
     reduced_.resize(n_);
     // Costs once per problem: the grid is ascending, so its cost is a prefix of ones.
     cost_.resize(n_);
-    for (int j = 0; j < n_; ++j) cost_[j] = p.cost(j);
+    const auto& grid = p.grid->points;
+    const int in_front = int(std::lower_bound(grid.begin(), grid.end(), p.zf) - grid.begin());
+    std::fill(cost_.begin(), cost_.begin() + in_front, 1.0);
+    std::fill(cost_.begin() + in_front, cost_.begin() + g_, 0.0);
+    for (int e = 0; e < e_; ++e) cost_[g_ + e] = p.extra.points[e] < p.zf ? 1.0 : 0.0;
     composite_cost_ = 0;
-    for (size_t t = 0; t < p.start_support.size(); ++t) composite_cost_ += p.start_weights[t] * cost_[p.start_support[t]];
+    for (size_t t = 0; t < p.start_support.size(); ++t)
+      composite_cost_ += p.start_weights[t] * cost_[p.start_support[t]];
 
     Solution s;
+    if (warm && warm->valid && start_from_previous_basis(*warm)) {
+      if (solve_from_previous_basis(s)) return s;
+      const int spent = s.iterations;
+      s = Solution();
+      s.iterations = spent;
+    }
     if (!p.start_support.empty() && start_from_distribution()) {
       phase_ = 2;
       if (solve_phase2(s)) return s;
@@ -105,8 +140,128 @@ class FastSimplex {
     return unstable(s);
   }
 
- private:
+  // Neither primal nor dual feasible: the most negative basic column makes way for the composite
+  // column (the kernel distribution, which alone reproduces the moments), so x = e_i is a basic
+  // feasible solution next to the old basis; the primal simplex goes on from there.
+  bool repair_with_composite(Solution& s) {
+    if (p_->start_support.empty() || std::find(basis_, basis_ + k_, composite_) != basis_ + k_)
+      return false;
+    int worst = 0;
+    for (int i = 1; i < k_; ++i)
+      if (x_[i] < x_[worst]) worst = i;
+    basis_[worst] = composite_;
+    if (!refactor()) return false;
+    for (int i = 0; i < k_; ++i) x_[i] = i == worst ? 1.0 : 0.0;  // exact: B e_worst = rhs
+    return solve_phase2(s);
+  }
+
   bool is_artificial(int j) const { return j >= n_ && j < n_ + k_; }
+
+  void remember_basis(const Solution& s, WarmBasis& warm_) {
+    warm_.valid = s.status == ProblemStatus::Optimal && s.call == CallStatus::Ok && phase_ == 2;
+    if (!warm_.valid) return;
+    warm_.rows = k_;
+    warm_.grid = g_;
+    for (int i = 0; i < k_; ++i) {
+      const int j = basis_[i];
+      if (j == composite_)
+        warm_.role[i] = Role::Composite, warm_.index[i] = 0;
+      else if (j < g_)
+        warm_.role[i] = Role::Grid, warm_.index[i] = j;
+      else if (j - g_ == p_->zf_extra)
+        warm_.role[i] = Role::Zf, warm_.index[i] = 0;
+      else if (j < n_ && !p_->extra_tap.empty() && p_->extra_tap[j - g_] >= 0)
+        warm_.role[i] = Role::Tap, warm_.index[i] = p_->extra_tap[j - g_];
+      else
+        warm_.valid = false;  // an extra point without a tap (from_moments): nothing to map
+    }
+  }
+
+  bool start_from_previous_basis(const WarmBasis& warm_) {
+    if (warm_.rows != k_ || warm_.grid != g_) return false;
+    for (int i = 0; i < k_; ++i) {
+      int j = -1;
+      switch (warm_.role[i]) {
+        case Role::Grid:
+          j = warm_.index[i];
+          break;
+        case Role::Composite:
+          j = p_->start_support.empty() ? -1 : composite_;
+          break;
+        case Role::Zf:
+          j = p_->zf_extra < 0 ? -1 : g_ + p_->zf_extra;
+          break;
+        case Role::Tap: {
+          const int t = warm_.index[i];
+          j = t < int(p_->tap_extra.size()) && p_->tap_extra[t] >= 0 ? g_ + p_->tap_extra[t] : -1;
+          break;
+        }
+      }
+      if (j < 0 || std::find(basis_, basis_ + i, j) != basis_ + i) return false;
+      basis_[i] = j;
+    }
+    if (!refactor()) return false;
+    // Most infeasible starts are one bracket off: the LP approximates each interior node of the
+    // continuous extremal distribution by the two points of I around it, and when the node moves
+    // past one of them, that point's weight turns negative. Moving it past its partner fixes it.
+    for (int round = 0; round < 4 * k_; ++round) {
+      int worst = 0;
+      for (int i = 1; i < k_; ++i)
+        if (x_[i] < x_[worst]) worst = i;
+      if (x_[worst] >= -kFeasibilityTolerance || !shift_bracket(worst)) break;
+    }
+    return true;
+  }
+
+  // Basic column `i` (negative weight) moves to the nearest point of I beyond the basic point
+  // closest to it; the old basis is restored if that fails.
+  bool shift_bracket(int i) {
+    const int j = basis_[i];
+    if (j >= n_) return false;
+    const double z = p_->point(j);
+    int partner = -1;
+    double gap = std::numeric_limits<double>::infinity();
+    for (int q = 0; q < k_; ++q)
+      if (q != i && basis_[q] < n_ && std::abs(p_->point(basis_[q]) - z) < gap)
+        partner = q, gap = std::abs(p_->point(basis_[q]) - z);
+    if (partner < 0) return false;
+    const double from = p_->point(basis_[partner]), direction = from > z ? 1.0 : -1.0;
+    int best = -1;
+    double distance = std::numeric_limits<double>::infinity();
+    const auto& grid = p_->grid->points;
+    const int above = int(std::upper_bound(grid.begin(), grid.end(), from) - grid.begin());
+    const int g = direction > 0
+                      ? above
+                      : int(std::lower_bound(grid.begin(), grid.end(), from) - grid.begin()) - 1;
+    if (g >= 0 && g < g_) best = g, distance = std::abs(grid[g] - from);
+    for (int e = 0; e < e_; ++e) {
+      const double d = (p_->extra.points[e] - from) * direction;
+      if (d > 0 && d < distance) best = g_ + e, distance = d;
+    }
+    if (best < 0 || std::find(basis_, basis_ + k_, best) != basis_ + k_) return false;
+    // A column exchange is one product-form update of the inverse (and of x_B), not a new one.
+    double u[kMaxRows];
+    column_in_basis(best, u);
+    double largest = 0;
+    for (int q = 0; q < k_; ++q) largest = std::max(largest, std::abs(u[q]));
+    if (!(std::abs(u[i]) > 1e-7 * largest) || updates_ >= kRefactorInterval) return false;
+    const double theta = x_[i] / u[i];
+    for (int q = 0; q < k_; ++q) x_[q] -= theta * u[q];
+    x_[i] = theta;
+    pivot(i, best, u);
+    return true;
+  }
+
+  // Primal feasible (after the bracket shifts): the primal simplex from here, ~1 pivot. Otherwise
+  // the composite column repairs it. (Dual simplex steps from bases whose old duals stayed
+  // feasible were tried: 24 pivots on average, half of them failing; the repair takes ~20.)
+  bool solve_from_previous_basis(Solution& s) {
+    phase_ = 2;
+    bool feasible = true;
+    for (int i = 0; i < k_; ++i) feasible = feasible && x_[i] >= -kFeasibilityTolerance;
+    return feasible ? solve_phase2(s) : repair_with_composite(s);
+  }
+
 
   Solution& unstable(Solution& s) {
     s.status = ProblemStatus::Unstable;
@@ -129,7 +284,7 @@ class FastSimplex {
     for (int attempt = 0; attempt < 3; ++attempt) {
       if (!iterate(s)) return false;
       if (certify(s)) return true;
-      if (!dual_cleanup(s)) return false;
+      if (!dual_simplex(s)) return false;
       if (certify(s)) return true;
     }
     return false;
@@ -154,7 +309,8 @@ class FastSimplex {
     // Where the mass and z_f are, on the grid: the optimal support lies around them, so the start
     // columns do too (spread over all of I, narrow kernels took ~100 pivots instead of ~10).
     double lo = p_->zf, hi = p_->zf;
-    for (int j : p_->start_support) lo = std::min(lo, p_->point(j)), hi = std::max(hi, p_->point(j));
+    for (int j : p_->start_support)
+      lo = std::min(lo, p_->point(j)), hi = std::max(hi, p_->point(j));
     const auto& grid = p_->grid->points;
     int first = int(std::lower_bound(grid.begin(), grid.end(), lo) - grid.begin()) - 1;
     int last = int(std::lower_bound(grid.begin(), grid.end(), hi) - grid.begin()) + 1;
@@ -164,7 +320,8 @@ class FastSimplex {
       if (last - first + 1 < k_ - 1) continue;
       basis_[0] = composite_;
       for (int i = 1; i < k_; ++i)  // k - 1 columns spread evenly over [first, last]
-        basis_[i] = k_ == 2 ? (first + last) / 2 : first + int(std::lround(double(i - 1) * (last - first) / (k_ - 2)));
+        basis_[i] = k_ == 2 ? (first + last) / 2
+                            : first + int(std::lround(double(i - 1) * (last - first) / (k_ - 2)));
       if (refactor()) {
         for (int i = 0; i < k_; ++i) x_[i] = i == 0 ? 1.0 : 0.0;  // exact: B e_1 = rhs
         return true;
@@ -199,17 +356,62 @@ class FastSimplex {
     reduced_costs();
   }
   void reduced_costs() {
-    double* d = reduced_.data();
-    if (phase_ == 1) std::fill(d, d + n_, 0.0);
-    else std::copy(cost_.begin(), cost_.end(), d);
-    for (int r = 0; r < k_; ++r) {
-      const double yr = y_[r];
-      const double* row = &p_->grid->values[size_t(r) * g_];
-      for (int j = 0; j < g_; ++j) d[j] -= yr * row[j];
-      const double* extra = &p_->extra.values[size_t(r) * e_];
-      double* de = d + g_;
-      for (int j = 0; j < e_; ++j) de[j] -= yr * extra[j];
+    subtract_row_combination(y_, phase_ == 1 ? nullptr : cost_.data(), reduced_.data());
+  }
+
+  // out_j = base_j - sum_r w_r A_rj for every structural column (base 0 when null), in one pass
+  // over the two contiguous column blocks (rows fixed at compile time, so the compiler keeps the
+  // K weights in registers and vectorises across columns; row by row it was store-bound).
+  void subtract_row_combination(const double* w, const double* base, double* out) const {
+    switch (k_) {
+      case 2:
+        return combine<2>(w, base, out);
+      case 3:
+        return combine<3>(w, base, out);
+      case 4:
+        return combine<4>(w, base, out);
+      case 5:
+        return combine<5>(w, base, out);
+      case 6:
+        return combine<6>(w, base, out);
+      case 7:
+        return combine<7>(w, base, out);
+      default:
+        return combine<8>(w, base, out);
     }
+  }
+  template <int K>
+  void combine(const double* w, const double* base, double* out) const {
+    const double* rows[K];
+    for (int r = 0; r < K; ++r) rows[r] = &p_->grid->values[size_t(r) * g_];
+    combine_block<K>(w, rows, base, out, g_);
+    for (int r = 0; r < K; ++r) rows[r] = &p_->extra.values[size_t(r) * e_];
+    combine_block<K>(w, rows, base ? base + g_ : nullptr, out + g_, e_);
+  }
+  template <int K>
+  static void combine_block(const double* w, const double* const* rows, const double* base,
+                            double* out, int n) {
+    double weight[K];
+    for (int r = 0; r < K; ++r) weight[r] = w[r];
+#pragma omp simd
+    for (int j = 0; j < n; ++j) {
+      double v = base ? base[j] : 0.0;
+      for (int r = 0; r < K; ++r) v -= weight[r] * rows[r][j];
+      out[j] = v;
+    }
+  }
+
+  // The smallest of d[0..n) (at most 0), eight independent lanes so that it vectorises (a single
+  // running minimum is a chain of dependent minsd, 4 cycles a column).
+  static double smallest_of(const double* d, int n) {
+    double lane[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+    int j = 0;
+    for (; j + 8 <= n; j += 8)
+      for (int q = 0; q < 8; ++q) lane[q] = d[j + q] < lane[q] ? d[j + q] : lane[q];
+    double smallest = 0;
+    for (; j < n; ++j) smallest = d[j] < smallest ? d[j] : smallest;
+    for (int q = 0; q < 8; ++q) smallest = lane[q] < smallest ? lane[q] : smallest;
+    return smallest;
   }
 
   // Dantzig (or Bland) over non-basic columns. The tolerance grows with |y|: with |y| ~ 1e8
@@ -229,21 +431,29 @@ class FastSimplex {
     for (int i = 0; i < k_; ++i)
       if (basis_[i] < n_) saved[i] = reduced_[basis_[i]], reduced_[basis_[i]] = 0;
     const double* d = reduced_.data();
-    double smallest = 0;
-#pragma omp simd reduction(min : smallest)
-    for (int j = 0; j < n_; ++j) smallest = std::min(smallest, d[j]);
+    const double smallest = smallest_of(d, n_);
     int best = -1;
-    if (smallest < -tolerance)
-      for (int j = 0; j < n_; ++j)
+    if (smallest < -tolerance) {
+      // The first index holding it, eight at a time (a scalar search was 40 % of a pivot).
+      int j = 0;
+      for (; j + 8 <= n_; j += 8) {
+        bool hit = false;
+        for (int q = 0; q < 8; ++q) hit |= d[j + q] == smallest;
+        if (hit) break;
+      }
+      for (; j < n_; ++j)
         if (d[j] == smallest) {
           best = j;
           break;
         }
+    }
     for (int i = 0; i < k_; ++i)
       if (basis_[i] < n_) reduced_[basis_[i]] = saved[i];
     return best;
   }
-  bool is_basic(int j) const { return std::find(basis_, basis_ + k_, j) != basis_ + k_; }
+  bool is_basic(int j) const {
+    return std::find(basis_, basis_ + k_, j) != basis_ + k_;
+  }
 
   // u = B^{-1} a_j, the entering column in basis coordinates.
   void column_in_basis(int j, double* u) const {
@@ -275,7 +485,8 @@ class FastSimplex {
         // Harris ratio test: a relaxed bound first, then the largest pivot within it.
         double theta_max = std::numeric_limits<double>::infinity();
         for (int i = 0; i < k_; ++i)
-          if (u[i] > kPivotTolerance) theta_max = std::min(theta_max, (x_[i] + kFeasibilityTolerance) / u[i]);
+          if (u[i] > kPivotTolerance)
+            theta_max = std::min(theta_max, (x_[i] + kFeasibilityTolerance) / u[i]);
         if (!std::isfinite(theta_max)) return false;  // unbounded: impossible with sum w = 1
         double best_pivot = 0;
         for (int i = 0; i < k_; ++i) {
@@ -289,7 +500,8 @@ class FastSimplex {
         for (int i = 0; i < k_; ++i) {
           if (u[i] <= kPivotTolerance) continue;
           double ratio = std::max(x_[i], 0.0) / u[i];
-          if (ratio < best_ratio || (ratio == best_ratio && basis_[i] < basis_[leave])) leave = i, best_ratio = ratio;
+          if (ratio < best_ratio || (ratio == best_ratio && basis_[i] < basis_[leave]))
+            leave = i, best_ratio = ratio;
         }
       }
       if (leave < 0) return false;
@@ -318,8 +530,9 @@ class FastSimplex {
 
   // Dual simplex steps from a dual feasible but slightly primal infeasible basis, which
   // ill-conditioned instances (z^3, z^6 near z = 0) can end the primal phase with: the most
-  // negative basic variable leaves, the entering column keeps every reduced cost >= 0.
-  bool dual_cleanup(Solution& s) {
+  // negative basic variable leaves, the entering column keeps every reduced cost >= 0. Every step
+  // starts from a fresh inverse, since x_B is judged at 1e-12.
+  bool dual_simplex(Solution& s) {
     alpha_.resize(n_);
     for (int step = 0; step < 4 * k_ + 16; ++step) {
       if (!refactor()) return false;
@@ -329,24 +542,25 @@ class FastSimplex {
         if (x_[i] < worst) leave = i, worst = x_[i];
       if (leave < 0) return true;
       price();
+      // alpha_j = (B^{-1} A)_{leave, j}, stored negated: -alpha_j = 0 - row_leave . a_j.
+      subtract_row_combination(binv_[leave], nullptr, alpha_.data());
+      for (int i = 0; i < k_; ++i)
+        if (basis_[i] < n_) alpha_[basis_[i]] = 0;  // basic columns cannot enter
       // Dual Harris ratio test: a relaxed bound on the step in the duals, then the largest
       // |alpha| within it, so that the new basis stays well conditioned.
       double alpha_max = 0;
-      for (int j = 0; j < n_; ++j) {
-        double a = 0;
-        for (int r = 0; r < k_; ++r) a += binv_[leave][r] * p_->at(r, j);
-        alpha_[j] = a;
-        alpha_max = std::max(alpha_max, -a);
-      }
+#pragma omp simd reduction(max : alpha_max)
+      for (int j = 0; j < n_; ++j) alpha_max = std::max(alpha_max, alpha_[j]);
       const double pivot_floor = std::max(kPivotTolerance, 1e-7 * alpha_max);
       double bound = std::numeric_limits<double>::infinity();
       for (int j = 0; j < n_; ++j)
-        if (alpha_[j] < -pivot_floor) bound = std::min(bound, (reduced_[j] + kOptimalityTolerance) / -alpha_[j]);
+        if (alpha_[j] > pivot_floor)
+          bound = std::min(bound, (reduced_[j] + kOptimalityTolerance) / alpha_[j]);
       int entering = -1;
       double best_alpha = 0;
       for (int j = 0; j < n_; ++j)
-        if (alpha_[j] < -pivot_floor && reduced_[j] / -alpha_[j] <= bound && -alpha_[j] > best_alpha)
-          entering = j, best_alpha = -alpha_[j];
+        if (alpha_[j] > pivot_floor && reduced_[j] / alpha_[j] <= bound && alpha_[j] > best_alpha)
+          entering = j, best_alpha = alpha_[j];
       if (entering < 0) return false;
       double u[kMaxRows];
       column_in_basis(entering, u);
@@ -476,19 +690,27 @@ class FastSimplex {
   double composite_cost_ = 0;
   int updates_ = 0;
   std::vector<double> reduced_, alpha_, cost_;
+  WarmBasis lanes_[kWarmLanes];
 };
 
 class FastBackend : public Backend {
  public:
   std::string name() const override { return "fast"; }
-  Solution solve(const Problem& p) override {
+  Solution solve(const Problem& p) override { return solve_with(p, -1); }
+  Solution solve_next(const Problem& p, int lane) override {
+    return solve_with(p, std::max(lane, 0));
+  }
+
+ private:
+  Solution solve_with(const Problem& p, int lane) {
     if (p.rows > kMaxRows) {
       Solution s;
       s.call = CallStatus::Failed;
-      s.call_message = "the fast backend handles at most " + std::to_string(kMaxRows - 1) + " basis functions";
+      s.call_message =
+          "the fast backend handles at most " + std::to_string(kMaxRows - 1) + " basis functions";
       return s;
     }
-    Solution s = simplex_.run(p);
+    Solution s = simplex_.run(p, lane);
     if (s.status != ProblemStatus::Unstable) return s;
     // The rare instance our simplex cannot certify goes to GLPK, and its answer is accepted only
     // if the independent KKT checker certifies it; otherwise it stays unstable.
@@ -503,25 +725,31 @@ class FastBackend : public Backend {
     return s;
   }
 
- private:
   FastSimplex simplex_;
   std::unique_ptr<Backend> glpk_;
 };
 
 }  // namespace
 
-std::unique_ptr<Backend> make_fast_backend() { return std::make_unique<FastBackend>(); }
+std::unique_ptr<Backend> make_fast_backend() {
+  return std::make_unique<FastBackend>();
+}
 
 const char* to_string(ProblemStatus status) {
   switch (status) {
-    case ProblemStatus::Optimal: return "optimal";
-    case ProblemStatus::Infeasible: return "infeasible";
-    case ProblemStatus::Unstable: return "unstable";
+    case ProblemStatus::Optimal:
+      return "optimal";
+    case ProblemStatus::Infeasible:
+      return "infeasible";
+    case ProblemStatus::Unstable:
+      return "unstable";
   }
   return "?";
 }
 
-std::vector<std::string> backend_names() { return {"fast", "glpk"}; }
+std::vector<std::string> backend_names() {
+  return {"fast", "glpk"};
+}
 
 std::unique_ptr<Backend> make_backend(const std::string& name) {
   if (name == "fast") return make_fast_backend();

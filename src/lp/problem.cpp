@@ -154,6 +154,9 @@ void ProblemFactory::from_distribution(std::span<const double> depths, std::span
   p.extra.points.clear();
   p.start_support.clear();
   p.start_weights.clear();
+  p.tap_extra.assign(depths.size(), -1);
+  p.extra_tap.clear();
+  p.zf_extra = -1;
   p.rhs.assign(rows_, 0.0);
   double total = 0;
   for (double w : weights) total += w;
@@ -174,17 +177,23 @@ void ProblemFactory::from_distribution(std::span<const double> depths, std::span
     if (slot < 0) {
       slot = int(p.extra.points.size());
       p.extra.points.push_back(depths[t]);
+      p.extra_tap.push_back(int(t));
       staging.insert(staging.end(), depth_columns[t], depth_columns[t] + rows_);
       p.start_support.push_back(g + slot);
       p.start_weights.push_back(0);
     }
     p.start_weights[slot] += w;
+    p.tap_extra[t] = slot;
   }
-  if (zf >= disc_.lo && zf <= disc_.hi &&
-      std::find(p.extra.points.begin(), p.extra.points.end(), zf) == p.extra.points.end()) {
-    p.extra.points.push_back(zf);
-    staging.resize(staging.size() + rows_);
-    column(zf, &staging[staging.size() - rows_]);
+  if (zf >= disc_.lo && zf <= disc_.hi) {
+    const auto same = std::find(p.extra.points.begin(), p.extra.points.end(), zf);
+    p.zf_extra = int(same - p.extra.points.begin());
+    if (same == p.extra.points.end()) {
+      p.extra.points.push_back(zf);
+      p.extra_tap.push_back(-1);
+      staging.resize(staging.size() + rows_);
+      column(zf, &staging[staging.size() - rows_]);
+    }
   }
   finish_block(rows_, staging, p.extra);
   // The untransformed moments, for reports: invert T on the rhs.

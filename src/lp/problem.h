@@ -45,6 +45,11 @@ struct Problem {
   // one: backends may start from it instead of searching for feasibility.
   std::vector<int> start_support;
   std::vector<double> start_weights;
+  // Built from a kernel (from_distribution): which extra column each tap became (-1: zero weight),
+  // the first tap of each extra column (-1: the z_f column), and z_f's extra column (-1: none).
+  // A warm start maps the previous fragment's basis through these, tap for tap.
+  std::vector<int> tap_extra, extra_tap;
+  int zf_extra = -1;
 
   int grid_size() const { return grid ? grid->size() : 0; }
   int cols() const { return grid_size() + extra.size(); }

@@ -32,7 +32,24 @@ class Backend {
   virtual ~Backend() = default;
   virtual std::string name() const = 0;
   virtual Solution solve(const Problem& problem) = 0;
+  // The same answer to within the certified 1e-9, possibly faster: `problem` continues a run of
+  // neighbouring fragments (DESIGN.md §Performance shape), and the backend may start from the
+  // optimal basis of the last problem it solved in the same `lane` (callers pass the fragment's
+  // layer, so a surface continues from the same surface one texel back; lanes >= kWarmLanes
+  // share the last one). The result then depends on the run, so callers that promise results
+  // independent of the thread count must cut runs the same way on every schedule (kWarmStartRun)
+  // and start each with `solve`, which forgets every lane. Backends without warm starts solve
+  // from scratch.
+  virtual Solution solve_next(const Problem& problem, int lane) {
+    (void)lane;
+    return solve(problem);
+  }
 };
+
+constexpr int kWarmLanes = 8;
+// Fragments per warm-start run: eval and sweep start a fresh run at every multiple of this
+// fragment index, whatever thread gets it, so their results agree bit for bit.
+constexpr size_t kWarmStartRun = 256;
 
 // "fast" (our exact dense simplex) or "glpk" (the reference).
 std::unique_ptr<Backend> make_backend(const std::string& name);

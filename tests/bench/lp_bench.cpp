@@ -51,6 +51,74 @@ const std::vector<lp::Problem>& problems(const std::string& basis_name, int grid
   return out;
 }
 
+// Runs as the sweep solves them: kWarmStartRun consecutive fragments (by fragment index) of a
+// view, the LP ones among them in order; taken from evenly spaced places of every view.
+struct Run {
+  std::vector<lp::Problem> problems;
+  std::vector<int> layers;
+};
+const std::vector<Run>& runs(const std::string& basis_name, int grid) {
+  static std::map<std::pair<std::string, int>, std::vector<Run>> cache;
+  auto& out = cache[{basis_name, grid}];
+  if (!out.empty()) return out;
+  lp::ProblemFactory factory(Basis::parse({basis_name}), lp::Discretization{0, 1, grid, false});
+  GaussianKernel kernel = make_gaussian_kernel(9, 2.4);
+  std::vector<double> depths(81), weights(81);
+  constexpr int kRunsPerView = 3;
+  for (const auto& v : views()) {
+    const size_t blocks = v.fragments.size() / lp::kWarmStartRun;
+    for (int r = 0; r < kRunsPerView && blocks > 0; ++r) {
+      Run run;
+      const size_t begin = (blocks * (2 * r + 1) / (2 * kRunsPerView)) * lp::kWarmStartRun;
+      for (size_t k = begin; k < std::min(v.fragments.size(), begin + lp::kWarmStartRun); ++k) {
+        const size_t t = v.fragments.texel[k];
+        const int x = int(t % v.map.width), y = int(t / v.map.width);
+        const double zf = v.fragments.zf[k] - 1e-3;
+        if (kernel_cdf(v.map, kernel, x, y, zf) == 0) continue;
+        kernel_distribution(v.map, kernel, x, y, depths, weights);
+        run.problems.push_back(factory.from_distribution(depths, weights, zf));
+        run.layers.push_back(v.fragments.layer[k]);
+      }
+      out.push_back(std::move(run));
+    }
+  }
+  return out;
+}
+
+// `warm`: solve_next within a run (what the sweep does); otherwise every LP from scratch.
+void BM_SolveRuns(benchmark::State& state, const std::string& backend, const std::string& basis, int grid, bool warm) {
+  const auto& list = runs(basis, grid);
+  auto solver = lp::make_backend(backend);
+  size_t unstable = 0, iterations = 0, solved = 0;
+  double checksum = 0;
+  for (auto _ : state) {
+    for (const auto& run : list)
+      for (size_t i = 0; i < run.problems.size(); ++i) {
+        lp::Solution s = warm && i > 0 ? solver->solve_next(run.problems[i], run.layers[i]) : solver->solve(run.problems[i]);
+        unstable += s.status != lp::ProblemStatus::Optimal;
+        iterations += s.iterations;
+        checksum += s.G;
+        ++solved;
+      }
+  }
+  benchmark::DoNotOptimize(checksum);
+  state.SetItemsProcessed(int64_t(solved));
+  state.counters["pivots"] = double(iterations) / double(solved);
+  state.counters["not_optimal"] = double(unstable) / double(solved);
+  state.counters["lps_per_pass"] = double(solved) / double(state.iterations());
+}
+
+BENCHMARK_CAPTURE(BM_SolveRuns, fast_warm_power4_256, "fast", "power4", 256, true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SolveRuns, fast_cold_power4_256, "fast", "power4", 256, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SolveRuns, glpk_power4_256, "glpk", "power4", 256, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SolveRuns, fast_warm_trig4_256, "fast", "trig4", 256, true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SolveRuns, fast_cold_trig4_256, "fast", "trig4", 256, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SolveRuns, glpk_trig4_256, "glpk", "trig4", 256, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SolveRuns, fast_warm_power4_1024, "fast", "power4", 1024, true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SolveRuns, glpk_power4_1024, "glpk", "power4", 1024, false)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SolveRuns, fast_warm_trig4_1024, "fast", "trig4", 1024, true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SolveRuns, glpk_trig4_1024, "glpk", "trig4", 1024, false)->Unit(benchmark::kMillisecond);
+
 void BM_Solve(benchmark::State& state, const std::string& backend, const std::string& basis, int grid) {
   const auto& list = problems(basis, grid);
   auto solver = lp::make_backend(backend);
