@@ -31,8 +31,10 @@ constexpr int kDegenerateBeforeBland = 24;       // degenerate pivots in a row b
 // reaches 1e8).
 // The same routine in double serves every refactorisation: Eigen's general FullPivLU inverse
 // cost as much as all pricing passes together at k <= 8 (measured with perf).
-template <class Real>
-bool invert_small(int k, Real a[kMaxRows][kMaxRows], Real inv[kMaxRows][kMaxRows], Real singular) {
+// K = k at compile time, so the loops unroll.
+template <class Real, int K>
+bool invert_fixed(Real a[kMaxRows][kMaxRows], Real inv[kMaxRows][kMaxRows], Real singular) {
+  constexpr int k = K;
   int perm[kMaxRows];
   for (int i = 0; i < k; ++i) perm[i] = i;
   Real largest = 0;
@@ -66,12 +68,27 @@ bool invert_small(int k, Real a[kMaxRows][kMaxRows], Real inv[kMaxRows][kMaxRows
   return true;
 }
 
+template <class Real>
+bool invert_small(int k, Real a[kMaxRows][kMaxRows], Real inv[kMaxRows][kMaxRows], Real singular) {
+  switch (k) {
+    case 1: return invert_fixed<Real, 1>(a, inv, singular);
+    case 2: return invert_fixed<Real, 2>(a, inv, singular);
+    case 3: return invert_fixed<Real, 3>(a, inv, singular);
+    case 4: return invert_fixed<Real, 4>(a, inv, singular);
+    case 5: return invert_fixed<Real, 5>(a, inv, singular);
+    case 6: return invert_fixed<Real, 6>(a, inv, singular);
+    case 7: return invert_fixed<Real, 7>(a, inv, singular);
+    default: return invert_fixed<Real, 8>(a, inv, singular);
+  }
+}
+
 // The previous fragment's optimal basis, in terms that carry over to a neighbouring fragment:
 // grid columns by index, kernel columns by the tap they came from (the same tap of the next
 // kernel sees a nearby surface at the same offset), z_f's column and the composite column by role.
 enum class Role { Grid, Tap, Zf, Composite };
 struct WarmBasis {
   bool valid = false;
+  double zf = 0;
   int rows = 0, grid = 0;
   Role role[kMaxRows];
   int index[kMaxRows];
@@ -84,9 +101,17 @@ class FastSimplex {
   Solution run(const Problem& p, int lane) {
     if (lane < 0)
       for (auto& w : lanes_) w.valid = false;
-    WarmBasis& warm = lanes_[std::clamp(lane, 0, kWarmLanes - 1)];
+    // The lane of the fragment's layer, unless another lane's last fragment lies at a closer
+    // depth: layers of neighbouring texels do not always count the same surfaces.
+    int chosen = std::clamp(lane, 0, kWarmLanes - 1);
+    if (lane >= 0) {
+      double closest = lanes_[chosen].valid ? std::abs(lanes_[chosen].zf - p.zf) : INFINITY;
+      for (int l = 0; l < kWarmLanes; ++l)
+        if (lanes_[l].valid && std::abs(lanes_[l].zf - p.zf) < closest) chosen = l, closest = std::abs(lanes_[l].zf - p.zf);
+    }
+    WarmBasis& warm = lanes_[chosen];
     Solution s = solve(p, lane >= 0 ? &warm : nullptr);
-    remember_basis(s, warm);
+    remember_basis(s, lanes_[std::clamp(lane, 0, kWarmLanes - 1)]);
     return s;
   }
 
@@ -162,6 +187,7 @@ class FastSimplex {
     if (!warm_.valid) return;
     warm_.rows = k_;
     warm_.grid = g_;
+    warm_.zf = p_->zf;
     for (int i = 0; i < k_; ++i) {
       const int j = basis_[i];
       if (j == composite_)
@@ -593,11 +619,102 @@ class FastSimplex {
     return refactor();
   }
 
+  // The certificate, in double when that is provably enough, else in long double.
+  bool certify(Solution& s) { return certify_in_double(s) || certify_in_long_double(s); }
+
+  // Most bases have moderate duals, and then double arithmetic certifies them with room to spare:
+  // the same first-order bound as below, from a fresh double inverse, with the true residual
+  // B x - rhs (double x_B is only cond(B) eps accurate) and every computed term widened by its
+  // rounding error bound gamma (|terms|), gamma = (k + 2) eps. Narrow kernels (|y| ~ 1e8) fail
+  // this on rounding alone and go to long double.
+  bool certify_in_double(Solution& s) {
+    if (!refactor()) return false;
+    constexpr double kEps = std::numeric_limits<double>::epsilon();
+    const double gamma = (k_ + 2) * kEps;
+    double y[kMaxRows], y_norm = 0;
+    for (int r = 0; r < k_; ++r) {
+      double v = 0;
+      for (int i = 0; i < k_; ++i) v += cost(basis_[i]) * binv_[i][r];
+      y[r] = y_[r] = v;
+      y_norm += std::abs(v);
+    }
+    // |a_rj| <= column_bound for every column: rounding of any reduced cost is below this.
+    const double column_bound = std::max(p_->grid->max_abs, p_->extra.max_abs);
+    const double reduced_cost_error = gamma * (1 + y_norm * column_bound);
+    if (reduced_cost_error > 0.1 * kCertifyBound) return false;
+    // One step of iterative refinement: x_B from the double inverse misses rhs by ~cond(B) eps;
+    // after it the residual is at the level of its own rounding (backward stable).
+    double correction[kMaxRows], misfit[kMaxRows];
+    for (int r = 0; r < k_; ++r) {
+      double v = p_->rhs[r];
+      for (int i = 0; i < k_; ++i) v -= column_entry(basis_[i], r) * x_[i];
+      misfit[r] = v;
+    }
+    for (int i = 0; i < k_; ++i) {
+      double v = 0;
+      for (int r = 0; r < k_; ++r) v += binv_[i][r] * misfit[r];
+      correction[i] = v;
+    }
+    for (int i = 0; i < k_; ++i) x_[i] += correction[i];
+    double clamped[kMaxRows];
+    for (int i = 0; i < k_; ++i) clamped[i] = std::max(x_[i], 0.0);
+    double bound = 0;
+    for (int r = 0; r < k_; ++r) {
+      double residual = -p_->rhs[r], size = std::abs(p_->rhs[r]);
+      for (int i = 0; i < k_; ++i) {
+        const double term = column_entry(basis_[i], r) * clamped[i];
+        residual += term;
+        size += std::abs(term);
+      }
+      // The reported support must reproduce the moments as accurately as long double's does
+      // (the KKT checker and the users' own checks look at the residual alone).
+      if (!(std::abs(residual) + gamma * size <= 1e-12)) return false;
+      bound += std::abs(y[r]) * (std::abs(residual) + gamma * size);
+    }
+    reduced_costs();  // with y_ = y
+    auto reduced_cost = [&](int j) { return std::abs(reduced_[j]) + reduced_cost_error; };
+    for (int i = 0; i < k_; ++i) {
+      if (clamped[i] <= 0) continue;
+      if (basis_[i] < n_) bound += clamped[i] * reduced_cost(basis_[i]);
+      if (basis_[i] == composite_)
+        for (size_t t = 0; t < p_->start_support.size(); ++t)
+          bound += clamped[i] * p_->start_weights[t] * reduced_cost(p_->start_support[t]);
+    }
+    // Weak duality with sum w = 1: no distribution beats y.(1, b) by more than -min_j d_j.
+    bound += std::max(0.0, reduced_cost_error - smallest_of(reduced_.data(), n_));
+    if (!(bound <= kCertifyBound)) return false;
+    double objective = 0;
+    for (int i = 0; i < k_; ++i) objective += cost(basis_[i]) * clamped[i];
+    report(s, objective, clamped, y);
+    return true;
+  }
+
+  template <class Real>
+  void report(Solution& s, Real objective, const Real* weights, const Real* y) const {
+    s.status = ProblemStatus::Optimal;
+    s.support.clear();
+    s.weights.clear();
+    for (int i = 0; i < k_; ++i) {
+      const Real w = weights[i];
+      if (w <= 0) continue;
+      if (basis_[i] == composite_) {
+        // The composite column stands for the known distribution: report its atoms.
+        for (size_t t = 0; t < p_->start_support.size(); ++t)
+          add_support(s, p_->start_support[t], double(w * p_->start_weights[t]));
+      } else {
+        add_support(s, basis_[i], double(w));
+      }
+    }
+    s.G = double(objective);
+    s.duals.assign(k_, 0.0);
+    for (int r = 0; r < k_; ++r) s.duals[r] = y[r];
+  }
+
   // The certificate: B inverted afresh in long double; negative basic values clamped to zero,
   // and accepted when the same first-order bound on |G - G*| as the KKT checker's (|y| times the
   // residual the clamping leaves, plus dual infeasibility) is <= 1e-10. On failure the accurate
   // inverse and x_B are kept, so the caller resumes from them.
-  bool certify(Solution& s) {
+  bool certify_in_long_double(Solution& s) {
     long double b[kMaxRows][kMaxRows], inv[kMaxRows][kMaxRows];
     for (int i = 0; i < k_; ++i)
       for (int r = 0; r < k_; ++r) b[r][i] = column_entry(basis_[i], r);
@@ -642,32 +759,20 @@ class FastSimplex {
     // Double pricing with the rounded duals finds the suspects, long double judges them.
     for (int r = 0; r < k_; ++r) y_[r] = double(y[r]);
     reduced_costs();
-    for (int j = 0; j < n_; ++j) {
+    if (smallest_of(reduced_.data(), n_) < -1e-9)
+      for (int j = 0; j < n_; ++j) {
       if (reduced_[j] >= -1e-9) continue;
       long double d = cost_[j];
       for (int r = 0; r < k_; ++r) d -= y[r] * (long double)p_->at(r, j);
       if (d < 0) bound += -d;
       if (bound > kCertifyBound) return false;
     }
-    s.status = ProblemStatus::Optimal;
-    long double objective = 0;
-    s.support.clear();
-    s.weights.clear();
+    long double objective = 0, weights[kMaxRows];
     for (int i = 0; i < k_; ++i) {
-      const long double w = std::max(x[i], 0.0L);
-      objective += (long double)cost(basis_[i]) * w;
-      if (w <= 0) continue;
-      if (basis_[i] == composite_) {
-        // The composite column stands for the known distribution: report its atoms.
-        for (size_t t = 0; t < p_->start_support.size(); ++t)
-          add_support(s, p_->start_support[t], double(w * p_->start_weights[t]));
-      } else {
-        add_support(s, basis_[i], double(w));
-      }
+      weights[i] = std::max(x[i], 0.0L);
+      objective += (long double)cost(basis_[i]) * weights[i];
     }
-    s.G = double(objective);
-    s.duals.assign(k_, 0.0);
-    for (int r = 0; r < k_; ++r) s.duals[r] = y[r];
+    report(s, objective, weights, y);
     return true;
   }
 

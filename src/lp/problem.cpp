@@ -57,7 +57,10 @@ ProblemFactory::ProblemFactory(const Basis& basis, const Discretization& disc) :
   Eigen::MatrixXd rows = r_upper.transpose().triangularView<Eigen::Lower>().solve(at.transpose());
   grid->values.resize(size_t(k) * n);
   for (int r = 0; r < k; ++r)
-    for (int i = 0; i < n; ++i) grid->values[size_t(r) * n + i] = rows(r, i);
+    for (int i = 0; i < n; ++i) {
+      grid->values[size_t(r) * n + i] = rows(r, i);
+      grid->max_abs = std::max(grid->max_abs, std::abs(rows(r, i)));
+    }
   grid_ = std::move(grid);
 }
 
@@ -89,6 +92,8 @@ void finish_block(int rows, const std::vector<double>& staging, ColumnBlock& blo
   block.values.resize(size_t(rows) * n);
   for (int j = 0; j < n; ++j)
     for (int r = 0; r < rows; ++r) block.values[size_t(r) * n + j] = staging[size_t(j) * rows + r];
+  block.max_abs = 0;
+  for (double v : staging) block.max_abs = std::max(block.max_abs, std::abs(v));
 }
 
 }  // namespace

@@ -31,6 +31,7 @@ struct Discretization {
 struct ColumnBlock {
   std::vector<double> points;
   std::vector<double> values;
+  double max_abs = 0;  // the largest |value|, for rounding-error bounds
   int size() const { return int(points.size()); }
 };
 
