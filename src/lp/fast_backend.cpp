@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <span>
 
 #include "lp/glpk_backend.h"
 #include "lp/kkt_checker.h"
@@ -24,7 +25,8 @@ constexpr double kPhase1Tolerance = 1e-10;       // residual artificial mass tha
 constexpr double kCertifyPrimal = 1e-12;         // dual cleanup: x_B below this must leave
 constexpr double kCertifyBound = 1e-9;           // certified bound on |G - G*| (see certify)
 constexpr int kRefactorInterval = 16;            // rank-1 updates between fresh inverses
-constexpr int kDegenerateBeforeBland = 24;       // degenerate pivots in a row before Bland's rule
+constexpr int kDegenerateBeforeBland = 24;
+constexpr int kWarmTries = 3;  // warm bases tried before the composite repair       // degenerate pivots in a row before Bland's rule
 
 // In-place LU with partial pivoting and inverse for k <= 8, in long double: the certificate's
 // x_B and y then carry ~3 more digits than the double iterations (cond(B) of boundary instances
@@ -101,22 +103,29 @@ class FastSimplex {
   Solution run(const Problem& p, int lane) {
     if (lane < 0)
       for (auto& w : lanes_) w.valid = false;
-    // The lane of the fragment's layer, unless another lane's last fragment lies at a closer
-    // depth: layers of neighbouring texels do not always count the same surfaces.
-    int chosen = std::clamp(lane, 0, kWarmLanes - 1);
+    // Warm bases to try, closest z_f first: layers of neighbouring texels do not always count the
+    // same surfaces, so the fragment's own lane is not always the best guess.
+    const WarmBasis* tries[kWarmTries];
+    int count = 0;
     if (lane >= 0) {
-      double closest = lanes_[chosen].valid ? std::abs(lanes_[chosen].zf - p.zf) : INFINITY;
-      for (int l = 0; l < kWarmLanes; ++l)
-        if (lanes_[l].valid && std::abs(lanes_[l].zf - p.zf) < closest) chosen = l, closest = std::abs(lanes_[l].zf - p.zf);
+      bool used[kWarmLanes] = {};
+      for (; count < kWarmTries; ++count) {
+        int best = -1;
+        for (int l = 0; l < kWarmLanes; ++l)
+          if (lanes_[l].valid && !used[l] && (best < 0 || std::abs(lanes_[l].zf - p.zf) < std::abs(lanes_[best].zf - p.zf)))
+            best = l;
+        if (best < 0) break;
+        used[best] = true;
+        tries[count] = &lanes_[best];
+      }
     }
-    WarmBasis& warm = lanes_[chosen];
-    Solution s = solve(p, lane >= 0 ? &warm : nullptr);
+    Solution s = solve(p, std::span<const WarmBasis* const>(tries, count));
     remember_basis(s, lanes_[std::clamp(lane, 0, kWarmLanes - 1)]);
     return s;
   }
 
  private:
-  Solution solve(const Problem& p, const WarmBasis* warm) {
+  Solution solve(const Problem& p, std::span<const WarmBasis* const> warm) {
     p_ = &p;
     k_ = p.rows;
     n_ = p.cols();
@@ -136,8 +145,8 @@ class FastSimplex {
       composite_cost_ += p.start_weights[t] * cost_[p.start_support[t]];
 
     Solution s;
-    if (warm && warm->valid && start_from_previous_basis(*warm)) {
-      if (solve_from_previous_basis(s)) return s;
+    if (!warm.empty() && solve_from_previous_basis(warm, s)) return s;
+    if (s.iterations > 0) {
       const int spent = s.iterations;
       s = Solution();
       s.iterations = spent;
@@ -278,14 +287,21 @@ class FastSimplex {
     return true;
   }
 
-  // Primal feasible (after the bracket shifts): the primal simplex from here, ~1 pivot. Otherwise
-  // the composite column repairs it. (Dual simplex steps from bases whose old duals stayed
-  // feasible were tried: 24 pivots on average, half of them failing; the repair takes ~20.)
-  bool solve_from_previous_basis(Solution& s) {
+  // The first warm basis that is primal feasible after the bracket shifts: the primal simplex
+  // from there, ~1 pivot. If none is, the composite column repairs the closest one. (Dual simplex
+  // steps from bases whose old duals stayed feasible were tried: 24 pivots on average, half of
+  // them failing; the repair takes ~20.)
+  bool solve_from_previous_basis(std::span<const WarmBasis* const> warm, Solution& s) {
     phase_ = 2;
-    bool feasible = true;
-    for (int i = 0; i < k_; ++i) feasible = feasible && x_[i] >= -kFeasibilityTolerance;
-    return feasible ? solve_phase2(s) : repair_with_composite(s);
+    int usable = -1;
+    for (size_t c = 0; c < warm.size(); ++c) {
+      if (!start_from_previous_basis(*warm[c])) continue;
+      if (usable < 0) usable = int(c);
+      bool feasible = true;
+      for (int i = 0; i < k_; ++i) feasible = feasible && x_[i] >= -kFeasibilityTolerance;
+      if (feasible) return solve_phase2(s);
+    }
+    return usable >= 0 && start_from_previous_basis(*warm[usable]) && repair_with_composite(s);
   }
 
 
@@ -627,16 +643,30 @@ class FastSimplex {
   // B x - rhs (double x_B is only cond(B) eps accurate) and every computed term widened by its
   // rounding error bound gamma (|terms|), gamma = (k + 2) eps. Narrow kernels (|y| ~ 1e8) fail
   // this on rounding alone and go to long double.
+  // Every bound term is computed from the data (true residuals, reduced costs of the y used), so
+  // the inverse need not be fresh: the product-form one after a few updates, with one step of
+  // refinement for y as for x_B, serves as well, and saves a factorisation per LP.
   bool certify_in_double(Solution& s) {
-    if (!refactor()) return false;
     constexpr double kEps = std::numeric_limits<double>::epsilon();
     const double gamma = (k_ + 2) * kEps;
-    double y[kMaxRows], y_norm = 0;
+    double y[kMaxRows], y_norm = 0, basic_cost[kMaxRows], misfit_y[kMaxRows];
+    for (int i = 0; i < k_; ++i) basic_cost[i] = cost(basis_[i]);
     for (int r = 0; r < k_; ++r) {
       double v = 0;
-      for (int i = 0; i < k_; ++i) v += cost(basis_[i]) * binv_[i][r];
-      y[r] = y_[r] = v;
-      y_norm += std::abs(v);
+      for (int i = 0; i < k_; ++i) v += basic_cost[i] * binv_[i][r];
+      y[r] = v;
+    }
+    for (int i = 0; i < k_; ++i) {  // c_B - B^T y
+      double v = basic_cost[i];
+      for (int r = 0; r < k_; ++r) v -= column_entry(basis_[i], r) * y[r];
+      misfit_y[i] = v;
+    }
+    for (int r = 0; r < k_; ++r) {
+      double v = 0;
+      for (int i = 0; i < k_; ++i) v += misfit_y[i] * binv_[i][r];
+      y[r] += v;
+      y_[r] = y[r];
+      y_norm += std::abs(y[r]);
     }
     // |a_rj| <= column_bound for every column: rounding of any reduced cost is below this.
     const double column_bound = std::max(p_->grid->max_abs, p_->extra.max_abs);
