@@ -269,10 +269,8 @@ class FastSimplex {
                       ? above
                       : int(std::lower_bound(grid.begin(), grid.end(), from) - grid.begin()) - 1;
     if (g >= 0 && g < g_) best = g, distance = std::abs(grid[g] - from);
-    for (int e = 0; e < e_; ++e) {
-      const double d = (p_->extra.points[e] - from) * direction;
-      if (d > 0 && d < distance) best = g_ + e, distance = d;
-    }
+    const int extra = nearest_extra_beyond(from, direction, distance);
+    if (extra >= 0) best = g_ + extra;
     if (best < 0 || std::find(basis_, basis_ + k_, best) != basis_ + k_) return false;
     // A column exchange is one product-form update of the inverse (and of x_B), not a new one.
     double u[kMaxRows];
@@ -285,6 +283,33 @@ class FastSimplex {
     x_[i] = theta;
     pivot(i, best, u);
     return true;
+  }
+
+  // The extra point nearest beyond `from` in `direction`, if closer than `distance` (updated):
+  // eight-lane minimum first (vectorised; the branchy scan was half the cost of a warm start),
+  // then the first index holding it.
+  int nearest_extra_beyond(double from, double direction, double& distance) const {
+    const double* points = p_->extra.points.data();
+    constexpr double kNone = std::numeric_limits<double>::infinity();
+    double lane[8] = {kNone, kNone, kNone, kNone, kNone, kNone, kNone, kNone};
+    int e = 0;
+    for (; e + 8 <= e_; e += 8)
+      for (int q = 0; q < 8; ++q) {
+        const double d = (points[e + q] - from) * direction;
+        const double v = d > 0 ? d : kNone;
+        lane[q] = v < lane[q] ? v : lane[q];
+      }
+    double nearest = kNone;
+    for (; e < e_; ++e) {
+      const double d = (points[e] - from) * direction;
+      if (d > 0 && d < nearest) nearest = d;
+    }
+    for (int q = 0; q < 8; ++q) nearest = lane[q] < nearest ? lane[q] : nearest;
+    if (!(nearest < distance)) return -1;
+    distance = nearest;
+    for (e = 0; e < e_; ++e)
+      if ((points[e] - from) * direction == nearest) return e;
+    return -1;
   }
 
   // The first warm basis that is primal feasible after the bracket shifts: the primal simplex
