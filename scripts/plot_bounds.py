@@ -7,9 +7,8 @@ import argparse
 import csv
 import re
 
-import matplotlib
+from plot_common import save_png_and_pdf  # first: it selects the headless backend
 
-matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 # The seed paper's colours: m = 2 red, m = 3 cyan, m = 4 green; the CDF blue.
@@ -67,11 +66,7 @@ def main():
         ax.grid(alpha=0.25, linewidth=0.5)
     axes[0][0].set_ylabel("shadow intensity")
     axes[0][-1].legend(loc="upper left", fontsize=7)
-    fig.tight_layout()
-    for extension in ("png", "pdf"):
-        fig.savefig(f"{args.out}.{extension}", dpi=150)
-    name = args.out.rsplit("/", 1)[-1]
-    print(f"plot_bounds.py: wrote {name}.png and {name}.pdf")
+    save_png_and_pdf(fig, args.out, "plot_bounds.py")
 
 
 if __name__ == "__main__":

@@ -5,11 +5,10 @@ seed paper's Figure 4. Reads momentbench report's histogram.csv and references.c
 import argparse
 import csv
 
-import matplotlib
-import matplotlib.ticker
+from plot_common import save_png_and_pdf  # first: it selects the headless backend
 
-matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.ticker  # noqa: E402
 
 
 def main():
@@ -40,11 +39,7 @@ def main():
     ax.set_xlabel("mean |PCF - G| over receiver fragments (%)")
     ax.set_ylabel("candidates")
     ax.set_title("Sweep candidates by mean error")
-    fig.tight_layout()
-    for extension in ("png", "pdf"):
-        fig.savefig(f"{args.out}.{extension}", dpi=150)
-    name = args.out.rsplit("/", 1)[-1]
-    print(f"plot_histogram.py: wrote {name}.png and {name}.pdf")
+    save_png_and_pdf(fig, args.out, "plot_histogram.py")
 
 
 if __name__ == "__main__":

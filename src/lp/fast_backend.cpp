@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 #include <span>
+#include <type_traits>
 
 #include "lp/glpk_backend.h"
 #include "lp/kkt_checker.h"
@@ -70,18 +71,25 @@ bool invert_fixed(Real a[kMaxRows][kMaxRows], Real inv[kMaxRows][kMaxRows], Real
   return true;
 }
 
+// Calls f(std::integral_constant<int, K>) with K = k (1..kMaxRows), so that loops over the rows
+// unroll and vectorise with the count known at compile time.
+template <class F>
+decltype(auto) with_row_count(int k, F&& f) {
+  switch (k) {
+    case 1: return f(std::integral_constant<int, 1>{});
+    case 2: return f(std::integral_constant<int, 2>{});
+    case 3: return f(std::integral_constant<int, 3>{});
+    case 4: return f(std::integral_constant<int, 4>{});
+    case 5: return f(std::integral_constant<int, 5>{});
+    case 6: return f(std::integral_constant<int, 6>{});
+    case 7: return f(std::integral_constant<int, 7>{});
+    default: return f(std::integral_constant<int, 8>{});
+  }
+}
+
 template <class Real>
 bool invert_small(int k, Real a[kMaxRows][kMaxRows], Real inv[kMaxRows][kMaxRows], Real singular) {
-  switch (k) {
-    case 1: return invert_fixed<Real, 1>(a, inv, singular);
-    case 2: return invert_fixed<Real, 2>(a, inv, singular);
-    case 3: return invert_fixed<Real, 3>(a, inv, singular);
-    case 4: return invert_fixed<Real, 4>(a, inv, singular);
-    case 5: return invert_fixed<Real, 5>(a, inv, singular);
-    case 6: return invert_fixed<Real, 6>(a, inv, singular);
-    case 7: return invert_fixed<Real, 7>(a, inv, singular);
-    default: return invert_fixed<Real, 8>(a, inv, singular);
-  }
+  return with_row_count(k, [&](auto rows) { return invert_fixed<Real, decltype(rows)::value>(a, inv, singular); });
 }
 
 // The previous fragment's optimal basis, in terms that carry over to a neighbouring fragment:
@@ -430,23 +438,9 @@ class FastSimplex {
   // over the two contiguous column blocks (rows fixed at compile time, so the compiler keeps the
   // K weights in registers and vectorises across columns; row by row it was store-bound).
   void subtract_row_combination(const double* w, const double* base, double* out) const {
-    switch (k_) {
-      case 2:
-        return combine<2>(w, base, out);
-      case 3:
-        return combine<3>(w, base, out);
-      case 4:
-        return combine<4>(w, base, out);
-      case 5:
-        return combine<5>(w, base, out);
-      case 6:
-        return combine<6>(w, base, out);
-      case 7:
-        return combine<7>(w, base, out);
-      default:
-        return combine<8>(w, base, out);
-    }
+    with_row_count(k_, [&](auto rows) { combine<decltype(rows)::value>(w, base, out); });
   }
+
   template <int K>
   void combine(const double* w, const double* base, double* out) const {
     const double* rows[K];
