@@ -1,8 +1,12 @@
 #!/usr/bin/env bash
-# Submits an N-shard sweep and its merge: scripts/slurm/submit.sh CONFIG OUTROOT N
+# Submits an N-shard sweep and its merge: scripts/slurm/submit.sh CONFIG OUTROOT N [SBATCH OPTION...]
+# Options after N go to both sbatch calls and override the scripts' #SBATCH lines, e.g.
+# --cpus-per-task=2 --time=2:00:00 --partition=short.
 set -euo pipefail
 config=$1 outroot=$2 n=$3
+shift 3
 here=$(cd "$(dirname "$0")" && pwd)
-job=$(sbatch --parsable --array=1-"$n" "$here/sweep_array.sh" "$config" "$outroot")
-sbatch --dependency=afterok:"$job" "$here/merge_and_report.sh" "$outroot"
-echo "submitted sweep array $job ($n shards) and its merge"
+export MOMENTBENCH_REPO=${MOMENTBENCH_REPO:-$(cd "$here/../.." && pwd)}
+job=$(sbatch --parsable "$@" --array=1-"$n" "$here/sweep_array.sh" "$config" "$outroot")
+merge=$(sbatch --parsable "$@" --cpus-per-task=1 --dependency=afterok:"$job" "$here/merge_and_report.sh" "$outroot")
+echo "submitted sweep array $job ($n shards) and its merge $merge"
