@@ -165,6 +165,7 @@ void ProblemFactory::from_distribution(std::span<const double> depths, std::span
   p.rhs.assign(rows_, 0.0);
   double total = 0;
   for (double w : weights) total += w;
+  const double scale = 1 / total;  // one division per fragment, not one per tap (~13 cycles each)
   // Distinct depths become extra columns (a kernel often sees one surface many times); the rhs is
   // the distribution's own moment vector, accumulated in tap order.
   thread_local std::vector<double> staging;
@@ -172,7 +173,7 @@ void ProblemFactory::from_distribution(std::span<const double> depths, std::span
   const int g = grid_->size();
   for (size_t t = 0; t < depths.size(); ++t) {
     if (weights[t] == 0) continue;
-    const double w = weights[t] / total;
+    const double w = weights[t] * scale;
     for (int r = 0; r < rows_; ++r) p.rhs[r] += w * depth_columns[t][r];
     // Equal depths are usually neighbours in tap order: look back a few slots only (a duplicate
     // column that slips through is harmless, a quadratic search per fragment is not).
