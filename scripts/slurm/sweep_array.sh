@@ -11,17 +11,10 @@
 set -euo pipefail
 config=$1 outroot=$2
 k=${SLURM_ARRAY_TASK_ID:?set by Slurm (or by hand)} n=${SLURM_ARRAY_TASK_COUNT:?set by Slurm (or by hand)}
-# sbatch runs a copy of this script from its spool directory, so $0 does not locate the checkout:
-# submit.sh exports MOMENTBENCH_REPO; a direct sbatch from the checkout falls back to the submit
-# directory; by hand, the script's own place.
-repo=${MOMENTBENCH_REPO:-}
-if [ -z "$repo" ]; then
-  if [ -n "${SLURM_SUBMIT_DIR:-}" ] && [ -x "$SLURM_SUBMIT_DIR/build/release/momentbench" ]; then
-    repo=$SLURM_SUBMIT_DIR
-  else
-    repo=$(cd "$(dirname "$0")/../.." && pwd)
-  fi
-fi
+# sbatch runs a spooled copy of this script, so $0 does not locate the checkout: submit.sh
+# exports MOMENTBENCH_REPO, and a direct sbatch from the checkout's root is found by its submit dir.
+repo=${MOMENTBENCH_REPO:-$(cd "$(dirname "$0")/../.." && pwd)}
+[ -z "${MOMENTBENCH_REPO:-}" ] && [ -n "${SLURM_JOB_ID:-}" ] && repo=${SLURM_SUBMIT_DIR:-$repo}
 mb=${MOMENTBENCH:-$repo/build/release/momentbench}
 threads=${SLURM_CPUS_PER_TASK:-0}
 out=$outroot/shard$k
