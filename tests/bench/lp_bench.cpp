@@ -1,7 +1,9 @@
 // LP throughput on real fragments (issue 4): identical Problem 1 instances from the default
-// dataset's receivers (F_Z(z_f - delta) > 0, sampled deterministically), solved by our backend and
-// by GLPK in one run; power and trigonometric bases, grids of 256 and 1024 points. The ratio of
-// the two items_per_second is the speed-up. Falls back to the tiny dataset without data/.
+// dataset's receivers (F_Z(z_f - delta) > 0), solved by our backend and by GLPK in one run; power
+// and trigonometric bases, grids of 256 and 1024 points. The ratio of the two items_per_second is
+// the speed-up. BM_SolveRuns: runs of consecutive fragments as the sweep solves them (ours warm
+// along each run, and cold for comparison); BM_Solve: fragments sampled with a stride, each from
+// scratch. Falls back to the tiny dataset without data/.
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
