@@ -7,6 +7,10 @@
 #include <span>
 #include <type_traits>
 
+#ifdef __AVX__
+#include <immintrin.h>
+#endif
+
 #include "lp/glpk_backend.h"
 #include "lp/kkt_checker.h"
 #include "util/error.h"
@@ -467,8 +471,19 @@ class FastSimplex {
   static double smallest_of(const double* d, int n) {
     double lane[8] = {0, 0, 0, 0, 0, 0, 0, 0};
     int j = 0;
+#ifdef __AVX__
+    // GCC turns `a < b ? a : b` into minpd only under -ffinite-math-only; say it directly.
+    __m256d low = _mm256_setzero_pd(), high = _mm256_setzero_pd();
+    for (; j + 8 <= n; j += 8) {
+      low = _mm256_min_pd(_mm256_loadu_pd(d + j), low);
+      high = _mm256_min_pd(_mm256_loadu_pd(d + j + 4), high);
+    }
+    _mm256_storeu_pd(lane, low);
+    _mm256_storeu_pd(lane + 4, high);
+#else
     for (; j + 8 <= n; j += 8)
       for (int q = 0; q < 8; ++q) lane[q] = d[j + q] < lane[q] ? d[j + q] : lane[q];
+#endif
     double smallest = 0;
     for (; j < n; ++j) smallest = d[j] < smallest ? d[j] : smallest;
     for (int q = 0; q < 8; ++q) smallest = lane[q] < smallest ? lane[q] : smallest;
@@ -497,11 +512,20 @@ class FastSimplex {
     if (smallest < -tolerance) {
       // The first index holding it, eight at a time (a scalar search was 40 % of a pivot).
       int j = 0;
+#ifdef __AVX__
+      const __m256d target = _mm256_set1_pd(smallest);
+      for (; j + 8 <= n_; j += 8) {
+        const __m256d a = _mm256_cmp_pd(_mm256_loadu_pd(d + j), target, _CMP_EQ_OQ);
+        const __m256d b = _mm256_cmp_pd(_mm256_loadu_pd(d + j + 4), target, _CMP_EQ_OQ);
+        if (_mm256_movemask_pd(_mm256_or_pd(a, b))) break;
+      }
+#else
       for (; j + 8 <= n_; j += 8) {
         bool hit = false;
         for (int q = 0; q < 8; ++q) hit |= d[j + q] == smallest;
         if (hit) break;
       }
+#endif
       for (; j < n_; ++j)
         if (d[j] == smallest) {
           best = j;
