@@ -305,12 +305,28 @@ class FastSimplex {
     constexpr double kNone = std::numeric_limits<double>::infinity();
     double lane[8] = {kNone, kNone, kNone, kNone, kNone, kNone, kNone, kNone};
     int e = 0;
+#ifdef __AVX__
+    {
+      const __m256d origin = _mm256_set1_pd(from), sign = _mm256_set1_pd(direction),
+                    none = _mm256_set1_pd(kNone), zero = _mm256_setzero_pd();
+      __m256d low = none, high = none;
+      for (; e + 8 <= e_; e += 8) {
+        const __m256d a = _mm256_mul_pd(_mm256_sub_pd(_mm256_loadu_pd(points + e), origin), sign);
+        const __m256d b = _mm256_mul_pd(_mm256_sub_pd(_mm256_loadu_pd(points + e + 4), origin), sign);
+        low = _mm256_min_pd(_mm256_blendv_pd(none, a, _mm256_cmp_pd(a, zero, _CMP_GT_OQ)), low);
+        high = _mm256_min_pd(_mm256_blendv_pd(none, b, _mm256_cmp_pd(b, zero, _CMP_GT_OQ)), high);
+      }
+      _mm256_storeu_pd(lane, low);
+      _mm256_storeu_pd(lane + 4, high);
+    }
+#else
     for (; e + 8 <= e_; e += 8)
       for (int q = 0; q < 8; ++q) {
         const double d = (points[e + q] - from) * direction;
         const double v = d > 0 ? d : kNone;
         lane[q] = v < lane[q] ? v : lane[q];
       }
+#endif
     double nearest = kNone;
     for (; e < e_; ++e) {
       const double d = (points[e] - from) * direction;
