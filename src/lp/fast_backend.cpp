@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <span>
 #include <type_traits>
@@ -30,8 +29,8 @@ constexpr double kPhase1Tolerance = 1e-10;       // residual artificial mass tha
 constexpr double kCertifyPrimal = 1e-12;         // dual cleanup: x_B below this must leave
 constexpr double kCertifyBound = 1e-9;           // certified bound on |G - G*| (see certify)
 constexpr int kRefactorInterval = 16;            // rank-1 updates between fresh inverses
-constexpr int kDegenerateBeforeBland = 24;
-constexpr int kWarmTries = 3;  // warm bases tried before the composite repair       // degenerate pivots in a row before Bland's rule
+constexpr int kDegenerateBeforeBland = 24;       // degenerate pivots in a row before Bland's rule
+constexpr int kWarmTries = 3;                    // warm bases tried before the composite repair
 
 // In-place LU with partial pivoting and inverse for k <= 8, in long double: the certificate's
 // x_B and y then carry ~3 more digits than the double iterations (cond(B) of boundary instances
@@ -157,18 +156,14 @@ class FastSimplex {
       composite_cost_ += p.start_weights[t] * cost_[p.start_support[t]];
 
     Solution s;
-    if (!warm.empty() && solve_from_previous_basis(warm, s)) return s;
-    if (s.iterations > 0) {
-      const int spent = s.iterations;
-      s = Solution();
-      s.iterations = spent;
+    if (!warm.empty()) {
+      if (solve_from_previous_basis(warm, s)) return s;
+      start_over(s);
     }
     if (!p.start_support.empty() && start_from_distribution()) {
       phase_ = 2;
       if (solve_phase2(s)) return s;
-      const int spent = s.iterations;
-      s = Solution();
-      s.iterations = spent;
+      start_over(s);
     }
     start_with_artificials();
     phase_ = 1;
@@ -186,15 +181,27 @@ class FastSimplex {
     return unstable(s);
   }
 
-  // Neither primal nor dual feasible: the most negative basic column makes way for the composite
-  // column (the kernel distribution, which alone reproduces the moments), so x = e_i is a basic
-  // feasible solution next to the old basis; the primal simplex goes on from there.
-  bool repair_with_composite(Solution& s) {
-    if (p_->start_support.empty() || std::find(basis_, basis_ + k_, composite_) != basis_ + k_)
-      return false;
+  // A failed start: only the pivots it spent are kept.
+  static void start_over(Solution& s) {
+    const int spent = s.iterations;
+    s = Solution();
+    s.iterations = spent;
+  }
+
+  // The basis position of the most negative weight (the first, on ties).
+  int most_negative() const {
     int worst = 0;
     for (int i = 1; i < k_; ++i)
       if (x_[i] < x_[worst]) worst = i;
+    return worst;
+  }
+
+  // A warm basis that no bracket shift made feasible: its most negative column makes way for the
+  // composite column (the kernel distribution, which alone reproduces the moments), so x = e_i is
+  // a basic feasible solution next to the old basis; the primal simplex goes on from there.
+  bool repair_with_composite(Solution& s) {
+    if (p_->start_support.empty() || is_basic(composite_)) return false;
+    const int worst = most_negative();
     basis_[worst] = composite_;
     if (!refactor()) return false;
     for (int i = 0; i < k_; ++i) x_[i] = i == worst ? 1.0 : 0.0;  // exact: B e_worst = rhs
@@ -203,34 +210,34 @@ class FastSimplex {
 
   bool is_artificial(int j) const { return j >= n_ && j < n_ + k_; }
 
-  void remember_basis(const Solution& s, WarmBasis& warm_) {
-    warm_.valid = s.status == ProblemStatus::Optimal && s.call == CallStatus::Ok && phase_ == 2;
-    if (!warm_.valid) return;
-    warm_.rows = k_;
-    warm_.grid = g_;
-    warm_.zf = p_->zf;
+  void remember_basis(const Solution& s, WarmBasis& warm) {
+    warm.valid = s.status == ProblemStatus::Optimal && s.call == CallStatus::Ok && phase_ == 2;
+    if (!warm.valid) return;
+    warm.rows = k_;
+    warm.grid = g_;
+    warm.zf = p_->zf;
     for (int i = 0; i < k_; ++i) {
       const int j = basis_[i];
       if (j == composite_)
-        warm_.role[i] = Role::Composite, warm_.index[i] = 0;
+        warm.role[i] = Role::Composite, warm.index[i] = 0;
       else if (j < g_)
-        warm_.role[i] = Role::Grid, warm_.index[i] = j;
+        warm.role[i] = Role::Grid, warm.index[i] = j;
       else if (j - g_ == p_->zf_extra)
-        warm_.role[i] = Role::Zf, warm_.index[i] = 0;
+        warm.role[i] = Role::Zf, warm.index[i] = 0;
       else if (j < n_ && !p_->extra_tap.empty() && p_->extra_tap[j - g_] >= 0)
-        warm_.role[i] = Role::Tap, warm_.index[i] = p_->extra_tap[j - g_];
+        warm.role[i] = Role::Tap, warm.index[i] = p_->extra_tap[j - g_];
       else
-        warm_.valid = false;  // an extra point without a tap (from_moments): nothing to map
+        warm.valid = false;  // an extra point without a tap (from_moments): nothing to map
     }
   }
 
-  bool start_from_previous_basis(const WarmBasis& warm_) {
-    if (warm_.rows != k_ || warm_.grid != g_) return false;
+  bool start_from_previous_basis(const WarmBasis& warm) {
+    if (warm.rows != k_ || warm.grid != g_) return false;
     for (int i = 0; i < k_; ++i) {
       int j = -1;
-      switch (warm_.role[i]) {
+      switch (warm.role[i]) {
         case Role::Grid:
-          j = warm_.index[i];
+          j = warm.index[i];
           break;
         case Role::Composite:
           j = p_->start_support.empty() ? -1 : composite_;
@@ -239,7 +246,7 @@ class FastSimplex {
           j = p_->zf_extra < 0 ? -1 : g_ + p_->zf_extra;
           break;
         case Role::Tap: {
-          const int t = warm_.index[i];
+          const int t = warm.index[i];
           j = t < int(p_->tap_extra.size()) && p_->tap_extra[t] >= 0 ? g_ + p_->tap_extra[t] : -1;
           break;
         }
@@ -252,16 +259,15 @@ class FastSimplex {
     // continuous extremal distribution by the two points of I around it, and when the node moves
     // past one of them, that point's weight turns negative. Moving it past its partner fixes it.
     for (int round = 0; round < 4 * k_; ++round) {
-      int worst = 0;
-      for (int i = 1; i < k_; ++i)
-        if (x_[i] < x_[worst]) worst = i;
+      const int worst = most_negative();
       if (x_[worst] >= -kFeasibilityTolerance || !shift_bracket(worst)) break;
     }
     return true;
   }
 
   // Basic column `i` (negative weight) moves to the nearest point of I beyond the basic point
-  // closest to it; the old basis is restored if that fails.
+  // closest to it. False, with the basis unchanged, when there is no such point or the exchange
+  // would be (nearly) singular.
   bool shift_bracket(int i) {
     const int j = basis_[i];
     if (j >= n_) return false;
@@ -347,16 +353,18 @@ class FastSimplex {
   bool solve_from_previous_basis(std::span<const WarmBasis* const> warm, Solution& s) {
     phase_ = 2;
     int usable = -1;
+    bool usable_is_current = false;  // the basis in place is still the usable try's
     for (size_t c = 0; c < warm.size(); ++c) {
-      if (!start_from_previous_basis(*warm[c])) continue;
+      const bool started = start_from_previous_basis(*warm[c]);
+      usable_is_current = started && usable < 0;
+      if (!started) continue;
       if (usable < 0) usable = int(c);
-      bool feasible = true;
-      for (int i = 0; i < k_; ++i) feasible = feasible && x_[i] >= -kFeasibilityTolerance;
-      if (feasible) return solve_phase2(s);
+      if (x_[most_negative()] >= -kFeasibilityTolerance) return solve_phase2(s);
     }
-    return usable >= 0 && start_from_previous_basis(*warm[usable]) && repair_with_composite(s);
+    if (usable < 0) return false;
+    // Mapping and shifting are deterministic, so redoing them restores the usable try's basis.
+    return (usable_is_current || start_from_previous_basis(*warm[usable])) && repair_with_composite(s);
   }
-
 
   Solution& unstable(Solution& s) {
     s.status = ProblemStatus::Unstable;
@@ -637,11 +645,8 @@ class FastSimplex {
     alpha_.resize(n_);
     for (int step = 0; step < 4 * k_ + 16; ++step) {
       if (!refactor()) return false;
-      int leave = -1;
-      double worst = -kCertifyPrimal;
-      for (int i = 0; i < k_; ++i)
-        if (x_[i] < worst) leave = i, worst = x_[i];
-      if (leave < 0) return true;
+      const int leave = most_negative();
+      if (!(x_[leave] < -kCertifyPrimal)) return true;
       price();
       // alpha_j = (B^{-1} A)_{leave, j}, stored negated: -alpha_j = 0 - row_leave . a_j.
       subtract_row_combination(binv_[leave], nullptr, alpha_.data());
@@ -698,12 +703,11 @@ class FastSimplex {
   bool certify(Solution& s) { return certify_in_double(s) || certify_in_long_double(s); }
 
   // Most bases have moderate duals, and then double arithmetic certifies them with room to spare:
-  // the same first-order bound as below, from a fresh double inverse, with the true residual
-  // B x - rhs (double x_B is only cond(B) eps accurate) and every computed term widened by its
-  // rounding error bound gamma (|terms|), gamma = (k + 2) eps. Narrow kernels (|y| ~ 1e8) fail
-  // this on rounding alone and go to long double.
-  // Every bound term is computed from the data (true residuals, reduced costs of the y used), so
-  // the inverse need not be fresh: the product-form one after a few updates, with one step of
+  // the same first-order bound as below, with the true residual B x - rhs (double x_B is only
+  // cond(B) eps accurate) and every computed term widened by its rounding error bound
+  // gamma (|terms|), gamma = (k + 2) eps. Narrow kernels (|y| ~ 1e8) fail this on rounding alone
+  // and go to long double. Every bound term is computed from the data (true residuals, reduced
+  // costs of the y used), so the inverse need not be fresh: the product-form one, with one step of
   // refinement for y as for x_B, serves as well, and saves a factorisation per LP.
   bool certify_in_double(Solution& s) {
     constexpr double kEps = std::numeric_limits<double>::epsilon();
@@ -848,13 +852,14 @@ class FastSimplex {
     // Double pricing with the rounded duals finds the suspects, long double judges them.
     for (int r = 0; r < k_; ++r) y_[r] = double(y[r]);
     reduced_costs();
-    if (smallest_of(reduced_.data(), n_) < -1e-9)
+    if (smallest_of(reduced_.data(), n_) < -1e-9) {
       for (int j = 0; j < n_; ++j) {
-      if (reduced_[j] >= -1e-9) continue;
-      long double d = cost_[j];
-      for (int r = 0; r < k_; ++r) d -= y[r] * (long double)p_->at(r, j);
-      if (d < 0) bound += -d;
-      if (bound > kCertifyBound) return false;
+        if (reduced_[j] >= -1e-9) continue;
+        long double d = cost_[j];
+        for (int r = 0; r < k_; ++r) d -= y[r] * (long double)p_->at(r, j);
+        if (d < 0) bound += -d;
+        if (bound > kCertifyBound) return false;
+      }
     }
     long double objective = 0, weights[kMaxRows];
     for (int i = 0; i < k_; ++i) {
