@@ -39,12 +39,6 @@ std::vector<OptionSpec> bounds_specs() {
   return specs;
 }
 
-std::string num(double v, const char* format = "%.17g") {
-  char b[40];
-  std::snprintf(b, sizeof b, format, v);
-  return b;
-}
-
 // The kernel distribution at a dataset texel: the same taps as PCF and the moment maps see.
 std::string texel_distribution(const Config& config, BoundCurveRequest& request, const GaussianKernel& kernel,
                                bool quiet) {
@@ -95,7 +89,7 @@ int run_bounds(const CommonOptions& options) {
   request.bases = config.strings("bounds.bases");
   request.sizes.clear();
   for (double m : config.numbers("bounds.sizes")) {
-    if (m != int(m)) throw InputError("bounds.sizes: expected whole numbers, got " + num(m, "%g"));
+    if (m != int(m)) throw InputError("bounds.sizes: expected whole numbers, got " + format_number(m, "%g"));
     request.sizes.push_back(int(m));
   }
   request.samples = int(config.integer("bounds.samples"));
@@ -119,30 +113,30 @@ int run_bounds(const CommonOptions& options) {
   for (const auto& s : curves.series) csv << ",\"" << s.basis << " m=" << s.m << "\"";
   csv << "\n";
   for (size_t i = 0; i < curves.zf.size(); ++i) {
-    csv << num(curves.zf[i]) << "," << num(curves.cdf[i]);
-    for (const auto& s : curves.series) csv << "," << (std::isnan(s.lower[i]) ? std::string() : num(s.lower[i]));
+    csv << format_number(curves.zf[i], "%.17g") << "," << format_number(curves.cdf[i], "%.17g");
+    for (const auto& s : curves.series) csv << "," << (std::isnan(s.lower[i]) ? std::string() : format_number(s.lower[i], "%.17g"));
     csv << "\n";
   }
   dist << "depth,weight\n";
   for (size_t t = 0; t < request.depths.size(); ++t)
-    if (request.weights[t] > 0) dist << num(request.depths[t]) << "," << num(request.weights[t]) << "\n";
+    if (request.weights[t] > 0) dist << format_number(request.depths[t], "%.17g") << "," << format_number(request.weights[t], "%.17g") << "\n";
 
   RunMetadata meta = collect_run_metadata(request.threads, process_arguments());
   md << "# Sharp lower bounds of Problem 1 for one kernel (seed 000, Figure 3)\n\n"
      << "Made by momentbench " << meta.version << " (git " << meta.git_sha << "), " << request.threads << " threads, "
      << meta.started_utc << ".\n\n"
      << "- Distribution: " << source << "\n"
-     << "- LP: I = " << request.lp.grid << "-point grid on [" << num(request.lp.lo, "%g") << ", "
-     << num(request.lp.hi, "%g") << "] ∪ the distribution's depths ∪ {z_f} (REFERENCE.md §2), backend "
-     << request.backend << "; " << request.samples << " values of z_f on [" << num(request.zf_lo, "%g") << ", "
-     << num(request.zf_hi, "%g") << "]\n"
+     << "- LP: I = " << request.lp.grid << "-point grid on [" << format_number(request.lp.lo, "%g") << ", "
+     << format_number(request.lp.hi, "%g") << "] ∪ the distribution's depths ∪ {z_f} (REFERENCE.md §2), backend "
+     << request.backend << "; " << request.samples << " values of z_f on [" << format_number(request.zf_lo, "%g") << ", "
+     << format_number(request.zf_hi, "%g") << "]\n"
      << "- Gap = F_Z(z_f) − G(b, z_f) ≥ 0; its mean over z_f is the area between the CDF and the bound.\n\n"
      << "| basis | m | functions | mean gap | max gap | LPs not optimal |\n|---|---|---|---|---|---|\n";
   for (const auto& s : curves.series) {
     std::string functions;
     for (const auto& f : s.functions) functions += (functions.empty() ? "" : ", ") + f;
-    md << "| " << s.basis << " | " << s.m << " | " << functions << " | " << num(s.mean_gap, "%.5f") << " | "
-       << num(s.max_gap, "%.5f") << " | " << s.failures << " |\n";
+    md << "| " << s.basis << " | " << s.m << " | " << functions << " | " << format_number(s.mean_gap, "%.5f") << " | "
+       << format_number(s.max_gap, "%.5f") << " | " << s.failures << " |\n";
   }
   write_file_atomically(out / "bounds.csv", csv.str());
   write_file_atomically(out / "distribution.csv", dist.str());

@@ -41,11 +41,7 @@ std::string file_stem(const std::string& name) {
   return out;
 }
 
-std::string number(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.6g", v);
-  return b;
-}
+std::string number(double v) { return format_number(v, "%.6g"); }
 
 struct Row {
   std::string technique, scene, view;

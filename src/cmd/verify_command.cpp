@@ -39,17 +39,8 @@ std::vector<OptionSpec> verify_specs() {
   return specs;
 }
 
-std::string num(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.3g", v);
-  return b;
-}
-
-std::string full(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.17g", v);
-  return b;
-}
+std::string num(double v) { return format_number(v, "%.3g"); }
+std::string full(double v) { return format_number(v, "%.17g"); }
 
 std::string joined(const std::vector<double>& v, const char* separator) {
   std::string s;

@@ -12,7 +12,8 @@ namespace mb {
 
 namespace {
 
-void check_distribution(const BoundCurveRequest& r) {
+// Validates the request; returns the distribution's total weight.
+double checked_total_weight(const BoundCurveRequest& r) {
   if (r.depths.empty()) throw InputError("bounds.depths: expected at least one depth");
   if (r.depths.size() != r.weights.size())
     throw InputError("bounds.weights: expected one weight per depth (" + std::to_string(r.depths.size()) + "), got " +
@@ -29,15 +30,14 @@ void check_distribution(const BoundCurveRequest& r) {
   if (!(total > 0)) throw InputError("bounds.weights: expected a positive total weight");
   if (r.samples < 2) throw InputError("bounds.samples: expected at least 2 z_f values");
   if (!(r.zf_lo < r.zf_hi)) throw InputError("bounds.zf_range: expected lo < hi");
+  return total;
 }
 
 }  // namespace
 
 BoundCurves compute_bound_curves(const BoundCurveRequest& r) {
-  check_distribution(r);
+  const double total = checked_total_weight(r);
   BoundCurves out;
-  double total = 0;
-  for (double w : r.weights) total += w;
   for (int i = 0; i < r.samples; ++i) {
     const double zf = r.zf_lo + (r.zf_hi - r.zf_lo) * i / (r.samples - 1);
     double cdf = 0;  // REFERENCE.md §1: strictly less

@@ -71,6 +71,23 @@ void Config::assign(const std::string& name, const YAML::Node& node, const std::
     throw InputError(origin + ": key '" + name + "': unknown value '" + v + "'" +
                      (hint.empty() ? "" : " (did you mean '" + hint + "'?)") + "; valid: " + all);
   };
+  // The items of a list option: a YAML list of scalars, or one comma-separated scalar as --set
+  // gives it ("techniques=vsm,esm", "bounds.depths=0.2,0.5"); empty or null is the empty list.
+  auto list_items = [&] {
+    std::vector<std::string> items;
+    if (node.IsScalar() && !node.Scalar().empty()) {
+      std::stringstream in(node.Scalar());
+      for (std::string item; std::getline(in, item, ',');) items.push_back(item);
+    } else if (node.IsSequence()) {
+      for (const auto& item : node) {
+        if (!item.IsScalar()) bad(type_name(s.type));
+        items.push_back(item.Scalar());
+      }
+    } else if (!(node.IsNull() || (node.IsScalar() && node.Scalar().empty()))) {
+      bad(type_name(s.type));
+    }
+    return items;
+  };
   YAML::Node stored;
   switch (s.type) {
     case OptionType::Integer: {
@@ -98,40 +115,15 @@ void Config::assign(const std::string& name, const YAML::Node& node, const std::
       check_choice(node.Scalar());
       stored = YAML::Node(node.Scalar());
       break;
-    case OptionType::StringList: {
+    case OptionType::StringList:
       stored = YAML::Node(YAML::NodeType::Sequence);
-      if (node.IsScalar() && !node.Scalar().empty()) {
-        // "--set techniques=vsm,esm" is accepted as a comma-separated list.
-        std::stringstream in(node.Scalar());
-        for (std::string item; std::getline(in, item, ',');) {
-          check_choice(item);
-          stored.push_back(item);
-        }
-      } else if (node.IsSequence()) {
-        for (const auto& item : node) {
-          if (!item.IsScalar()) bad(type_name(s.type));
-          check_choice(item.Scalar());
-          stored.push_back(item.Scalar());
-        }
-      } else if (!(node.IsNull() || (node.IsScalar() && node.Scalar().empty()))) {
-        bad(type_name(s.type));
+      for (const auto& item : list_items()) {
+        check_choice(item);
+        stored.push_back(item);
       }
       break;
-    }
     case OptionType::NumberList: {
-      // A YAML list, or "--set bounds.depths=0.2,0.5" as a comma-separated one.
-      std::vector<std::string> items;
-      if (node.IsScalar() && !node.Scalar().empty()) {
-        std::stringstream in(node.Scalar());
-        for (std::string item; std::getline(in, item, ',');) items.push_back(item);
-      } else if (node.IsSequence()) {
-        for (const auto& item : node) {
-          if (!item.IsScalar()) bad(type_name(s.type));
-          items.push_back(item.Scalar());
-        }
-      } else if (!(node.IsNull() || (node.IsScalar() && node.Scalar().empty()))) {
-        bad(type_name(s.type));
-      }
+      const std::vector<std::string> items = list_items();
       stored = YAML::Node(YAML::NodeType::Sequence);
       for (size_t k = 0; k < items.size(); ++k) {
         double v;
