@@ -138,6 +138,7 @@ class FastSimplex {
  private:
   Solution solve(const Problem& p, std::span<const WarmBasis* const> warm) {
     p_ = &p;
+    priced_phase_ = -1;  // reduced_ belongs to the previous problem
     k_ = p.rows;
     n_ = p.cols();
     g_ = p.grid_size();
@@ -449,17 +450,43 @@ class FastSimplex {
     return true;
   }
 
-  // y = B^{-T} c_B, then reduced costs of all structural columns, block by block (vectorised).
+  // y = B^{-T} c_B with one step of iterative refinement (the product-form inverse drifts), then
+  // reduced costs of all structural columns, block by block (vectorised). The certificate computes
+  // its y the same way, so at an optimal basis it finds these reduced costs already in place.
   void price() {
+    dual_values(y_);
+    reduced_costs();
+  }
+  void dual_values(double* y) const {
+    double basic_cost[kMaxRows], misfit[kMaxRows];
+    for (int i = 0; i < k_; ++i) basic_cost[i] = cost(basis_[i]);
     for (int r = 0; r < k_; ++r) {
       double v = 0;
-      for (int i = 0; i < k_; ++i) v += cost(basis_[i]) * binv_[i][r];
-      y_[r] = v;
+      for (int i = 0; i < k_; ++i) v += basic_cost[i] * binv_[i][r];
+      y[r] = v;
     }
-    reduced_costs();
+    for (int i = 0; i < k_; ++i) {  // c_B - B^T y
+      double v = basic_cost[i];
+      for (int r = 0; r < k_; ++r) v -= column_entry(basis_[i], r) * y[r];
+      misfit[i] = v;
+    }
+    for (int r = 0; r < k_; ++r) {
+      double v = 0;
+      for (int i = 0; i < k_; ++i) v += misfit[i] * binv_[i][r];
+      y[r] += v;
+    }
   }
   void reduced_costs() {
     subtract_row_combination(y_, phase_ == 1 ? nullptr : cost_.data(), reduced_.data());
+    priced_phase_ = phase_;
+    for (int r = 0; r < k_; ++r) priced_y_[r] = y_[r];
+  }
+  // Whether reduced_ holds the reduced costs of these duals (in the current phase).
+  bool priced_with(const double* y) const {
+    if (priced_phase_ != phase_) return false;
+    for (int r = 0; r < k_; ++r)
+      if (y[r] != priced_y_[r]) return false;
+    return true;
   }
 
   // out_j = base_j - sum_r w_r A_rj for every structural column (base 0 when null), in one pass
@@ -712,25 +739,9 @@ class FastSimplex {
   bool certify_in_double(Solution& s) {
     constexpr double kEps = std::numeric_limits<double>::epsilon();
     const double gamma = (k_ + 2) * kEps;
-    double y[kMaxRows], y_norm = 0, basic_cost[kMaxRows], misfit_y[kMaxRows];
-    for (int i = 0; i < k_; ++i) basic_cost[i] = cost(basis_[i]);
-    for (int r = 0; r < k_; ++r) {
-      double v = 0;
-      for (int i = 0; i < k_; ++i) v += basic_cost[i] * binv_[i][r];
-      y[r] = v;
-    }
-    for (int i = 0; i < k_; ++i) {  // c_B - B^T y
-      double v = basic_cost[i];
-      for (int r = 0; r < k_; ++r) v -= column_entry(basis_[i], r) * y[r];
-      misfit_y[i] = v;
-    }
-    for (int r = 0; r < k_; ++r) {
-      double v = 0;
-      for (int i = 0; i < k_; ++i) v += misfit_y[i] * binv_[i][r];
-      y[r] += v;
-      y_[r] = y[r];
-      y_norm += std::abs(y[r]);
-    }
+    double y[kMaxRows], y_norm = 0;
+    dual_values(y);
+    for (int r = 0; r < k_; ++r) y_norm += std::abs(y[r]);
     // |a_rj| <= column_bound for every column: rounding of any reduced cost is below this.
     const double column_bound = std::max(p_->grid->max_abs, p_->extra.max_abs);
     const double reduced_cost_error = gamma * (1 + y_norm * column_bound);
@@ -764,7 +775,9 @@ class FastSimplex {
       if (!(std::abs(residual) + gamma * size <= 1e-12)) return false;
       bound += std::abs(y[r]) * (std::abs(residual) + gamma * size);
     }
-    reduced_costs();  // with y_ = y
+    const bool priced = priced_with(y);
+    for (int r = 0; r < k_; ++r) y_[r] = y[r];
+    if (!priced) reduced_costs();
     auto reduced_cost = [&](int j) { return std::abs(reduced_[j]) + reduced_cost_error; };
     for (int i = 0; i < k_; ++i) {
       if (clamped[i] <= 0) continue;
@@ -851,7 +864,7 @@ class FastSimplex {
     if (bound > kCertifyBound) return false;
     // Double pricing with the rounded duals finds the suspects, long double judges them.
     for (int r = 0; r < k_; ++r) y_[r] = double(y[r]);
-    reduced_costs();
+    if (!priced_with(y_)) reduced_costs();
     if (smallest_of(reduced_.data(), n_) < -1e-9) {
       for (int j = 0; j < n_; ++j) {
         if (reduced_[j] >= -1e-9) continue;
@@ -888,6 +901,8 @@ class FastSimplex {
   double binv_[kMaxRows][kMaxRows];
   double composite_cost_ = 0;
   int updates_ = 0;
+  double priced_y_[kMaxRows] = {};  // the duals reduced_ was computed with, in priced_phase_
+  int priced_phase_ = -1;
   std::vector<double> reduced_, alpha_, cost_;
   WarmBasis lanes_[kWarmLanes];
 };
