@@ -95,6 +95,21 @@ bool invert_small(int k, Real a[kMaxRows][kMaxRows], Real inv[kMaxRows][kMaxRows
   return with_row_count(k, [&](auto rows) { return invert_fixed<Real, decltype(rows)::value>(a, inv, singular); });
 }
 
+// std::lower_bound (strict: false) or std::upper_bound (strict: true) of z in an ascending grid,
+// started where z would be on a uniform grid (every grid here is) and corrected by steps, so the
+// answer is the same for any ascending grid and O(1) for ours; a warm start's bracket shifts
+// needed two binary searches each.
+int grid_bound(const std::vector<double>& grid, double z, bool strict) {
+  const int n = int(grid.size());
+  const double span = grid[n - 1] - grid[0];
+  double guess = span > 0 ? (z - grid[0]) / span * (n - 1) : 0.0;
+  int i = guess >= 0 ? (guess < n ? int(guess) : n) : 0;  // also maps NaN to 0
+  auto before = [&](int j) { return strict ? grid[j] <= z : grid[j] < z; };  // j is left of the bound
+  while (i > 0 && !before(i - 1)) --i;
+  while (i < n && before(i)) ++i;
+  return i;
+}
+
 // The previous fragment's optimal basis, in terms that carry over to a neighbouring fragment:
 // grid columns by index, kernel columns by the tap they came from (the same tap of the next
 // kernel sees a nearby surface at the same offset), z_f's column and the composite column by role.
@@ -148,7 +163,7 @@ class FastSimplex {
     // Costs once per problem: the grid is ascending, so its cost is a prefix of ones.
     cost_.resize(n_);
     const auto& grid = p.grid->points;
-    const int in_front = int(std::lower_bound(grid.begin(), grid.end(), p.zf) - grid.begin());
+    const int in_front = grid_bound(grid, p.zf, false);
     std::fill(cost_.begin(), cost_.begin() + in_front, 1.0);
     std::fill(cost_.begin() + in_front, cost_.begin() + g_, 0.0);
     for (int e = 0; e < e_; ++e) cost_[g_ + e] = p.extra.points[e] < p.zf ? 1.0 : 0.0;
@@ -283,10 +298,7 @@ class FastSimplex {
     int best = -1;
     double distance = std::numeric_limits<double>::infinity();
     const auto& grid = p_->grid->points;
-    const int above = int(std::upper_bound(grid.begin(), grid.end(), from) - grid.begin());
-    const int g = direction > 0
-                      ? above
-                      : int(std::lower_bound(grid.begin(), grid.end(), from) - grid.begin()) - 1;
+    const int g = direction > 0 ? grid_bound(grid, from, true) : grid_bound(grid, from, false) - 1;
     if (g >= 0 && g < g_) best = g, distance = std::abs(grid[g] - from);
     const int extra = nearest_extra_beyond(from, direction, distance);
     if (extra >= 0) best = g_ + extra;
@@ -342,7 +354,22 @@ class FastSimplex {
     for (int q = 0; q < 8; ++q) nearest = lane[q] < nearest ? lane[q] : nearest;
     if (!(nearest < distance)) return -1;
     distance = nearest;
-    for (e = 0; e < e_; ++e)
+    // The first index holding it, eight at a time (the scalar search was the hottest loop here).
+    e = 0;
+#ifdef __AVX__
+    {
+      const __m256d origin = _mm256_set1_pd(from), sign = _mm256_set1_pd(direction),
+                    target = _mm256_set1_pd(nearest);
+      for (; e + 8 <= e_; e += 8) {
+        const __m256d a = _mm256_mul_pd(_mm256_sub_pd(_mm256_loadu_pd(points + e), origin), sign);
+        const __m256d b = _mm256_mul_pd(_mm256_sub_pd(_mm256_loadu_pd(points + e + 4), origin), sign);
+        if (_mm256_movemask_pd(_mm256_or_pd(_mm256_cmp_pd(a, target, _CMP_EQ_OQ),
+                                            _mm256_cmp_pd(b, target, _CMP_EQ_OQ))))
+          break;
+      }
+    }
+#endif
+    for (; e < e_; ++e)
       if ((points[e] - from) * direction == nearest) return e;
     return -1;
   }
@@ -416,8 +443,8 @@ class FastSimplex {
     for (int j : p_->start_support)
       lo = std::min(lo, p_->point(j)), hi = std::max(hi, p_->point(j));
     const auto& grid = p_->grid->points;
-    int first = int(std::lower_bound(grid.begin(), grid.end(), lo) - grid.begin()) - 1;
-    int last = int(std::lower_bound(grid.begin(), grid.end(), hi) - grid.begin()) + 1;
+    int first = grid_bound(grid, lo, false) - 1;
+    int last = grid_bound(grid, hi, false) + 1;
     for (int widen = 0; widen < 6; ++widen) {
       first = std::max(0, first - widen * (k_ - 1));
       last = std::min(g_ - 1, last + widen * (k_ - 1));
