@@ -28,6 +28,8 @@ ProblemFactory::ProblemFactory(const Basis& basis, const Discretization& disc) :
   grid->points = grid_points(disc);
   const int n = disc.grid, k = int(basis.size()) + 1;
   if (n < k) throw InputError("grid: fewer points than the basis has functions plus one");
+  if (k > kMaxColumnRows)
+    throw InputError("basis: at most " + std::to_string(kMaxColumnRows - 1) + " functions, got " + std::to_string(k - 1));
   rows_ = k;
   // Evaluate (1, b(z_i)) on the grid and orthonormalise: A^T = Q R, rows := R^{-T} A = Q^T.
   Eigen::MatrixXd at(n, k);
@@ -73,7 +75,7 @@ void ProblemFactory::transform(const double* v, double* out) const {
 }
 
 void ProblemFactory::column(double z, double* out) const {
-  double raw[16];
+  double raw[kMaxColumnRows];
   raw[0] = 1;
   for (size_t j = 0; j < basis_.size(); ++j) {
     raw[j + 1] = basis_[j](z);
@@ -162,29 +164,34 @@ void ProblemFactory::from_distribution(std::span<const double> depths, std::span
   p.tap_extra.assign(depths.size(), -1);
   p.extra_tap.clear();
   p.zf_extra = -1;
-  p.rhs.assign(rows_, 0.0);
   double total = 0;
   for (double w : weights) total += w;
   const double scale = 1 / total;  // one division per fragment, not one per tap (~13 cycles each)
   // Distinct depths become extra columns (a kernel often sees one surface many times); the rhs is
-  // the distribution's own moment vector, accumulated in tap order.
-  thread_local std::vector<double> staging;
-  staging.clear();
+  // the distribution's own moment vector, accumulated in tap order (in registers: through p.rhs
+  // every tap waited for the previous tap's store). Columns go straight to their rows, `stride`
+  // apart (room for every tap and z_f), and the rows are packed at the end.
+  double rhs[kMaxColumnRows] = {};
+  const size_t stride = depths.size() + 1;
+  std::vector<double>& values = p.extra.values;
+  values.resize(size_t(rows_) * stride);
   const int g = grid_->size();
+  int count = 0;
   for (size_t t = 0; t < depths.size(); ++t) {
     if (weights[t] == 0) continue;
     const double w = weights[t] * scale;
-    for (int r = 0; r < rows_; ++r) p.rhs[r] += w * depth_columns[t][r];
+    const double* column = depth_columns[t];
+    for (int r = 0; r < rows_; ++r) rhs[r] += w * column[r];
     // Equal depths are usually neighbours in tap order: look back a few slots only (a duplicate
     // column that slips through is harmless, a quadratic search per fragment is not).
     int slot = -1;
-    for (int e = int(p.extra.points.size()) - 1, seen = 0; e >= 0 && seen < 4; --e, ++seen)
+    for (int e = count - 1, seen = 0; e >= 0 && seen < 4; --e, ++seen)
       if (p.extra.points[e] == depths[t]) slot = e;
     if (slot < 0) {
-      slot = int(p.extra.points.size());
+      slot = count++;
       p.extra.points.push_back(depths[t]);
       p.extra_tap.push_back(int(t));
-      staging.insert(staging.end(), depth_columns[t], depth_columns[t] + rows_);
+      for (int r = 0; r < rows_; ++r) values[r * stride + slot] = column[r];
       p.start_support.push_back(g + slot);
       p.start_weights.push_back(0);
     }
@@ -195,18 +202,25 @@ void ProblemFactory::from_distribution(std::span<const double> depths, std::span
     const auto same = std::find(p.extra.points.begin(), p.extra.points.end(), zf);
     p.zf_extra = int(same - p.extra.points.begin());
     if (same == p.extra.points.end()) {
+      double column_zf[kMaxColumnRows];
+      column(zf, column_zf);
       p.extra.points.push_back(zf);
       p.extra_tap.push_back(-1);
-      staging.resize(staging.size() + rows_);
-      column(zf, &staging[staging.size() - rows_]);
+      for (int r = 0; r < rows_; ++r) values[r * stride + count] = column_zf[r];
+      ++count;
     }
   }
-  finish_block(rows_, staging, p.extra);
+  for (int r = 1; r < rows_; ++r)  // pack: row r moves down from r * stride to r * count
+    std::copy(values.begin() + r * stride, values.begin() + r * stride + count, values.begin() + r * count);
+  values.resize(size_t(rows_) * count);
+  p.extra.max_abs = 0;
+  for (double v : values) p.extra.max_abs = std::max(p.extra.max_abs, std::abs(v));
+  p.rhs.assign(rhs, rhs + rows_);
   // The untransformed moments, for reports: invert T on the rhs.
-  p.moments.assign(rows_ - 1, 0.0);
-  std::vector<double> raw(rows_);
+  p.moments.resize(rows_ - 1);
+  double raw[kMaxColumnRows];
   for (int r = 0; r < rows_; ++r) {
-    double s = p.rhs[r];
+    double s = rhs[r];
     for (int c = 0; c < r; ++c) s -= transform_[size_t(r) * rows_ + c] * raw[c];
     raw[r] = s / transform_[size_t(r) * rows_ + r];
   }

@@ -18,6 +18,9 @@
 
 namespace mb::lp {
 
+// The most rows (basis functions plus the constant) a problem may have.
+constexpr int kMaxColumnRows = 16;
+
 // How the admissible set I is discretised (REFERENCE.md §2).
 struct Discretization {
   double lo = 0, hi = 1;  // the admissible interval
