@@ -843,35 +843,68 @@ class FastSimplex {
     for (int r = 0; r < k_; ++r) s.duals[r] = y[r];
   }
 
-  // The certificate: B inverted afresh in long double; negative basic values clamped to zero,
-  // and accepted when the same first-order bound on |G - G*| as the KKT checker's (|y| times the
-  // residual the clamping leaves, plus dual infeasibility) is <= 1e-10. On failure the accurate
-  // inverse and x_B are kept, so the caller resumes from them.
+  // The certificate in long double, first with x_B and y refined from the double inverse (two
+  // steps with long double residuals reach long double accuracy for cond(B) up to ~1e8, at a
+  // fraction of a factorisation's cost), then, if that does not certify, with B inverted afresh in
+  // long double. On that failure the accurate inverse and x_B are kept, so the caller resumes from
+  // them.
   bool certify_in_long_double(Solution& s) {
-    long double b[kMaxRows][kMaxRows], inv[kMaxRows][kMaxRows];
-    for (int i = 0; i < k_; ++i)
+    long double b[kMaxRows][kMaxRows], x[kMaxRows], y[kMaxRows], basic_cost[kMaxRows];
+    for (int i = 0; i < k_; ++i) {
+      basic_cost[i] = cost(basis_[i]);
+      x[i] = x_[i];
+      y[i] = y_[i];
       for (int r = 0; r < k_; ++r) b[r][i] = column_entry(basis_[i], r);
-    if (!invert_small<long double>(k_, b, inv, 1e-14L)) return false;
-    long double x[kMaxRows], clamped[kMaxRows];
+    }
+    for (int step = 0; step < 2; ++step) {
+      double misfit_x[kMaxRows], misfit_y[kMaxRows];
+      for (int r = 0; r < k_; ++r) {
+        long double v = p_->rhs[r];
+        for (int i = 0; i < k_; ++i) v -= b[r][i] * x[i];
+        misfit_x[r] = double(v);
+      }
+      for (int i = 0; i < k_; ++i) {
+        long double v = basic_cost[i];
+        for (int r = 0; r < k_; ++r) v -= b[r][i] * y[r];
+        misfit_y[i] = double(v);
+      }
+      for (int i = 0; i < k_; ++i) {
+        double v = 0, w = 0;
+        for (int r = 0; r < k_; ++r) v += binv_[i][r] * misfit_x[r], w += misfit_y[r] * binv_[r][i];
+        x[i] += v;
+        y[i] += w;
+      }
+    }
+    if (long_double_bound(b, x, y, s)) return true;
+    long double factors[kMaxRows][kMaxRows], inv[kMaxRows][kMaxRows];
+    for (int r = 0; r < k_; ++r)
+      for (int i = 0; i < k_; ++i) factors[r][i] = b[r][i];
+    if (!invert_small<long double>(k_, factors, inv, 1e-14L)) return false;
     for (int i = 0; i < k_; ++i) {
       long double v = 0;
       for (int r = 0; r < k_; ++r) v += inv[i][r] * (long double)p_->rhs[r];
       x[i] = v;
-      clamped[i] = v < 0 ? -v : 0.0L;
       x_[i] = double(v);
       for (int r = 0; r < k_; ++r) binv_[i][r] = double(inv[i][r]);
     }
     updates_ = 0;
-    long double y[kMaxRows];
     for (int r = 0; r < k_; ++r) {
       long double v = 0;
-      for (int i = 0; i < k_; ++i) v += (long double)cost(basis_[i]) * inv[i][r];
+      for (int i = 0; i < k_; ++i) v += basic_cost[i] * inv[i][r];
       y[r] = v;
     }
+    return long_double_bound(b, x, y, s);
+  }
+
+  // Accepts x_B and y when the same first-order bound on |G - G*| as the KKT checker's (|y| times
+  // the residual of the clamped x_B, plus complementarity, plus dual infeasibility) is <= 1e-9,
+  // every term in long double; `b` is the basis matrix.
+  bool long_double_bound(const long double (&b)[kMaxRows][kMaxRows], const long double* x,
+                         const long double* y, Solution& s) {
     long double bound = 0;
     for (int r = 0; r < k_; ++r) {
-      long double residual = 0;  // B (x_clamped - x) in row r
-      for (int i = 0; i < k_; ++i) residual += (long double)column_entry(basis_[i], r) * clamped[i];
+      long double residual = -(long double)p_->rhs[r];  // B max(x, 0) - rhs in row r
+      for (int i = 0; i < k_; ++i) residual += b[r][i] * std::max(x[i], 0.0L);
       bound += std::abs(y[r] * residual);
     }
     // Complementarity as the KKT checker sees it: basic reduced costs, zero in exact arithmetic,
@@ -889,22 +922,32 @@ class FastSimplex {
           bound += x[i] * p_->start_weights[t] * std::abs(reduced_cost(p_->start_support[t]));
     }
     if (bound > kCertifyBound) return false;
-    // Double pricing with the rounded duals finds the suspects, long double judges them.
-    for (int r = 0; r < k_; ++r) y_[r] = double(y[r]);
+    // Double pricing with the rounded duals finds the suspects, long double judges them: a column
+    // whose double reduced cost is at least its rounding bound (that of the pass plus the rounding
+    // of y) cannot be negative.
+    double rounding = 0;
+    for (int r = 0; r < k_; ++r) {
+      y_[r] = double(y[r]);
+      rounding += double(std::abs(y[r] - (long double)y_[r]));
+    }
     if (!priced_with(y_)) reduced_costs();
-    if (smallest_of(reduced_.data(), n_) < -1e-9) {
-      for (int j = 0; j < n_; ++j) {
-        if (reduced_[j] >= -1e-9) continue;
-        long double d = cost_[j];
-        for (int r = 0; r < k_; ++r) d -= y[r] * (long double)p_->at(r, j);
-        if (d < 0) bound += -d;
-        if (bound > kCertifyBound) return false;
-      }
+    double y_norm = 0;
+    for (int r = 0; r < k_; ++r) y_norm += std::abs(y_[r]);
+    const double column_bound = std::max(p_->grid->max_abs, p_->extra.max_abs);
+    const double suspect_below =
+        ((k_ + 2) * std::numeric_limits<double>::epsilon() * (1 + y_norm * column_bound) + rounding * column_bound) *
+        (1 + 1e-6);
+    for (int j = 0; j < n_; ++j) {
+      if (reduced_[j] >= suspect_below) continue;
+      const long double d = reduced_cost(j);
+      if (d < 0) bound += -d;
+      if (bound > kCertifyBound) return false;
     }
     long double objective = 0, weights[kMaxRows];
     for (int i = 0; i < k_; ++i) {
       weights[i] = std::max(x[i], 0.0L);
       objective += (long double)cost(basis_[i]) * weights[i];
+      x_[i] = double(x[i]);
     }
     report(s, objective, weights, y);
     return true;
