@@ -56,12 +56,13 @@ CandidateResult CandidateEvaluator::evaluate(const Basis& basis) const {
     for (size_t t = 0; t < texels; ++t) factory.transform(&raw[t * k], &columns[t * k]);
 
     const auto& list = needs_lp_[v];
-    // Warm-start runs (lp::kWarmStartRun fragments by fragment index): each run is solved in order
-    // by one thread, first from scratch, so the answers do not depend on the schedule and equal
-    // eval's lp: technique, which cuts its runs the same way.
+    // Warm-start runs (bands of lp::kWarmRunRows texel rows; fragments are in texel order): each
+    // run is solved in order by one thread, first from scratch, so the answers do not depend on
+    // the schedule and equal eval's lp: technique, which cuts its runs the same way.
     std::vector<size_t> run_begin;
     for (size_t i = 0; i < list.size(); ++i)
-      if (i == 0 || list[i] / lp::kWarmStartRun != list[i - 1] / lp::kWarmStartRun)
+      if (i == 0 || lp::warm_run_of(view.fragments.texel[list[i]], map.width) !=
+                        lp::warm_run_of(view.fragments.texel[list[i - 1]], map.width))
         run_begin.push_back(i);
     run_begin.push_back(list.size());
     const size_t runs = run_begin.size() - 1;
@@ -89,7 +90,7 @@ CandidateResult CandidateEvaluator::evaluate(const Basis& basis) const {
                                     view.fragments.zf[f] - settings_.depth_bias, problem);
           lp::Solution s = i == run_begin[run]
                                ? backend->solve(problem)
-                               : backend->solve_next(problem, view.fragments.layer[f]);
+                               : backend->solve_next(problem, {view.fragments.layer[f], x});
           if (s.call == lp::CallStatus::Ok && s.status == lp::ProblemStatus::Optimal) {
             g[f] = std::clamp(s.G, 0.0, 1.0);
             ++solved;

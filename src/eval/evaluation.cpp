@@ -39,7 +39,13 @@ TechniqueResult evaluate_technique(const ViewData& view, const std::string& tech
   if (probe->basis().size() > 0)
     moments = compute_moment_map(view.map, probe->basis(), settings.kernel, probe->storage(), settings.threads);
   const size_t taps = size_t(settings.kernel.size) * settings.kernel.size;
-  const size_t chunk = 4 * lp::kWarmStartRun;  // whole warm-start runs per thread
+  // Whole warm-start runs per thread (fragments are in texel order, so each run is contiguous).
+  std::vector<size_t> run_begin;
+  for (size_t k = 0; k < f.size(); ++k)
+    if (k == 0 || lp::warm_run_of(f.texel[k], f.width) != lp::warm_run_of(f.texel[k - 1], f.width))
+      run_begin.push_back(k);
+  run_begin.push_back(f.size());
+  const size_t runs = run_begin.size() - 1;
   size_t failures = 0;
 #pragma omp parallel num_threads(settings.threads) reduction(+ : failures)
   {
@@ -47,8 +53,8 @@ TechniqueResult evaluate_technique(const ViewData& view, const std::string& tech
     const bool needs_distribution = technique->needs_distribution();
     std::vector<double> depths(taps), weights(taps);
 #pragma omp for schedule(dynamic, 1)
-    for (size_t begin = 0; begin < f.size(); begin += chunk) {
-      const size_t end = std::min(f.size(), begin + chunk);
+    for (size_t run = 0; run < runs; ++run) {
+      const size_t begin = run_begin[run], end = run_begin[run + 1];
       for (size_t k = begin; k < end; ++k) {
         const size_t texel = f.texel[k];
         FragmentInput in;
@@ -57,6 +63,8 @@ TechniqueResult evaluate_technique(const ViewData& view, const std::string& tech
         in.pcf = f.pcf[k];
         in.fragment = k;
         in.layer = f.layer[k];
+        in.column = int(texel % f.width);
+        in.run = lp::warm_run_of(texel, f.width);
         if (needs_distribution) {
           kernel_distribution(view.map, settings.kernel, int(texel % f.width), int(texel / f.width), depths, weights);
           in.kernel_depths = depths;

@@ -26,13 +26,12 @@ class LpTechnique : public Technique {
     // The grid columns are shared (built once per technique instance); only the kernel's depths
     // and z_f are new per fragment.
     lp::Problem problem = factory_.from_distribution(in.kernel_depths, in.kernel_weights, in.zf);
-    // Along a warm-start run (the same runs as the sweep's), continue from the lane's last basis.
-    const bool continues = solved_any_ &&
-                           in.fragment / lp::kWarmStartRun == last_fragment_ / lp::kWarmStartRun &&
-                           in.fragment > last_fragment_;
-    lp::Solution s = continues ? backend_->solve_next(problem, in.layer) : backend_->solve(problem);
+    // Along a warm-start run (the same runs as the sweep's), continue from the neighbours' bases.
+    const bool continues = solved_any_ && in.run == last_run_ && in.fragment > last_fragment_;
+    lp::Solution s = continues ? backend_->solve_next(problem, {in.layer, in.column}) : backend_->solve(problem);
     solved_any_ = true;
     last_fragment_ = in.fragment;
+    last_run_ = in.run;
     if (s.call != lp::CallStatus::Ok || s.status != lp::ProblemStatus::Optimal) {
       ++failures_;
       return 0;
@@ -47,6 +46,7 @@ class LpTechnique : public Technique {
   size_t failures_ = 0;
   bool solved_any_ = false;
   size_t last_fragment_ = 0;
+  int last_run_ = -1;
 };
 
 }  // namespace

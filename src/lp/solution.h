@@ -27,29 +27,40 @@ struct Solution {
   int iterations = 0;
 };
 
+// Where a fragment sits in its warm-start run (DESIGN.md §Performance shape, extended to two
+// dimensions): its layer, so that it can continue from the same layer of the texel to the left
+// (the last problem solved in that lane), and its texel column, so that it can continue from any
+// layer of the texel above (the last problem solved in that column); -1: no column memory.
+struct WarmPosition {
+  int layer = 0;
+  int column = -1;
+};
+
 class Backend {
  public:
   virtual ~Backend() = default;
   virtual std::string name() const = 0;
   virtual Solution solve(const Problem& problem) = 0;
   // The same answer to within the certified 1e-9, possibly faster: `problem` continues a run of
-  // neighbouring fragments (DESIGN.md §Performance shape), and the backend may start from the
-  // optimal basis of the last problem it solved in the same `lane` (callers pass the fragment's
-  // layer, so a surface continues from the same surface one texel back; lanes >= kWarmLanes
-  // share the last one). The result then depends on the run, so callers that promise results
-  // independent of the thread count must cut runs the same way on every schedule (kWarmStartRun)
-  // and start each with `solve`, which forgets every lane. Backends without warm starts solve
-  // from scratch.
-  virtual Solution solve_next(const Problem& problem, int lane) {
-    (void)lane;
+  // neighbouring fragments in raster order, and the backend may start from the optimal bases of
+  // the problems it solved last at the texel to the left (same layer; layers >= kWarmLanes share
+  // the last lane) and at the texel above (`at`). The result then depends on the run, so callers
+  // that promise results independent of the thread count must cut runs the same way on every
+  // schedule (warm_run_of) and start each with `solve`, which forgets every basis. Backends
+  // without warm starts solve from scratch.
+  virtual Solution solve_next(const Problem& problem, WarmPosition at) {
+    (void)at;
     return solve(problem);
   }
 };
 
 constexpr int kWarmLanes = 8;
-// Fragments per warm-start run: eval and sweep start a fresh run at every multiple of this
-// fragment index, whatever thread gets it, so their results agree bit for bit.
-constexpr size_t kWarmStartRun = 256;
+// Shadow-map rows per warm-start run: eval and sweep start a fresh run at every band of this many
+// rows, whatever thread gets it, so their results agree bit for bit. Within a band every row but
+// the first has the row above to start from; bands of 8 rows keep 64 runs per 512-row view for
+// the threads to share.
+constexpr int kWarmRunRows = 8;
+inline int warm_run_of(size_t texel, int width) { return int(texel / size_t(width)) / kWarmRunRows; }
 
 // "fast" (our exact dense simplex) or "glpk" (the reference).
 std::unique_ptr<Backend> make_backend(const std::string& name);

@@ -53,11 +53,12 @@ const std::vector<lp::Problem>& problems(const std::string& basis_name, int grid
   return out;
 }
 
-// Runs as the sweep solves them: kWarmStartRun consecutive fragments (by fragment index) of a
-// view, the LP ones among them in order; taken from evenly spaced places of every view.
+// Runs as the sweep solves them: the fragments of a warm-start band (lp::kWarmRunRows texel rows)
+// in fragment order, the LP ones among them, within a window of kRunColumns columns so that a pass
+// stays short; three windows at evenly spaced places of every view.
 struct Run {
   std::vector<lp::Problem> problems;
-  std::vector<int> layers;
+  std::vector<lp::WarmPosition> positions;
 };
 const std::vector<Run>& runs(const std::string& basis_name, int grid) {
   static std::map<std::pair<std::string, int>, std::vector<Run>> cache;
@@ -66,20 +67,22 @@ const std::vector<Run>& runs(const std::string& basis_name, int grid) {
   lp::ProblemFactory factory(Basis::parse({basis_name}), lp::Discretization{0, 1, grid, false});
   GaussianKernel kernel = make_gaussian_kernel(9, 2.4);
   std::vector<double> depths(81), weights(81);
-  constexpr int kRunsPerView = 3;
+  constexpr int kRunsPerView = 3, kRunColumns = 48;
   for (const auto& v : views()) {
-    const size_t blocks = v.fragments.size() / lp::kWarmStartRun;
-    for (int r = 0; r < kRunsPerView && blocks > 0; ++r) {
+    const int bands = v.map.height / lp::kWarmRunRows;
+    for (int r = 0; r < kRunsPerView && bands > 0; ++r) {
       Run run;
-      const size_t begin = (blocks * (2 * r + 1) / (2 * kRunsPerView)) * lp::kWarmStartRun;
-      for (size_t k = begin; k < std::min(v.fragments.size(), begin + lp::kWarmStartRun); ++k) {
+      const int band = bands * (2 * r + 1) / (2 * kRunsPerView);
+      const int x0 = std::max(0, v.map.width * (2 * r + 1) / (2 * kRunsPerView) - kRunColumns / 2);
+      for (size_t k = 0; k < v.fragments.size(); ++k) {
         const size_t t = v.fragments.texel[k];
         const int x = int(t % v.map.width), y = int(t / v.map.width);
+        if (lp::warm_run_of(t, v.map.width) != band || x < x0 || x >= x0 + kRunColumns) continue;
         const double zf = v.fragments.zf[k] - 1e-3;
         if (kernel_cdf(v.map, kernel, x, y, zf) == 0) continue;
         kernel_distribution(v.map, kernel, x, y, depths, weights);
         run.problems.push_back(factory.from_distribution(depths, weights, zf));
-        run.layers.push_back(v.fragments.layer[k]);
+        run.positions.push_back({v.fragments.layer[k], x});
       }
       out.push_back(std::move(run));
     }
@@ -96,7 +99,8 @@ void BM_SolveRuns(benchmark::State& state, const std::string& backend, const std
   for (auto _ : state) {
     for (const auto& run : list)
       for (size_t i = 0; i < run.problems.size(); ++i) {
-        lp::Solution s = warm && i > 0 ? solver->solve_next(run.problems[i], run.layers[i]) : solver->solve(run.problems[i]);
+        lp::Solution s =
+            warm && i > 0 ? solver->solve_next(run.problems[i], run.positions[i]) : solver->solve(run.problems[i]);
         unstable += s.status != lp::ProblemStatus::Optimal;
         iterations += s.iterations;
         checksum += s.G;
