@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "util/error.h"
 
@@ -86,6 +87,20 @@ void ProblemFactory::column(double z, double* out) const {
 }
 
 namespace {
+
+// Calls f(std::integral_constant<int, K>) with K = k for the common row counts, K = 0 otherwise.
+template <class F>
+decltype(auto) with_row_count(int k, F&& f) {
+  switch (k) {
+    case 2: return f(std::integral_constant<int, 2>{});
+    case 3: return f(std::integral_constant<int, 3>{});
+    case 4: return f(std::integral_constant<int, 4>{});
+    case 5: return f(std::integral_constant<int, 5>{});
+    case 6: return f(std::integral_constant<int, 6>{});
+    case 7: return f(std::integral_constant<int, 7>{});
+    default: return f(std::integral_constant<int, 0>{});
+  }
+}
 
 // The block's columns were staged one after the other (column-major, `rows` values each); the
 // block stores them row-major, so each row is one contiguous array for pricing.
@@ -172,32 +187,55 @@ void ProblemFactory::from_distribution(std::span<const double> depths, std::span
   // every tap waited for the previous tap's store). Columns go straight to their rows, `stride`
   // apart (room for every tap and z_f), and the rows are packed at the end.
   double rhs[kMaxColumnRows] = {};
-  const size_t stride = depths.size() + 1;
+  const size_t taps = depths.size(), stride = taps + 1;
   std::vector<double>& values = p.extra.values;
   values.resize(size_t(rows_) * stride);
+  // Sized for every tap and z_f, written through pointers, trimmed at the end.
+  p.extra.points.resize(stride);
+  p.extra_tap.resize(stride);
+  p.start_support.resize(taps);
+  p.start_weights.resize(taps);
   const int g = grid_->size();
-  int count = 0;
-  for (size_t t = 0; t < depths.size(); ++t) {
-    if (weights[t] == 0) continue;
-    const double w = weights[t] * scale;
-    const double* column = depth_columns[t];
-    for (int r = 0; r < rows_; ++r) rhs[r] += w * column[r];
-    // Equal depths are usually neighbours in tap order: look back a few slots only (a duplicate
-    // column that slips through is harmless, a quadratic search per fragment is not).
-    int slot = -1;
-    for (int e = count - 1, seen = 0; e >= 0 && seen < 4; --e, ++seen)
-      if (p.extra.points[e] == depths[t]) slot = e;
-    if (slot < 0) {
-      slot = count++;
-      p.extra.points.push_back(depths[t]);
-      p.extra_tap.push_back(int(t));
-      for (int r = 0; r < rows_; ++r) values[r * stride + slot] = column[r];
-      p.start_support.push_back(g + slot);
-      p.start_weights.push_back(0);
+  int count = with_row_count(rows_, [&](auto fixed) {
+    // The row count known at compile time (0: not), so that rhs stays in registers.
+    constexpr int kRows = decltype(fixed)::value;
+    const int rows = kRows ? kRows : rows_;
+    double* points = p.extra.points.data();
+    int* extra_tap = p.extra_tap.data();
+    double* start_weights = p.start_weights.data();
+    int* start_support = p.start_support.data();
+    int* tap_extra = p.tap_extra.data();
+    double* out = values.data();
+    double sum[kRows ? kRows : kMaxColumnRows] = {};
+    int n = 0;
+    for (size_t t = 0; t < taps; ++t) {
+      if (weights[t] == 0) continue;
+      const double w = weights[t] * scale;
+      const double* column = depth_columns[t];
+      for (int r = 0; r < rows; ++r) sum[r] += w * column[r];
+      // Equal depths are usually neighbours in tap order: look back a few slots only (a duplicate
+      // column that slips through is harmless, a quadratic search per fragment is not).
+      int slot = -1;
+      for (int e = n - 1, seen = 0; e >= 0 && seen < 4; --e, ++seen)
+        if (points[e] == depths[t]) slot = e;
+      if (slot < 0) {
+        slot = n++;
+        points[slot] = depths[t];
+        extra_tap[slot] = int(t);
+        for (int r = 0; r < rows; ++r) out[r * stride + slot] = column[r];
+        start_support[slot] = g + slot;
+        start_weights[slot] = 0;
+      }
+      start_weights[slot] += w;
+      tap_extra[t] = slot;
     }
-    p.start_weights[slot] += w;
-    p.tap_extra[t] = slot;
-  }
+    for (int r = 0; r < rows; ++r) rhs[r] = sum[r];
+    return n;
+  });
+  p.start_support.resize(count);
+  p.start_weights.resize(count);
+  p.extra.points.resize(count);
+  p.extra_tap.resize(count);
   if (zf >= disc_.lo && zf <= disc_.hi) {
     const auto same = std::find(p.extra.points.begin(), p.extra.points.end(), zf);
     p.zf_extra = int(same - p.extra.points.begin());
@@ -213,8 +251,13 @@ void ProblemFactory::from_distribution(std::span<const double> depths, std::span
   for (int r = 1; r < rows_; ++r)  // pack: row r moves down from r * stride to r * count
     std::copy(values.begin() + r * stride, values.begin() + r * stride + count, values.begin() + r * count);
   values.resize(size_t(rows_) * count);
-  p.extra.max_abs = 0;
-  for (double v : values) p.extra.max_abs = std::max(p.extra.max_abs, std::abs(v));
+  // Four independent maxima: one running maximum is a chain of dependent maxsd (3 cycles each).
+  double lane[4] = {0, 0, 0, 0};
+  size_t j = 0;
+  for (; j + 4 <= values.size(); j += 4)
+    for (int q = 0; q < 4; ++q) lane[q] = std::max(lane[q], std::abs(values[j + q]));
+  for (; j < values.size(); ++j) lane[0] = std::max(lane[0], std::abs(values[j]));
+  p.extra.max_abs = std::max(std::max(lane[0], lane[1]), std::max(lane[2], lane[3]));
   p.rhs.assign(rhs, rhs + rows_);
   // The untransformed moments, for reports: invert T on the rhs.
   p.moments.resize(rows_ - 1);
