@@ -296,8 +296,11 @@ class FastSimplex {
   }
 
   // Basic column `i` (negative weight) moves to the nearest point of I beyond the basic point
-  // closest to it. False, with the basis unchanged, when there is no such point or the exchange
-  // would be (nearly) singular.
+  // closest to it (its partner). When the pair's weights put the node they stand for further
+  // than that (its position is their weighted mean, an extrapolation while one weight is
+  // negative), both move at once to the two points of I around it: a node that travelled many
+  // cells since the previous fragment took as many shifts. False, with the basis unchanged, when
+  // there is no such point or the exchange would be (nearly) singular.
   bool shift_bracket(int i) {
     const int j = basis_[i];
     if (j >= n_) return false;
@@ -309,24 +312,47 @@ class FastSimplex {
         partner = q, gap = std::abs(p_->point(basis_[q]) - z);
     if (partner < 0) return false;
     const double from = p_->point(basis_[partner]), direction = from > z ? 1.0 : -1.0;
-    int best = -1;
-    double distance = std::numeric_limits<double>::infinity();
+    const int next = point_beyond(from, direction);
+    if (next < 0) return false;
+    const double mass = x_[i] + x_[partner];
+    if (mass > 0) {
+      const double node = (x_[i] * z + x_[partner] * from) / mass;
+      if ((node - p_->point(next)) * direction > 0) {
+        const int far = point_beyond(node, direction), near = point_beyond(node, -direction);
+        if (far >= 0 && near >= 0 && near != far && exchange(i, far)) {
+          if (!is_basic(near)) exchange(partner, near);
+          return true;
+        }
+      }
+    }
+    return exchange(i, next);
+  }
+
+  // The point of I nearest beyond `from` in `direction` (a column index), or -1.
+  int point_beyond(double from, double direction) const {
     const auto& grid = p_->grid->points;
     const int g = direction > 0 ? grid_bound(grid, from, true) : grid_bound(grid, from, false) - 1;
+    int best = -1;
+    double distance = std::numeric_limits<double>::infinity();
     if (g >= 0 && g < g_) best = g, distance = std::abs(grid[g] - from);
     const int extra = nearest_extra_beyond(from, direction, distance);
-    if (extra >= 0) best = g_ + extra;
-    if (best < 0 || std::find(basis_, basis_ + k_, best) != basis_ + k_) return false;
-    // A column exchange is one product-form update of the inverse (and of x_B), not a new one.
+    return extra >= 0 ? g_ + extra : best;
+  }
+
+  // Column `entering` replaces basic column `i`: one product-form update of the inverse and of
+  // x_B, not a new factorisation. False, with nothing changed, if it is basic already or the
+  // exchange would be (nearly) singular.
+  bool exchange(int i, int entering) {
+    if (is_basic(entering) || updates_ >= kRefactorInterval) return false;
     double u[kMaxRows];
-    column_in_basis(best, u);
+    column_in_basis(entering, u);
     double largest = 0;
     for (int q = 0; q < k_; ++q) largest = std::max(largest, std::abs(u[q]));
-    if (!(std::abs(u[i]) > 1e-7 * largest) || updates_ >= kRefactorInterval) return false;
+    if (!(std::abs(u[i]) > 1e-7 * largest)) return false;
     const double theta = x_[i] / u[i];
     for (int q = 0; q < k_; ++q) x_[q] -= theta * u[q];
     x_[i] = theta;
-    pivot(i, best, u);
+    pivot(i, entering, u);
     return true;
   }
 
