@@ -977,12 +977,24 @@ class FastSimplex {
     const double suspect_below =
         ((k_ + 2) * std::numeric_limits<double>::epsilon() * (1 + y_norm * column_bound) + rounding * column_bound) *
         (1 + 1e-6);
-    for (int j = 0; j < n_; ++j) {
-      if (reduced_[j] >= suspect_below) continue;
+    auto judge = [&](int j) {
       const long double d = reduced_cost(j);
       if (d < 0) bound += -d;
-      if (bound > kCertifyBound) return false;
+      return bound <= kCertifyBound;
+    };
+    const double* reduced = reduced_.data();
+    int j = 0;
+#ifdef __AVX__
+    // Four at a time, skipping blocks without a suspect (a branch per column was ~20 % of this).
+    const __m256d below = _mm256_set1_pd(suspect_below);
+    for (; j + 4 <= n_; j += 4) {
+      int mask = _mm256_movemask_pd(_mm256_cmp_pd(_mm256_loadu_pd(reduced + j), below, _CMP_NGE_UQ));
+      for (; mask; mask &= mask - 1)
+        if (!judge(j + __builtin_ctz(mask))) return false;
     }
+#endif
+    for (; j < n_; ++j)
+      if (!(reduced[j] >= suspect_below) && !judge(j)) return false;
     long double objective = 0, weights[kMaxRows];
     for (int i = 0; i < k_; ++i) {
       weights[i] = std::max(x[i], 0.0L);
