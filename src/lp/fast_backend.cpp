@@ -444,6 +444,18 @@ class FastSimplex {
     if (j == composite_) return p_->rhs[r];
     return r == j - n_ ? artificial_sign_[r] : 0.0;
   }
+  // Column j's k entries, with the block decided once.
+  void load_column(int j, double* a) const {
+    if (j < g_) {
+      const double* v = p_->grid->values.data() + j;
+      for (int r = 0; r < k_; ++r) a[r] = v[size_t(r) * g_];
+    } else if (j < n_) {
+      const double* v = p_->extra.values.data() + (j - g_);
+      for (int r = 0; r < k_; ++r) a[r] = v[size_t(r) * e_];
+    } else {
+      for (int r = 0; r < k_; ++r) a[r] = column_entry(j, r);
+    }
+  }
   double cost(int j) const {
     if (phase_ == 1) return is_artificial(j) ? 1.0 : 0.0;
     if (j < n_) return cost_[j];
@@ -467,8 +479,10 @@ class FastSimplex {
       basis_[r] = n_ + r;
       x_[r] = std::abs(p_->rhs[r]);
     }
-    for (int i = 0; i < k_; ++i)
+    for (int i = 0; i < k_; ++i) {
+      load_column(basis_[i], basic_[i]);
       for (int r = 0; r < k_; ++r) binv_[i][r] = i == r ? artificial_sign_[r] : 0.0;
+    }
     updates_ = 0;
   }
 
@@ -503,8 +517,10 @@ class FastSimplex {
 
   bool refactor() {
     double b[kMaxRows][kMaxRows], inv[kMaxRows][kMaxRows];
-    for (int i = 0; i < k_; ++i)
-      for (int r = 0; r < k_; ++r) b[r][i] = column_entry(basis_[i], r);
+    for (int i = 0; i < k_; ++i) {
+      load_column(basis_[i], basic_[i]);
+      for (int r = 0; r < k_; ++r) b[r][i] = basic_[i][r];
+    }
     // Partial pivoting; a pivot below 1e-13 of the largest entry means rank loss (the merely
     // ill-conditioned bases of tiny-valued columns, z^6 near 0, must still pass).
     if (!invert_small<double>(k_, b, inv, 1e-13)) return false;
@@ -534,7 +550,7 @@ class FastSimplex {
     }
     for (int i = 0; i < k_; ++i) {  // c_B - B^T y
       double v = basic_cost[i];
-      for (int r = 0; r < k_; ++r) v -= column_entry(basis_[i], r) * y[r];
+      for (int r = 0; r < k_; ++r) v -= basic_[i][r] * y[r];
       misfit[i] = v;
     }
     for (int r = 0; r < k_; ++r) {
@@ -661,7 +677,7 @@ class FastSimplex {
   // u = B^{-1} a_j, the entering column in basis coordinates.
   void column_in_basis(int j, double* u) const {
     double a[kMaxRows];
-    for (int r = 0; r < k_; ++r) a[r] = column_entry(j, r);
+    load_column(j, a);
     for (int i = 0; i < k_; ++i) {
       double v = 0;
       for (int r = 0; r < k_; ++r) v += binv_[i][r] * a[r];
@@ -728,6 +744,7 @@ class FastSimplex {
       for (int r = 0; r < k_; ++r) binv_[i][r] -= u[i] * binv_[leave][r];
     }
     basis_[leave] = entering;
+    load_column(entering, basic_[leave]);
     ++updates_;
   }
 
@@ -818,7 +835,7 @@ class FastSimplex {
     double correction[kMaxRows], misfit[kMaxRows];
     for (int r = 0; r < k_; ++r) {
       double v = p_->rhs[r];
-      for (int i = 0; i < k_; ++i) v -= column_entry(basis_[i], r) * x_[i];
+      for (int i = 0; i < k_; ++i) v -= basic_[i][r] * x_[i];
       misfit[r] = v;
     }
     for (int i = 0; i < k_; ++i) {
@@ -833,7 +850,7 @@ class FastSimplex {
     for (int r = 0; r < k_; ++r) {
       double residual = -p_->rhs[r], size = std::abs(p_->rhs[r]);
       for (int i = 0; i < k_; ++i) {
-        const double term = column_entry(basis_[i], r) * clamped[i];
+        const double term = basic_[i][r] * clamped[i];
         residual += term;
         size += std::abs(term);
       }
@@ -894,7 +911,7 @@ class FastSimplex {
       basic_cost[i] = cost(basis_[i]);
       x[i] = x_[i];
       y[i] = y_[i];
-      for (int r = 0; r < k_; ++r) b[r][i] = column_entry(basis_[i], r);
+      for (int r = 0; r < k_; ++r) b[r][i] = basic_[i][r];
     }
     for (int step = 0; step < 2; ++step) {
       double misfit_x[kMaxRows], misfit_y[kMaxRows];
@@ -1021,6 +1038,7 @@ class FastSimplex {
   int basis_[kMaxRows];
   double x_[kMaxRows], y_[kMaxRows], artificial_sign_[kMaxRows];
   double binv_[kMaxRows][kMaxRows];
+  double basic_[kMaxRows][kMaxRows];  // basic_[i] = column basis_[i] (kept by refactor and pivot)
   double composite_cost_ = 0;
   int updates_ = 0;
   double priced_y_[kMaxRows] = {};  // the duals reduced_ was computed with, in priced_phase_
