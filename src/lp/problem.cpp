@@ -179,8 +179,12 @@ void ProblemFactory::from_distribution(std::span<const double> depths, std::span
   p.tap_extra.assign(depths.size(), -1);
   p.extra_tap.clear();
   p.zf_extra = -1;
-  double total = 0;
-  for (double w : weights) total += w;
+  double part[4] = {0, 0, 0, 0};  // four independent sums: one is a chain of dependent adds
+  size_t i = 0;
+  for (; i + 4 <= weights.size(); i += 4)
+    for (int q = 0; q < 4; ++q) part[q] += weights[i + q];
+  for (; i < weights.size(); ++i) part[0] += weights[i];
+  const double total = (part[0] + part[1]) + (part[2] + part[3]);
   const double scale = 1 / total;  // one division per fragment, not one per tap (~13 cycles each)
   // Distinct depths become extra columns (a kernel often sees one surface many times); the rhs is
   // the distribution's own moment vector, accumulated in tap order (in registers: through p.rhs
@@ -215,9 +219,11 @@ void ProblemFactory::from_distribution(std::span<const double> depths, std::span
       for (int r = 0; r < rows; ++r) sum[r] += w * column[r];
       // Equal depths are usually neighbours in tap order: look back a few slots only (a duplicate
       // column that slips through is harmless, a quadratic search per fragment is not).
-      int slot = -1;
-      for (int e = n - 1, seen = 0; e >= 0 && seen < 4; --e, ++seen)
-        if (points[e] == depths[t]) slot = e;
+      int slot = -1;  // the earliest match among the last four (selects, not branches)
+      for (int back = 4; back >= 1; --back) {
+        const int e = n - back;
+        slot = e >= 0 && points[e] == depths[t] && slot < 0 ? e : slot;
+      }
       if (slot < 0) {
         slot = n++;
         points[slot] = depths[t];
