@@ -30,6 +30,10 @@ constexpr double kCertifyPrimal = 1e-12;         // dual cleanup: x_B below this
 constexpr double kCertifyBound = 1e-9;           // certified bound on |G - G*| (see certify)
 constexpr int kRefactorInterval = 16;            // rank-1 updates between fresh inverses
 constexpr int kDegenerateBeforeBland = 24;       // degenerate pivots in a row before Bland's rule
+// Bracket-shift rounds per warm basis: the closest z_f's gets 4k (a failing chain runs into the
+// 16-update limit), the others, which succeed less often, 6: on the default dataset that saved 3.1M
+// of 17.6M exchanges for 0.15M more pivots (power4 sweep, ~4 % faster).
+constexpr int kLaterTryRounds = 6;
 constexpr int kWarmTries = 5;                    // warm bases tried before the composite repair
 
 // In-place LU with partial pivoting and inverse for k <= 8, in long double: the certificate's
@@ -261,7 +265,7 @@ class FastSimplex {
     }
   }
 
-  bool start_from_previous_basis(const WarmBasis& warm) {
+  bool start_from_previous_basis(const WarmBasis& warm, int rounds) {
     if (warm.rows != k_ || warm.grid != g_) return false;
     for (int i = 0; i < k_; ++i) {
       int j = -1;
@@ -288,7 +292,7 @@ class FastSimplex {
     // Most infeasible starts are one bracket off: the LP approximates each interior node of the
     // continuous extremal distribution by the two points of I around it, and when the node moves
     // past one of them, that point's weight turns negative. Moving it past its partner fixes it.
-    for (int round = 0; round < 4 * k_; ++round) {
+    for (int round = 0; round < rounds; ++round) {
       const int worst = most_negative();
       if (x_[worst] >= -kFeasibilityTolerance || !shift_bracket(worst)) break;
     }
@@ -423,7 +427,7 @@ class FastSimplex {
     int usable = -1;
     bool usable_is_current = false;  // the basis in place is still the usable try's
     for (size_t c = 0; c < warm.size(); ++c) {
-      const bool started = start_from_previous_basis(*warm[c]);
+      const bool started = start_from_previous_basis(*warm[c], c == 0 ? 4 * k_ : kLaterTryRounds);
       usable_is_current = started && usable < 0;
       if (!started) continue;
       if (usable < 0) usable = int(c);
@@ -431,7 +435,8 @@ class FastSimplex {
     }
     if (usable < 0) return false;
     // Mapping and shifting are deterministic, so redoing them restores the usable try's basis.
-    return (usable_is_current || start_from_previous_basis(*warm[usable])) && repair_with_composite(s);
+    return (usable_is_current || start_from_previous_basis(*warm[usable], usable == 0 ? 4 * k_ : kLaterTryRounds)) &&
+           repair_with_composite(s);
   }
 
   Solution& unstable(Solution& s) {
