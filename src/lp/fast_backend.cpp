@@ -918,25 +918,30 @@ class FastSimplex {
       y[i] = y_[i];
       for (int r = 0; r < k_; ++r) b[r][i] = basic_[i][r];
     }
-    for (int step = 0; step < 2; ++step) {
-      double misfit_x[kMaxRows], misfit_y[kMaxRows];
-      for (int r = 0; r < k_; ++r) {
-        long double v = p_->rhs[r];
-        for (int i = 0; i < k_; ++i) v -= b[r][i] * x[i];
-        misfit_x[r] = double(v);
+    // Iterative refinement of x_B and y with long double residuals and the given inverse: each step
+    // gains the digits that cond(B) times the inverse's precision leaves.
+    auto refine = [&](const auto& inverse, int steps) {
+      for (int step = 0; step < steps; ++step) {
+        long double misfit_x[kMaxRows], misfit_y[kMaxRows];
+        for (int r = 0; r < k_; ++r) {
+          long double v = p_->rhs[r];
+          for (int i = 0; i < k_; ++i) v -= b[r][i] * x[i];
+          misfit_x[r] = v;
+        }
+        for (int i = 0; i < k_; ++i) {
+          long double v = basic_cost[i];
+          for (int r = 0; r < k_; ++r) v -= b[r][i] * y[r];
+          misfit_y[i] = v;
+        }
+        for (int i = 0; i < k_; ++i) {
+          long double v = 0, w = 0;
+          for (int r = 0; r < k_; ++r) v += inverse[i][r] * misfit_x[r], w += misfit_y[r] * inverse[r][i];
+          x[i] += v;
+          y[i] += w;
+        }
       }
-      for (int i = 0; i < k_; ++i) {
-        long double v = basic_cost[i];
-        for (int r = 0; r < k_; ++r) v -= b[r][i] * y[r];
-        misfit_y[i] = double(v);
-      }
-      for (int i = 0; i < k_; ++i) {
-        double v = 0, w = 0;
-        for (int r = 0; r < k_; ++r) v += binv_[i][r] * misfit_x[r], w += misfit_y[r] * binv_[r][i];
-        x[i] += v;
-        y[i] += w;
-      }
-    }
+    };
+    refine(binv_, 2);
     if (long_double_bound(b, x, y, s)) return true;
     long double factors[kMaxRows][kMaxRows], inv[kMaxRows][kMaxRows];
     for (int r = 0; r < k_; ++r)
@@ -946,7 +951,6 @@ class FastSimplex {
       long double v = 0;
       for (int r = 0; r < k_; ++r) v += inv[i][r] * (long double)p_->rhs[r];
       x[i] = v;
-      x_[i] = double(v);
       for (int r = 0; r < k_; ++r) binv_[i][r] = double(inv[i][r]);
     }
     updates_ = 0;
@@ -955,6 +959,10 @@ class FastSimplex {
       for (int i = 0; i < k_; ++i) v += basic_cost[i] * inv[i][r];
       y[r] = v;
     }
+    // The solve alone leaves a residual of ~cond(B) long double epsilons, which |y| ~ 1e8 would
+    // turn into a failed bound: refine with the long double inverse.
+    refine(inv, 2);
+    for (int i = 0; i < k_; ++i) x_[i] = double(x[i]);
     return long_double_bound(b, x, y, s);
   }
 
@@ -999,10 +1007,12 @@ class FastSimplex {
     const double suspect_below =
         ((k_ + 2) * std::numeric_limits<double>::epsilon() * (1 + y_norm * column_bound) + rounding * column_bound) *
         (1 + 1e-6);
+    // Weak duality with sum w = 1: no distribution beats y.(1, b) by more than -min_j d_j, so the
+    // most negative reduced cost counts, once (as in the KKT checker).
+    long double infeasibility = 0;
     auto judge = [&](int j) {
-      const long double d = reduced_cost(j);
-      if (d < 0) bound += -d;
-      return bound <= kCertifyBound;
+      infeasibility = std::max(infeasibility, -reduced_cost(j));
+      return bound + infeasibility <= kCertifyBound;
     };
     const double* reduced = reduced_.data();
     int j = 0;
@@ -1017,6 +1027,7 @@ class FastSimplex {
 #endif
     for (; j < n_; ++j)
       if (!(reduced[j] >= suspect_below) && !judge(j)) return false;
+    bound += infeasibility;
     long double objective = 0, weights[kMaxRows];
     for (int i = 0; i < k_; ++i) {
       weights[i] = std::max(x[i], 0.0L);
