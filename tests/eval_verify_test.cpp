@@ -40,9 +40,14 @@ TEST_F(Verify, ExactClosedFormsMatchTheLpAndConvergeAsTheGridRefines) {
   for (const char* name : {"hausdorff4", "tmsm", "hamburger4", "esm"}) {
     VerifySolverResult r = run(name, [&] { return make_technique(name, params_); });
     EXPECT_TRUE(r.passed()) << name << ": " << r.beyond_tolerance << " beyond, " << r.above_lp << " above";
-    EXPECT_EQ(r.undefined, 0u) << name;
+    // Undefined only where the Hankel matrix is exactly singular: a one-atom instance without bias
+    // gives b2 - b1^2 = 0 in plain double arithmetic (release builds' FMA leaves its rounding
+    // error instead, and the answer is defined).
+    size_t one_atom = 0;
+    for (const auto& instance : instances_) one_atom += instance.depths.size() == 1;
+    EXPECT_LE(r.undefined, one_atom) << name;
     ASSERT_EQ(r.grids.size(), 3u);
-    EXPECT_GE(r.grids.back().compared, 390u) << name;
+    EXPECT_GE(r.grids.back().compared + r.undefined, 390u) << name;
     // Refining the grid brings the LP to the closed form.
     EXPECT_LE(r.grids[2].mean_difference, r.grids[0].mean_difference + 1e-12) << name;
     EXPECT_EQ(r.worst.size(), 3u);
