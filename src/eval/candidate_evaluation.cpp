@@ -59,12 +59,8 @@ CandidateResult CandidateEvaluator::evaluate(const Basis& basis) const {
     // Warm-start runs (bands of lp::kWarmRunRows texel rows; fragments are in texel order): each
     // run is solved in order by one thread, first from scratch, so the answers do not depend on
     // the schedule and equal eval's lp: technique, which cuts its runs the same way.
-    std::vector<size_t> run_begin;
-    for (size_t i = 0; i < list.size(); ++i)
-      if (i == 0 || lp::warm_run_of(view.fragments.texel[list[i]], map.width) !=
-                        lp::warm_run_of(view.fragments.texel[list[i - 1]], map.width))
-        run_begin.push_back(i);
-    run_begin.push_back(list.size());
+    const std::vector<size_t> run_begin =
+        lp::warm_run_begins(list.size(), map.width, [&](size_t i) { return view.fragments.texel[list[i]]; });
     const size_t runs = run_begin.size() - 1;
     std::vector<double> g(view.fragments.size(), 0.0);  // skipped fragments: G = 0 exactly
 #pragma omp parallel num_threads(settings_.threads) reduction(+ : solved, infeasible, unstable)

@@ -40,11 +40,7 @@ TechniqueResult evaluate_technique(const ViewData& view, const std::string& tech
     moments = compute_moment_map(view.map, probe->basis(), settings.kernel, probe->storage(), settings.threads);
   const size_t taps = size_t(settings.kernel.size) * settings.kernel.size;
   // Whole warm-start runs per thread (fragments are in texel order, so each run is contiguous).
-  std::vector<size_t> run_begin;
-  for (size_t k = 0; k < f.size(); ++k)
-    if (k == 0 || lp::warm_run_of(f.texel[k], f.width) != lp::warm_run_of(f.texel[k - 1], f.width))
-      run_begin.push_back(k);
-  run_begin.push_back(f.size());
+  const std::vector<size_t> run_begin = lp::warm_run_begins(f.size(), f.width, [&](size_t k) { return f.texel[k]; });
   const size_t runs = run_begin.size() - 1;
   size_t failures = 0;
 #pragma omp parallel num_threads(settings.threads) reduction(+ : failures)

@@ -27,9 +27,8 @@ class LpTechnique : public Technique {
     // and z_f are new per fragment.
     lp::Problem problem = factory_.from_distribution(in.kernel_depths, in.kernel_weights, in.zf);
     // Along a warm-start run (the same runs as the sweep's), continue from the neighbours' bases.
-    const bool continues = solved_any_ && in.run == last_run_ && in.fragment > last_fragment_;
+    const bool continues = in.run == last_run_ && in.fragment > last_fragment_;
     lp::Solution s = continues ? backend_->solve_next(problem, {in.layer, in.column}) : backend_->solve(problem);
-    solved_any_ = true;
     last_fragment_ = in.fragment;
     last_run_ = in.run;
     if (s.call != lp::CallStatus::Ok || s.status != lp::ProblemStatus::Optimal) {
@@ -44,9 +43,8 @@ class LpTechnique : public Technique {
   lp::ProblemFactory factory_;
   std::unique_ptr<lp::Backend> backend_;
   size_t failures_ = 0;
-  bool solved_any_ = false;
   size_t last_fragment_ = 0;
-  int last_run_ = -1;
+  int last_run_ = -1;  // none yet: runs are numbered from 0
 };
 
 }  // namespace

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 #include <span>
-#include <type_traits>
 
 #ifdef __AVX__
 #include <immintrin.h>
@@ -12,6 +11,7 @@
 
 #include "lp/glpk_backend.h"
 #include "lp/kkt_checker.h"
+#include "lp/row_count.h"
 #include "util/error.h"
 
 namespace mb::lp {
@@ -78,25 +78,9 @@ bool invert_fixed(Real a[kMaxRows][kMaxRows], Real inv[kMaxRows][kMaxRows], Real
   return true;
 }
 
-// Calls f(std::integral_constant<int, K>) with K = k (1..kMaxRows), so that loops over the rows
-// unroll and vectorise with the count known at compile time.
-template <class F>
-decltype(auto) with_row_count(int k, F&& f) {
-  switch (k) {
-    case 1: return f(std::integral_constant<int, 1>{});
-    case 2: return f(std::integral_constant<int, 2>{});
-    case 3: return f(std::integral_constant<int, 3>{});
-    case 4: return f(std::integral_constant<int, 4>{});
-    case 5: return f(std::integral_constant<int, 5>{});
-    case 6: return f(std::integral_constant<int, 6>{});
-    case 7: return f(std::integral_constant<int, 7>{});
-    default: return f(std::integral_constant<int, 8>{});
-  }
-}
-
 template <class Real>
 bool invert_small(int k, Real a[kMaxRows][kMaxRows], Real inv[kMaxRows][kMaxRows], Real singular) {
-  return with_row_count(k, [&](auto rows) { return invert_fixed<Real, decltype(rows)::value>(a, inv, singular); });
+  return with_row_count<kMaxRows>(k, [&](auto rows) { return invert_fixed<Real, decltype(rows)::value>(a, inv, singular); });
 }
 
 // std::lower_bound (strict: false) or std::upper_bound (strict: true) of z in an ascending grid,
@@ -324,7 +308,7 @@ class FastSimplex {
       if ((node - p_->point(next)) * direction > 0) {
         const int far = point_beyond(node, direction), near = point_beyond(node, -direction);
         if (far >= 0 && near >= 0 && near != far && exchange(i, far)) {
-          if (!is_basic(near)) exchange(partner, near);
+          exchange(partner, near);  // if refused (basic, or singular), the first half still helps
           return true;
         }
       }
@@ -427,7 +411,7 @@ class FastSimplex {
     int usable = -1;
     bool usable_is_current = false;  // the basis in place is still the usable try's
     for (size_t c = 0; c < warm.size(); ++c) {
-      const bool started = start_from_previous_basis(*warm[c], c == 0 ? 4 * k_ : kLaterTryRounds);
+      const bool started = start_from_previous_basis(*warm[c], shift_rounds(c));
       usable_is_current = started && usable < 0;
       if (!started) continue;
       if (usable < 0) usable = int(c);
@@ -435,9 +419,10 @@ class FastSimplex {
     }
     if (usable < 0) return false;
     // Mapping and shifting are deterministic, so redoing them restores the usable try's basis.
-    return (usable_is_current || start_from_previous_basis(*warm[usable], usable == 0 ? 4 * k_ : kLaterTryRounds)) &&
+    return (usable_is_current || start_from_previous_basis(*warm[usable], shift_rounds(usable))) &&
            repair_with_composite(s);
   }
+  int shift_rounds(size_t try_index) const { return try_index == 0 ? 4 * k_ : kLaterTryRounds; }
 
   Solution& unstable(Solution& s) {
     s.status = ProblemStatus::Unstable;
@@ -581,7 +566,7 @@ class FastSimplex {
   // over the two contiguous column blocks (rows fixed at compile time, so the compiler keeps the
   // K weights in registers and vectorises across columns; row by row it was store-bound).
   void subtract_row_combination(const double* w, const double* base, double* out) const {
-    with_row_count(k_, [&](auto rows) { combine<decltype(rows)::value>(w, base, out); });
+    with_row_count<kMaxRows>(k_, [&](auto rows) { combine<decltype(rows)::value>(w, base, out); });
   }
 
   template <int K>
@@ -815,6 +800,16 @@ class FastSimplex {
     return refactor();
   }
 
+  // |a_rj| <= column_bound() for every column.
+  double column_bound() const { return std::max(p_->grid->max_abs, p_->extra.max_abs); }
+  // A bound on the rounding error of any reduced cost the double pass computes with duals y:
+  // gamma (1 + |y|_1 max |a_rj|), gamma = (k + 2) eps.
+  double pricing_rounding(const double* y) const {
+    double y_norm = 0;
+    for (int r = 0; r < k_; ++r) y_norm += std::abs(y[r]);
+    return (k_ + 2) * std::numeric_limits<double>::epsilon() * (1 + y_norm * column_bound());
+  }
+
   // The certificate, in double when that is provably enough, else in long double.
   bool certify(Solution& s) { return certify_in_double(s) || certify_in_long_double(s); }
 
@@ -828,12 +823,9 @@ class FastSimplex {
   bool certify_in_double(Solution& s) {
     constexpr double kEps = std::numeric_limits<double>::epsilon();
     const double gamma = (k_ + 2) * kEps;
-    double y[kMaxRows], y_norm = 0;
+    double y[kMaxRows];
     dual_values(y);
-    for (int r = 0; r < k_; ++r) y_norm += std::abs(y[r]);
-    // |a_rj| <= column_bound for every column: rounding of any reduced cost is below this.
-    const double column_bound = std::max(p_->grid->max_abs, p_->extra.max_abs);
-    const double reduced_cost_error = gamma * (1 + y_norm * column_bound);
+    const double reduced_cost_error = pricing_rounding(y);
     if (reduced_cost_error > 0.1 * kCertifyBound) return false;
     // One step of iterative refinement: x_B from the double inverse misses rhs by ~cond(B) eps;
     // after it the residual is at the level of its own rounding (backward stable).
@@ -1001,12 +993,7 @@ class FastSimplex {
       rounding += double(std::abs(y[r] - (long double)y_[r]));
     }
     if (!priced_with(y_)) reduced_costs();
-    double y_norm = 0;
-    for (int r = 0; r < k_; ++r) y_norm += std::abs(y_[r]);
-    const double column_bound = std::max(p_->grid->max_abs, p_->extra.max_abs);
-    const double suspect_below =
-        ((k_ + 2) * std::numeric_limits<double>::epsilon() * (1 + y_norm * column_bound) + rounding * column_bound) *
-        (1 + 1e-6);
+    const double suspect_below = (pricing_rounding(y_) + rounding * column_bound()) * (1 + 1e-6);
     // Weak duality with sum w = 1: no distribution beats y.(1, b) by more than -min_j d_j, so the
     // most negative reduced cost counts, once (as in the KKT checker).
     long double infeasibility = 0;

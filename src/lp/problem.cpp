@@ -3,11 +3,26 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
-#include <type_traits>
 
+#include "lp/row_count.h"
 #include "util/error.h"
 
 namespace mb::lp {
+
+namespace {
+
+// The largest |value| (ColumnBlock::max_abs), with four independent maxima: one running maximum is
+// a chain of dependent maxsd (3 cycles each), and the sweep needs one per fragment.
+double largest_magnitude(const std::vector<double>& values) {
+  double lane[4] = {0, 0, 0, 0};
+  size_t j = 0;
+  for (; j + 4 <= values.size(); j += 4)
+    for (int q = 0; q < 4; ++q) lane[q] = std::max(lane[q], std::abs(values[j + q]));
+  for (; j < values.size(); ++j) lane[0] = std::max(lane[0], std::abs(values[j]));
+  return std::max(std::max(lane[0], lane[1]), std::max(lane[2], lane[3]));
+}
+
+}  // namespace
 
 std::vector<double> grid_points(const Discretization& disc) {
   if (disc.grid < 2) throw InputError("grid: at least 2 points are needed, got " + std::to_string(disc.grid));
@@ -60,10 +75,8 @@ ProblemFactory::ProblemFactory(const Basis& basis, const Discretization& disc) :
   Eigen::MatrixXd rows = r_upper.transpose().triangularView<Eigen::Lower>().solve(at.transpose());
   grid->values.resize(size_t(k) * n);
   for (int r = 0; r < k; ++r)
-    for (int i = 0; i < n; ++i) {
-      grid->values[size_t(r) * n + i] = rows(r, i);
-      grid->max_abs = std::max(grid->max_abs, std::abs(rows(r, i)));
-    }
+    for (int i = 0; i < n; ++i) grid->values[size_t(r) * n + i] = rows(r, i);
+  grid->max_abs = largest_magnitude(grid->values);
   grid_ = std::move(grid);
 }
 
@@ -88,20 +101,6 @@ void ProblemFactory::column(double z, double* out) const {
 
 namespace {
 
-// Calls f(std::integral_constant<int, K>) with K = k for the common row counts, K = 0 otherwise.
-template <class F>
-decltype(auto) with_row_count(int k, F&& f) {
-  switch (k) {
-    case 2: return f(std::integral_constant<int, 2>{});
-    case 3: return f(std::integral_constant<int, 3>{});
-    case 4: return f(std::integral_constant<int, 4>{});
-    case 5: return f(std::integral_constant<int, 5>{});
-    case 6: return f(std::integral_constant<int, 6>{});
-    case 7: return f(std::integral_constant<int, 7>{});
-    default: return f(std::integral_constant<int, 0>{});
-  }
-}
-
 // The block's columns were staged one after the other (column-major, `rows` values each); the
 // block stores them row-major, so each row is one contiguous array for pricing.
 void finish_block(int rows, const std::vector<double>& staging, ColumnBlock& block) {
@@ -109,8 +108,7 @@ void finish_block(int rows, const std::vector<double>& staging, ColumnBlock& blo
   block.values.resize(size_t(rows) * n);
   for (int j = 0; j < n; ++j)
     for (int r = 0; r < rows; ++r) block.values[size_t(r) * n + j] = staging[size_t(j) * rows + r];
-  block.max_abs = 0;
-  for (double v : staging) block.max_abs = std::max(block.max_abs, std::abs(v));
+  block.max_abs = largest_magnitude(block.values);
 }
 
 }  // namespace
@@ -200,7 +198,7 @@ void ProblemFactory::from_distribution(std::span<const double> depths, std::span
   p.start_support.resize(taps);
   p.start_weights.resize(taps);
   const int g = grid_->size();
-  int count = with_row_count(rows_, [&](auto fixed) {
+  int count = with_row_count<0>(rows_, [&](auto fixed) {
     // The row count known at compile time (0: not), so that rhs stays in registers.
     constexpr int kRows = decltype(fixed)::value;
     const int rows = kRows ? kRows : rows_;
@@ -257,13 +255,7 @@ void ProblemFactory::from_distribution(std::span<const double> depths, std::span
   for (int r = 1; r < rows_; ++r)  // pack: row r moves down from r * stride to r * count
     std::copy(values.begin() + r * stride, values.begin() + r * stride + count, values.begin() + r * count);
   values.resize(size_t(rows_) * count);
-  // Four independent maxima: one running maximum is a chain of dependent maxsd (3 cycles each).
-  double lane[4] = {0, 0, 0, 0};
-  size_t j = 0;
-  for (; j + 4 <= values.size(); j += 4)
-    for (int q = 0; q < 4; ++q) lane[q] = std::max(lane[q], std::abs(values[j + q]));
-  for (; j < values.size(); ++j) lane[0] = std::max(lane[0], std::abs(values[j]));
-  p.extra.max_abs = std::max(std::max(lane[0], lane[1]), std::max(lane[2], lane[3]));
+  p.extra.max_abs = largest_magnitude(values);
   p.rhs.assign(rhs, rhs + rows_);
   // The untransformed moments, for reports: invert T on the rhs.
   p.moments.resize(rows_ - 1);

@@ -61,6 +61,16 @@ constexpr int kWarmLanes = 8;
 // the threads to share.
 constexpr int kWarmRunRows = 8;
 inline int warm_run_of(size_t texel, int width) { return int(texel / size_t(width)) / kWarmRunRows; }
+// Where the warm-start runs of `count` fragments in texel order begin, with `count` appended;
+// texel_of(i) is the i-th fragment's texel. Eval and sweep cut their runs with this.
+template <class TexelOf>
+std::vector<size_t> warm_run_begins(size_t count, int width, TexelOf texel_of) {
+  std::vector<size_t> begins;
+  for (size_t i = 0; i < count; ++i)
+    if (i == 0 || warm_run_of(texel_of(i), width) != warm_run_of(texel_of(i - 1), width)) begins.push_back(i);
+  begins.push_back(count);
+  return begins;
+}
 
 // "fast" (our exact dense simplex) or "glpk" (the reference).
 std::unique_ptr<Backend> make_backend(const std::string& name);
