@@ -34,6 +34,7 @@ constexpr int kDegenerateBeforeBland = 24;       // degenerate pivots in a row b
 // 16-update limit), the others, which succeed less often, 6: on the default dataset that saved 3.1M
 // of 17.6M exchanges for 0.15M more pivots (power4 sweep, ~4 % faster).
 constexpr int kLaterTryRounds = 6;
+constexpr int kGuidedSteps = 8;                  // certificate-guided steps per LP (solve_phase2)
 constexpr int kWarmTries = 5;                    // warm bases tried before the composite repair
 
 // In-place LU with partial pivoting and inverse for k <= 8, in long double: the certificate's
@@ -332,7 +333,7 @@ class FastSimplex {
   // exchange would be (nearly) singular.
   bool exchange(int i, int entering) {
     if (is_basic(entering) || updates_ >= kRefactorInterval) return false;
-    double u[kMaxRows];
+    double u[kMaxRows] = {};  // (GCC cannot see that column_in_basis fills k_ <= kMaxRows)
     column_in_basis(entering, u);
     double largest = 0;
     for (int q = 0; q < k_; ++q) largest = std::max(largest, std::abs(u[q]));
@@ -452,11 +453,24 @@ class FastSimplex {
     return j == composite_ ? composite_cost_ : 0.0;
   }
 
-  // Phase 2, then certification; a failed certificate resumes from the accurate basis.
+  // Phase 2, then certification; a failed certificate resumes from the accurate basis. One that
+  // failed on a negative reduced cost only long double sees (|y| ~ 1e8: the double pass rounds
+  // ~1e-8, so its entering tolerance is that wide) names the column, and a step brings it in: the
+  // double iterations could not have found it, and such LPs used to end unstable (477 of a power4
+  // sweep's 2.4M, then GLPK's answer or "lit"; now 1-4).
   bool solve_phase2(Solution& s) {
+    int guided = 0;
     for (int attempt = 0; attempt < 3; ++attempt) {
       if (!iterate(s)) return false;
       if (certify(s)) return true;
+      if (certificate_entering_ >= 0 && guided < kGuidedSteps) {
+        double u[kMaxRows];
+        column_in_basis(certificate_entering_, u);
+        if (!(step(certificate_entering_, u, false, s) >= 0)) return false;
+        ++guided;
+        --attempt;
+        continue;
+      }
       if (!dual_simplex(s)) return false;
       if (certify(s)) return true;
     }
@@ -689,40 +703,48 @@ class FastSimplex {
       if (entering < 0) return true;
       double u[kMaxRows];
       column_in_basis(entering, u);
-      int leave = -1;
-      if (!bland) {
-        // Harris ratio test: a relaxed bound first, then the largest pivot within it.
-        double theta_max = std::numeric_limits<double>::infinity();
-        for (int i = 0; i < k_; ++i)
-          if (u[i] > kPivotTolerance)
-            theta_max = std::min(theta_max, (x_[i] + kFeasibilityTolerance) / u[i]);
-        if (!std::isfinite(theta_max)) return false;  // unbounded: impossible with sum w = 1
-        double best_pivot = 0;
-        for (int i = 0; i < k_; ++i) {
-          if (u[i] <= kPivotTolerance || x_[i] / u[i] > std::max(theta_max, 0.0)) continue;
-          if (u[i] > best_pivot) leave = i, best_pivot = u[i];
-        }
-      } else {
-        // Bland's rule needs the textbook ratio test (Harris' relaxation can cycle): the minimum
-        // ratio, ties to the smallest column index.
-        double best_ratio = std::numeric_limits<double>::infinity();
-        for (int i = 0; i < k_; ++i) {
-          if (u[i] <= kPivotTolerance) continue;
-          double ratio = std::max(x_[i], 0.0) / u[i];
-          if (ratio < best_ratio || (ratio == best_ratio && basis_[i] < basis_[leave]))
-            leave = i, best_ratio = ratio;
-        }
-      }
-      if (leave < 0) return false;
-      double theta = std::max(x_[leave], 0.0) / u[leave];
+      const double theta = step(entering, u, bland, s);
+      if (!(theta >= 0)) return false;
       // Near-zero steps count as degenerate too: Harris steps of 1e-18 can cycle as well.
       degenerate = theta < 1e-12 ? degenerate + 1 : 0;
-      for (int i = 0; i < k_; ++i) x_[i] -= theta * u[i];
-      x_[leave] = theta;
-      pivot(leave, entering, u);
-      ++s.iterations;
     }
     return false;
+  }
+
+  // One primal simplex step: `entering` (u = B^{-1} a_entering) comes in, the ratio test picks the
+  // leaving row. The step length, or -1 when no row may leave (numerical failure).
+  double step(int entering, const double* u, bool bland, Solution& s) {
+    int leave = -1;
+    if (!bland) {
+      // Harris ratio test: a relaxed bound first, then the largest pivot within it.
+      double theta_max = std::numeric_limits<double>::infinity();
+      for (int i = 0; i < k_; ++i)
+        if (u[i] > kPivotTolerance)
+          theta_max = std::min(theta_max, (x_[i] + kFeasibilityTolerance) / u[i]);
+      if (!std::isfinite(theta_max)) return -1;  // unbounded: impossible with sum w = 1
+      double best_pivot = 0;
+      for (int i = 0; i < k_; ++i) {
+        if (u[i] <= kPivotTolerance || x_[i] / u[i] > std::max(theta_max, 0.0)) continue;
+        if (u[i] > best_pivot) leave = i, best_pivot = u[i];
+      }
+    } else {
+      // Bland's rule needs the textbook ratio test (Harris' relaxation can cycle): the minimum
+      // ratio, ties to the smallest column index.
+      double best_ratio = std::numeric_limits<double>::infinity();
+      for (int i = 0; i < k_; ++i) {
+        if (u[i] <= kPivotTolerance) continue;
+        double ratio = std::max(x_[i], 0.0) / u[i];
+        if (ratio < best_ratio || (ratio == best_ratio && basis_[i] < basis_[leave]))
+          leave = i, best_ratio = ratio;
+      }
+    }
+    if (leave < 0) return -1;
+    const double theta = std::max(x_[leave], 0.0) / u[leave];
+    for (int i = 0; i < k_; ++i) x_[i] -= theta * u[i];
+    x_[leave] = theta;
+    pivot(leave, entering, u);
+    ++s.iterations;
+    return theta;
   }
 
   // Product-form update of the explicit inverse: column `entering` replaces basis row `leave`.
@@ -811,7 +833,10 @@ class FastSimplex {
   }
 
   // The certificate, in double when that is provably enough, else in long double.
-  bool certify(Solution& s) { return certify_in_double(s) || certify_in_long_double(s); }
+  bool certify(Solution& s) {
+    certificate_entering_ = -1;
+    return certify_in_double(s) || certify_in_long_double(s);
+  }
 
   // Most bases have moderate duals, and then double arithmetic certifies them with room to spare:
   // the same first-order bound as below, with the true residual B x - rhs (double x_B is only
@@ -997,9 +1022,10 @@ class FastSimplex {
     // Weak duality with sum w = 1: no distribution beats y.(1, b) by more than -min_j d_j, so the
     // most negative reduced cost counts, once (as in the KKT checker).
     long double infeasibility = 0;
+    int most_negative_column = -1;
     auto judge = [&](int j) {
-      infeasibility = std::max(infeasibility, -reduced_cost(j));
-      return bound + infeasibility <= kCertifyBound;
+      const long double d = reduced_cost(j);
+      if (-d > infeasibility) infeasibility = -d, most_negative_column = j;
     };
     const double* reduced = reduced_.data();
     int j = 0;
@@ -1008,12 +1034,16 @@ class FastSimplex {
     const __m256d below = _mm256_set1_pd(suspect_below);
     for (; j + 4 <= n_; j += 4) {
       int mask = _mm256_movemask_pd(_mm256_cmp_pd(_mm256_loadu_pd(reduced + j), below, _CMP_NGE_UQ));
-      for (; mask; mask &= mask - 1)
-        if (!judge(j + __builtin_ctz(mask))) return false;
+      for (; mask; mask &= mask - 1) judge(j + __builtin_ctz(mask));
     }
 #endif
     for (; j < n_; ++j)
-      if (!(reduced[j] >= suspect_below) && !judge(j)) return false;
+      if (!(reduced[j] >= suspect_below)) judge(j);
+    if (!(bound + infeasibility <= kCertifyBound)) {
+      // Dual infeasible beyond the budget: the most negative column, unless basic (rounding).
+      if (infeasibility > 0 && !is_basic(most_negative_column)) certificate_entering_ = most_negative_column;
+      return false;
+    }
     bound += infeasibility;
     long double objective = 0, weights[kMaxRows];
     for (int i = 0; i < k_; ++i) {
@@ -1037,6 +1067,7 @@ class FastSimplex {
 
   const Problem* p_ = nullptr;
   int k_ = 0, n_ = 0, g_ = 0, e_ = 0, composite_ = 0;
+  int certificate_entering_ = -1;  // set by a failed long double certificate (solve_phase2)
   int phase_ = 1;
   int basis_[kMaxRows];
   double x_[kMaxRows], y_[kMaxRows], artificial_sign_[kMaxRows];
