@@ -268,6 +268,21 @@ void ProblemFactory::from_distribution(std::span<const double> depths, std::span
   for (int j = 1; j < rows_; ++j) p.moments[j - 1] = raw[j];
 }
 
+bool ProblemFactory::move_zf(double zf, Problem& p) const {
+  const int count = p.extra.size();
+  // z_f's own column is the last one exactly when it did not coincide with a kernel depth.
+  const bool appended = p.zf_extra >= 0 && p.zf_extra == count - 1 && p.extra_tap[p.zf_extra] < 0;
+  if (!appended || !(zf >= disc_.lo && zf <= disc_.hi)) return false;
+  if (std::find(p.extra.points.begin(), p.extra.points.end() - 1, zf) != p.extra.points.end() - 1) return false;
+  double column_zf[kMaxColumnRows];
+  column(zf, column_zf);
+  for (int r = 0; r < rows_; ++r) p.extra.values[size_t(r) * count + (count - 1)] = column_zf[r];
+  p.extra.points[count - 1] = zf;
+  p.extra.max_abs = largest_magnitude(p.extra.values);
+  p.zf = zf;
+  return true;
+}
+
 Problem make_problem(const Basis& basis, const Discretization& disc, std::span<const double> moments, double zf,
                      std::span<const double> extra_points) {
   return ProblemFactory(basis, disc).from_moments(moments, zf, extra_points);

@@ -90,6 +90,11 @@ class ProblemFactory {
   // texel): column(depths[t]) == depth_columns[t]. Reuses `out`'s storage.
   void from_distribution(std::span<const double> depths, std::span<const double> weights,
                          std::span<const double* const> depth_columns, double zf, Problem& out) const;
+  // `p`, built by from_distribution, for another z_f (the fragments of one texel share its kernel):
+  // only z_f's column changes, and `p` ends up as from_distribution would build it. False, with `p`
+  // unchanged, when z_f's column is not simply replaced (z_f on a kernel depth or outside [lo, hi],
+  // before or now): then build anew.
+  bool move_zf(double zf, Problem& p) const;
 
  private:
   Basis basis_;
