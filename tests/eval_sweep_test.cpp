@@ -21,7 +21,9 @@ void expect_round_trip(int n, int k) {
     ASSERT_EQ(int(c.size()), k);
     for (int i = 0; i < k; ++i) ASSERT_TRUE(c[i] >= 0 && c[i] < n && (i == 0 || c[i - 1] < c[i]));
     ASSERT_EQ(combination_rank(c, n), rank);
-    if (rank > 0) ASSERT_TRUE(std::lexicographical_compare(previous.begin(), previous.end(), c.begin(), c.end()));
+    if (rank > 0) {
+      ASSERT_TRUE(std::lexicographical_compare(previous.begin(), previous.end(), c.begin(), c.end()));
+    }
     previous = c;
   }
 }

@@ -155,7 +155,9 @@ TEST(LpProperties, ZeroCdfGivesZeroAndRefiningNeverRaisesTheBound) {
     double lowest = *std::min_element(inst.depths.begin(), inst.depths.end());
     Discretization disc{0, 1, inst.grid, false};
     Solution zero = fast->solve(make_problem_from_distribution(basis, disc, inst.depths, inst.weights, lowest));
-    if (zero.status == ProblemStatus::Optimal) EXPECT_LE(zero.G, 1e-9);
+    if (zero.status == ProblemStatus::Optimal) {
+      EXPECT_LE(zero.G, 1e-9);
+    }
     // A grid of 2n - 1 points contains the grid of n points: the admissible set only grows.
     Discretization fine{0, 1, 2 * inst.grid - 1, false};
     Solution coarse_s = fast->solve(make_problem_from_distribution(basis, disc, inst.depths, inst.weights, inst.zf));
