@@ -4,11 +4,13 @@
 #include <cmath>
 #include <limits>
 #include <span>
+#include <type_traits>
 
 #ifdef __AVX__
 #include <immintrin.h>
 #endif
 
+#include "lp/double_double.h"
 #include "lp/glpk_backend.h"
 #include "lp/kkt_checker.h"
 #include "lp/row_count.h"
@@ -454,7 +456,7 @@ class FastSimplex {
   }
 
   // Phase 2, then certification; a failed certificate resumes from the accurate basis. One that
-  // failed on a negative reduced cost only long double sees (|y| ~ 1e8: the double pass rounds
+  // failed on a negative reduced cost only the precise (double-double) pass sees (|y| ~ 1e8: the double pass rounds
   // ~1e-8, so its entering tolerance is that wide) names the column, and a step brings it in: the
   // double iterations could not have found it, and such LPs used to end unstable (477 of a power4
   // sweep's 2.4M, then GLPK's answer or "lit"; now 1-4).
@@ -630,7 +632,7 @@ class FastSimplex {
 
   // Dantzig (or Bland) over non-basic columns. The tolerance grows with |y|: with |y| ~ 1e8
   // (narrow kernels) reduced costs carry ~1e-16 |y| of rounding, and basic columns would look
-  // attractive; the long double certificate, not this tolerance, decides optimality.
+  // attractive; the precise certificate, not this tolerance, decides optimality.
   int choose_entering(bool bland) {
     double largest_dual = 0;
     for (int r = 0; r < k_; ++r) largest_dual = std::max(largest_dual, std::abs(y_[r]));
@@ -832,17 +834,17 @@ class FastSimplex {
     return (k_ + 2) * std::numeric_limits<double>::epsilon() * (1 + y_norm * column_bound());
   }
 
-  // The certificate, in double when that is provably enough, else in long double.
+  // The certificate, in double when that is provably enough, else in double-double.
   bool certify(Solution& s) {
     certificate_entering_ = -1;
-    return certify_in_double(s) || certify_in_long_double(s);
+    return certify_in_double(s) || certify_precisely(s);
   }
 
   // Most bases have moderate duals, and then double arithmetic certifies them with room to spare:
   // the same first-order bound as below, with the true residual B x - rhs (double x_B is only
   // cond(B) eps accurate) and every computed term widened by its rounding error bound
   // gamma (|terms|), gamma = (k + 2) eps. Narrow kernels (|y| ~ 1e8) fail this on rounding alone
-  // and go to long double. Every bound term is computed from the data (true residuals, reduced
+  // and go to double-double. Every bound term is computed from the data (true residuals, reduced
   // costs of the y used), so the inverse need not be fresh: the product-form one, with one step of
   // refinement for y as for x_B, serves as well, and saves a factorisation per LP.
   bool certify_in_double(Solution& s) {
@@ -922,109 +924,119 @@ class FastSimplex {
     for (int r = 0; r < k_; ++r) s.duals[r] = y[r];
   }
 
-  // The certificate in long double, first with x_B and y refined from the double inverse (two
-  // steps with long double residuals reach long double accuracy for cond(B) up to ~1e8, at a
-  // fraction of a factorisation's cost), then, if that does not certify, with B inverted afresh in
-  // long double. On that failure the accurate inverse and x_B are kept, so the caller resumes from
-  // them.
-  bool certify_in_long_double(Solution& s) {
-    long double b[kMaxRows][kMaxRows], x[kMaxRows], y[kMaxRows], basic_cost[kMaxRows];
+  // The precise certificate, in double-double: x_B and y refined from the double inverse first
+  // (two steps with double-double residuals reach well past long double accuracy for cond(B) up to
+  // ~1e8, at a fraction of a factorisation's cost; most bases need one), then, if that does not
+  // certify, with B inverted afresh in long double. On that failure the accurate inverse and x_B
+  // are kept, so the caller resumes from them. (In x87 long double this was ~4000 cycles an LP,
+  // a fifth of the LP time of a sweep.)
+  bool certify_precisely(Solution& s) {
+    DoubleDouble x[kMaxRows], y[kMaxRows];
+    double basic_cost[kMaxRows];
     for (int i = 0; i < k_; ++i) {
       basic_cost[i] = cost(basis_[i]);
-      x[i] = x_[i];
-      y[i] = y_[i];
-      for (int r = 0; r < k_; ++r) b[r][i] = basic_[i][r];
+      x[i] = {x_[i], 0};
+      y[i] = {y_[i], 0};
     }
-    // Iterative refinement of x_B and y with long double residuals and the given inverse: each step
-    // gains the digits that cond(B) times the inverse's precision leaves.
+    // Iterative refinement of x_B and y with double-double residuals and the given inverse (double
+    // or long double): each step gains the digits that cond(B) times the inverse's precision leaves.
     auto refine = [&](const auto& inverse, int steps) {
+      using Real = std::remove_cvref_t<decltype(inverse[0][0])>;
       for (int step = 0; step < steps; ++step) {
-        long double misfit_x[kMaxRows], misfit_y[kMaxRows];
-        for (int r = 0; r < k_; ++r) {
-          long double v = p_->rhs[r];
-          for (int i = 0; i < k_; ++i) v -= b[r][i] * x[i];
-          misfit_x[r] = v;
-        }
+        // The k sums side by side (the inner loops run over independent accumulators): one at a
+        // time, each double-double sum is a chain of dependent adds, and latency dominated.
+        DoubleDouble sum_x[kMaxRows], sum_y[kMaxRows];
+        for (int r = 0; r < k_; ++r) sum_x[r] = {p_->rhs[r], 0};
+        for (int i = 0; i < k_; ++i) sum_y[i] = {basic_cost[i], 0};
+        for (int i = 0; i < k_; ++i)
+          for (int r = 0; r < k_; ++r) add_product(sum_x[r], x[i], -basic_[i][r]);
+        for (int r = 0; r < k_; ++r)
+          for (int i = 0; i < k_; ++i) add_product(sum_y[i], y[r], -basic_[i][r]);
+        double misfit_x[kMaxRows], misfit_y[kMaxRows];
+        for (int q = 0; q < k_; ++q) misfit_x[q] = sum_x[q].value(), misfit_y[q] = sum_y[q].value();
         for (int i = 0; i < k_; ++i) {
-          long double v = basic_cost[i];
-          for (int r = 0; r < k_; ++r) v -= b[r][i] * y[r];
-          misfit_y[i] = v;
-        }
-        for (int i = 0; i < k_; ++i) {
-          long double v = 0, w = 0;
+          Real v = 0, w = 0;
           for (int r = 0; r < k_; ++r) v += inverse[i][r] * misfit_x[r], w += misfit_y[r] * inverse[r][i];
-          x[i] += v;
-          y[i] += w;
+          add(x[i], double(v));
+          add(y[i], double(w));
         }
       }
     };
-    refine(binv_, 2);
-    if (long_double_bound(b, x, y, s)) return true;
+    refine(binv_, 1);
+    if (precise_bound(x, y, s)) return true;
+    refine(binv_, 1);
+    if (precise_bound(x, y, s)) return true;
     long double factors[kMaxRows][kMaxRows], inv[kMaxRows][kMaxRows];
     for (int r = 0; r < k_; ++r)
-      for (int i = 0; i < k_; ++i) factors[r][i] = b[r][i];
+      for (int i = 0; i < k_; ++i) factors[r][i] = basic_[i][r];
     if (!invert_small<long double>(k_, factors, inv, 1e-14L)) return false;
     for (int i = 0; i < k_; ++i) {
       long double v = 0;
       for (int r = 0; r < k_; ++r) v += inv[i][r] * (long double)p_->rhs[r];
-      x[i] = v;
+      x[i] = to_double_double(v);
       for (int r = 0; r < k_; ++r) binv_[i][r] = double(inv[i][r]);
     }
     updates_ = 0;
     for (int r = 0; r < k_; ++r) {
       long double v = 0;
       for (int i = 0; i < k_; ++i) v += basic_cost[i] * inv[i][r];
-      y[r] = v;
+      y[r] = to_double_double(v);
     }
     // The solve alone leaves a residual of ~cond(B) long double epsilons, which |y| ~ 1e8 would
     // turn into a failed bound: refine with the long double inverse.
     refine(inv, 2);
-    for (int i = 0; i < k_; ++i) x_[i] = double(x[i]);
-    return long_double_bound(b, x, y, s);
+    for (int i = 0; i < k_; ++i) x_[i] = x[i].value();
+    return precise_bound(x, y, s);
+  }
+
+  // d_j = c_j - y.a_j in double-double.
+  double precise_reduced_cost(int j, const DoubleDouble* y) const {
+    double a[kMaxRows];
+    load_column(j, a);
+    DoubleDouble d{cost_[j], 0};
+    for (int r = 0; r < k_; ++r) add_product(d, y[r], -a[r]);
+    return d.value();
   }
 
   // Accepts x_B and y when the same first-order bound on |G - G*| as the KKT checker's (|y| times
   // the residual of the clamped x_B, plus complementarity, plus dual infeasibility) is <= 1e-9,
-  // every term in long double; `b` is the basis matrix.
-  bool long_double_bound(const long double (&b)[kMaxRows][kMaxRows], const long double* x,
-                         const long double* y, Solution& s) {
-    long double bound = 0;
-    for (int r = 0; r < k_; ++r) {
-      long double residual = -(long double)p_->rhs[r];  // B max(x, 0) - rhs in row r
-      for (int i = 0; i < k_; ++i) residual += b[r][i] * std::max(x[i], 0.0L);
-      bound += std::abs(y[r] * residual);
-    }
+  // every term from double-double sums (the bound's own double rounding is ~1e-16 of it).
+  bool precise_bound(const DoubleDouble* x, const DoubleDouble* y, Solution& s) {
+    DoubleDouble clamped[kMaxRows];
+    for (int i = 0; i < k_; ++i) clamped[i] = x[i].hi > 0 ? x[i] : DoubleDouble{};
+    DoubleDouble residual[kMaxRows];  // B max(x, 0) - rhs, rows side by side
+    for (int r = 0; r < k_; ++r) residual[r] = {-p_->rhs[r], 0};
+    for (int i = 0; i < k_; ++i)
+      for (int r = 0; r < k_; ++r) add_product(residual[r], clamped[i], basic_[i][r]);
+    double bound = 0;
+    for (int r = 0; r < k_; ++r) bound += std::abs(y[r].value() * residual[r].value());
     // Complementarity as the KKT checker sees it: basic reduced costs, zero in exact arithmetic,
     // are |y| times rounding in practice.
-    auto reduced_cost = [&](int j) {
-      long double d = cost_[j];
-      for (int r = 0; r < k_; ++r) d -= y[r] * (long double)p_->at(r, j);
-      return d;
-    };
     for (int i = 0; i < k_; ++i) {
-      if (x[i] <= 0) continue;
-      if (basis_[i] < n_) bound += x[i] * std::abs(reduced_cost(basis_[i]));
+      const double w = clamped[i].value();
+      if (w <= 0) continue;
+      if (basis_[i] < n_) bound += w * std::abs(precise_reduced_cost(basis_[i], y));
       if (basis_[i] == composite_)  // reported as its atoms, so their reduced costs count
         for (size_t t = 0; t < p_->start_support.size(); ++t)
-          bound += x[i] * p_->start_weights[t] * std::abs(reduced_cost(p_->start_support[t]));
+          bound += w * p_->start_weights[t] * std::abs(precise_reduced_cost(p_->start_support[t], y));
     }
-    if (bound > kCertifyBound) return false;
-    // Double pricing with the rounded duals finds the suspects, long double judges them: a column
-    // whose double reduced cost is at least its rounding bound (that of the pass plus the rounding
-    // of y) cannot be negative.
+    if (!(bound <= kCertifyBound)) return false;
+    // Double pricing with the rounded duals finds the suspects, double-double judges them: a
+    // column whose double reduced cost is at least its rounding bound (that of the pass plus the
+    // rounding of y) cannot be negative.
     double rounding = 0;
     for (int r = 0; r < k_; ++r) {
-      y_[r] = double(y[r]);
-      rounding += double(std::abs(y[r] - (long double)y_[r]));
+      y_[r] = y[r].value();
+      rounding += std::abs((y[r].hi - y_[r]) + y[r].lo);
     }
     if (!priced_with(y_)) reduced_costs();
     const double suspect_below = (pricing_rounding(y_) + rounding * column_bound()) * (1 + 1e-6);
     // Weak duality with sum w = 1: no distribution beats y.(1, b) by more than -min_j d_j, so the
     // most negative reduced cost counts, once (as in the KKT checker).
-    long double infeasibility = 0;
+    double infeasibility = 0;
     int most_negative_column = -1;
     auto judge = [&](int j) {
-      const long double d = reduced_cost(j);
+      const double d = precise_reduced_cost(j, y);
       if (-d > infeasibility) infeasibility = -d, most_negative_column = j;
     };
     const double* reduced = reduced_.data();
@@ -1044,14 +1056,14 @@ class FastSimplex {
       if (infeasibility > 0 && !is_basic(most_negative_column)) certificate_entering_ = most_negative_column;
       return false;
     }
-    bound += infeasibility;
-    long double objective = 0, weights[kMaxRows];
+    long double objective = 0, weights[kMaxRows], duals[kMaxRows];
     for (int i = 0; i < k_; ++i) {
-      weights[i] = std::max(x[i], 0.0L);
+      weights[i] = to_long_double(clamped[i]);
       objective += (long double)cost(basis_[i]) * weights[i];
-      x_[i] = double(x[i]);
+      x_[i] = x[i].value();
     }
-    report(s, objective, weights, y);
+    for (int r = 0; r < k_; ++r) duals[r] = to_long_double(y[r]);
+    report(s, objective, weights, duals);
     return true;
   }
 
@@ -1067,7 +1079,7 @@ class FastSimplex {
 
   const Problem* p_ = nullptr;
   int k_ = 0, n_ = 0, g_ = 0, e_ = 0, composite_ = 0;
-  int certificate_entering_ = -1;  // set by a failed long double certificate (solve_phase2)
+  int certificate_entering_ = -1;  // set by a failed precise certificate (solve_phase2)
   int phase_ = 1;
   int basis_[kMaxRows];
   double x_[kMaxRows], y_[kMaxRows], artificial_sign_[kMaxRows];
