@@ -137,17 +137,19 @@ class FastSimplex {
       if (column >= 0)
         for (int l = 0; l < kWarmLanes; ++l) pool[pooled++] = &above_[size_t(column) * kWarmLanes + l];
     }
+    // The kWarmTries closest in one pass (insertion into a short sorted list; ties keep pool
+    // order, as repeated minimum searches did).
     const WarmBasis* tries[kWarmTries];
+    double distance[kWarmTries];
     int count = 0;
-    bool used[2 * kWarmLanes] = {};
-    for (; count < kWarmTries; ++count) {
-      int best = -1;
-      for (int l = 0; l < pooled; ++l)
-        if (pool[l]->valid && !used[l] && (best < 0 || std::abs(pool[l]->zf - p.zf) < std::abs(pool[best]->zf - p.zf)))
-          best = l;
-      if (best < 0) break;
-      used[best] = true;
-      tries[count] = pool[best];
+    for (int l = 0; l < pooled; ++l) {
+      if (!pool[l]->valid) continue;
+      const double d = std::abs(pool[l]->zf - p.zf);
+      if (count == kWarmTries && !(d < distance[kWarmTries - 1])) continue;
+      int at = count < kWarmTries ? count++ : kWarmTries - 1;
+      for (; at > 0 && d < distance[at - 1]; --at) tries[at] = tries[at - 1], distance[at] = distance[at - 1];
+      tries[at] = pool[l];
+      distance[at] = d;
     }
     Solution s = solve(p, std::span<const WarmBasis* const>(tries, count));
     remember_basis(s, lanes_[layer]);
@@ -908,6 +910,8 @@ class FastSimplex {
     s.status = ProblemStatus::Optimal;
     s.support.clear();
     s.weights.clear();
+    s.support.reserve(k_);  // one allocation each, not one per doubling
+    s.weights.reserve(k_);
     for (int i = 0; i < k_; ++i) {
       const Real w = weights[i];
       if (w <= 0) continue;
