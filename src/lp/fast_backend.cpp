@@ -39,9 +39,9 @@ constexpr int kLaterTryRounds = 6;
 constexpr int kGuidedSteps = 8;                  // certificate-guided steps per LP (solve_phase2)
 constexpr int kWarmTries = 5;                    // warm bases tried before the composite repair
 
-// In-place LU with partial pivoting and inverse for k <= 8, in long double: the certificate's
-// x_B and y then carry ~3 more digits than the double iterations (cond(B) of boundary instances
-// reaches 1e8).
+// In-place LU with partial pivoting and inverse for k <= 8, in long double for the certificate's
+// last resort: when the double inverse cannot refine x_B and y (cond(B) of boundary instances
+// reaches 1e8 and more), the long double one carries ~3 more digits.
 // The same routine in double serves every refactorisation: Eigen's general FullPivLU inverse
 // cost as much as all pricing passes together at k <= 8 (measured with perf).
 // K = k at compile time, so the loops unroll.
