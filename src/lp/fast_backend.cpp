@@ -32,9 +32,9 @@ constexpr double kCertifyPrimal = 1e-12;         // dual cleanup: x_B below this
 constexpr double kCertifyBound = 1e-9;           // certified bound on |G - G*| (see certify)
 constexpr int kRefactorInterval = 16;            // rank-1 updates between fresh inverses
 constexpr int kDegenerateBeforeBland = 24;       // degenerate pivots in a row before Bland's rule
-// Bracket-shift rounds per warm basis: the closest z_f's gets 4k (a failing chain runs into the
-// 16-update limit), the others, which succeed less often, 6: on the default dataset that saved 3.1M
-// of 17.6M exchanges for 0.15M more pivots (power4 sweep, ~4 % faster).
+// Bracket-shift rounds per warm basis: the closest z_f's gets 4k, the others, which succeed less
+// often, 6: on the default dataset that saved 3.1M of 17.6M exchanges for 0.15M more pivots (power4
+// sweep, ~4 % faster). 8k for the first cut repairs 102k -> 91k but cost the failing starts more.
 constexpr int kLaterTryRounds = 6;
 constexpr int kGuidedSteps = 8;                  // certificate-guided steps per LP (solve_phase2)
 constexpr int kWarmTries = 5;                    // warm bases tried before the composite repair
@@ -462,10 +462,10 @@ class FastSimplex {
   }
 
   // Phase 2, then certification; a failed certificate resumes from the accurate basis. One that
-  // failed on a negative reduced cost only the precise (double-double) pass sees (|y| ~ 1e8: the double pass rounds
-  // ~1e-8, so its entering tolerance is that wide) names the column, and a step brings it in: the
-  // double iterations could not have found it, and such LPs used to end unstable (477 of a power4
-  // sweep's 2.4M, then GLPK's answer or "lit"; now 1-4).
+  // failed on a negative reduced cost only the precise (double-double) pass sees (|y| ~ 1e8: the
+  // double pass rounds ~1e-8, so its entering tolerance is that wide) names the column, and a step
+  // brings it in: the double iterations could not have found it, and such LPs used to end unstable
+  // (477 of a power4 sweep's 2.4M, then GLPK's answer or "lit"; now 1).
   bool solve_phase2(Solution& s) {
     int guided = 0;
     for (int attempt = 0; attempt < 3; ++attempt) {
