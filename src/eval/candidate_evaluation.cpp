@@ -75,13 +75,13 @@ CandidateResult CandidateEvaluator::evaluate(const Basis& basis) const {
         for (size_t i = run_begin[run]; i < run_begin[run + 1]; ++i) {
           const size_t f = list[i], t = view.fragments.texel[f];
           const int x = int(t % map.width), y = int(t / map.width);
-          // The same taps, in the same order, as eval's lp: technique; the extra texel index picks
-          // the column (the far plane's, one past the map, for taps outside it).
           const double zf = view.fragments.zf[f] - settings_.depth_bias;
           // The fragments of one texel share its kernel (41 % of them follow one of their texel's):
           // then only z_f's column changes, and the problem is the same as built anew.
           const bool same_kernel = i > run_begin[run] && view.fragments.texel[list[i - 1]] == t;
           if (!same_kernel || !factory.move_zf(zf, problem)) {
+            // The same taps, in the same order, as eval's lp: technique; the extra texel index
+            // picks the column (the far plane's, one past the map, for taps outside it).
             kernel_distribution(map, kernel, x, y, tap_depth, tap_weight, tap_texel);
             for (int n = 0; n < taps; ++n) {
               tap_depth[n] = depth[tap_texel[n]];  // quantized in quantize mode

@@ -146,10 +146,10 @@ class FastSimplex {
       if (!pool[l]->valid) continue;
       const double d = std::abs(pool[l]->zf - p.zf);
       if (count == kWarmTries && !(d < distance[kWarmTries - 1])) continue;
-      int at = count < kWarmTries ? count++ : kWarmTries - 1;
-      for (; at > 0 && d < distance[at - 1]; --at) tries[at] = tries[at - 1], distance[at] = distance[at - 1];
-      tries[at] = pool[l];
-      distance[at] = d;
+      int slot = count < kWarmTries ? count++ : kWarmTries - 1;
+      for (; slot > 0 && d < distance[slot - 1]; --slot) tries[slot] = tries[slot - 1], distance[slot] = distance[slot - 1];
+      tries[slot] = pool[l];
+      distance[slot] = d;
     }
     Solution s = solve(p, std::span<const WarmBasis* const>(tries, count));
     remember_basis(s, lanes_[layer]);
@@ -471,13 +471,11 @@ class FastSimplex {
     for (int attempt = 0; attempt < 3; ++attempt) {
       if (!iterate(s)) return false;
       if (certify(s)) return true;
-      if (certificate_entering_ >= 0 && guided < kGuidedSteps) {
+      for (; certificate_entering_ >= 0 && guided < kGuidedSteps; ++guided) {
         double u[kMaxRows];
         column_in_basis(certificate_entering_, u);
-        if (!(step(certificate_entering_, u, false, s) >= 0)) return false;
-        ++guided;
-        --attempt;
-        continue;
+        if (!(step(certificate_entering_, u, false, s) >= 0) || !iterate(s)) return false;
+        if (certify(s)) return true;
       }
       if (!dual_simplex(s)) return false;
       if (certify(s)) return true;

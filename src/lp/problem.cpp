@@ -111,6 +111,13 @@ void finish_block(int rows, const std::vector<double>& staging, ColumnBlock& blo
   block.max_abs = largest_magnitude(block.values);
 }
 
+// Writes T (1, b(z)) as column `slot` of a row-major block whose rows are `stride` apart.
+void put_column(const ProblemFactory& factory, double z, std::vector<double>& values, size_t stride, size_t slot) {
+  double column[kMaxColumnRows];
+  factory.column(z, column);
+  for (int r = 0; r < factory.rows(); ++r) values[size_t(r) * stride + slot] = column[r];
+}
+
 }  // namespace
 
 Problem ProblemFactory::from_moments(std::span<const double> moments, double zf,
@@ -244,12 +251,9 @@ void ProblemFactory::from_distribution(std::span<const double> depths, std::span
     const auto same = std::find(p.extra.points.begin(), p.extra.points.end(), zf);
     p.zf_extra = int(same - p.extra.points.begin());
     if (same == p.extra.points.end()) {
-      double column_zf[kMaxColumnRows];
-      column(zf, column_zf);
       p.extra.points.push_back(zf);
       p.extra_tap.push_back(-1);
-      for (int r = 0; r < rows_; ++r) values[r * stride + count] = column_zf[r];
-      ++count;
+      put_column(*this, zf, values, stride, count++);
     }
   }
   for (int r = 1; r < rows_; ++r)  // pack: row r moves down from r * stride to r * count
@@ -274,9 +278,7 @@ bool ProblemFactory::move_zf(double zf, Problem& p) const {
   const bool appended = p.zf_extra >= 0 && p.zf_extra == count - 1 && p.extra_tap[p.zf_extra] < 0;
   if (!appended || !(zf >= disc_.lo && zf <= disc_.hi)) return false;
   if (std::find(p.extra.points.begin(), p.extra.points.end() - 1, zf) != p.extra.points.end() - 1) return false;
-  double column_zf[kMaxColumnRows];
-  column(zf, column_zf);
-  for (int r = 0; r < rows_; ++r) p.extra.values[size_t(r) * count + (count - 1)] = column_zf[r];
+  put_column(*this, zf, p.extra.values, count, count - 1);
   p.extra.points[count - 1] = zf;
   p.extra.max_abs = largest_magnitude(p.extra.values);
   p.zf = zf;
