@@ -570,7 +570,7 @@ class FastSimplex {
     }
   }
   void reduced_costs() {
-    subtract_row_combination(y_, phase_ == 1 ? nullptr : cost_.data(), reduced_.data());
+    priced_smallest_ = subtract_row_combination(y_, phase_ == 1 ? nullptr : cost_.data(), reduced_.data());
     priced_phase_ = phase_;
     for (int r = 0; r < k_; ++r) priced_y_[r] = y_[r];
   }
@@ -583,31 +583,55 @@ class FastSimplex {
   }
 
   // out_j = base_j - sum_r w_r A_rj for every structural column (base 0 when null), in one pass
-  // over the two contiguous column blocks (rows fixed at compile time, so the compiler keeps the
-  // K weights in registers and vectorises across columns; row by row it was store-bound).
-  void subtract_row_combination(const double* w, const double* base, double* out) const {
-    with_row_count<kMaxRows>(k_, [&](auto rows) { combine<decltype(rows)::value>(w, base, out); });
+  // over the two contiguous column blocks (rows fixed at compile time, so the K weights stay in
+  // registers and the loop runs across columns; row by row it was store-bound). Returns
+  // min(0, min_j out_j), found in the same pass: with it, a pricing pass that finds no entering
+  // column (every LP ends with one) and the double certificate need no second pass over out.
+  double subtract_row_combination(const double* w, const double* base, double* out) const {
+    return with_row_count<kMaxRows>(k_, [&](auto rows) { return combine<decltype(rows)::value>(w, base, out); });
   }
 
   template <int K>
-  void combine(const double* w, const double* base, double* out) const {
+  double combine(const double* w, const double* base, double* out) const {
     const double* rows[K];
     for (int r = 0; r < K; ++r) rows[r] = &p_->grid->values[size_t(r) * g_];
-    combine_block<K>(w, rows, base, out, g_);
+    const double grid_smallest = combine_block<K>(w, rows, base, out, g_);
     for (int r = 0; r < K; ++r) rows[r] = &p_->extra.values[size_t(r) * e_];
-    combine_block<K>(w, rows, base ? base + g_ : nullptr, out + g_, e_);
+    const double extra_smallest = combine_block<K>(w, rows, base ? base + g_ : nullptr, out + g_, e_);
+    return extra_smallest < grid_smallest ? extra_smallest : grid_smallest;
   }
+  // Each out_j is the chain base_j - w_0 a_0j - w_1 a_1j - ... in fused multiply-adds, as the
+  // compiler contracts the scalar loop, so both paths give the same bits.
   template <int K>
-  static void combine_block(const double* w, const double* const* rows, const double* base,
-                            double* out, int n) {
+  static double combine_block(const double* w, const double* const* rows, const double* base,
+                              double* out, int n) {
     double weight[K];
     for (int r = 0; r < K; ++r) weight[r] = w[r];
-#pragma omp simd
-    for (int j = 0; j < n; ++j) {
-      double v = base ? base[j] : 0.0;
-      for (int r = 0; r < K; ++r) v -= weight[r] * rows[r][j];
-      out[j] = v;
+    double smallest = 0;
+    int j = 0;
+#if defined(__AVX__) && defined(__FMA__)
+    {
+      __m256d weights[K];
+      for (int r = 0; r < K; ++r) weights[r] = _mm256_set1_pd(weight[r]);
+      __m256d low = _mm256_setzero_pd();
+      for (; j + 4 <= n; j += 4) {
+        __m256d v = base ? _mm256_loadu_pd(base + j) : _mm256_setzero_pd();
+        for (int r = 0; r < K; ++r) v = _mm256_fnmadd_pd(weights[r], _mm256_loadu_pd(rows[r] + j), v);
+        _mm256_storeu_pd(out + j, v);
+        low = _mm256_min_pd(v, low);  // NaN keeps the minimum so far, as in smallest_of
+      }
+      double lane[4];
+      _mm256_storeu_pd(lane, low);
+      for (double v : lane) smallest = v < smallest ? v : smallest;
     }
+#endif
+    for (; j < n; ++j) {
+      double v = base ? base[j] : 0.0;
+      for (int r = 0; r < K; ++r) v = std::fma(-weight[r], rows[r][j], v);
+      out[j] = v;
+      smallest = v < smallest ? v : smallest;
+    }
+    return smallest;
   }
 
   // The smallest of d[0..n) (at most 0), eight independent lanes so that it vectorises (a single
@@ -646,39 +670,46 @@ class FastSimplex {
         if (reduced_[j] < -tolerance && !is_basic(j)) return j;
       return -1;
     }
+    // Fresh from price(): the smallest reduced cost over all columns decides, and when the first
+    // column holding it is not basic it is the one Dantzig enters (no basic column comes before it
+    // with that value, so excluding the basic ones would find the same).
+    if (!(priced_smallest_ < -tolerance)) return -1;
+    {
+      const int first = first_holding(reduced_.data(), n_, priced_smallest_);
+      if (first >= 0 && !is_basic(first)) return first;
+    }
     // Basic columns out of the race, then a vectorised minimum and the first index holding it.
     double saved[kMaxRows];
     for (int i = 0; i < k_; ++i)
       if (basis_[i] < n_) saved[i] = reduced_[basis_[i]], reduced_[basis_[i]] = 0;
     const double* d = reduced_.data();
     const double smallest = smallest_of(d, n_);
-    int best = -1;
-    if (smallest < -tolerance) {
-      // The first index holding it, eight at a time (a scalar search was 40 % of a pivot).
-      int j = 0;
-#ifdef __AVX__
-      const __m256d target = _mm256_set1_pd(smallest);
-      for (; j + 8 <= n_; j += 8) {
-        const __m256d a = _mm256_cmp_pd(_mm256_loadu_pd(d + j), target, _CMP_EQ_OQ);
-        const __m256d b = _mm256_cmp_pd(_mm256_loadu_pd(d + j + 4), target, _CMP_EQ_OQ);
-        if (_mm256_movemask_pd(_mm256_or_pd(a, b))) break;
-      }
-#else
-      for (; j + 8 <= n_; j += 8) {
-        bool hit = false;
-        for (int q = 0; q < 8; ++q) hit |= d[j + q] == smallest;
-        if (hit) break;
-      }
-#endif
-      for (; j < n_; ++j)
-        if (d[j] == smallest) {
-          best = j;
-          break;
-        }
-    }
+    const int best = smallest < -tolerance ? first_holding(d, n_, smallest) : -1;
     for (int i = 0; i < k_; ++i)
       if (basis_[i] < n_) reduced_[basis_[i]] = saved[i];
     return best;
+  }
+  // The first index j < n with d[j] == value, eight at a time (a scalar search was 40 % of a
+  // pivot), or -1.
+  static int first_holding(const double* d, int n, double value) {
+    int j = 0;
+#ifdef __AVX__
+    const __m256d target = _mm256_set1_pd(value);
+    for (; j + 8 <= n; j += 8) {
+      const __m256d a = _mm256_cmp_pd(_mm256_loadu_pd(d + j), target, _CMP_EQ_OQ);
+      const __m256d b = _mm256_cmp_pd(_mm256_loadu_pd(d + j + 4), target, _CMP_EQ_OQ);
+      if (_mm256_movemask_pd(_mm256_or_pd(a, b))) break;
+    }
+#else
+    for (; j + 8 <= n; j += 8) {
+      bool hit = false;
+      for (int q = 0; q < 8; ++q) hit |= d[j + q] == value;
+      if (hit) break;
+    }
+#endif
+    for (; j < n; ++j)
+      if (d[j] == value) return j;
+    return -1;
   }
   bool is_basic(int j) const {
     return std::find(basis_, basis_ + k_, j) != basis_ + k_;
@@ -899,7 +930,7 @@ class FastSimplex {
           bound += clamped[i] * p_->start_weights[t] * reduced_cost(p_->start_support[t]);
     }
     // Weak duality with sum w = 1: no distribution beats y.(1, b) by more than -min_j d_j.
-    bound += std::max(0.0, reduced_cost_error - smallest_of(reduced_.data(), n_));
+    bound += std::max(0.0, reduced_cost_error - priced_smallest_);  // reduced_ is y's (above)
     if (!(bound <= kCertifyBound)) return false;
     double objective = 0;
     for (int i = 0; i < k_; ++i) objective += cost(basis_[i]) * clamped[i];
@@ -1095,6 +1126,7 @@ class FastSimplex {
   int updates_ = 0;
   double priced_y_[kMaxRows] = {};  // the duals reduced_ was computed with, in priced_phase_
   int priced_phase_ = -1;
+  double priced_smallest_ = 0;  // min(0, min_j reduced_[j]), set with reduced_
   std::vector<double> reduced_, alpha_, cost_;
   WarmBasis lanes_[kWarmLanes];          // by layer: the texel to the left
   std::vector<WarmBasis> above_;         // by column and layer: the row above
