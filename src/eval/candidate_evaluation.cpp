@@ -70,6 +70,7 @@ CandidateResult CandidateEvaluator::evaluate(const Basis& basis) const {
       std::vector<double> tap_depth(taps), tap_weight(taps);
       std::vector<const double*> tap_column(taps);
       std::vector<size_t> tap_texel(taps);
+      lp::Solution s;  // reused: no allocation per LP
 #pragma omp for schedule(dynamic, 1)
       for (size_t run = 0; run < runs; ++run)
         for (size_t i = run_begin[run]; i < run_begin[run + 1]; ++i) {
@@ -89,9 +90,8 @@ CandidateResult CandidateEvaluator::evaluate(const Basis& basis) const {
             }
             factory.from_distribution(tap_depth, tap_weight, tap_column, zf, problem);
           }
-          lp::Solution s = i == run_begin[run]
-                               ? backend->solve(problem)
-                               : backend->solve_next(problem, {view.fragments.layer[f], x});
+          const lp::WarmPosition at{view.fragments.layer[f], x};
+          backend->solve_into(problem, i == run_begin[run] ? nullptr : &at, s);
           if (s.call == lp::CallStatus::Ok && s.status == lp::ProblemStatus::Optimal) {
             g[f] = std::clamp(s.G, 0.0, 1.0);
             ++solved;

@@ -28,7 +28,9 @@ class LpTechnique : public Technique {
     lp::Problem problem = factory_.from_distribution(in.kernel_depths, in.kernel_weights, in.zf);
     // Along a warm-start run (the same runs as the sweep's), continue from the neighbours' bases.
     const bool continues = in.run == last_run_ && in.fragment > last_fragment_;
-    lp::Solution s = continues ? backend_->solve_next(problem, {in.layer, in.column}) : backend_->solve(problem);
+    const lp::WarmPosition at{in.layer, in.column};
+    lp::Solution& s = solution_;
+    backend_->solve_into(problem, continues ? &at : nullptr, s);
     last_fragment_ = in.fragment;
     last_run_ = in.run;
     if (s.call != lp::CallStatus::Ok || s.status != lp::ProblemStatus::Optimal) {
@@ -42,6 +44,7 @@ class LpTechnique : public Technique {
  private:
   lp::ProblemFactory factory_;
   std::unique_ptr<lp::Backend> backend_;
+  lp::Solution solution_;  // reused: no allocation per LP
   size_t failures_ = 0;
   size_t last_fragment_ = 0;
   int last_run_ = -1;  // none yet: runs are numbered from 0

@@ -121,7 +121,7 @@ class FastSimplex {
  public:
   // at == nullptr: from scratch, and every basis is forgotten; otherwise the warm bases of the
   // texel to the left and of the texel above are tried first (Backend::solve_next).
-  Solution run(const Problem& p, const WarmPosition* at) {
+  void run(const Problem& p, const WarmPosition* at, Solution& s) {
     if (!at) {
       for (auto& w : lanes_) w.valid = false;
       for (auto& w : above_) w.valid = false;
@@ -155,14 +155,15 @@ class FastSimplex {
       tries[slot] = pool[l];
       distance[slot] = d;
     }
-    Solution s = solve(p, std::span<const WarmBasis* const>(tries, count));
+    s.reset();
+    solve(p, std::span<const WarmBasis* const>(tries, count), s);
     remember_basis(s, lanes_[layer]);
     if (column >= 0) remember_basis(s, above_[size_t(column) * kWarmLanes + layer]);
-    return s;
   }
 
  private:
-  Solution solve(const Problem& p, std::span<const WarmBasis* const> warm) {
+  // Into `s`, fresh (reset).
+  void solve(const Problem& p, std::span<const WarmBasis* const> warm, Solution& s) {
     p_ = &p;
     priced_phase_ = -1;  // reduced_ belongs to the previous problem
     k_ = p.rows;
@@ -182,14 +183,13 @@ class FastSimplex {
     for (size_t t = 0; t < p.start_support.size(); ++t)
       composite_cost_ += p.start_weights[t] * cost_[p.start_support[t]];
 
-    Solution s;
     if (!warm.empty()) {
-      if (solve_from_previous_basis(warm, s)) return s;
+      if (solve_from_previous_basis(warm, s)) return;
       start_over(s);
     }
     if (!p.start_support.empty() && start_from_distribution()) {
       phase_ = 2;
-      if (solve_phase2(s)) return s;
+      if (solve_phase2(s)) return;
       start_over(s);
     }
     start_with_artificials();
@@ -200,18 +200,18 @@ class FastSimplex {
       if (is_artificial(basis_[i])) artificial += x_[i];
     if (artificial > kPhase1Tolerance) {
       s.status = ProblemStatus::Infeasible;
-      return s;
+      return;
     }
     if (!drive_out_artificials()) return unstable(s);
     phase_ = 2;
-    if (solve_phase2(s)) return s;
-    return unstable(s);
+    if (solve_phase2(s)) return;
+    unstable(s);
   }
 
   // A failed start: only the pivots it spent are kept.
   static void start_over(Solution& s) {
     const int spent = s.iterations;
-    s = Solution();
+    s.reset();
     s.iterations = spent;
   }
 
@@ -437,10 +437,7 @@ class FastSimplex {
   }
   int shift_rounds(size_t try_index) const { return try_index == 0 ? 4 * k_ : kLaterTryRounds; }
 
-  Solution& unstable(Solution& s) {
-    s.status = ProblemStatus::Unstable;
-    return s;
-  }
+  static void unstable(Solution& s) { s.status = ProblemStatus::Unstable; }
 
   double column_entry(int j, int r) const {
     if (j < n_) return p_->at(r, j);
@@ -1139,31 +1136,37 @@ class FastSimplex {
 class FastBackend : public Backend {
  public:
   std::string name() const override { return "fast"; }
-  Solution solve(const Problem& p) override { return solve_with(p, nullptr); }
-  Solution solve_next(const Problem& p, WarmPosition at) override { return solve_with(p, &at); }
-
- private:
-  Solution solve_with(const Problem& p, const WarmPosition* at) {
+  Solution solve(const Problem& p) override {
+    Solution s;
+    solve_into(p, nullptr, s);
+    return s;
+  }
+  Solution solve_next(const Problem& p, WarmPosition at) override {
+    Solution s;
+    solve_into(p, &at, s);
+    return s;
+  }
+  void solve_into(const Problem& p, const WarmPosition* at, Solution& s) override {
     if (p.rows > kMaxRows) {
-      Solution s;
+      s.reset();
       s.call = CallStatus::Failed;
       s.call_message =
           "the fast backend handles at most " + std::to_string(kMaxRows - 1) + " basis functions";
-      return s;
+      return;
     }
-    Solution s = simplex_.run(p, at);
-    if (s.status != ProblemStatus::Unstable) return s;
+    simplex_.run(p, at, s);
+    if (s.status != ProblemStatus::Unstable) return;
     // The rare instance our simplex cannot certify goes to GLPK, and its answer is accepted only
     // if the independent KKT checker certifies it; otherwise it stays unstable.
     if (!glpk_) glpk_ = make_glpk_backend();
     Solution reference = glpk_->solve(p);
     if (reference.status == ProblemStatus::Optimal && check_kkt(p, reference, 1e-9).ok) {
       reference.iterations += s.iterations;
-      return reference;
+      s = std::move(reference);
+      return;
     }
     // GLPK's "infeasible" is wrong by construction when a feasible distribution is known.
-    if (reference.status == ProblemStatus::Infeasible && p.start_support.empty()) return reference;
-    return s;
+    if (reference.status == ProblemStatus::Infeasible && p.start_support.empty()) s = std::move(reference);
   }
 
   FastSimplex simplex_;
