@@ -787,8 +787,8 @@ class FastSimplex {
 
   // Product-form update of the explicit inverse: column `entering` replaces basis row `leave`.
   void pivot(int leave, int entering, const double* u) {
-    const double p = u[leave];
-    for (int r = 0; r < k_; ++r) binv_[leave][r] /= p;
+    const double reciprocal = 1 / u[leave];  // one division, not k (8.8 exchanges and pivots an LP)
+    for (int r = 0; r < k_; ++r) binv_[leave][r] *= reciprocal;
     for (int i = 0; i < k_; ++i) {
       if (i == leave || u[i] == 0) continue;
       for (int r = 0; r < k_; ++r) binv_[i][r] -= u[i] * binv_[leave][r];
