@@ -30,6 +30,21 @@ constexpr double kPivotTolerance = 1e-9;         // smallest |u_i| accepted as a
 constexpr double kPhase1Tolerance = 1e-10;       // residual artificial mass that means infeasible
 constexpr double kCertifyPrimal = 1e-12;         // dual cleanup: x_B below this must leave
 constexpr double kCertifyBound = 1e-9;           // certified bound on |G - G*| (see certify)
+// Largest |B max(x_B, 0) - rhs| a certificate accepts. The bound's |y| * residual term alone is not
+// enough: it bounds how far G lies *above* the optimum (weak duality), but only a (nearly)
+// feasible x_B bounds it from below, and with y = 0 (every basic point behind z_f) the term
+// vanishes: a basis with a negative weight, clamped, then passed as optimal with G = 0 where the
+// optimum was 0.065 (about one LP in a million of the default dataset's, found by comparing
+// sweeps with different warm-start settings fragment by fragment).
+constexpr double kCertifyResidual = 1e-12;
+// And no weight of x_B, refined in double-double, below this: a negative weight is a basis that is
+// not feasible, however small the residual clamping it leaves (|y| reaches 1e9, and a basis whose
+// weights were -1e-13 then moved G by ~1e-7 against another path's; 5 LPs of a power4 sweep of the
+// default dataset). Double-double leaves weights that are exactly zero at ~cond(B) 1e-32, far
+// inside this.
+constexpr double kNegligibleWeight = 1e-18;
+// The residual a GLPK fallback answer may leave (its weights, rounded to double, leave ~1e-16).
+constexpr double kFallbackResidual = 1e-14;
 constexpr int kRefactorInterval = 16;            // rank-1 updates between fresh inverses
 constexpr int kDegenerateBeforeBland = 24;       // degenerate pivots in a row before Bland's rule
 // Bracket-shift rounds per warm basis: the closest z_f's gets 4k, the others, which succeed less
@@ -943,7 +958,7 @@ class FastSimplex {
       }
       // The reported support must reproduce the moments as accurately as long double's does
       // (the KKT checker and the users' own checks look at the residual alone).
-      if (!(std::abs(residual) + gamma * size <= 1e-12)) return false;
+      if (!(std::abs(residual) + gamma * size <= kCertifyResidual)) return false;
       bound += std::abs(y[r]) * (std::abs(residual) + gamma * size);
     }
     const bool priced = priced_with(y);
@@ -1068,13 +1083,19 @@ class FastSimplex {
   // every term from double-double sums (the bound's own double rounding is ~1e-16 of it).
   bool precise_bound(const DoubleDouble* x, const DoubleDouble* y, Solution& s) {
     DoubleDouble clamped[kMaxRows];
-    for (int i = 0; i < k_; ++i) clamped[i] = x[i].hi > 0 ? x[i] : DoubleDouble{};
+    for (int i = 0; i < k_; ++i) {
+      if (!(x[i].value() >= -kNegligibleWeight)) return false;
+      clamped[i] = x[i].hi > 0 ? x[i] : DoubleDouble{};
+    }
     DoubleDouble residual[kMaxRows];  // B max(x, 0) - rhs, rows side by side
     for (int r = 0; r < k_; ++r) residual[r] = {-p_->rhs[r], 0};
     for (int i = 0; i < k_; ++i)
       for (int r = 0; r < k_; ++r) add_product(residual[r], clamped[i], basic_[i][r]);
     double bound = 0;
-    for (int r = 0; r < k_; ++r) bound += std::abs(y[r].value() * residual[r].value());
+    for (int r = 0; r < k_; ++r) {
+      if (!(std::abs(residual[r].value()) <= kCertifyResidual)) return false;  // x_B not feasible
+      bound += std::abs(y[r].value() * residual[r].value());
+    }
     // Complementarity as the KKT checker sees it: basic reduced costs, zero in exact arithmetic,
     // are |y| times rounding in practice.
     for (int i = 0; i < k_; ++i) {
@@ -1185,10 +1206,16 @@ class FastBackend : public Backend {
     simplex_.run(p, at, s);
     if (s.status != ProblemStatus::Unstable) return;
     // The rare instance our simplex cannot certify goes to GLPK, and its answer is accepted only
-    // if the independent KKT checker certifies it; otherwise it stays unstable.
+    // if the independent KKT checker certifies it, with its first-order error bound, and its
+    // weights reproduce the moments to double rounding. The bound alone is one-sided (see
+    // kCertifyResidual): GLPK's answer 1.2e-10 to an LP whose optimum is 2.0e-7 (a basis feasible
+    // and dual feasible in __float128) had a residual of 2e-12 and a bound of 5e-11. Otherwise
+    // the LP stays unstable.
     if (!glpk_) glpk_ = make_glpk_backend();
     Solution reference = glpk_->solve(p);
-    if (reference.status == ProblemStatus::Optimal && check_kkt(p, reference, 1e-9).ok) {
+    const KktReport check = check_kkt(p, reference, kCertifyBound);
+    if (reference.status == ProblemStatus::Optimal && check.ok && check.error_bound <= kCertifyBound &&
+        check.primal_residual <= kFallbackResidual) {
       reference.iterations += s.iterations;
       s = std::move(reference);
       return;
