@@ -848,8 +848,11 @@ class FastSimplex {
     alpha_.resize(n_);
     for (int step = 0; step < 4 * k_ + 16; ++step) {
       if (!refactor()) return false;
+      // x_B refined with double-double residuals, so that a weight the certificate found negative
+      // (it refines the same way) leaves here too: in double, cond(B) ~ 1e8 hides -1e-12.
+      refine_weights();
       const int leave = most_negative();
-      if (!(x_[leave] < -kCertifyPrimal)) return true;
+      if (!(x_[leave] < -kNegligibleWeight)) return true;
       price();
       // alpha_j = (B^{-1} A)_{leave, j}, stored negated: -alpha_j = 0 - row_leave . a_j.
       subtract_row_combination(binv_[leave], nullptr, alpha_.data());
@@ -880,6 +883,21 @@ class FastSimplex {
       ++s.iterations;
     }
     return false;
+  }
+
+  // One step of iterative refinement of x_B with a double-double residual (rhs - B x_B).
+  void refine_weights() {
+    DoubleDouble sum[kMaxRows];
+    for (int r = 0; r < k_; ++r) sum[r] = {p_->rhs[r], 0};
+    for (int i = 0; i < k_; ++i)
+      for (int r = 0; r < k_; ++r) add_product(sum[r], DoubleDouble{x_[i], 0}, -basic_[i][r]);
+    double misfit[kMaxRows];
+    for (int r = 0; r < k_; ++r) misfit[r] = sum[r].value();
+    for (int i = 0; i < k_; ++i) {
+      double v = 0;
+      for (int r = 0; r < k_; ++r) v += binv_[i][r] * misfit[r];
+      x_[i] += v;
+    }
   }
 
   // After phase 1 every artificial left in the basis sits at zero; pivot each out on the
@@ -946,8 +964,15 @@ class FastSimplex {
       correction[i] = v;
     }
     for (int i = 0; i < k_; ++i) x_[i] += correction[i];
+    // A weight below what double-double would call zero is for the precise pass (and then the
+    // dual simplex) to judge: the bound's terms would not notice it (kCertifyResidual; a clamped
+    // weight of ~-1e-12 passed here with G = 1.41e-8 where the optimum, a basis primal and dual
+    // feasible in __float128, is 2.50e-8).
     double clamped[kMaxRows];
-    for (int i = 0; i < k_; ++i) clamped[i] = std::max(x_[i], 0.0);
+    for (int i = 0; i < k_; ++i) {
+      if (!(x_[i] >= -kNegligibleWeight)) return false;
+      clamped[i] = std::max(x_[i], 0.0);
+    }
     double bound = 0;
     for (int r = 0; r < k_; ++r) {
       double residual = -p_->rhs[r], size = std::abs(p_->rhs[r]);
