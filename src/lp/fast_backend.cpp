@@ -28,7 +28,6 @@ constexpr double kFeasibilityTolerance = 1e-11;  // Harris: x_B >= -tol during i
 constexpr double kOptimalityTolerance = 1e-11;   // reduced cost >= -tol counts as optimal
 constexpr double kPivotTolerance = 1e-9;         // smallest |u_i| accepted as a pivot
 constexpr double kPhase1Tolerance = 1e-10;       // residual artificial mass that means infeasible
-constexpr double kCertifyPrimal = 1e-12;         // dual cleanup: x_B below this must leave
 constexpr double kCertifyBound = 1e-9;           // certified bound on |G - G*| (see certify)
 // Largest |B max(x_B, 0) - rhs| a certificate accepts. The bound's |y| * residual term alone is not
 // enough: it bounds how far G lies *above* the optimum (weak duality), but only a (nearly)
