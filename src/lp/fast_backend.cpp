@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <span>
+#include <tuple>
 #include <type_traits>
 
 #ifdef __AVX__
@@ -99,11 +100,6 @@ bool invert_fixed(Real a[kMaxRows][kMaxRows], Real inv[kMaxRows][kMaxRows], Real
   return true;
 }
 
-template <class Real>
-bool invert_small(int k, Real a[kMaxRows][kMaxRows], Real inv[kMaxRows][kMaxRows], Real singular) {
-  return with_row_count<kMaxRows>(k, [&](auto rows) { return invert_fixed<Real, decltype(rows)::value>(a, inv, singular); });
-}
-
 // std::lower_bound (strict: false) or std::upper_bound (strict: true) of z in an ascending grid,
 // started where z would be on a uniform grid (every grid here is) and corrected by steps, so the
 // answer is the same for any ascending grid and O(1) for ours; a warm start's bracket shifts
@@ -131,6 +127,9 @@ struct WarmBasis {
   int index[kMaxRows];
 };
 
+// K = m + 1 rows, fixed at compile time: every loop over rows or basis positions unrolls (at run
+// time k, the 5x5 products of the duals, the entering column and the pivot were ~20 % of an LP).
+template <int K>
 class FastSimplex {
  public:
   // at == nullptr: from scratch, and every basis is forgotten; otherwise the warm bases of the
@@ -180,7 +179,6 @@ class FastSimplex {
   void solve(const Problem& p, std::span<const WarmBasis* const> warm, Solution& s) {
     p_ = &p;
     priced_phase_ = -1;  // reduced_ belongs to the previous problem
-    k_ = p.rows;
     n_ = p.cols();
     g_ = p.grid_size();
     e_ = p.extra.size();
@@ -575,7 +573,7 @@ class FastSimplex {
     }
     // Partial pivoting; a pivot below 1e-13 of the largest entry means rank loss (the merely
     // ill-conditioned bases of tiny-valued columns, z^6 near 0, must still pass).
-    if (!invert_small<double>(k_, b, inv, 1e-13)) return false;
+    if (!invert_fixed<double, K>(b, inv, 1e-13)) return false;
     for (int i = 0; i < k_; ++i) {
       double v = 0;
       for (int r = 0; r < k_; ++r) v += (binv_[i][r] = inv[i][r]) * p_->rhs[r];
@@ -630,21 +628,15 @@ class FastSimplex {
   // min(0, min_j out_j), found in the same pass: with it, a pricing pass that finds no entering
   // column (every LP ends with one) and the double certificate need no second pass over out.
   double subtract_row_combination(const double* w, const double* base, double* out) const {
-    return with_row_count<kMaxRows>(k_, [&](auto rows) { return combine<decltype(rows)::value>(w, base, out); });
-  }
-
-  template <int K>
-  double combine(const double* w, const double* base, double* out) const {
     const double* rows[K];
     for (int r = 0; r < K; ++r) rows[r] = &p_->grid->values[size_t(r) * g_];
-    const double grid_smallest = combine_block<K>(w, rows, base, out, g_);
+    const double grid_smallest = combine_block(w, rows, base, out, g_);
     for (int r = 0; r < K; ++r) rows[r] = &p_->extra.values[size_t(r) * e_];
-    const double extra_smallest = combine_block<K>(w, rows, base ? base + g_ : nullptr, out + g_, e_);
+    const double extra_smallest = combine_block(w, rows, base ? base + g_ : nullptr, out + g_, e_);
     return extra_smallest < grid_smallest ? extra_smallest : grid_smallest;
   }
   // Each out_j is the chain base_j - w_0 a_0j - w_1 a_1j - ... in fused multiply-adds, as the
   // compiler contracts the scalar loop, so both paths give the same bits.
-  template <int K>
   static double combine_block(const double* w, const double* const* rows, const double* base,
                               double* out, int n) {
     double weight[K];
@@ -721,7 +713,7 @@ class FastSimplex {
       if (first >= 0 && !is_basic(first)) return first;
     }
     // Basic columns out of the race, then a vectorised minimum and the first index holding it.
-    double saved[kMaxRows];
+    double saved[kMaxRows] = {};
     for (int i = 0; i < k_; ++i)
       if (basis_[i] < n_) saved[i] = reduced_[basis_[i]], reduced_[basis_[i]] = 0;
     const double* d = reduced_.data();
@@ -1073,7 +1065,7 @@ class FastSimplex {
     long double factors[kMaxRows][kMaxRows], inv[kMaxRows][kMaxRows];
     for (int r = 0; r < k_; ++r)
       for (int i = 0; i < k_; ++i) factors[r][i] = basic_[i][r];
-    if (!invert_small<long double>(k_, factors, inv, 1e-14L)) return false;
+    if (!invert_fixed<long double, K>(factors, inv, 1e-14L)) return false;
     for (int i = 0; i < k_; ++i) {
       long double v = 0;
       for (int r = 0; r < k_; ++r) v += inv[i][r] * (long double)p_->rhs[r];
@@ -1188,7 +1180,8 @@ class FastSimplex {
   }
 
   const Problem* p_ = nullptr;
-  int k_ = 0, n_ = 0, g_ = 0, e_ = 0, composite_ = 0;
+  static constexpr int k_ = K;
+  int n_ = 0, g_ = 0, e_ = 0, composite_ = 0;
   int certificate_entering_ = -1;  // set by a failed precise certificate (solve_phase2)
   int phase_ = 1;
   int basis_[kMaxRows];
@@ -1227,7 +1220,7 @@ class FastBackend : public Backend {
           "the fast backend handles at most " + std::to_string(kMaxRows - 1) + " basis functions";
       return;
     }
-    simplex_.run(p, at, s);
+    with_row_count<kMaxRows>(p.rows, [&](auto rows) { std::get<rows() - 1>(simplices_).run(p, at, s); });
     if (s.status != ProblemStatus::Unstable) return;
     // The rare instance our simplex cannot certify goes to GLPK, and its answer is accepted only
     // if the independent KKT checker certifies it, with its first-order error bound, and its
@@ -1248,7 +1241,10 @@ class FastBackend : public Backend {
     if (reference.status == ProblemStatus::Infeasible && p.start_support.empty()) s = std::move(reference);
   }
 
-  FastSimplex simplex_;
+  // One simplex per row count (each keeps the warm bases of its own problems).
+  std::tuple<FastSimplex<1>, FastSimplex<2>, FastSimplex<3>, FastSimplex<4>, FastSimplex<5>, FastSimplex<6>,
+             FastSimplex<7>, FastSimplex<8>>
+      simplices_;
   std::unique_ptr<Backend> glpk_;
 };
 
