@@ -53,6 +53,7 @@ constexpr int kDegenerateBeforeBland = 24;       // degenerate pivots in a row b
 constexpr int kLaterTryRounds = 6;
 constexpr int kGuidedSteps = 8;                  // certificate-guided steps per LP (solve_phase2)
 constexpr int kWarmTries = 5;                    // warm bases tried before the composite repair
+constexpr double kHopelessWeight = 10;           // a warm try with a weight below -10 is given up
 
 // In-place LU with partial pivoting and inverse for k <= 8, in long double for the certificate's
 // last resort: when the double inverse cannot refine x_B and y (cond(B) of boundary instances
@@ -309,10 +310,12 @@ class FastSimplex {
   // than that (its position is their weighted mean, an extrapolation while one weight is
   // negative), both move at once to the two points of I around it: a node that travelled many
   // cells since the previous fragment took as many shifts. False, with the basis unchanged, when
-  // there is no such point or the exchange would be (nearly) singular.
+  // there is no such point, the exchange would be (nearly) singular, or the start is hopeless.
   bool shift_bracket(int i) {
     const int j = basis_[i];
-    if (j >= n_) return false;
+    // Weights are probabilities: one below -kHopelessWeight means a basis far from any feasible
+    // one, and shifts from such starts nearly always ran out of rounds.
+    if (j >= n_ || x_[i] < -kHopelessWeight) return false;
     const double z = p_->point(j);
     int partner = -1;
     double gap = std::numeric_limits<double>::infinity();
@@ -323,15 +326,16 @@ class FastSimplex {
     const double from = p_->point(basis_[partner]), direction = from > z ? 1.0 : -1.0;
     const int next = point_beyond(from, direction);
     if (next < 0) return false;
+    // A pair whose weights sum to <= 0 stands for no node: a shift only drags the negative weight
+    // along, a cell a round (seen in most starts that ran out of rounds). The try fails at once.
     const double mass = x_[i] + x_[partner];
-    if (mass > 0) {
-      const double node = (x_[i] * z + x_[partner] * from) / mass;
-      if ((node - p_->point(next)) * direction > 0) {
-        const int far = point_beyond(node, direction), near = point_beyond(node, -direction);
-        if (far >= 0 && near >= 0 && near != far && exchange(i, far)) {
-          exchange(partner, near);  // if refused (basic, or singular), the first half still helps
-          return true;
-        }
+    if (!(mass > 0)) return false;
+    const double node = (x_[i] * z + x_[partner] * from) / mass;
+    if ((node - p_->point(next)) * direction > 0) {
+      const int far = point_beyond(node, direction), near = point_beyond(node, -direction);
+      if (far >= 0 && near >= 0 && near != far && exchange(i, far)) {
+        exchange(partner, near);  // if refused (basic, or singular), the first half still helps
+        return true;
       }
     }
     return exchange(i, next);
