@@ -194,6 +194,8 @@ class FastSimplex {
     cost_.resize(n_);
     const auto& grid = p.grid->points;
     const int in_front = grid_bound(grid, p.zf, false);
+    zf_cell_ = in_front;
+    cell_scale_ = grid.back() > grid.front() ? (g_ - 1) / (grid.back() - grid.front()) : 0.0;
     std::fill(cost_.begin(), cost_.begin() + in_front, 1.0);
     std::fill(cost_.begin() + in_front, cost_.begin() + g_, 0.0);
     for (int e = 0; e < e_; ++e) cost_[g_ + e] = p.extra.points[e] < p.zf ? 1.0 : 0.0;
@@ -599,7 +601,7 @@ class FastSimplex {
     dual_values(y_);
     reduced_costs();
   }
-  void dual_values(double* y) const {
+  void dual_values(double* y, bool refined = true) const {
     double basic_cost[kMaxRows], misfit[kMaxRows];
     for (int i = 0; i < k_; ++i) basic_cost[i] = cost(basis_[i]);
     for (int r = 0; r < k_; ++r) {
@@ -607,6 +609,7 @@ class FastSimplex {
       for (int i = 0; i < k_; ++i) v += basic_cost[i] * binv_[i][r];
       y[r] = v;
     }
+    if (!refined) return;
     for (int i = 0; i < k_; ++i) {  // c_B - B^T y
       double v = basic_cost[i];
       for (int r = 0; r < k_; ++r) v -= basic_[i][r] * y[r];
@@ -739,9 +742,9 @@ class FastSimplex {
   // Dantzig choice, or -1 when none has a reduced cost below the tolerance. reduced_ then holds
   // stale values elsewhere, so the next full pass or certificate prices afresh.
   int enter_from_candidates() {
-    dual_values(y_);
+    dual_values(y_, false);  // unrefined: these duals only choose a column
     priced_phase_ = -1;
-    const auto& grid = p_->grid->points;
+    const double lo = p_->grid->points.front();
     // Grid segments [begin, end) around the basic points and z_f, merged (at most k + 1).
     int begin[kMaxRows + 1], end[kMaxRows + 1], segments = 0;
     const int cells = std::max(kCandidateCells, g_ / 16);
@@ -754,9 +757,9 @@ class FastSimplex {
     for (int i = 0; i < k_; ++i) {
       const int j = basis_[i];
       if (j < g_) add(j);
-      else if (j < n_) add(grid_bound(grid, p_->point(j), false));
+      else if (j < n_) add(std::clamp(int((p_->point(j) - lo) * cell_scale_), 0, g_ - 1));  // a centre, not a bound
     }
-    add(grid_bound(grid, p_->zf, false));
+    add(zf_cell_);
     int merged = 0;
     for (int q = 0; q < segments; ++q) {
       if (merged > 0 && begin[q] <= end[merged - 1]) {
@@ -1259,6 +1262,8 @@ class FastSimplex {
   double basic_[kMaxRows][kMaxRows];  // basic_[i] = column basis_[i] (kept by refactor and pivot)
   double composite_cost_ = 0;
   int updates_ = 0;
+  int zf_cell_ = 0;         // grid points in front of z_f (solve)
+  double cell_scale_ = 0;   // grid cells per unit of z
   BasisState usable_basis_;  // solve_from_previous_basis: the first usable warm try
   double priced_y_[kMaxRows] = {};  // the duals reduced_ was computed with, in priced_phase_
   int priced_phase_ = -1;
