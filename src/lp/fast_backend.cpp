@@ -739,8 +739,10 @@ class FastSimplex {
   // function of z, zero and minimal at the basic points of an optimal basis; after a warm start the
   // columns that enter are mostly near them). The candidates: every extra column (the kernel's
   // depths and z_f) and the grid within kCandidateCells cells of each basic point and of z_f. Their
-  // Dantzig choice, or -1 when none has a reduced cost below the tolerance. reduced_ then holds
-  // stale values elsewhere, so the next full pass or certificate prices afresh.
+  // Dantzig choice, or -1 when none has a reduced cost below the tolerance, or when the
+  // candidates are more than half the columns. reduced_ then holds stale values elsewhere, so the
+  // next full pass or certificate prices afresh. Measured on lp_bench's runs (interleaved
+  // repetitions): 1.25x the throughput at grid 1024; at 256 the windows cover most of the grid.
   int enter_from_candidates() {
     dual_values(y_, false);  // unrefined: these duals only choose a column
     priced_phase_ = -1;
@@ -749,7 +751,8 @@ class FastSimplex {
     int begin[kMaxRows + 1], end[kMaxRows + 1], segments = 0;
     const int cells = std::max(kCandidateCells, g_ / 16);
     auto add = [&](int at) {
-      int b = std::max(0, at - cells), e = std::min(g_, at + cells + 1);
+      // Whole blocks of four: the vectorised loop then needs no scalar tail.
+      int b = std::max(0, at - cells) & ~3, e = std::min(g_, (at + cells + 4) & ~3);
       int q = segments++;
       for (; q > 0 && begin[q - 1] > b; --q) begin[q] = begin[q - 1], end[q] = end[q - 1];
       begin[q] = b, end[q] = e;
@@ -768,6 +771,10 @@ class FastSimplex {
         begin[merged] = begin[q], end[merged] = end[q], ++merged;
       }
     }
+    int candidates = e_;
+    for (int q = 0; q < merged; ++q) candidates += end[q] - begin[q];
+    // More than half the columns: a full pass costs hardly more (no segments, one reduction).
+    if (2 * candidates > n_) return -1;
     double largest_dual = 0;
     for (int r = 0; r < k_; ++r) largest_dual = std::max(largest_dual, std::abs(y_[r]));
     const double tolerance = std::max(kOptimalityTolerance, 1e-15 * largest_dual);
