@@ -744,7 +744,7 @@ class FastSimplex {
   // next full pass or certificate prices afresh. Measured on lp_bench's runs (interleaved
   // repetitions): 1.25x the throughput at grid 1024; at 256 the windows cover most of the grid.
   int enter_from_candidates() {
-    dual_values(y_, false);  // unrefined: these duals only choose a column
+    dual_values(y_);
     priced_phase_ = -1;
     const double lo = p_->grid->points.front();
     // Grid segments [begin, end) around the basic points and z_f, merged (at most k + 1).
