@@ -53,12 +53,12 @@ constexpr int kDegenerateBeforeBland = 24;       // degenerate pivots in a row b
 constexpr int kLaterTryRounds = 6;
 constexpr int kGuidedSteps = 8;                  // certificate-guided steps per LP (solve_phase2)
 constexpr int kWarmTries = 5;                    // warm bases tried before the composite repair
-constexpr double kHopelessWeight = 10;
+constexpr double kHopelessWeight = 10;          // a warm try with a weight below -10 is given up
 // Partial pricing: grid cells each side of a basic point, 1/16 of the grid but at least 8. On the
 // default dataset's runs (lp_bench) that needs fewer pivots than full Dantzig pricing (2.54 vs 2.71
 // at grid 256, 3.07 vs 3.24 at 1024: the steepest column anywhere is often a poor one); 1/32 needed
 // more (2.91 and 3.54), a fixed 8 cells 7.1 at grid 1024.
-constexpr int kCandidateCells = 8;           // a warm try with a weight below -10 is given up
+constexpr int kCandidateCells = 8;
 
 // In-place LU with partial pivoting and inverse for k <= 8, in long double for the certificate's
 // last resort: when the double inverse cannot refine x_B and y (cond(B) of boundary instances
@@ -601,7 +601,7 @@ class FastSimplex {
     dual_values(y_);
     reduced_costs();
   }
-  void dual_values(double* y, bool refined = true) const {
+  void dual_values(double* y) const {
     double basic_cost[kMaxRows], misfit[kMaxRows];
     for (int i = 0; i < k_; ++i) basic_cost[i] = cost(basis_[i]);
     for (int r = 0; r < k_; ++r) {
@@ -609,7 +609,6 @@ class FastSimplex {
       for (int i = 0; i < k_; ++i) v += basic_cost[i] * binv_[i][r];
       y[r] = v;
     }
-    if (!refined) return;
     for (int i = 0; i < k_; ++i) {  // c_B - B^T y
       double v = basic_cost[i];
       for (int r = 0; r < k_; ++r) v -= basic_[i][r] * y[r];
