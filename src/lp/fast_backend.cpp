@@ -640,9 +640,9 @@ class FastSimplex {
   // column (every LP ends with one) and the double certificate need no second pass over out.
   double subtract_row_combination(const double* w, const double* base, double* out) const {
     const double* rows[K];
-    for (int r = 0; r < K; ++r) rows[r] = &p_->grid->values[size_t(r) * g_];
+    for (int r = 0; r < K; ++r) rows[r] = p_->grid->values.data() + size_t(r) * g_;
     const double grid_smallest = combine_block(w, rows, base, out, g_);
-    for (int r = 0; r < K; ++r) rows[r] = &p_->extra.values[size_t(r) * e_];
+    for (int r = 0; r < K; ++r) rows[r] = p_->extra.values.data() + size_t(r) * e_;  // data(): the block may be empty
     const double extra_smallest = combine_block(w, rows, base ? base + g_ : nullptr, out + g_, e_);
     return extra_smallest < grid_smallest ? extra_smallest : grid_smallest;
   }
@@ -786,10 +786,10 @@ class FastSimplex {
       if (least < smallest) smallest = least, where = first, length = count;
     };
     for (int q = 0; q < merged; ++q) {
-      for (int r = 0; r < K; ++r) rows[r] = &p_->grid->values[size_t(r) * g_ + begin[q]];
+      for (int r = 0; r < K; ++r) rows[r] = p_->grid->values.data() + size_t(r) * g_ + begin[q];
       price_segment(begin[q], end[q] - begin[q], rows);
     }
-    for (int r = 0; r < K; ++r) rows[r] = &p_->extra.values[size_t(r) * e_];
+    for (int r = 0; r < K; ++r) rows[r] = p_->extra.values.data() + size_t(r) * e_;  // data(): the block may be empty
     price_segment(g_, e_, rows);
     if (!(smallest < -tolerance)) return -1;
     const int first = where + first_holding(reduced_.data() + where, length, smallest);
