@@ -703,21 +703,26 @@ class FastSimplex {
     return smallest;
   }
 
-  // Dantzig (or Bland) over non-basic columns. The tolerance grows with |y|: with |y| ~ 1e8
-  // (narrow kernels) reduced costs carry ~1e-16 |y| of rounding, and basic columns would look
-  // attractive; the precise certificate, not this tolerance, decides optimality.
-  int choose_entering(bool bland) {
+  // The reduced cost below which a column may enter, for the duals y_. It grows with |y|: with
+  // |y| ~ 1e8 (narrow kernels) reduced costs carry ~1e-16 |y| of rounding, and basic columns would
+  // look attractive; the precise certificate, not this tolerance, decides optimality.
+  double entering_tolerance() const {
     double largest_dual = 0;
     for (int r = 0; r < k_; ++r) largest_dual = std::max(largest_dual, std::abs(y_[r]));
-    const double tolerance = std::max(kOptimalityTolerance, 1e-15 * largest_dual);
+    return std::max(kOptimalityTolerance, 1e-15 * largest_dual);
+  }
+
+  // Dantzig (or Bland) over non-basic columns, with reduced_ fresh for y_.
+  int choose_entering(bool bland) {
+    const double tolerance = entering_tolerance();
     if (bland) {
       for (int j = 0; j < n_; ++j)
         if (reduced_[j] < -tolerance && !is_basic(j)) return j;
       return -1;
     }
-    // Fresh from price(): the smallest reduced cost over all columns decides, and when the first
-    // column holding it is not basic it is the one Dantzig enters (no basic column comes before it
-    // with that value, so excluding the basic ones would find the same).
+    // Fresh from a full pass: the smallest reduced cost over all columns decides, and when the
+    // first column holding it is not basic it is the one Dantzig enters (no basic column comes
+    // before it with that value, so excluding the basic ones would find the same).
     if (!(priced_smallest_ < -tolerance)) return -1;
     {
       const int first = first_holding(reduced_.data(), n_, priced_smallest_);
@@ -742,7 +747,8 @@ class FastSimplex {
   // candidates are more than half the columns. reduced_ then holds stale values elsewhere, so the
   // next full pass or certificate prices afresh. Measured on lp_bench's runs (interleaved
   // repetitions): 1.25x the throughput at grid 1024; at 256 the windows cover most of the grid.
-  int enter_from_candidates(bool& duals_fresh) {
+  // y_ must be the current basis's duals.
+  int enter_from_candidates() {
     const double lo = p_->grid->points.front();
     // Grid segments [begin, end) around the basic points and z_f, merged (at most k + 1).
     int begin[kMaxRows + 1], end[kMaxRows + 1], segments = 0;
@@ -772,12 +778,8 @@ class FastSimplex {
     for (int q = 0; q < merged; ++q) candidates += end[q] - begin[q];
     // More than half the columns: a full pass costs hardly more (no segments, one reduction).
     if (2 * candidates > n_) return -1;
-    dual_values(y_);
-    duals_fresh = true;
     priced_phase_ = -1;
-    double largest_dual = 0;
-    for (int r = 0; r < k_; ++r) largest_dual = std::max(largest_dual, std::abs(y_[r]));
-    const double tolerance = std::max(kOptimalityTolerance, 1e-15 * largest_dual);
+    const double tolerance = entering_tolerance();
     const double* rows[K];
     double smallest = 0;
     int where = -1, length = 0;  // the first segment (in column order) holding the smallest
@@ -845,10 +847,9 @@ class FastSimplex {
       bool bland = degenerate >= kDegenerateBeforeBland;
       // Candidates first (phase 2 only): only when none of them may enter does a full pass decide,
       // so every run still ends with one, and optimality is never judged on the candidates.
-      bool duals_fresh = false;  // y_ is this basis's already (the candidates computed it)
-      int entering = phase_ == 2 && !bland ? enter_from_candidates(duals_fresh) : -1;
+      dual_values(y_);  // once per iteration, for the candidates and the full pass alike
+      int entering = phase_ == 2 && !bland ? enter_from_candidates() : -1;
       if (entering < 0) {
-        if (!duals_fresh) dual_values(y_);
         reduced_costs();
         entering = choose_entering(bland);
       }
