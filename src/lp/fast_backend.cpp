@@ -742,15 +742,14 @@ class FastSimplex {
   // Partial pricing (REFERENCE §2: on each side of z_f the reduced cost c - y.a(z) is a smooth
   // function of z, zero and minimal at the basic points of an optimal basis; after a warm start the
   // columns that enter are mostly near them). The candidates: every extra column (the kernel's
-  // depths and z_f) and the grid within kCandidateCells cells of each basic point and of z_f. Their
-  // Dantzig choice, or -1 when none has a reduced cost below the tolerance, or when the
-  // candidates are more than half the columns. reduced_ then holds stale values elsewhere, so the
-  // next full pass or certificate prices afresh. Measured on lp_bench's runs (interleaved
-  // repetitions): 1.25x the throughput at grid 1024; at 256 the windows cover most of the grid.
-  // y_ must be the current basis's duals.
-  int enter_from_candidates() {
+  // depths and z_f) and the grid within kCandidateCells cells of each basic point and of z_f, as
+  // merged grid segments [begin, end) in column order. False when the candidates are more than
+  // half the columns: a full pass then costs hardly more (no segments, one reduction).
+  struct Windows {
+    int begin[kMaxRows + 1], end[kMaxRows + 1], count = 0;
+  };
+  bool candidate_windows(Windows& w) const {
     const double lo = p_->grid->points.front();
-    // Grid segments [begin, end) around the basic points and z_f, merged (at most k + 1).
     int begin[kMaxRows + 1], end[kMaxRows + 1], segments = 0;
     const int cells = std::max(kCandidateCells, g_ / 16);
     auto add = [&](int at) {
@@ -766,35 +765,62 @@ class FastSimplex {
       else if (j < n_) add(std::clamp(int((p_->point(j) - lo) * cell_scale_), 0, g_ - 1));  // a centre, not a bound
     }
     add(zf_cell_);
-    int merged = 0;
+    w.count = 0;
     for (int q = 0; q < segments; ++q) {
-      if (merged > 0 && begin[q] <= end[merged - 1]) {
-        end[merged - 1] = std::max(end[merged - 1], end[q]);
+      if (w.count > 0 && begin[q] <= w.end[w.count - 1]) {
+        w.end[w.count - 1] = std::max(w.end[w.count - 1], end[q]);
       } else {
-        begin[merged] = begin[q], end[merged] = end[q], ++merged;
+        w.begin[w.count] = begin[q], w.end[w.count] = end[q], ++w.count;
       }
     }
     int candidates = e_;
-    for (int q = 0; q < merged; ++q) candidates += end[q] - begin[q];
-    // More than half the columns: a full pass costs hardly more (no segments, one reduction).
-    if (2 * candidates > n_) return -1;
+    for (int q = 0; q < w.count; ++q) candidates += w.end[q] - w.begin[q];
+    return 2 * candidates <= n_;
+  }
+
+  // The candidates' Dantzig choice, pricing only them, or -1 when none has a reduced cost below
+  // the tolerance or there are too many. reduced_ then holds stale values elsewhere, so the next
+  // full pass or certificate prices afresh. Measured on lp_bench's runs (interleaved repetitions):
+  // 1.25x the throughput at grid 1024; at 256 the windows cover most of the grid.
+  // y_ must be the current basis's duals.
+  int enter_from_candidates() {
+    Windows w;
+    if (!candidate_windows(w)) return -1;
     priced_phase_ = -1;
-    const double tolerance = entering_tolerance();
     const double* rows[K];
-    double smallest = 0;
-    int where = -1, length = 0;  // the first segment (in column order) holding the smallest
-    auto price_segment = [&](int first, int count, const double* const* values) {
-      const double least = combine_block(y_, values, cost_.data() + first, reduced_.data() + first, count);
-      if (least < smallest) smallest = least, where = first, length = count;
-    };
-    for (int q = 0; q < merged; ++q) {
-      for (int r = 0; r < K; ++r) rows[r] = p_->grid->values.data() + size_t(r) * g_ + begin[q];
-      price_segment(begin[q], end[q] - begin[q], rows);
+    Choice best;
+    for (int q = 0; q < w.count; ++q) {
+      for (int r = 0; r < K; ++r) rows[r] = p_->grid->values.data() + size_t(r) * g_ + w.begin[q];
+      best.offer(combine_block(y_, rows, cost_.data() + w.begin[q], reduced_.data() + w.begin[q], w.end[q] - w.begin[q]),
+                 w.begin[q], w.end[q] - w.begin[q]);
     }
     for (int r = 0; r < K; ++r) rows[r] = p_->extra.values.data() + size_t(r) * e_;  // data(): the block may be empty
-    price_segment(g_, e_, rows);
-    if (!(smallest < -tolerance)) return -1;
-    const int first = where + first_holding(reduced_.data() + where, length, smallest);
+    best.offer(combine_block(y_, rows, cost_.data() + g_, reduced_.data() + g_, e_), g_, e_);
+    return chosen(best);
+  }
+  // The same choice from reduced_ fresh from a full pass (no arithmetic, the same bits): the first
+  // iteration after a start prices every column first, since most warm starts are optimal already
+  // (71 % of lp_bench's LPs need no pivot) and then the candidate pass was wasted.
+  int enter_within_windows() {
+    Windows w;
+    if (!candidate_windows(w)) return -1;
+    Choice best;
+    for (int q = 0; q < w.count; ++q)
+      best.offer(smallest_of(reduced_.data() + w.begin[q], w.end[q] - w.begin[q]), w.begin[q], w.end[q] - w.begin[q]);
+    best.offer(smallest_of(reduced_.data() + g_, e_), g_, e_);
+    return chosen(best);
+  }
+  // The smallest reduced cost of the candidate blocks offered so far and the first block holding it.
+  struct Choice {
+    double smallest = 0;
+    int where = -1, length = 0;
+    void offer(double least, int first, int count) {
+      if (least < smallest) smallest = least, where = first, length = count;
+    }
+  };
+  int chosen(const Choice& best) const {
+    if (!(best.smallest < -entering_tolerance())) return -1;
+    const int first = best.where + first_holding(reduced_.data() + best.where, best.length, best.smallest);
     // A basic column (rounding) holding the smallest: leave it to the full pass.
     return is_basic(first) ? -1 : first;
   }
@@ -845,13 +871,16 @@ class FastSimplex {
     for (int guard = 0; guard < limit; ++guard) {
       if (updates_ >= kRefactorInterval && !refactor()) return false;
       bool bland = degenerate >= kDegenerateBeforeBland;
-      // Candidates first (phase 2 only): only when none of them may enter does a full pass decide,
-      // so every run still ends with one, and optimality is never judged on the candidates.
+      // Candidates first (phase 2 only, after the first iteration: see enter_within_windows): only
+      // when none of them may enter does a full pass decide, so every run still ends with one, and
+      // optimality is never judged on the candidates.
       dual_values(y_);  // once per iteration, for the candidates and the full pass alike
-      int entering = phase_ == 2 && !bland ? enter_from_candidates() : -1;
+      const bool partial = phase_ == 2 && !bland;
+      int entering = partial && guard > 0 ? enter_from_candidates() : -1;
       if (entering < 0) {
         reduced_costs();
-        entering = choose_entering(bland);
+        if (partial && guard == 0 && priced_smallest_ < 0) entering = enter_within_windows();
+        if (entering < 0) entering = choose_entering(bland);
       }
       if (entering < 0) return true;
       double u[kMaxRows];
