@@ -126,7 +126,6 @@ int grid_bound(const std::vector<double>& grid, double z, bool strict) {
 // kernel sees a nearby surface at the same offset), z_f's column and the composite column by role.
 enum class Role { Grid, Tap, Zf, Composite };
 struct WarmBasis {
-  bool valid = false;
   double zf = 0;
   int rows = 0, grid = 0;
   Role role[kMaxRows];
@@ -138,46 +137,52 @@ struct WarmBasis {
 template <int K>
 class FastSimplex {
  public:
+  FastSimplex() { std::fill(std::begin(lane_zf_), std::end(lane_zf_), std::numeric_limits<double>::quiet_NaN()); }
+
   // at == nullptr: from scratch, and every basis is forgotten; otherwise the warm bases of the
   // texel to the left and of the texel above are tried first (Backend::solve_next).
   void run(const Problem& p, const WarmPosition* at, Solution& s) {
+    constexpr double kNone = std::numeric_limits<double>::quiet_NaN();  // no basis
     if (!at) {
-      for (auto& w : lanes_) w.valid = false;
-      for (auto& w : above_) w.valid = false;
+      std::fill(std::begin(lane_zf_), std::end(lane_zf_), kNone);
+      std::fill(above_zf_.begin(), above_zf_.end(), kNone);
     }
     const int layer = at ? std::clamp(at->layer, 0, kWarmLanes - 1) : 0;
     const int column = at ? at->column : -1;
-    if (column >= 0 && size_t(column + 1) * kWarmLanes > above_.size())
+    if (column >= 0 && size_t(column + 1) * kWarmLanes > above_.size()) {
       above_.resize(size_t(column + 1) * kWarmLanes);
+      above_zf_.resize(above_.size(), kNone);
+    }
     // Warm bases to try, closest z_f first: layers of neighbouring texels do not always count the
     // same surfaces, so the fragment's own lane is not always the best guess, and where the
     // surfaces change from left to right (a silhouette along the column) the texel above often
     // still sees the same ones: with it, a third fewer LPs need the composite repair.
-    const WarmBasis* pool[2 * kWarmLanes];
-    int pooled = 0;
-    if (at) {
-      for (const auto& w : lanes_) pool[pooled++] = &w;
-      if (column >= 0)
-        for (int l = 0; l < kWarmLanes; ++l) pool[pooled++] = &above_[size_t(column) * kWarmLanes + l];
-    }
-    // The kWarmTries closest in one pass (insertion into a short sorted list; ties keep pool
-    // order, as repeated minimum searches did).
+    // The kWarmTries closest in one pass over the compact z_f arrays (insertion into a short
+    // sorted list; ties keep lanes before the row above, each in lane order).
     const WarmBasis* tries[kWarmTries];
     double distance[kWarmTries];
     int count = 0;
-    for (int l = 0; l < pooled; ++l) {
-      if (!pool[l]->valid) continue;
-      const double d = std::abs(pool[l]->zf - p.zf);
-      if (count == kWarmTries && !(d < distance[kWarmTries - 1])) continue;
-      int slot = count < kWarmTries ? count++ : kWarmTries - 1;
-      for (; slot > 0 && d < distance[slot - 1]; --slot) tries[slot] = tries[slot - 1], distance[slot] = distance[slot - 1];
-      tries[slot] = pool[l];
-      distance[slot] = d;
+    auto offer = [&](const double* zf, const WarmBasis* bases) {
+      for (int l = 0; l < kWarmLanes; ++l) {
+        const double d = std::abs(zf[l] - p.zf);
+        if (!(count < kWarmTries ? d == d : d < distance[kWarmTries - 1])) continue;  // NaN: no basis
+        int slot = count < kWarmTries ? count++ : kWarmTries - 1;
+        for (; slot > 0 && d < distance[slot - 1]; --slot) tries[slot] = tries[slot - 1], distance[slot] = distance[slot - 1];
+        tries[slot] = bases + l;
+        distance[slot] = d;
+      }
+    };
+    if (at) {
+      offer(lane_zf_, lanes_);
+      if (column >= 0) offer(&above_zf_[size_t(column) * kWarmLanes], &above_[size_t(column) * kWarmLanes]);
     }
     s.reset();
     solve(p, std::span<const WarmBasis* const>(tries, count), s);
-    remember_basis(s, lanes_[layer]);
-    if (column >= 0) remember_basis(s, above_[size_t(column) * kWarmLanes + layer]);
+    lane_zf_[layer] = remember_basis(s, lanes_[layer]);
+    if (column >= 0) {
+      const size_t slot = size_t(column) * kWarmLanes + layer;
+      above_zf_[slot] = remember_basis(s, above_[slot]);
+    }
   }
 
  private:
@@ -190,6 +195,7 @@ class FastSimplex {
     e_ = p.extra.size();
     composite_ = n_ + k_;
     reduced_.resize(n_);
+    window_bits_.resize(((g_ + 3) / 4 + 63) / 64);
     // Costs once per problem: the grid is ascending, so its cost is a prefix of ones.
     cost_.resize(n_);
     const auto& grid = p.grid->points;
@@ -257,9 +263,10 @@ class FastSimplex {
 
   bool is_artificial(int j) const { return j >= n_ && j < n_ + k_; }
 
-  void remember_basis(const Solution& s, WarmBasis& warm) {
-    warm.valid = s.status == ProblemStatus::Optimal && s.call == CallStatus::Ok && phase_ == 2;
-    if (!warm.valid) return;
+  // Into `warm`; its z_f for run's selection, NaN when the basis cannot be carried over.
+  double remember_basis(const Solution& s, WarmBasis& warm) {
+    constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+    if (!(s.status == ProblemStatus::Optimal && s.call == CallStatus::Ok && phase_ == 2)) return kNone;
     warm.rows = k_;
     warm.grid = g_;
     warm.zf = p_->zf;
@@ -274,8 +281,9 @@ class FastSimplex {
       else if (j < n_ && !p_->extra_tap.empty() && p_->extra_tap[j - g_] >= 0)
         warm.role[i] = Role::Tap, warm.index[i] = p_->extra_tap[j - g_];
       else
-        warm.valid = false;  // an extra point without a tap (from_moments): nothing to map
+        return kNone;  // an extra point without a tap (from_moments): nothing to map
     }
+    return warm.zf;
   }
 
   bool start_from_previous_basis(const WarmBasis& warm, int rounds) {
@@ -748,16 +756,22 @@ class FastSimplex {
   struct Windows {
     int begin[kMaxRows + 1], end[kMaxRows + 1], count = 0;
   };
-  bool candidate_windows(Windows& w) const {
+  bool candidate_windows(Windows& w) {
     const double lo = p_->grid->points.front();
-    int begin[kMaxRows + 1], end[kMaxRows + 1], segments = 0;
     const int cells = std::max(kCandidateCells, g_ / 16);
+    // The windows as bits, one a block of four grid columns, so that sorting and merging them is
+    // a scan of a few words (sorted and merged one by one, they were ~8 % of an LP: mispredicted
+    // branches). Whole blocks of four: the vectorised loop then needs no scalar tail.
+    uint64_t* bits = window_bits_.data();
+    const int words = int(window_bits_.size());
+    std::fill(bits, bits + words, 0);
     auto add = [&](int at) {
-      // Whole blocks of four: the vectorised loop then needs no scalar tail.
-      int b = std::max(0, at - cells) & ~3, e = std::min(g_, (at + cells + 4) & ~3);
-      int q = segments++;
-      for (; q > 0 && begin[q - 1] > b; --q) begin[q] = begin[q - 1], end[q] = end[q - 1];
-      begin[q] = b, end[q] = e;
+      const int first = std::max(0, at - cells) >> 2, last = (std::min(g_, (at + cells + 4) & ~3) + 3) >> 2;
+      for (int block = first; block < last;) {  // blocks [first, last), a word at a time
+        const int word = block >> 6, from = block & 63, to = std::min(64, from + (last - block));
+        bits[word] |= (to == 64 ? ~uint64_t(0) : (uint64_t(1) << to) - 1) & ~((uint64_t(1) << from) - 1);
+        block += to - from;
+      }
     };
     for (int i = 0; i < k_; ++i) {
       const int j = basis_[i];
@@ -765,14 +779,24 @@ class FastSimplex {
       else if (j < n_) add(std::clamp(int((p_->point(j) - lo) * cell_scale_), 0, g_ - 1));  // a centre, not a bound
     }
     add(zf_cell_);
+    // Runs of set bits are the merged segments, in column order (windows that touch merge too).
     w.count = 0;
-    for (int q = 0; q < segments; ++q) {
-      if (w.count > 0 && begin[q] <= w.end[w.count - 1]) {
-        w.end[w.count - 1] = std::max(w.end[w.count - 1], end[q]);
-      } else {
-        w.begin[w.count] = begin[q], w.end[w.count] = end[q], ++w.count;
+    int open = -1;  // the first block of the run being scanned
+    for (int word = 0; word < words; ++word) {
+      const uint64_t v = bits[word];
+      for (int at = 0; at < 64;) {
+        const uint64_t rest = (open < 0 ? v : ~v) >> at;  // the next set bit, or the next clear one
+        if (!rest) break;
+        at += __builtin_ctzll(rest);
+        if (open < 0) {
+          open = 64 * word + at;
+        } else {
+          w.begin[w.count] = 4 * open, w.end[w.count] = std::min(g_, 4 * (64 * word + at)), ++w.count;
+          open = -1;
+        }
       }
     }
+    if (open >= 0) w.begin[w.count] = 4 * open, w.end[w.count] = g_, ++w.count;
     int candidates = e_;
     for (int q = 0; q < w.count; ++q) candidates += w.end[q] - w.begin[q];
     return 2 * candidates <= n_;
@@ -1308,8 +1332,13 @@ class FastSimplex {
   int priced_phase_ = -1;
   double priced_smallest_ = 0;  // min(0, min_j reduced_[j]), set with reduced_
   std::vector<double> reduced_, alpha_, cost_;
+  std::vector<uint64_t> window_bits_;  // candidate_windows' scratch: a bit a block of four grid columns
   WarmBasis lanes_[kWarmLanes];          // by layer: the texel to the left
   std::vector<WarmBasis> above_;         // by column and layer: the row above
+  // Their z_f, NaN where there is no basis: the selection reads these alone (a WarmBasis spans
+  // ~80 bytes, and the 16 of a selection were ~8 % of a warm LP's time).
+  double lane_zf_[kWarmLanes];
+  std::vector<double> above_zf_;
 };
 
 class FastBackend : public Backend {
