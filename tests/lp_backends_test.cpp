@@ -228,7 +228,7 @@ TEST(LpWarmStart, RunsOfNeighbouringFragmentsGiveTheColdAnswers) {
         kernel_distribution(v.map, settings.kernel, x, y, depths, weights);
         const Problem p = factory.from_distribution(depths, weights, zf);
         const Solution a = cold->solve(p);
-        const Solution b = first ? warm->solve(p) : warm->solve_next(p, {v.fragments.layer[k], x});
+        const Solution b = first ? warm->solve(p) : warm->solve_next(p, {v.fragments.layer[k], x, y});
         run = warm_run_of(t, v.map.width);
         cold_pivots += a.iterations;
         warm_pivots += b.iterations;

@@ -90,7 +90,7 @@ CandidateResult CandidateEvaluator::evaluate(const Basis& basis) const {
             }
             factory.from_distribution(tap_depth, tap_weight, tap_column, zf, problem);
           }
-          const lp::WarmPosition at{view.fragments.layer[f], x};
+          const lp::WarmPosition at{view.fragments.layer[f], x, y};
           backend->solve_into(problem, i == run_begin[run] ? nullptr : &at, s);
           if (s.call == lp::CallStatus::Ok && s.status == lp::ProblemStatus::Optimal) {
             g[f] = std::clamp(s.G, 0.0, 1.0);

@@ -60,6 +60,7 @@ TechniqueResult evaluate_technique(const ViewData& view, const std::string& tech
         in.fragment = k;
         in.layer = f.layer[k];
         in.column = int(texel % f.width);
+        in.row = int(texel / f.width);
         in.run = lp::warm_run_of(texel, f.width);
         if (needs_distribution) {
           kernel_distribution(view.map, settings.kernel, int(texel % f.width), int(texel / f.width), depths, weights);

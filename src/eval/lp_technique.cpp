@@ -28,7 +28,7 @@ class LpTechnique : public Technique {
     lp::Problem problem = factory_.from_distribution(in.kernel_depths, in.kernel_weights, in.zf);
     // Along a warm-start run (the same runs as the sweep's), continue from the neighbours' bases.
     const bool continues = in.run == last_run_ && in.fragment > last_fragment_;
-    const lp::WarmPosition at{in.layer, in.column};
+    const lp::WarmPosition at{in.layer, in.column, in.row};
     lp::Solution& s = solution_;
     backend_->solve_into(problem, continues ? &at : nullptr, s);
     last_fragment_ = in.fragment;

@@ -22,7 +22,7 @@ struct FragmentInput {
   // Where the fragment is in its view's fragment order, its layer, texel column and warm-start
   // run (lp::warm_run_of): LP techniques warm-start along runs of neighbouring fragments.
   size_t fragment = 0;
-  int layer = 0, column = 0, run = 0;
+  int layer = 0, column = 0, row = 0, run = 0;
 };
 
 // Every technique parameter, with the defaults of the eval options table.

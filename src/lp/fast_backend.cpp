@@ -128,6 +128,7 @@ enum class Role { Grid, Tap, Zf, Composite };
 struct WarmBasis {
   double zf = 0;
   int rows = 0, grid = 0;
+  int column = -1, row = -1;  // the texel it was solved at (WarmPosition), -1: unknown
   Role role[kMaxRows];
   int index[kMaxRows];
 };
@@ -177,6 +178,7 @@ class FastSimplex {
       if (column >= 0) offer(&above_zf_[size_t(column) * kWarmLanes], &above_[size_t(column) * kWarmLanes]);
     }
     s.reset();
+    at_ = at;
     solve(p, std::span<const WarmBasis* const>(tries, count), s);
     lane_zf_[layer] = remember_basis(s, lanes_[layer]);
     if (column >= 0) {
@@ -269,6 +271,8 @@ class FastSimplex {
     if (!(s.status == ProblemStatus::Optimal && s.call == CallStatus::Ok && phase_ == 2)) return kNone;
     warm.rows = k_;
     warm.grid = g_;
+    warm.column = at_ ? at_->column : -1;
+    warm.row = at_ ? at_->row : -1;
     warm.zf = p_->zf;
     for (int i = 0; i < k_; ++i) {
       const int j = basis_[i];
@@ -301,7 +305,7 @@ class FastSimplex {
           j = p_->zf_extra < 0 ? -1 : g_ + p_->zf_extra;
           break;
         case Role::Tap: {
-          const int t = warm.index[i];
+          const int t = texel_tap(warm, warm.index[i]);
           j = t < int(p_->tap_extra.size()) && p_->tap_extra[t] >= 0 ? g_ + p_->tap_extra[t] : -1;
           break;
         }
@@ -318,6 +322,19 @@ class FastSimplex {
       if (x_[worst] >= -kFeasibilityTolerance || !shift_bracket(worst)) break;
     }
     return true;
+  }
+
+  // The tap of this problem's kernel that sees the texel tap `t` of `warm`'s saw (taps in row-major
+  // order of a square kernel, as kernel_distribution lists them), so that the same depth, and so the
+  // same column, comes back; `t` itself when that texel is outside this kernel or either position
+  // is unknown (the same offset then sees a nearby surface).
+  int texel_tap(const WarmBasis& warm, int t) const {
+    const int taps = int(p_->tap_extra.size());
+    if (!at_ || at_->row < 0 || warm.row < 0 || warm.column < 0 || at_->column < 0) return t;
+    int side = int(std::lround(std::sqrt(double(taps))));
+    if (side * side != taps) return t;
+    const int x = t % side - (at_->column - warm.column), y = t / side - (at_->row - warm.row);
+    return x >= 0 && y >= 0 && x < side && y < side ? y * side + x : t;
   }
 
   // Basic column `i` (negative weight) moves to the nearest point of I beyond the basic point
@@ -1315,6 +1332,7 @@ class FastSimplex {
   }
 
   const Problem* p_ = nullptr;
+  const WarmPosition* at_ = nullptr;  // where the problem being solved sits (run), or null
   static constexpr int k_ = K;
   int n_ = 0, g_ = 0, e_ = 0, composite_ = 0;
   int certificate_entering_ = -1;  // set by a failed precise certificate (solve_phase2)

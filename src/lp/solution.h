@@ -45,6 +45,9 @@ struct Solution {
 struct WarmPosition {
   int layer = 0;
   int column = -1;
+  // The texel row (-1: unknown): with it and the column, a kernel column of a remembered basis maps
+  // to the tap that sees the same texel, so that the same depth (the same column) comes back.
+  int row = -1;
 };
 
 class Backend {

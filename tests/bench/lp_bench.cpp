@@ -89,7 +89,7 @@ const std::vector<Run>& runs(const std::string& basis_name, int grid) {
         if (kernel_cdf(v.map, kernel, x, y, zf) == 0) continue;
         kernel_distribution(v.map, kernel, x, y, depths, weights);
         run.problems.push_back(factory.from_distribution(depths, weights, zf));
-        run.positions.push_back({v.fragments.layer[k], x});
+        run.positions.push_back({v.fragments.layer[k], x, y});
       }
       out.push_back(std::move(run));
     }
