@@ -53,6 +53,7 @@ constexpr int kDegenerateBeforeBland = 24;       // degenerate pivots in a row b
 constexpr int kLaterTryRounds = 6;
 constexpr int kGuidedSteps = 8;                  // certificate-guided steps per LP (solve_phase2)
 constexpr int kWarmTries = 5;                    // warm bases tried before the composite repair
+constexpr int kChangedColumns = 2;  // update_factors: product-form updates instead of a factorisation
 constexpr double kHopelessWeight = 10;          // a warm try with a weight below -10 is given up
 // Partial pricing: grid cells each side of a basic point, 1/16 of the grid but at least 8. On the
 // default dataset's runs (lp_bench) that needs fewer pivots than full Dantzig pricing (2.54 vs 2.71
@@ -181,6 +182,7 @@ class FastSimplex {
     at_ = at;
     solve(p, std::span<const WarmBasis* const>(tries, count), s);
     lane_zf_[layer] = remember_basis(s, lanes_[layer]);
+    if (lane_zf_[layer] == lane_zf_[layer]) save_basis(lane_factors_[layer]);
     if (column >= 0) {
       const size_t slot = size_t(column) * kWarmLanes + layer;
       above_zf_[slot] = remember_basis(s, above_[slot]);
@@ -188,6 +190,14 @@ class FastSimplex {
   }
 
  private:
+  // A basis with its inverse and x_B, as the warm start leaves it or an LP ended
+  // with it.
+  struct BasisState {
+    int basis[kMaxRows];
+    double x[kMaxRows], binv[kMaxRows][kMaxRows], basic[kMaxRows][kMaxRows];
+    int updates;
+  };
+
   // Into `s`, fresh (reset).
   void solve(const Problem& p, std::span<const WarmBasis* const> warm, Solution& s) {
     p_ = &p;
@@ -290,7 +300,8 @@ class FastSimplex {
     return warm.zf;
   }
 
-  bool start_from_previous_basis(const WarmBasis& warm, int rounds) {
+  // `factors`: the basis's inverse as its own LP left it, when kept (the texel to the left).
+  bool start_from_previous_basis(const WarmBasis& warm, int rounds, const BasisState* factors) {
     if (warm.rows != k_ || warm.grid != g_) return false;
     for (int i = 0; i < k_; ++i) {
       int j = -1;
@@ -313,13 +324,54 @@ class FastSimplex {
       if (j < 0 || std::find(basis_, basis_ + i, j) != basis_ + i) return false;
       basis_[i] = j;
     }
-    if (!refactor()) return false;
+    if (!(factors && update_factors(*factors)) && !refactor()) return false;
     // Most infeasible starts are one bracket off: the LP approximates each interior node of the
     // continuous extremal distribution by the two points of I around it, and when the node moves
     // past one of them, that point's weight turns negative. Moving it past its partner fixes it.
     for (int round = 0; round < rounds; ++round) {
       const int worst = most_negative();
       if (x_[worst] >= -kFeasibilityTolerance || !shift_bracket(worst)) break;
+    }
+    return true;
+  }
+
+  // The inverse of the mapped basis from `factors` (its previous LP's) by a product-form update per
+  // column that changed, instead of a factorisation: with the same texels mapped to the same taps,
+  // most columns come back unchanged (grid points and kernel depths; z_f's and the composite's
+  // are new). False (the caller factorises) when too many changed or an update would be (nearly)
+  // singular. x_B from the new moments.
+  bool update_factors(const BasisState& factors) {
+    double a[kMaxRows][kMaxRows];
+    int changed[kMaxRows], count = 0;
+    for (int i = 0; i < k_; ++i) {
+      load_column(basis_[i], a[i]);
+      bool same = true;
+      for (int r = 0; r < k_; ++r) same &= a[i][r] == factors.basic[i][r];
+      if (!same) changed[count++] = i;
+    }
+    if (count > kChangedColumns || factors.updates + count > kRefactorInterval) return false;
+    for (int i = 0; i < k_; ++i) {
+      std::copy(factors.binv[i], factors.binv[i] + k_, binv_[i]);
+      std::copy(factors.basic[i], factors.basic[i] + k_, basic_[i]);
+    }
+    updates_ = factors.updates;
+    for (int c = 0; c < count; ++c) {
+      const int i = changed[c];
+      double u[kMaxRows];
+      for (int q = 0; q < k_; ++q) {
+        double v = 0;
+        for (int r = 0; r < k_; ++r) v += binv_[q][r] * a[i][r];
+        u[q] = v;
+      }
+      double largest = 0;
+      for (int q = 0; q < k_; ++q) largest = std::max(largest, std::abs(u[q]));
+      if (!(std::abs(u[i]) > 1e-7 * largest)) return false;
+      pivot(i, basis_[i], u);
+    }
+    for (int i = 0; i < k_; ++i) {
+      double v = 0;
+      for (int r = 0; r < k_; ++r) v += binv_[i][r] * p_->rhs[r];
+      x_[i] = v;
     }
     return true;
   }
@@ -472,7 +524,9 @@ class FastSimplex {
     int usable = -1;
     bool usable_is_current = false;  // the basis in place is still the usable try's
     for (size_t c = 0; c < warm.size(); ++c) {
-      const bool started = start_from_previous_basis(*warm[c], shift_rounds(c));
+      const WarmBasis* w = warm[c];
+      const bool left = w >= lanes_ && w < lanes_ + kWarmLanes;
+      const bool started = start_from_previous_basis(*w, shift_rounds(c), left ? &lane_factors_[w - lanes_] : nullptr);
       usable_is_current = started && usable < 0;
       if (!started) continue;
       if (usable < 0) usable = int(c);
@@ -486,12 +540,6 @@ class FastSimplex {
     return repair_with_composite(s);
   }
 
-  // A basis with its inverse and x_B, as the warm start leaves it.
-  struct BasisState {
-    int basis[kMaxRows];
-    double x[kMaxRows], binv[kMaxRows][kMaxRows], basic[kMaxRows][kMaxRows];
-    int updates;
-  };
   void save_basis(BasisState& to) const {
     std::copy(basis_, basis_ + k_, to.basis);
     std::copy(x_, x_ + k_, to.x);
@@ -1352,6 +1400,7 @@ class FastSimplex {
   std::vector<double> reduced_, alpha_, cost_;
   std::vector<uint64_t> window_bits_;  // candidate_windows' scratch: a bit a block of four grid columns
   WarmBasis lanes_[kWarmLanes];          // by layer: the texel to the left
+  BasisState lane_factors_[kWarmLanes];  // their inverses (update_factors)
   std::vector<WarmBasis> above_;         // by column and layer: the row above
   // Their z_f, NaN where there is no basis: the selection reads these alone (a WarmBasis spans
   // ~80 bytes, and the 16 of a selection were ~8 % of a warm LP's time).
