@@ -110,11 +110,11 @@ bool invert_fixed(Real a[kMaxRows][kMaxRows], Real inv[kMaxRows][kMaxRows], Real
 // std::lower_bound (strict: false) or std::upper_bound (strict: true) of z in an ascending grid,
 // started where z would be on a uniform grid (every grid here is) and corrected by steps, so the
 // answer is the same for any ascending grid and O(1) for ours; a warm start's bracket shifts
-// needed two binary searches each.
-int grid_bound(const std::vector<double>& grid, double z, bool strict) {
+// needed two binary searches each. `scale` = (n - 1) / (last - first point), or 0, precomputed:
+// a division here was ~4 % of a warm LP.
+int grid_bound(const std::vector<double>& grid, double z, bool strict, double scale) {
   const int n = int(grid.size());
-  const double span = grid[n - 1] - grid[0];
-  double guess = span > 0 ? (z - grid[0]) / span * (n - 1) : 0.0;
+  double guess = (z - grid[0]) * scale;
   int i = guess >= 0 ? (guess < n ? int(guess) : n) : 0;  // also maps NaN to 0
   auto before = [&](int j) { return strict ? grid[j] <= z : grid[j] < z; };  // j is left of the bound
   while (i > 0 && !before(i - 1)) --i;
@@ -211,9 +211,11 @@ class FastSimplex {
     // Costs once per problem: the grid is ascending, so its cost is a prefix of ones.
     cost_.resize(n_);
     const auto& grid = p.grid->points;
-    const int in_front = grid_bound(grid, p.zf, false);
-    zf_cell_ = in_front;
     cell_scale_ = grid.back() > grid.front() ? (g_ - 1) / (grid.back() - grid.front()) : 0.0;
+    const int in_front = grid_bound(grid, p.zf, false, cell_scale_);
+    zf_cell_ = in_front;
+    const int taps = int(p.tap_extra.size()), side = int(std::lround(std::sqrt(double(taps))));
+    kernel_side_ = side * side == taps ? side : 0;
     std::fill(cost_.begin(), cost_.begin() + in_front, 1.0);
     std::fill(cost_.begin() + in_front, cost_.begin() + g_, 0.0);
     for (int e = 0; e < e_; ++e) cost_[g_ + e] = p.extra.points[e] < p.zf ? 1.0 : 0.0;
@@ -381,10 +383,8 @@ class FastSimplex {
   // same column, comes back; `t` itself when that texel is outside this kernel or either position
   // is unknown (the same offset then sees a nearby surface).
   int texel_tap(const WarmBasis& warm, int t) const {
-    const int taps = int(p_->tap_extra.size());
-    if (!at_ || at_->row < 0 || warm.row < 0 || warm.column < 0 || at_->column < 0) return t;
-    int side = int(std::lround(std::sqrt(double(taps))));
-    if (side * side != taps) return t;
+    const int side = kernel_side_;
+    if (!at_ || at_->row < 0 || warm.row < 0 || warm.column < 0 || at_->column < 0 || side == 0) return t;
     const int x = t % side - (at_->column - warm.column), y = t / side - (at_->row - warm.row);
     return x >= 0 && y >= 0 && x < side && y < side ? y * side + x : t;
   }
@@ -428,7 +428,7 @@ class FastSimplex {
   // The point of I nearest beyond `from` in `direction` (a column index), or -1.
   int point_beyond(double from, double direction) const {
     const auto& grid = p_->grid->points;
-    const int g = direction > 0 ? grid_bound(grid, from, true) : grid_bound(grid, from, false) - 1;
+    const int g = direction > 0 ? grid_bound(grid, from, true, cell_scale_) : grid_bound(grid, from, false, cell_scale_) - 1;
     int best = -1;
     double distance = std::numeric_limits<double>::infinity();
     if (g >= 0 && g < g_) best = g, distance = std::abs(grid[g] - from);
@@ -631,8 +631,8 @@ class FastSimplex {
     for (int j : p_->start_support)
       lo = std::min(lo, p_->point(j)), hi = std::max(hi, p_->point(j));
     const auto& grid = p_->grid->points;
-    int first = grid_bound(grid, lo, false) - 1;
-    int last = grid_bound(grid, hi, false) + 1;
+    int first = grid_bound(grid, lo, false, cell_scale_) - 1;
+    int last = grid_bound(grid, hi, false, cell_scale_) + 1;
     for (int widen = 0; widen < 6; ++widen) {
       first = std::max(0, first - widen * (k_ - 1));
       last = std::min(g_ - 1, last + widen * (k_ - 1));
@@ -1392,6 +1392,7 @@ class FastSimplex {
   double composite_cost_ = 0;
   int updates_ = 0;
   int zf_cell_ = 0;         // grid points in front of z_f (solve)
+  int kernel_side_ = 0;     // taps a side of the problem's square kernel, 0: not square (texel_tap)
   double cell_scale_ = 0;   // grid cells per unit of z
   BasisState usable_basis_;  // solve_from_previous_basis: the first usable warm try
   double priced_y_[kMaxRows] = {};  // the duals reduced_ was computed with, in priced_phase_
