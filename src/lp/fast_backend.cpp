@@ -408,15 +408,18 @@ class FastSimplex {
         partner = q, gap = std::abs(p_->point(basis_[q]) - z);
     if (partner < 0) return false;
     const double from = p_->point(basis_[partner]), direction = from > z ? 1.0 : -1.0;
-    const int next = point_beyond(from, direction);
-    if (next < 0) return false;
     // A pair whose weights sum to <= 0 stands for no node: a shift only drags the negative weight
     // along, a cell a round (seen in most starts that ran out of rounds). The try fails at once.
     const double mass = x_[i] + x_[partner];
     if (!(mass > 0)) return false;
     const double node = (x_[i] * z + x_[partner] * from) / mass;
+    // The point beyond the partner, and the two around the node, in one pass over the extra points
+    // (most shifts move both: three passes were ~8 % of a warm LP).
+    int beyond[3];
+    points_beyond<3>({from, node, node}, {direction, direction, -direction}, beyond);
+    const int next = beyond[0], far = beyond[1], near = beyond[2];
+    if (next < 0) return false;
     if ((node - p_->point(next)) * direction > 0) {
-      const int far = point_beyond(node, direction), near = point_beyond(node, -direction);
       if (far >= 0 && near >= 0 && near != far && exchange(i, far)) {
         exchange(partner, near);  // if refused (basic, or singular), the first half still helps
         return true;
@@ -425,15 +428,68 @@ class FastSimplex {
     return exchange(i, next);
   }
 
-  // The point of I nearest beyond `from` in `direction` (a column index), or -1.
-  int point_beyond(double from, double direction) const {
+  // The point of I nearest beyond from[q] in direction[q] (a column index, or -1), for Q queries:
+  // the grid point of each by grid_bound, then one pass over the extra points for all of them (an
+  // extra point wins only if strictly nearer), then one more for the first index holding each
+  // nearest distance.
+  template <int Q>
+  void points_beyond(const double (&from)[Q], const double (&direction)[Q], int (&out)[Q]) const {
+    constexpr double kNone = std::numeric_limits<double>::infinity();
     const auto& grid = p_->grid->points;
-    const int g = direction > 0 ? grid_bound(grid, from, true, cell_scale_) : grid_bound(grid, from, false, cell_scale_) - 1;
-    int best = -1;
-    double distance = std::numeric_limits<double>::infinity();
-    if (g >= 0 && g < g_) best = g, distance = std::abs(grid[g] - from);
-    const int extra = nearest_extra_beyond(from, direction, distance);
-    return extra >= 0 ? g_ + extra : best;
+    double distance[Q], nearest[Q];
+    for (int q = 0; q < Q; ++q) {
+      const int g = direction[q] > 0 ? grid_bound(grid, from[q], true, cell_scale_)
+                                     : grid_bound(grid, from[q], false, cell_scale_) - 1;
+      out[q] = -1, distance[q] = kNone, nearest[q] = kNone;
+      if (g >= 0 && g < g_) out[q] = g, distance[q] = std::abs(grid[g] - from[q]);
+    }
+    const double* points = p_->extra.points.data();
+    int e = 0;
+#ifdef __AVX__
+    {
+      // Per query, the smallest positive (p - from) * direction in four lanes (independent chains).
+      __m256d origin[Q], sign[Q], low[Q];
+      const __m256d none = _mm256_set1_pd(kNone), zero = _mm256_setzero_pd();
+      for (int q = 0; q < Q; ++q) origin[q] = _mm256_set1_pd(from[q]), sign[q] = _mm256_set1_pd(direction[q]), low[q] = none;
+      for (; e + 4 <= e_; e += 4) {
+        const __m256d p = _mm256_loadu_pd(points + e);
+        for (int q = 0; q < Q; ++q) {
+          const __m256d d = _mm256_mul_pd(_mm256_sub_pd(p, origin[q]), sign[q]);
+          low[q] = _mm256_min_pd(_mm256_blendv_pd(none, d, _mm256_cmp_pd(d, zero, _CMP_GT_OQ)), low[q]);
+        }
+      }
+      for (int q = 0; q < Q; ++q) {
+        double lane[4];
+        _mm256_storeu_pd(lane, low[q]);
+        for (double v : lane) nearest[q] = v < nearest[q] ? v : nearest[q];
+      }
+    }
+#endif
+    for (; e < e_; ++e)
+      for (int q = 0; q < Q; ++q) {
+        const double d = (points[e] - from[q]) * direction[q];
+        if (d > 0 && d < nearest[q]) nearest[q] = d;
+      }
+    // The first index holding each nearest distance that beats its grid point.
+    int open = 0;
+    bool wanted[Q];
+    for (int q = 0; q < Q; ++q) open += wanted[q] = nearest[q] < distance[q];
+    e = 0;
+#ifdef __AVX__
+    // Four at a time (a scalar search was the hottest loop of the shifts).
+    for (; open > 0 && e + 4 <= e_; e += 4) {
+      const __m256d p = _mm256_loadu_pd(points + e);
+      for (int q = 0; q < Q; ++q) {
+        if (!wanted[q]) continue;
+        const __m256d d = _mm256_mul_pd(_mm256_sub_pd(p, _mm256_set1_pd(from[q])), _mm256_set1_pd(direction[q]));
+        const int mask = _mm256_movemask_pd(_mm256_cmp_pd(d, _mm256_set1_pd(nearest[q]), _CMP_EQ_OQ));
+        if (mask) out[q] = g_ + e + __builtin_ctz(mask), wanted[q] = false, --open;
+      }
+    }
+#endif
+    for (; open > 0 && e < e_; ++e)
+      for (int q = 0; q < Q; ++q)
+        if (wanted[q] && (points[e] - from[q]) * direction[q] == nearest[q]) out[q] = g_ + e, wanted[q] = false, --open;
   }
 
   // Column `entering` replaces basic column `i`: one product-form update of the inverse and of
@@ -455,64 +511,6 @@ class FastSimplex {
     x_[i] = theta;
     pivot(i, entering, u);
     return true;
-  }
-
-  // The extra point nearest beyond `from` in `direction`, if closer than `distance` (updated):
-  // eight-lane minimum first (vectorised; the branchy scan was half the cost of a warm start),
-  // then the first index holding it.
-  int nearest_extra_beyond(double from, double direction, double& distance) const {
-    const double* points = p_->extra.points.data();
-    constexpr double kNone = std::numeric_limits<double>::infinity();
-    double lane[8] = {kNone, kNone, kNone, kNone, kNone, kNone, kNone, kNone};
-    int e = 0;
-#ifdef __AVX__
-    {
-      const __m256d origin = _mm256_set1_pd(from), sign = _mm256_set1_pd(direction),
-                    none = _mm256_set1_pd(kNone), zero = _mm256_setzero_pd();
-      __m256d low = none, high = none;
-      for (; e + 8 <= e_; e += 8) {
-        const __m256d a = _mm256_mul_pd(_mm256_sub_pd(_mm256_loadu_pd(points + e), origin), sign);
-        const __m256d b = _mm256_mul_pd(_mm256_sub_pd(_mm256_loadu_pd(points + e + 4), origin), sign);
-        low = _mm256_min_pd(_mm256_blendv_pd(none, a, _mm256_cmp_pd(a, zero, _CMP_GT_OQ)), low);
-        high = _mm256_min_pd(_mm256_blendv_pd(none, b, _mm256_cmp_pd(b, zero, _CMP_GT_OQ)), high);
-      }
-      _mm256_storeu_pd(lane, low);
-      _mm256_storeu_pd(lane + 4, high);
-    }
-#else
-    for (; e + 8 <= e_; e += 8)
-      for (int q = 0; q < 8; ++q) {
-        const double d = (points[e + q] - from) * direction;
-        const double v = d > 0 ? d : kNone;
-        lane[q] = v < lane[q] ? v : lane[q];
-      }
-#endif
-    double nearest = kNone;
-    for (; e < e_; ++e) {
-      const double d = (points[e] - from) * direction;
-      if (d > 0 && d < nearest) nearest = d;
-    }
-    for (int q = 0; q < 8; ++q) nearest = lane[q] < nearest ? lane[q] : nearest;
-    if (!(nearest < distance)) return -1;
-    distance = nearest;
-    // The first index holding it, eight at a time (the scalar search was the hottest loop here).
-    e = 0;
-#ifdef __AVX__
-    {
-      const __m256d origin = _mm256_set1_pd(from), sign = _mm256_set1_pd(direction),
-                    target = _mm256_set1_pd(nearest);
-      for (; e + 8 <= e_; e += 8) {
-        const __m256d a = _mm256_mul_pd(_mm256_sub_pd(_mm256_loadu_pd(points + e), origin), sign);
-        const __m256d b = _mm256_mul_pd(_mm256_sub_pd(_mm256_loadu_pd(points + e + 4), origin), sign);
-        if (_mm256_movemask_pd(_mm256_or_pd(_mm256_cmp_pd(a, target, _CMP_EQ_OQ),
-                                            _mm256_cmp_pd(b, target, _CMP_EQ_OQ))))
-          break;
-      }
-    }
-#endif
-    for (; e < e_; ++e)
-      if ((points[e] - from) * direction == nearest) return e;
-    return -1;
   }
 
   // The first warm basis that is primal feasible after the bracket shifts: the primal simplex
