@@ -202,6 +202,7 @@ class FastSimplex {
   void solve(const Problem& p, std::span<const WarmBasis* const> warm, Solution& s) {
     p_ = &p;
     priced_phase_ = -1;  // reduced_ belongs to the previous problem
+    duals_fresh_ = false;
     n_ = p.cols();
     g_ = p.grid_size();
     e_ = p.extra.size();
@@ -357,6 +358,7 @@ class FastSimplex {
       std::copy(factors.basic[i], factors.basic[i] + k_, basic_[i]);
     }
     updates_ = factors.updates;
+    duals_fresh_ = false;
     for (int c = 0; c < count; ++c) {
       const int i = changed[c];
       double u[kMaxRows];
@@ -555,6 +557,7 @@ class FastSimplex {
       std::copy(from.basic[i], from.basic[i] + k_, basic_[i]);
     }
     updates_ = from.updates;
+    duals_fresh_ = false;
   }
   int shift_rounds(size_t try_index) const { return try_index == 0 ? 4 * k_ : kLaterTryRounds; }
 
@@ -616,6 +619,7 @@ class FastSimplex {
       for (int r = 0; r < k_; ++r) binv_[i][r] = i == r ? artificial_sign_[r] : 0.0;
     }
     updates_ = 0;
+    duals_fresh_ = false;
   }
 
   // The known distribution as one composite column (its moment vector, which is the rhs, at its
@@ -662,6 +666,7 @@ class FastSimplex {
       x_[i] = v;
     }
     updates_ = 0;
+    duals_fresh_ = false;
     return true;
   }
 
@@ -670,6 +675,7 @@ class FastSimplex {
   // its y the same way, so at an optimal basis it finds these reduced costs already in place.
   void price() {
     dual_values(y_);
+    duals_fresh_ = true;
     reduced_costs();
   }
   void dual_values(double* y) const {
@@ -962,6 +968,7 @@ class FastSimplex {
       // when none of them may enter does a full pass decide, so every run still ends with one, and
       // optimality is never judged on the candidates.
       dual_values(y_);  // once per iteration, for the candidates and the full pass alike
+      duals_fresh_ = true;
       const bool partial = phase_ == 2 && !bland;
       int entering = partial && guard > 0 ? enter_from_candidates() : -1;
       if (entering < 0) {
@@ -1027,6 +1034,7 @@ class FastSimplex {
     basis_[leave] = entering;
     load_column(entering, basic_[leave]);
     ++updates_;
+    duals_fresh_ = false;
   }
 
   // Dual simplex steps from a dual feasible but slightly primal infeasible basis, which
@@ -1135,8 +1143,11 @@ class FastSimplex {
   bool certify_in_double(Solution& s) {
     constexpr double kEps = std::numeric_limits<double>::epsilon();
     const double gamma = (k_ + 2) * kEps;
-    double y[kMaxRows];
-    dual_values(y);
+    double y[kMaxRows] = {};  // (GCC cannot see that the copy fills k_ <= kMaxRows)
+    if (duals_fresh_)  // the iterations' last duals, of this very basis and inverse: the same bits
+      std::copy(y_, y_ + k_, y);
+    else
+      dual_values(y);
     const double reduced_cost_error = pricing_rounding(y);
     if (reduced_cost_error > 0.1 * kCertifyBound) return false;
     // One step of iterative refinement: x_B from the double inverse misses rhs by ~cond(B) eps;
@@ -1271,6 +1282,7 @@ class FastSimplex {
       for (int r = 0; r < k_; ++r) binv_[i][r] = double(inv[i][r]);
     }
     updates_ = 0;
+    duals_fresh_ = false;
     for (int r = 0; r < k_; ++r) {
       long double v = 0;
       for (int i = 0; i < k_; ++i) v += basic_cost[i] * inv[i][r];
@@ -1382,6 +1394,7 @@ class FastSimplex {
   static constexpr int k_ = K;
   int n_ = 0, g_ = 0, e_ = 0, composite_ = 0;
   int certificate_entering_ = -1;  // set by a failed precise certificate (solve_phase2)
+  bool duals_fresh_ = false;  // y_ is dual_values' of the current basis and inverse
   int phase_ = 1;
   int basis_[kMaxRows];
   double x_[kMaxRows], y_[kMaxRows], artificial_sign_[kMaxRows];
