@@ -123,8 +123,8 @@ int grid_bound(const std::vector<double>& grid, double z, bool strict, double sc
 }
 
 // The previous fragment's optimal basis, in terms that carry over to a neighbouring fragment:
-// grid columns by index, kernel columns by the tap they came from (the same tap of the next
-// kernel sees a nearby surface at the same offset), z_f's column and the composite column by role.
+// grid columns by index, kernel columns by the tap they came from (texel_tap maps it to the tap of
+// the next kernel that sees the same texel), z_f's column and the composite column by role.
 enum class Role { Grid, Tap, Zf, Composite };
 struct WarmBasis {
   double zf = 0;

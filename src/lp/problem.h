@@ -51,7 +51,7 @@ struct Problem {
   std::vector<double> start_weights;
   // Built from a kernel (from_distribution): which extra column each tap became (-1: zero weight),
   // the first tap of each extra column (-1: the z_f column), and z_f's extra column (-1: none).
-  // A warm start maps the previous fragment's basis through these, tap for tap.
+  // A warm start maps a neighbour's basis through these, to the taps that see the same texels.
   std::vector<int> tap_extra, extra_tap;
   int zf_extra = -1;
 
