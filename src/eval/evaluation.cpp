@@ -63,7 +63,7 @@ TechniqueResult evaluate_technique(const ViewData& view, const std::string& tech
         in.row = int(texel / f.width);
         in.run = lp::warm_run_of(texel, f.width);
         if (needs_distribution) {
-          kernel_distribution(view.map, settings.kernel, int(texel % f.width), int(texel / f.width), depths, weights);
+          kernel_distribution(view.map, settings.kernel, in.column, in.row, depths, weights);
           in.kernel_depths = depths;
           in.kernel_weights = weights;
         }

@@ -139,21 +139,20 @@ struct WarmBasis {
 template <int K>
 class FastSimplex {
  public:
-  FastSimplex() { std::fill(std::begin(lane_zf_), std::end(lane_zf_), std::numeric_limits<double>::quiet_NaN()); }
+  FastSimplex() { std::fill(std::begin(lane_zf_), std::end(lane_zf_), kNoBasis); }
 
   // at == nullptr: from scratch, and every basis is forgotten; otherwise the warm bases of the
   // texel to the left and of the texel above are tried first (Backend::solve_next).
   void run(const Problem& p, const WarmPosition* at, Solution& s) {
-    constexpr double kNone = std::numeric_limits<double>::quiet_NaN();  // no basis
     if (!at) {
-      std::fill(std::begin(lane_zf_), std::end(lane_zf_), kNone);
-      std::fill(above_zf_.begin(), above_zf_.end(), kNone);
+      std::fill(std::begin(lane_zf_), std::end(lane_zf_), kNoBasis);
+      std::fill(above_zf_.begin(), above_zf_.end(), kNoBasis);
     }
     const int layer = at ? std::clamp(at->layer, 0, kWarmLanes - 1) : 0;
     const int column = at ? at->column : -1;
     if (column >= 0 && size_t(column + 1) * kWarmLanes > above_.size()) {
       above_.resize(size_t(column + 1) * kWarmLanes);
-      above_zf_.resize(above_.size(), kNone);
+      above_zf_.resize(above_.size(), kNoBasis);
     }
     // Warm bases to try, closest z_f first: layers of neighbouring texels do not always count the
     // same surfaces, so the fragment's own lane is not always the best guess, and where the
@@ -182,7 +181,7 @@ class FastSimplex {
     at_ = at;
     solve(p, std::span<const WarmBasis* const>(tries, count), s);
     lane_zf_[layer] = remember_basis(s, lanes_[layer]);
-    if (lane_zf_[layer] == lane_zf_[layer]) save_basis(lane_factors_[layer]);
+    if (!std::isnan(lane_zf_[layer])) save_basis(lane_factors_[layer]);
     if (column >= 0) {
       const size_t slot = size_t(column) * kWarmLanes + layer;
       above_zf_[slot] = remember_basis(s, above_[slot]);
@@ -278,8 +277,7 @@ class FastSimplex {
 
   // Into `warm`; its z_f for run's selection, NaN when the basis cannot be carried over.
   double remember_basis(const Solution& s, WarmBasis& warm) {
-    constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
-    if (!(s.status == ProblemStatus::Optimal && s.call == CallStatus::Ok && phase_ == 2)) return kNone;
+    if (!(s.status == ProblemStatus::Optimal && s.call == CallStatus::Ok && phase_ == 2)) return kNoBasis;
     warm.rows = k_;
     warm.grid = g_;
     warm.column = at_ ? at_->column : -1;
@@ -296,7 +294,7 @@ class FastSimplex {
       else if (j < n_ && !p_->extra_tap.empty() && p_->extra_tap[j - g_] >= 0)
         warm.role[i] = Role::Tap, warm.index[i] = p_->extra_tap[j - g_];
       else
-        return kNone;  // an extra point without a tap (from_moments): nothing to map
+        return kNoBasis;  // an extra point without a tap (from_moments): nothing to map
     }
     return warm.zf;
   }
@@ -359,22 +357,12 @@ class FastSimplex {
     duals_fresh_ = false;
     for (int c = 0; c < count; ++c) {
       const int i = changed[c];
-      double u[kMaxRows];
-      for (int q = 0; q < k_; ++q) {
-        double v = 0;
-        for (int r = 0; r < k_; ++r) v += binv_[q][r] * a[i][r];
-        u[q] = v;
-      }
-      double largest = 0;
-      for (int q = 0; q < k_; ++q) largest = std::max(largest, std::abs(u[q]));
-      if (!(std::abs(u[i]) > 1e-7 * largest)) return false;
+      double u[kMaxRows] = {};  // (GCC cannot see that in_basis fills k_ <= kMaxRows)
+      in_basis(a[i], u);
+      if (!stable_pivot(u, i)) return false;
       pivot(i, basis_[i], u);
     }
-    for (int i = 0; i < k_; ++i) {
-      double v = 0;
-      for (int r = 0; r < k_; ++r) v += binv_[i][r] * p_->rhs[r];
-      x_[i] = v;
-    }
+    in_basis(p_->rhs.data(), x_);
     return true;
   }
 
@@ -503,9 +491,7 @@ class FastSimplex {
     if (updates_ >= kRefactorInterval && !refactor()) return false;
     double u[kMaxRows] = {};  // (GCC cannot see that column_in_basis fills k_ <= kMaxRows)
     column_in_basis(entering, u);
-    double largest = 0;
-    for (int q = 0; q < k_; ++q) largest = std::max(largest, std::abs(u[q]));
-    if (!(std::abs(u[i]) > 1e-7 * largest)) return false;
+    if (!stable_pivot(u, i)) return false;
     const double theta = x_[i] / u[i];
     for (int q = 0; q < k_; ++q) x_[q] -= theta * u[q];
     x_[i] = theta;
@@ -658,11 +644,8 @@ class FastSimplex {
     // Partial pivoting; a pivot below 1e-13 of the largest entry means rank loss (the merely
     // ill-conditioned bases of tiny-valued columns, z^6 near 0, must still pass).
     if (!invert_fixed<double, K>(b, inv, 1e-13)) return false;
-    for (int i = 0; i < k_; ++i) {
-      double v = 0;
-      for (int r = 0; r < k_; ++r) v += (binv_[i][r] = inv[i][r]) * p_->rhs[r];
-      x_[i] = v;
-    }
+    for (int i = 0; i < k_; ++i) std::copy(inv[i], inv[i] + k_, binv_[i]);
+    in_basis(p_->rhs.data(), x_);
     updates_ = 0;
     duals_fresh_ = false;
     return true;
@@ -946,11 +929,22 @@ class FastSimplex {
   void column_in_basis(int j, double* u) const {
     double a[kMaxRows];
     load_column(j, a);
+    in_basis(a, u);
+  }
+  // u = B^{-1} a for any k-vector a (a column, a residual, the moments).
+  void in_basis(const double* a, double* u) const {
     for (int i = 0; i < k_; ++i) {
       double v = 0;
       for (int r = 0; r < k_; ++r) v += binv_[i][r] * a[r];
       u[i] = v;
     }
+  }
+  // Whether u_i (u = B^{-1} a) is large enough, against the largest |u_q|, for a to replace basic
+  // column i without a (nearly) singular basis (exchange, update_factors).
+  bool stable_pivot(const double* u, int i) const {
+    double largest = 0;
+    for (int q = 0; q < k_; ++q) largest = std::max(largest, std::abs(u[q]));
+    return std::abs(u[i]) > 1e-7 * largest;
   }
 
   // One simplex run to optimality for the current phase. False on numerical failure.
@@ -1086,13 +1080,10 @@ class FastSimplex {
     for (int r = 0; r < k_; ++r) sum[r] = {p_->rhs[r], 0};
     for (int i = 0; i < k_; ++i)
       for (int r = 0; r < k_; ++r) add_product(sum[r], DoubleDouble{x_[i], 0}, -basic_[i][r]);
-    double misfit[kMaxRows];
+    double misfit[kMaxRows], correction[kMaxRows];
     for (int r = 0; r < k_; ++r) misfit[r] = sum[r].value();
-    for (int i = 0; i < k_; ++i) {
-      double v = 0;
-      for (int r = 0; r < k_; ++r) v += binv_[i][r] * misfit[r];
-      x_[i] += v;
-    }
+    in_basis(misfit, correction);
+    for (int i = 0; i < k_; ++i) x_[i] += correction[i];
   }
 
   // After phase 1 every artificial left in the basis sits at zero; pivot each out on the
@@ -1156,11 +1147,7 @@ class FastSimplex {
       for (int i = 0; i < k_; ++i) v -= basic_[i][r] * x_[i];
       misfit[r] = v;
     }
-    for (int i = 0; i < k_; ++i) {
-      double v = 0;
-      for (int r = 0; r < k_; ++r) v += binv_[i][r] * misfit[r];
-      correction[i] = v;
-    }
+    in_basis(misfit, correction);
     for (int i = 0; i < k_; ++i) x_[i] += correction[i];
     // A weight below what double-double would call zero is for the precise pass (and then the
     // dual simplex) to judge: the bound's terms would not notice it (kCertifyResidual; a clamped
@@ -1426,6 +1413,7 @@ class FastSimplex {
   // ~80 bytes, and the 16 of a selection were ~8 % of a warm LP's time).
   double lane_zf_[kWarmLanes];
   std::vector<double> above_zf_;
+  static constexpr double kNoBasis = std::numeric_limits<double>::quiet_NaN();  // a z_f slot without one
 };
 
 class FastBackend : public Backend {
