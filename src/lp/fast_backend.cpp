@@ -182,9 +182,10 @@ class FastSimplex {
     solve(p, std::span<const WarmBasis* const>(tries, count), s);
     lane_zf_[layer] = remember_basis(s, lanes_[layer]);
     if (!std::isnan(lane_zf_[layer])) save_basis(lane_factors_[layer]);
-    if (column >= 0) {
+    if (column >= 0) {  // the same basis for the row below
       const size_t slot = size_t(column) * kWarmLanes + layer;
-      above_zf_[slot] = remember_basis(s, above_[slot]);
+      above_[slot] = lanes_[layer];
+      above_zf_[slot] = lane_zf_[layer];
     }
   }
 
@@ -974,7 +975,9 @@ class FastSimplex {
     return -1;
   }
   bool is_basic(int j) const {
-    return std::find(basis_, basis_ + k_, j) != basis_ + k_;
+    bool found = false;  // no early exit: k is fixed, and std::find was a call (~1 % of an LP)
+    for (int i = 0; i < k_; ++i) found |= basis_[i] == j;
+    return found;
   }
 
   // u = B^{-1} a_j, the entering column in basis coordinates.
@@ -1270,8 +1273,7 @@ class FastSimplex {
       }
     }
     s.G = double(objective);
-    s.duals.assign(k_, 0.0);
-    for (int r = 0; r < k_; ++r) s.duals[r] = y[r];
+    s.duals.assign(y, y + k_);
   }
 
   // The precise certificate, in double-double: x_B and y refined from the double inverse first
