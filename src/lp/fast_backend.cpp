@@ -750,6 +750,13 @@ class FastSimplex {
   // min(0, min_j out_j), found in the same pass: with it, a pricing pass that finds no entering
   // column (every LP ends with one) and the double certificate need no second pass over out.
   double subtract_row_combination(const double* w, const double* base, double* out) const {
+#ifdef __AVX512F__
+    __m512d weight[K], low = _mm512_setzero_pd();
+    for (int r = 0; r < K; ++r) weight[r] = _mm512_set1_pd(w[r]);
+    combine_masked(weight, p_->grid->values.data(), g_, base, out, g_, low);
+    combine_masked(weight, p_->extra.values.data(), e_, base ? base + g_ : nullptr, out + g_, e_, low);
+    return smallest_lane(low);
+#endif
     const double* rows[K];
     for (int r = 0; r < K; ++r) rows[r] = p_->grid->values.data() + size_t(r) * g_;
     const double grid_smallest = combine_block(w, rows, base, out, g_);
@@ -757,6 +764,28 @@ class FastSimplex {
     const double extra_smallest = combine_block(w, rows, base ? base + g_ : nullptr, out + g_, e_);
     return extra_smallest < grid_smallest ? extra_smallest : grid_smallest;
   }
+#ifdef __AVX512F__
+  // out_j = base_j - sum_r w_r A_rj (base 0 when null) for the n columns of one block whose rows lie
+  // `stride` apart, eight lanes masked at the end (no scalar tail), each value folded into the
+  // running minimum `low` (NaN keeps the minimum so far). The same fused chains as combine_block.
+  static void combine_masked(const __m512d* weight, const double* values, size_t stride, const double* base,
+                             double* out, int n, __m512d& low) {
+    for (int j = 0; j < n; j += 8) {
+      const __mmask8 live = n - j >= 8 ? __mmask8(0xff) : __mmask8((1u << (n - j)) - 1);
+      __m512d v = base ? _mm512_maskz_loadu_pd(live, base + j) : _mm512_setzero_pd();
+      for (int r = 0; r < K; ++r) v = _mm512_fnmadd_pd(weight[r], _mm512_maskz_loadu_pd(live, values + r * stride + j), v);
+      _mm512_mask_storeu_pd(out + j, live, v);
+      low = _mm512_mask_min_pd(low, live, v, low);
+    }
+  }
+  // min(0, the smallest lane of low).
+  static double smallest_lane(__m512d low) {
+    double lane[8], smallest = 0;  // (GCC 12's _mm512_reduce_min_pd warns of an uninitialised variable)
+    _mm512_storeu_pd(lane, low);
+    for (double v : lane) smallest = v < smallest ? v : smallest;
+    return smallest;
+  }
+#endif
   // Each out_j is the chain base_j - w_0 a_0j - w_1 a_1j - ... in fused multiply-adds, as the
   // compiler contracts the scalar loop, so both paths give the same bits.
   static double combine_block(const double* w, const double* const* rows, const double* base,
@@ -921,27 +950,13 @@ class FastSimplex {
     // fused chains per column as combine_block (the same bits), and the same choice: the first
     // candidate in column order holding the smallest reduced cost.
     {
-      __m512d weight[K];
+      __m512d weight[K], low = _mm512_setzero_pd();
       for (int r = 0; r < K; ++r) weight[r] = _mm512_set1_pd(y_[r]);
-      __m512d low = _mm512_setzero_pd();
-      auto price_block = [&](const double* values, size_t stride, int begin, int end) {
-        const double* base = cost_.data() + begin;
-        double* out = reduced_.data() + begin;
-        const int n = end - begin;
-        for (int j = 0; j < n; j += 8) {
-          const __mmask8 live = n - j >= 8 ? __mmask8(0xff) : __mmask8((1u << (n - j)) - 1);
-          __m512d v = _mm512_maskz_loadu_pd(live, base + j);
-          for (int r = 0; r < K; ++r)
-            v = _mm512_fnmadd_pd(weight[r], _mm512_maskz_loadu_pd(live, values + r * stride + j), v);
-          _mm512_mask_storeu_pd(out + j, live, v);
-          low = _mm512_mask_min_pd(low, live, v, low);  // NaN keeps the minimum so far
-        }
-      };
-      for (int q = 0; q < w.count; ++q) price_block(p_->grid->values.data() + w.begin[q], g_, w.begin[q], w.end[q]);
-      price_block(p_->extra.values.data(), e_, g_, n_);
-      double lane[8], smallest = 0;
-      _mm512_storeu_pd(lane, low);
-      for (double v : lane) smallest = v < smallest ? v : smallest;
+      for (int q = 0; q < w.count; ++q)
+        combine_masked(weight, p_->grid->values.data() + w.begin[q], g_, cost_.data() + w.begin[q],
+                       reduced_.data() + w.begin[q], w.end[q] - w.begin[q], low);
+      combine_masked(weight, p_->extra.values.data(), e_, cost_.data() + g_, reduced_.data() + g_, e_, low);
+      const double smallest = smallest_lane(low);
       if (!(smallest < -entering_tolerance())) return -1;
       int first = -1;
       for (int q = 0; q < w.count && first < 0; ++q) {
