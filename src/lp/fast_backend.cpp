@@ -822,6 +822,16 @@ class FastSimplex {
   // The smallest of d[0..n) (at most 0), eight independent lanes so that it vectorises (a single
   // running minimum is a chain of dependent minsd, 4 cycles a column).
   static double smallest_of(const double* d, int n) {
+#ifdef __AVX512F__
+    {
+      __m512d low = _mm512_setzero_pd();
+      for (int j = 0; j < n; j += 8) {
+        const __mmask8 live = n - j >= 8 ? __mmask8(0xff) : __mmask8((1u << (n - j)) - 1);
+        low = _mm512_mask_min_pd(low, live, _mm512_maskz_loadu_pd(live, d + j), low);
+      }
+      return smallest_lane(low);
+    }
+#endif
     double lane[8] = {0, 0, 0, 0, 0, 0, 0, 0};
     int j = 0;
 #ifdef __AVX__
@@ -1010,7 +1020,16 @@ class FastSimplex {
   // pivot), or -1.
   static int first_holding(const double* d, int n, double value) {
     int j = 0;
-#ifdef __AVX__
+#ifdef __AVX512F__
+    // Eight lanes, masked at the end: the compare's mask is the answer, no scalar tail.
+    const __m512d target = _mm512_set1_pd(value);
+    for (; j < n; j += 8) {
+      const __mmask8 live = n - j >= 8 ? __mmask8(0xff) : __mmask8((1u << (n - j)) - 1);
+      const unsigned hit = _mm512_mask_cmp_pd_mask(live, _mm512_maskz_loadu_pd(live, d + j), target, _CMP_EQ_OQ);
+      if (hit) return j + __builtin_ctz(hit);
+    }
+    return -1;
+#elif defined(__AVX__)
     const __m256d target = _mm256_set1_pd(value);
     for (; j + 8 <= n; j += 8) {
       const __m256d a = _mm256_cmp_pd(_mm256_loadu_pd(d + j), target, _CMP_EQ_OQ);
