@@ -1502,7 +1502,15 @@ class FastSimplex {
     };
     const double* reduced = reduced_.data();
     int j = 0;
-#ifdef __AVX__
+#ifdef __AVX512F__
+    // Eight at a time, masked at the end, skipping blocks without a suspect.
+    const __m512d threshold = _mm512_set1_pd(suspect_below);
+    for (; j < n_; j += 8) {
+      const __mmask8 live = n_ - j >= 8 ? __mmask8(0xff) : __mmask8((1u << (n_ - j)) - 1);
+      unsigned mask = _mm512_mask_cmp_pd_mask(live, _mm512_maskz_loadu_pd(live, reduced + j), threshold, _CMP_NGE_UQ);
+      for (; mask; mask &= mask - 1) judge(j + __builtin_ctz(mask));
+    }
+#elif defined(__AVX__)
     // Four at a time, skipping blocks without a suspect (a branch per column was ~20 % of this).
     const __m256d below = _mm256_set1_pd(suspect_below);
     for (; j + 4 <= n_; j += 4) {
