@@ -212,6 +212,8 @@ class FastSimplex {
     // Costs once per problem: the grid is ascending, so its cost is a prefix of ones.
     cost_.resize(n_);
     const auto& grid = p.grid->points;
+    grid_points_ = grid.data();
+    extra_points_ = p.extra.points.data();
     cell_scale_ = grid.back() > grid.front() ? (g_ - 1) / (grid.back() - grid.front()) : 0.0;
     const int in_front = grid_bound(grid, p.zf, false, cell_scale_);
     zf_cell_ = in_front;
@@ -257,9 +259,19 @@ class FastSimplex {
   // The basis position of the most negative weight (the first, on ties).
   int most_negative() const {
     int worst = 0;
-    for (int i = 1; i < k_; ++i)
-      if (x_[i] < x_[worst]) worst = i;
+    double least = x_[0];
+    for (int i = 1; i < k_; ++i) {  // selects, not branches (they mispredicted: ~3 % of an LP)
+      const bool less = x_[i] < least;
+      least = less ? x_[i] : least;
+      worst = less ? i : worst;
+    }
     return worst;
+  }
+
+  // Point j of I (Problem::point without its vectors' bookkeeping, and selects, not a branch).
+  double point(int j) const {
+    const bool on_grid = j < g_;
+    return (on_grid ? grid_points_ : extra_points_)[on_grid ? j : j - g_];
   }
 
   // A warm basis that no bracket shift made feasible: its most negative column makes way for the
@@ -389,14 +401,14 @@ class FastSimplex {
     // Weights are probabilities: one below -kHopelessWeight means a basis far from any feasible
     // one, and shifts from such starts nearly always ran out of rounds.
     if (j >= n_ || x_[i] < -kHopelessWeight) return false;
-    const double z = p_->point(j);
+    const double z = point(j);
     int partner = -1;
     double gap = std::numeric_limits<double>::infinity();
     for (int q = 0; q < k_; ++q)
-      if (q != i && basis_[q] < n_ && std::abs(p_->point(basis_[q]) - z) < gap)
-        partner = q, gap = std::abs(p_->point(basis_[q]) - z);
+      if (q != i && basis_[q] < n_ && std::abs(point(basis_[q]) - z) < gap)
+        partner = q, gap = std::abs(point(basis_[q]) - z);
     if (partner < 0) return false;
-    const double from = p_->point(basis_[partner]), direction = from > z ? 1.0 : -1.0;
+    const double from = point(basis_[partner]), direction = from > z ? 1.0 : -1.0;
     // A pair whose weights sum to <= 0 stands for no node: a shift only drags the negative weight
     // along, a cell a round (seen in most starts that ran out of rounds). The try fails at once.
     const double mass = x_[i] + x_[partner];
@@ -408,7 +420,7 @@ class FastSimplex {
     points_beyond<3>({from, node, node}, {direction, direction, -direction}, beyond);
     const int next = beyond[0], far = beyond[1], near = beyond[2];
     if (next < 0) return false;
-    if ((node - p_->point(next)) * direction > 0) {
+    if ((node - point(next)) * direction > 0) {
       if (far >= 0 && near >= 0 && near != far && exchange(i, far)) {
         exchange(partner, near);  // if refused (basic, or singular), the first half still helps
         return true;
@@ -667,7 +679,7 @@ class FastSimplex {
     // columns do too (spread over all of I, narrow kernels took ~100 pivots instead of ~10).
     double lo = p_->zf, hi = p_->zf;
     for (int j : p_->start_support)
-      lo = std::min(lo, p_->point(j)), hi = std::max(hi, p_->point(j));
+      lo = std::min(lo, point(j)), hi = std::max(hi, point(j));
     const auto& grid = p_->grid->points;
     int first = grid_bound(grid, lo, false, cell_scale_) - 1;
     int last = grid_bound(grid, hi, false, cell_scale_) + 1;
@@ -918,7 +930,7 @@ class FastSimplex {
     for (int i = 0; i < k_; ++i) {
       const int j = basis_[i];
       if (j < g_) add(j);
-      else if (j < n_) add(std::clamp(int((p_->point(j) - lo) * cell_scale_), 0, g_ - 1));  // a centre, not a bound
+      else if (j < n_) add(std::clamp(int((point(j) - lo) * cell_scale_), 0, g_ - 1));  // a centre, not a bound
     }
     add(zf_cell_);
     // Runs of set bits are the merged segments, in column order (windows that touch merge too).
@@ -1573,6 +1585,9 @@ class FastSimplex {
   int updates_ = 0;
   int zf_cell_ = 0;         // grid points in front of z_f (solve)
   int kernel_side_ = 0;     // taps a side of the problem's square kernel, 0: not square (texel_tap)
+  const double* grid_points_ = nullptr;    // the problem's grid and extra points (point)
+  const double* extra_points_ = nullptr;
+
   double cell_scale_ = 0;   // grid cells per unit of z
   BasisState usable_basis_;  // solve_from_previous_basis: the first usable warm try
   double priced_y_[kMaxRows] = {};  // the duals reduced_ was computed with, in priced_phase_
