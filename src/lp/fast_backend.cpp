@@ -1382,6 +1382,9 @@ class FastSimplex {
         refine_precise_duals(y, basic_cost, inverse);
       }
     };
+    // Two steps for x_B: after one, a third of the bounds failed on |y| times its residual, and
+    // the second attempt refined y again, and so priced again.
+    refine_precise_weights(x, binv_);
     refine_precise_weights(x, binv_);
     if (!refined) refine_precise_duals(y, basic_cost, binv_);
     if (precise_bound(x, y, s)) return true;
