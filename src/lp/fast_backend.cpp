@@ -1378,15 +1378,15 @@ class FastSimplex {
     }
     auto refine = [&](const auto& inverse, int steps) {
       for (int step = 0; step < steps; ++step) {
-        refine_precise_weights(x, inverse);
-        refine_precise_duals(y, basic_cost, inverse);
+        refine_precisely<false>(x, p_->rhs.data(), inverse);
+        refine_precisely<true>(y, basic_cost, inverse);
       }
     };
     // Two steps for x_B: after one, a third of the bounds failed on |y| times its residual, and
     // the second attempt refined y again, and so priced again.
-    refine_precise_weights(x, binv_);
-    refine_precise_weights(x, binv_);
-    if (!refined) refine_precise_duals(y, basic_cost, binv_);
+    refine_precisely<false>(x, p_->rhs.data(), binv_);
+    refine_precisely<false>(x, p_->rhs.data(), binv_);
+    if (!refined) refine_precisely<true>(y, basic_cost, binv_);
     if (precise_bound(x, y, s)) return true;
     refine(binv_, 1);
     if (precise_bound(x, y, s)) return true;
@@ -1414,39 +1414,29 @@ class FastSimplex {
     return precise_bound(x, y, s);
   }
 
-  // One step of iterative refinement of x_B (B x = rhs) with a double-double residual and the given
-  // inverse (double or long double): each step gains the digits that cond(B) times the inverse's
-  // precision leaves. The k sums side by side (the inner loops run over independent accumulators):
-  // one at a time, each double-double sum is a chain of dependent adds, and latency dominated.
-  template <class Inverse>
-  void refine_precise_weights(DoubleDouble* x, const Inverse& inverse) const {
+  // One step of iterative refinement of v in B v = target (Transposed: B^T v = target; x_B from the
+  // moments, y from the basic costs) with a double-double residual and the given inverse of B
+  // (double or long double): each step gains the digits that cond(B) times the inverse's precision
+  // leaves. The k sums side by side (the inner loops run over independent accumulators): one at a
+  // time, each double-double sum is a chain of dependent adds, and latency dominated.
+  template <bool Transposed, class Inverse>
+  void refine_precisely(DoubleDouble* v, const double* target, const Inverse& inverse) const {
     using Real = std::remove_cvref_t<decltype(inverse[0][0])>;
     DoubleDouble sum[kMaxRows];
-    for (int r = 0; r < k_; ++r) sum[r] = {p_->rhs[r], 0};
-    for (int i = 0; i < k_; ++i)
-      for (int r = 0; r < k_; ++r) add_product(sum[r], x[i], -basic_[i][r]);
-    double misfit[kMaxRows];
-    for (int r = 0; r < k_; ++r) misfit[r] = sum[r].value();
-    for (int i = 0; i < k_; ++i) {
-      Real v = 0;
-      for (int r = 0; r < k_; ++r) v += inverse[i][r] * misfit[r];
-      add(x[i], double(v));
+    for (int q = 0; q < k_; ++q) sum[q] = {target[q], 0};
+    if constexpr (Transposed) {
+      for (int r = 0; r < k_; ++r)
+        for (int i = 0; i < k_; ++i) add_product(sum[i], v[r], -basic_[i][r]);
+    } else {
+      for (int i = 0; i < k_; ++i)
+        for (int r = 0; r < k_; ++r) add_product(sum[r], v[i], -basic_[i][r]);
     }
-  }
-  // The same for the duals (B^T y = c_B).
-  template <class Inverse>
-  void refine_precise_duals(DoubleDouble* y, const double* basic_cost, const Inverse& inverse) const {
-    using Real = std::remove_cvref_t<decltype(inverse[0][0])>;
-    DoubleDouble sum[kMaxRows];
-    for (int i = 0; i < k_; ++i) sum[i] = {basic_cost[i], 0};
-    for (int r = 0; r < k_; ++r)
-      for (int i = 0; i < k_; ++i) add_product(sum[i], y[r], -basic_[i][r]);
     double misfit[kMaxRows];
-    for (int i = 0; i < k_; ++i) misfit[i] = sum[i].value();
+    for (int q = 0; q < k_; ++q) misfit[q] = sum[q].value();
     for (int i = 0; i < k_; ++i) {
-      Real w = 0;
-      for (int r = 0; r < k_; ++r) w += misfit[r] * inverse[r][i];
-      add(y[i], double(w));
+      Real correction = 0;
+      for (int r = 0; r < k_; ++r) correction += misfit[r] * (Transposed ? inverse[r][i] : inverse[i][r]);
+      add(v[i], double(correction));
     }
   }
   // y_ (dual_values' of the current basis) refined by one double-double step into precise_y_, and
@@ -1454,7 +1444,7 @@ class FastSimplex {
   void refine_duals_for_certificate() {
     double basic_cost[kMaxRows];
     for (int i = 0; i < k_; ++i) basic_cost[i] = cost(basis_[i]), precise_y_[i] = {y_[i], 0};
-    refine_precise_duals(precise_y_, basic_cost, binv_);
+    refine_precisely<true>(precise_y_, basic_cost, binv_);
     for (int i = 0; i < k_; ++i) y_[i] = precise_y_[i].value();
     precise_duals_ = true;
   }
