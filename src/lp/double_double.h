@@ -8,39 +8,34 @@
 
 namespace mb::lp {
 
-// Forced inline: GCC left add_product out of line at 33 call sites of the certificate, so every
-// accumulator went through memory between terms and independent sums could not overlap (the
-// double-double certificate was ~18 % of a warm LP's time).
-#define MB_DD_INLINE [[gnu::always_inline]] inline
-
 struct DoubleDouble {
   double hi = 0, lo = 0;
   double value() const { return hi + lo; }
 };
 
 // a + b exactly, as a rounded sum and its error.
-MB_DD_INLINE DoubleDouble two_sum(double a, double b) {
+inline DoubleDouble two_sum(double a, double b) {
   const double s = a + b, bb = s - a;
   return {s, (a - (s - bb)) + (b - bb)};
 }
 
 // Renormalised a + b where |a| >= |b| (or a = 0).
-MB_DD_INLINE DoubleDouble fast_two_sum(double a, double b) {
+inline DoubleDouble fast_two_sum(double a, double b) {
   const double s = a + b;
   return {s, b - (s - a)};
 }
 
 // acc += b c for a double-double b and a double c. The low-order products are added in double:
 // their rounding is ~2^-106 of the terms, far below what the certificate needs.
-MB_DD_INLINE void add_product(DoubleDouble& acc, DoubleDouble b, double c) {
+inline void add_product(DoubleDouble& acc, DoubleDouble b, double c) {
   const double p = b.hi * c, e = std::fma(b.hi, c, -p) + b.lo * c;
   const DoubleDouble s = two_sum(acc.hi, p);
   acc = fast_two_sum(s.hi, s.lo + acc.lo + e);
 }
-MB_DD_INLINE void add_product(DoubleDouble& acc, double b, double c) { add_product(acc, DoubleDouble{b, 0}, c); }
+inline void add_product(DoubleDouble& acc, double b, double c) { add_product(acc, DoubleDouble{b, 0}, c); }
 
 // acc += v.
-MB_DD_INLINE void add(DoubleDouble& acc, double v) {
+inline void add(DoubleDouble& acc, double v) {
   const DoubleDouble s = two_sum(acc.hi, v);
   acc = fast_two_sum(s.hi, s.lo + acc.lo);
 }

@@ -122,6 +122,12 @@ int grid_bound(const std::vector<double>& grid, double z, bool strict, double sc
   return i;
 }
 
+#ifdef __AVX512F__
+// The lanes of the block of eight starting at index j that lie below n: all eight but in the last
+// block (the AVX-512 loops load, compare and store with it, so they need no scalar tail).
+__mmask8 lanes_below(int n, int j) { return n - j >= 8 ? __mmask8(0xff) : __mmask8((1u << (n - j)) - 1); }
+#endif
+
 // The previous fragment's optimal basis, in terms that carry over to a neighbouring fragment:
 // grid columns by index, kernel columns by the tap they came from (texel_tap maps it to the tap of
 // the next kernel that sees the same texel), z_f's column and the composite column by role.
@@ -444,7 +450,7 @@ class FastSimplex {
       out[q] = -1, distance[q] = kNone, nearest[q] = kNone;
       if (g >= 0 && g < g_) out[q] = g, distance[q] = std::abs(grid[g] - from[q]);
     }
-    const double* points = p_->extra.points.data();
+    const double* points = extra_points_;
 #ifdef __AVX512F__
     // Eight lanes, masked: a comparison and a masked minimum per query where AVX needed a compare,
     // a blend and a minimum for four, and the tail in the same loop (the searches were ~6 % of a
@@ -455,7 +461,7 @@ class FastSimplex {
       for (int q = 0; q < Q; ++q)
         origin[q] = _mm512_set1_pd(from[q]), sign[q] = _mm512_set1_pd(direction[q]), low[q] = _mm512_set1_pd(kNone);
       for (int e = 0; e < e_; e += 8) {
-        const __mmask8 live = e_ - e >= 8 ? __mmask8(0xff) : __mmask8((1u << (e_ - e)) - 1);
+        const __mmask8 live = lanes_below(e_, e);
         const __m512d p = _mm512_maskz_loadu_pd(live, points + e);
         for (int q = 0; q < Q; ++q) {
           const __m512d d = _mm512_mul_pd(_mm512_sub_pd(p, origin[q]), sign[q]);
@@ -465,15 +471,13 @@ class FastSimplex {
       int open = 0;
       bool wanted[Q];
       for (int q = 0; q < Q; ++q) {
-        double lane[8];  // (GCC 12's _mm512_reduce_min_pd warns of an uninitialised variable)
-        _mm512_storeu_pd(lane, low[q]);
-        for (double v : lane) nearest[q] = v < nearest[q] ? v : nearest[q];
+        nearest[q] = smallest_lane(low[q], nearest[q]);
         open += wanted[q] = nearest[q] < distance[q];
         low[q] = _mm512_set1_pd(nearest[q]);
       }
       // The first index holding each nearest distance that beats its grid point.
       for (int e = 0; open > 0 && e < e_; e += 8) {
-        const __mmask8 live = e_ - e >= 8 ? __mmask8(0xff) : __mmask8((1u << (e_ - e)) - 1);
+        const __mmask8 live = lanes_below(e_, e);
         const __m512d p = _mm512_maskz_loadu_pd(live, points + e);
         for (int q = 0; q < Q; ++q) {
           if (!wanted[q]) continue;
@@ -783,16 +787,16 @@ class FastSimplex {
   static void combine_masked(const __m512d* weight, const double* values, size_t stride, const double* base,
                              double* out, int n, __m512d& low) {
     for (int j = 0; j < n; j += 8) {
-      const __mmask8 live = n - j >= 8 ? __mmask8(0xff) : __mmask8((1u << (n - j)) - 1);
+      const __mmask8 live = lanes_below(n, j);
       __m512d v = base ? _mm512_maskz_loadu_pd(live, base + j) : _mm512_setzero_pd();
       for (int r = 0; r < K; ++r) v = _mm512_fnmadd_pd(weight[r], _mm512_maskz_loadu_pd(live, values + r * stride + j), v);
       _mm512_mask_storeu_pd(out + j, live, v);
       low = _mm512_mask_min_pd(low, live, v, low);
     }
   }
-  // min(0, the smallest lane of low).
-  static double smallest_lane(__m512d low) {
-    double lane[8], smallest = 0;  // (GCC 12's _mm512_reduce_min_pd warns of an uninitialised variable)
+  // min(start, the smallest lane of low) (NaN lanes are passed over).
+  static double smallest_lane(__m512d low, double start = 0) {
+    double lane[8], smallest = start;  // (GCC 12's _mm512_reduce_min_pd warns of an uninitialised variable)
     _mm512_storeu_pd(lane, low);
     for (double v : lane) smallest = v < smallest ? v : smallest;
     return smallest;
@@ -838,7 +842,7 @@ class FastSimplex {
     {
       __m512d low = _mm512_setzero_pd();
       for (int j = 0; j < n; j += 8) {
-        const __mmask8 live = n - j >= 8 ? __mmask8(0xff) : __mmask8((1u << (n - j)) - 1);
+        const __mmask8 live = lanes_below(n, j);
         low = _mm512_mask_min_pd(low, live, _mm512_maskz_loadu_pd(live, d + j), low);
       }
       return smallest_lane(low);
@@ -1036,7 +1040,7 @@ class FastSimplex {
     // Eight lanes, masked at the end: the compare's mask is the answer, no scalar tail.
     const __m512d target = _mm512_set1_pd(value);
     for (; j < n; j += 8) {
-      const __mmask8 live = n - j >= 8 ? __mmask8(0xff) : __mmask8((1u << (n - j)) - 1);
+      const __mmask8 live = lanes_below(n, j);
       const unsigned hit = _mm512_mask_cmp_pd_mask(live, _mm512_maskz_loadu_pd(live, d + j), target, _CMP_EQ_OQ);
       if (hit) return j + __builtin_ctz(hit);
     }
@@ -1222,16 +1226,13 @@ class FastSimplex {
     return false;
   }
 
-  // One step of iterative refinement of x_B with a double-double residual (rhs - B x_B).
+  // One step of iterative refinement of x_B with a double-double residual (rhs - B x_B), rounded
+  // back to double.
   void refine_weights() {
-    DoubleDouble sum[kMaxRows];
-    for (int r = 0; r < k_; ++r) sum[r] = {p_->rhs[r], 0};
-    for (int i = 0; i < k_; ++i)
-      for (int r = 0; r < k_; ++r) add_product(sum[r], DoubleDouble{x_[i], 0}, -basic_[i][r]);
-    double misfit[kMaxRows], correction[kMaxRows];
-    for (int r = 0; r < k_; ++r) misfit[r] = sum[r].value();
-    in_basis(misfit, correction);
-    for (int i = 0; i < k_; ++i) x_[i] += correction[i];
+    DoubleDouble x[kMaxRows];
+    for (int i = 0; i < k_; ++i) x[i] = {x_[i], 0};
+    refine_precisely<false>(x, p_->rhs.data(), binv_);
+    for (int i = 0; i < k_; ++i) x_[i] = x[i].value();
   }
 
   // After phase 1 every artificial left in the basis sits at zero; pivot each out on the
@@ -1511,7 +1512,7 @@ class FastSimplex {
     // Eight at a time, masked at the end, skipping blocks without a suspect.
     const __m512d threshold = _mm512_set1_pd(suspect_below);
     for (; j < n_; j += 8) {
-      const __mmask8 live = n_ - j >= 8 ? __mmask8(0xff) : __mmask8((1u << (n_ - j)) - 1);
+      const __mmask8 live = lanes_below(n_, j);
       unsigned mask = _mm512_mask_cmp_pd_mask(live, _mm512_maskz_loadu_pd(live, reduced + j), threshold, _CMP_NGE_UQ);
       for (; mask; mask &= mask - 1) judge(j + __builtin_ctz(mask));
     }
