@@ -164,24 +164,30 @@ class FastSimplex {
     // same surfaces, so the fragment's own lane is not always the best guess, and where the
     // surfaces change from left to right (a silhouette along the column) the texel above often
     // still sees the same ones: with it, a third fewer LPs need the composite repair.
-    // The kWarmTries closest in one pass over the compact z_f arrays (insertion into a short
-    // sorted list; ties keep lanes before the row above, each in lane order).
-    const WarmBasis* tries[kWarmTries];
-    double distance[kWarmTries];
+    // The kWarmTries closest from the compact z_f arrays (ties keep lanes before the row above,
+    // each in lane order): each basis's rank is the number of bases closer, or as close and offered
+    // earlier, with no data-dependent branch (an insertion into a sorted list mispredicted).
+    constexpr int kOffered = 2 * kWarmLanes;
+    double distance[kOffered];
+    const WarmBasis* offered[kOffered];
+    const WarmBasis* tries[kOffered + 1];  // slot kOffered takes the ones not tried
     int count = 0;
-    auto offer = [&](const double* zf, const WarmBasis* bases) {
-      for (int l = 0; l < kWarmLanes; ++l) {
-        const double d = std::abs(zf[l] - p.zf);
-        if (!(count < kWarmTries ? d == d : d < distance[kWarmTries - 1])) continue;  // NaN: no basis
-        int slot = count < kWarmTries ? count++ : kWarmTries - 1;
-        for (; slot > 0 && d < distance[slot - 1]; --slot) tries[slot] = tries[slot - 1], distance[slot] = distance[slot - 1];
-        tries[slot] = bases + l;
-        distance[slot] = d;
-      }
-    };
     if (at) {
-      offer(lane_zf_, lanes_);
-      if (column >= 0) offer(&above_zf_[size_t(column) * kWarmLanes], &above_[size_t(column) * kWarmLanes]);
+      const double* above_zf = column >= 0 ? &above_zf_[size_t(column) * kWarmLanes] : nullptr;
+      for (int l = 0; l < kWarmLanes; ++l) {
+        distance[l] = std::abs(lane_zf_[l] - p.zf);  // NaN: no basis
+        offered[l] = lanes_ + l;
+        distance[kWarmLanes + l] = above_zf ? std::abs(above_zf[l] - p.zf) : kNoBasis;
+        offered[kWarmLanes + l] = above_zf ? &above_[size_t(column) * kWarmLanes + l] : nullptr;
+      }
+      for (int i = 0; i < kOffered; ++i) {
+        int rank = 0;
+        for (int j = 0; j < kOffered; ++j) rank += (distance[j] < distance[i]) | ((j < i) & (distance[j] == distance[i]));
+        const bool usable = distance[i] == distance[i];
+        tries[usable && rank < kWarmTries ? rank : kOffered] = offered[i];
+        count += usable;
+      }
+      count = std::min(count, kWarmTries);
     }
     s.reset();
     at_ = at;
@@ -423,7 +429,7 @@ class FastSimplex {
     // The point beyond the partner, and the two around the node, in one pass over the extra points
     // (most shifts move both: three passes were ~8 % of a warm LP).
     int beyond[3];
-    points_beyond<3>({from, node, node}, {direction, direction, -direction}, beyond);
+    points_beyond<3>({from, node, node}, {direction, direction, -direction}, {basis_[partner], -1, -1}, beyond);
     const int next = beyond[0], far = beyond[1], near = beyond[2];
     if (next < 0) return false;
     if ((node - point(next)) * direction > 0) {
@@ -436,18 +442,21 @@ class FastSimplex {
   }
 
   // The point of I nearest beyond from[q] in direction[q] (a column index, or -1), for Q queries:
-  // the grid point of each by grid_bound, then one pass over the extra points for all of them (an
-  // extra point wins only if strictly nearer), then one more for the first index holding each
-  // nearest distance.
+  // the grid point of each by grid_bound (or the neighbour of column[q] when that is the grid point
+  // at from[q]: the grid ascends strictly), then one pass over the extra points for all of them (an
+  // extra point wins only if strictly nearer), then (without AVX-512) one more for the first index
+  // holding each nearest distance.
   template <int Q>
-  void points_beyond(const double (&from)[Q], const double (&direction)[Q], int (&out)[Q]) const {
+  void points_beyond(const double (&from)[Q], const double (&direction)[Q], const int (&column)[Q],
+                     int (&out)[Q]) const {
     constexpr double kNone = std::numeric_limits<double>::infinity();
     const auto& grid = p_->grid->points;
-    double distance[Q], nearest[Q];
+    double distance[Q];
     for (int q = 0; q < Q; ++q) {
-      const int g = direction[q] > 0 ? grid_bound(grid, from[q], true, cell_scale_)
-                                     : grid_bound(grid, from[q], false, cell_scale_) - 1;
-      out[q] = -1, distance[q] = kNone, nearest[q] = kNone;
+      const int g = column[q] >= 0 && column[q] < g_ ? column[q] + (direction[q] > 0 ? 1 : -1)
+                    : direction[q] > 0 ? grid_bound(grid, from[q], true, cell_scale_)
+                                       : grid_bound(grid, from[q], false, cell_scale_) - 1;
+      out[q] = -1, distance[q] = kNone;
       if (g >= 0 && g < g_) out[q] = g, distance[q] = std::abs(grid[g] - from[q]);
     }
     const double* points = extra_points_;
@@ -455,40 +464,44 @@ class FastSimplex {
     // Eight lanes, masked: a comparison and a masked minimum per query where AVX needed a compare,
     // a blend and a minimum for four, and the tail in the same loop (the searches were ~6 % of a
     // warm LP, a third of its bracket shifts).
+    // One pass: each lane keeps its nearest distance and the first index holding it (updated only
+    // on a strictly nearer point), so the lanes' nearest, ties to the smaller index, is the first
+    // index holding the nearest distance (a second pass to find it was a third of the searches).
     {
       __m512d origin[Q], sign[Q], low[Q];
+      __m512i where[Q];
       const __m512d zero = _mm512_setzero_pd();
-      for (int q = 0; q < Q; ++q)
-        origin[q] = _mm512_set1_pd(from[q]), sign[q] = _mm512_set1_pd(direction[q]), low[q] = _mm512_set1_pd(kNone);
-      for (int e = 0; e < e_; e += 8) {
-        const __mmask8 live = lanes_below(e_, e);
-        const __m512d p = _mm512_maskz_loadu_pd(live, points + e);
-        for (int q = 0; q < Q; ++q) {
-          const __m512d d = _mm512_mul_pd(_mm512_sub_pd(p, origin[q]), sign[q]);
-          low[q] = _mm512_mask_min_pd(low[q], _mm512_mask_cmp_pd_mask(live, d, zero, _CMP_GT_OQ), d, low[q]);
-        }
-      }
-      int open = 0;
-      bool wanted[Q];
+      const __m512i step = _mm512_set1_epi64(8);
+      __m512i index = _mm512_set_epi64(7, 6, 5, 4, 3, 2, 1, 0);
       for (int q = 0; q < Q; ++q) {
-        nearest[q] = smallest_lane(low[q], nearest[q]);
-        open += wanted[q] = nearest[q] < distance[q];
-        low[q] = _mm512_set1_pd(nearest[q]);
+        origin[q] = _mm512_set1_pd(from[q]), sign[q] = _mm512_set1_pd(direction[q]);
+        low[q] = _mm512_set1_pd(kNone), where[q] = _mm512_setzero_si512();
       }
-      // The first index holding each nearest distance that beats its grid point.
-      for (int e = 0; open > 0 && e < e_; e += 8) {
+      for (int e = 0; e < e_; e += 8, index = _mm512_add_epi64(index, step)) {
         const __mmask8 live = lanes_below(e_, e);
         const __m512d p = _mm512_maskz_loadu_pd(live, points + e);
         for (int q = 0; q < Q; ++q) {
-          if (!wanted[q]) continue;
           const __m512d d = _mm512_mul_pd(_mm512_sub_pd(p, origin[q]), sign[q]);
-          const unsigned mask = _mm512_mask_cmp_pd_mask(live, d, low[q], _CMP_EQ_OQ);
-          if (mask) out[q] = g_ + e + __builtin_ctz(mask), wanted[q] = false, --open;
+          const __mmask8 nearer = _mm512_mask_cmp_pd_mask(_mm512_mask_cmp_pd_mask(live, d, zero, _CMP_GT_OQ), d, low[q], _CMP_LT_OQ);
+          low[q] = _mm512_mask_mov_pd(low[q], nearer, d);
+          where[q] = _mm512_mask_mov_epi64(where[q], nearer, index);
         }
+      }
+      for (int q = 0; q < Q; ++q) {
+        const double least = smallest_lane(low[q], kNone);
+        if (!(least < distance[q])) continue;  // the grid point is as near (or no extra point beyond)
+        const __mmask8 holding = _mm512_cmp_pd_mask(low[q], _mm512_set1_pd(least), _CMP_EQ_OQ);
+        int64_t index_of[8];
+        _mm512_storeu_si512(index_of, _mm512_mask_mov_epi64(_mm512_set1_epi64(e_), holding, where[q]));
+        int64_t first = e_;
+        for (int64_t v : index_of) first = v < first ? v : first;
+        out[q] = g_ + int(first);
       }
       return;
     }
 #else
+    double nearest[Q];
+    for (int q = 0; q < Q; ++q) nearest[q] = kNone;
     int e = 0;
 #ifdef __AVX__
     {
@@ -796,10 +809,15 @@ class FastSimplex {
   }
   // min(start, the smallest lane of low) (NaN lanes are passed over).
   static double smallest_lane(__m512d low, double start = 0) {
-    double lane[8], smallest = start;  // (GCC 12's _mm512_reduce_min_pd warns of an uninitialised variable)
-    _mm512_storeu_pd(lane, low);
-    for (double v : lane) smallest = v < smallest ? v : smallest;
-    return smallest;
+    // Three shuffle-and-minimum steps, not a store and eight dependent scalar ones. (The masked
+    // forms with every lane set: GCC 12's unmasked ones, and _mm512_reduce_min_pd, warn of an
+    // uninitialised variable.) No lane is NaN: every caller's masked minimum keeps its previous
+    // value for NaN inputs.
+    low = _mm512_mask_min_pd(low, 0xff, low, _mm512_mask_shuffle_f64x2(low, 0xff, low, low, 0x4e));
+    low = _mm512_mask_min_pd(low, 0xff, low, _mm512_mask_shuffle_f64x2(low, 0xff, low, low, 0xb1));
+    low = _mm512_mask_min_pd(low, 0xff, low, _mm512_mask_permute_pd(low, 0xff, low, 0x55));
+    const double smallest = _mm512_cvtsd_f64(low);
+    return smallest < start ? smallest : start;
   }
 #endif
   // Each out_j is the chain base_j - w_0 a_0j - w_1 a_1j - ... in fused multiply-adds, as the
@@ -1478,11 +1496,14 @@ class FastSimplex {
       bound += std::abs(y[r].value() * residual[r].value());
     }
     // Complementarity as the KKT checker sees it: basic reduced costs, zero in exact arithmetic,
-    // are |y| times rounding in practice.
+    // are |y| times rounding in practice. Computed for every basic column, since each is also a
+    // suspect below (judged twice, they were ~15 % of this certificate).
+    double basic_reduced[kMaxRows];
+    for (int i = 0; i < k_; ++i) basic_reduced[i] = basis_[i] < n_ ? precise_reduced_cost(basis_[i], y) : 0.0;
     for (int i = 0; i < k_; ++i) {
       const double w = clamped[i].value();
       if (w <= 0) continue;
-      if (basis_[i] < n_) bound += w * std::abs(precise_reduced_cost(basis_[i], y));
+      if (basis_[i] < n_) bound += w * std::abs(basic_reduced[i]);
       if (basis_[i] == composite_)  // reported as its atoms, so their reduced costs count
         for (size_t t = 0; t < p_->start_support.size(); ++t)
           bound += w * p_->start_weights[t] * std::abs(precise_reduced_cost(p_->start_support[t], y));
@@ -1503,7 +1524,9 @@ class FastSimplex {
     double infeasibility = 0;
     int most_negative_column = -1;
     auto judge = [&](int j) {
-      const double d = precise_reduced_cost(j, y);
+      int at = -1;
+      for (int i = 0; i < k_; ++i) at = basis_[i] == j ? i : at;
+      const double d = at >= 0 ? basic_reduced[at] : precise_reduced_cost(j, y);
       if (-d > infeasibility) infeasibility = -d, most_negative_column = j;
     };
     const double* reduced = reduced_.data();

@@ -6,7 +6,9 @@
 // scratch. Falls back to the tiny dataset without data/.
 #include <benchmark/benchmark.h>
 
+#include <bit>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -147,13 +149,16 @@ void BM_SolveRuns(benchmark::State& state, const std::string& backend, const std
   TimedSolver solver{lp::make_backend(backend)};
   size_t unstable = 0, iterations = 0, solved = 0;
   double checksum = 0;
+  uint64_t answers = 0;  // a hash of every G's bits in the last pass: equal across builds = the same answers
   for (auto _ : state) {
+    answers = 0;
     for (const auto& run : list)
       for (size_t i = 0; i < run.problems.size(); ++i) {
         const lp::Solution& s = solver.solve(run.problems[i], warm && i > 0 ? &run.positions[i] : nullptr);
         unstable += s.status != lp::ProblemStatus::Optimal;
         iterations += s.iterations;
         checksum += s.G;
+        answers = answers * 1099511628211ull ^ std::bit_cast<uint64_t>(s.G);
         ++solved;
       }
     state.SetIterationTime(solver.take_seconds());
@@ -163,6 +168,7 @@ void BM_SolveRuns(benchmark::State& state, const std::string& backend, const std
   state.counters["pivots"] = double(iterations) / double(solved);
   state.counters["not_optimal"] = double(unstable) / double(solved);
   state.counters["lps_per_pass"] = double(solved) / double(state.iterations());
+  state.counters["answers"] = double(answers >> 12);  // exact in a double (52 bits); compare with --benchmark_format=json
 }
 
 BENCHMARK_CAPTURE(BM_SolveRuns, fast_warm_power4_256, "fast", "power4", 256, true)->UseManualTime()->Unit(benchmark::kMillisecond);
