@@ -229,8 +229,16 @@ class FastSimplex {
     cell_scale_ = grid.back() > grid.front() ? (g_ - 1) / (grid.back() - grid.front()) : 0.0;
     const int in_front = grid_bound(grid, p.zf, false, cell_scale_);
     zf_cell_ = in_front;
-    const int taps = int(p.tap_extra.size()), side = int(std::lround(std::sqrt(double(taps))));
-    kernel_side_ = side * side == taps ? side : 0;
+    const int taps = int(p.tap_extra.size());
+    if (taps != kernel_taps_) {  // the same kernel for every problem of a run, nearly always
+      const int side = int(std::lround(std::sqrt(double(taps))));
+      kernel_taps_ = taps;
+      kernel_side_ = side * side == taps ? side : 0;
+      // Each tap's column and row in the kernel: texel_tap needs them for every kernel column of
+      // every warm try, and a division each was ~1 % of an LP.
+      tap_column_.resize(taps), tap_row_.resize(taps);
+      for (int t = 0; t < taps && kernel_side_ > 0; ++t) tap_column_[t] = t % kernel_side_, tap_row_[t] = t / kernel_side_;
+    }
     std::fill(cost_.begin(), cost_.begin() + in_front, 1.0);
     std::fill(cost_.begin() + in_front, cost_.begin() + g_, 0.0);
     for (int e = 0; e < e_; ++e) cost_[g_ + e] = p.extra.points[e] < p.zf ? 1.0 : 0.0;
@@ -345,7 +353,9 @@ class FastSimplex {
           break;
         }
       }
-      if (j < 0 || std::find(basis_, basis_ + i, j) != basis_ + i) return false;
+      bool repeated = false;  // (no std::find: a call per column)
+      for (int q = 0; q < i; ++q) repeated |= basis_[q] == j;
+      if (j < 0 || repeated) return false;
       basis_[i] = j;
     }
     if (!(factors && update_factors(*factors)) && !refactor()) return false;
@@ -398,7 +408,8 @@ class FastSimplex {
   int texel_tap(const WarmBasis& warm, int t) const {
     const int side = kernel_side_;
     if (!at_ || at_->row < 0 || warm.row < 0 || warm.column < 0 || at_->column < 0 || side == 0) return t;
-    const int x = t % side - (at_->column - warm.column), y = t / side - (at_->row - warm.row);
+    if (t < 0 || t >= kernel_taps_) return t;
+    const int x = tap_column_[t] - (at_->column - warm.column), y = tap_row_[t] - (at_->row - warm.row);
     return x >= 0 && y >= 0 && x < side && y < side ? y * side + x : t;
   }
 
@@ -1602,6 +1613,8 @@ class FastSimplex {
   int updates_ = 0;
   int zf_cell_ = 0;         // grid points in front of z_f (solve)
   int kernel_side_ = 0;     // taps a side of the problem's square kernel, 0: not square (texel_tap)
+  int kernel_taps_ = -1;    // the taps kernel_side_, tap_column_ and tap_row_ are for
+  std::vector<int> tap_column_, tap_row_;
   const double* grid_points_ = nullptr;    // the problem's grid and extra points (point)
   const double* extra_points_ = nullptr;
 
