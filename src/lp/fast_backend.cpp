@@ -818,7 +818,7 @@ class FastSimplex {
       low = _mm512_mask_min_pd(low, live, v, low);
     }
   }
-  // min(start, the smallest lane of low) (NaN lanes are passed over).
+  // min(start, the smallest lane of low).
   static double smallest_lane(__m512d low, double start = 0) {
     // Three shuffle-and-minimum steps, not a store and eight dependent scalar ones. (The masked
     // forms with every lane set: GCC 12's unmasked ones, and _mm512_reduce_min_pd, warn of an
