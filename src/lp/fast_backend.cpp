@@ -353,9 +353,7 @@ class FastSimplex {
           break;
         }
       }
-      bool repeated = false;  // (no std::find: a call per column)
-      for (int q = 0; q < i; ++q) repeated |= basis_[q] == j;
-      if (j < 0 || repeated) return false;
+      if (j < 0 || basic_position(j, i) >= 0) return false;
       basis_[i] = j;
     }
     if (!(factors && update_factors(*factors)) && !refactor()) return false;
@@ -472,12 +470,10 @@ class FastSimplex {
     }
     const double* points = extra_points_;
 #ifdef __AVX512F__
-    // Eight lanes, masked: a comparison and a masked minimum per query where AVX needed a compare,
-    // a blend and a minimum for four, and the tail in the same loop (the searches were ~6 % of a
-    // warm LP, a third of its bracket shifts).
-    // One pass: each lane keeps its nearest distance and the first index holding it (updated only
-    // on a strictly nearer point), so the lanes' nearest, ties to the smaller index, is the first
-    // index holding the nearest distance (a second pass to find it was a third of the searches).
+    // Eight lanes, masked (the tail in the same loop), in one pass: each lane keeps its nearest
+    // distance and the first index holding it (updated only on a strictly nearer point), so the
+    // lanes' nearest, ties to the smaller index, is the first index holding the nearest distance
+    // (the searches were ~6 % of a warm LP; a second pass for the index, a third of them).
     {
       __m512d origin[Q], sign[Q], low[Q];
       __m512i where[Q];
@@ -1011,28 +1007,19 @@ class FastSimplex {
         combine_masked(weight, p_->grid->values.data() + w.begin[q], g_, cost_.data() + w.begin[q],
                        reduced_.data() + w.begin[q], w.end[q] - w.begin[q], low);
       combine_masked(weight, p_->extra.values.data(), e_, cost_.data() + g_, reduced_.data() + g_, e_, low);
-      const double smallest = smallest_lane(low);
-      if (!(smallest < -entering_tolerance())) return -1;
-      int first = -1;
-      for (int q = 0; q < w.count && first < 0; ++q) {
-        const int at = first_holding(reduced_.data() + w.begin[q], w.end[q] - w.begin[q], smallest);
-        if (at >= 0) first = w.begin[q] + at;
-      }
-      if (first < 0) first = g_ + first_holding(reduced_.data() + g_, e_, smallest);
-      // A basic column (rounding) holding the smallest: leave it to the full pass.
-      return is_basic(first) ? -1 : first;
+      return first_candidate_holding(w, smallest_lane(low));
     }
 #endif
     const double* rows[K];
-    Choice best;
+    double smallest = 0;
     for (int q = 0; q < w.count; ++q) {
       for (int r = 0; r < K; ++r) rows[r] = p_->grid->values.data() + size_t(r) * g_ + w.begin[q];
-      best.offer(combine_block(y_, rows, cost_.data() + w.begin[q], reduced_.data() + w.begin[q], w.end[q] - w.begin[q]),
-                 w.begin[q], w.end[q] - w.begin[q]);
+      smallest = std::min(smallest, combine_block(y_, rows, cost_.data() + w.begin[q], reduced_.data() + w.begin[q],
+                                                  w.end[q] - w.begin[q]));
     }
     for (int r = 0; r < K; ++r) rows[r] = p_->extra.values.data() + size_t(r) * e_;  // data(): the block may be empty
-    best.offer(combine_block(y_, rows, cost_.data() + g_, reduced_.data() + g_, e_), g_, e_);
-    return chosen(best);
+    smallest = std::min(smallest, combine_block(y_, rows, cost_.data() + g_, reduced_.data() + g_, e_));
+    return first_candidate_holding(w, smallest);
   }
   // The same choice from reduced_ fresh from a full pass (no arithmetic, the same bits): the first
   // iteration after a start prices every column first, since most warm starts are optimal already
@@ -1040,24 +1027,23 @@ class FastSimplex {
   int enter_within_windows() {
     Windows w;
     if (!candidate_windows(w)) return -1;
-    Choice best;
+    double smallest = smallest_of(reduced_.data() + g_, e_);
     for (int q = 0; q < w.count; ++q)
-      best.offer(smallest_of(reduced_.data() + w.begin[q], w.end[q] - w.begin[q]), w.begin[q], w.end[q] - w.begin[q]);
-    best.offer(smallest_of(reduced_.data() + g_, e_), g_, e_);
-    return chosen(best);
+      smallest = std::min(smallest, smallest_of(reduced_.data() + w.begin[q], w.end[q] - w.begin[q]));
+    return first_candidate_holding(w, smallest);
   }
-  // The smallest reduced cost of the candidate blocks offered so far and the first block holding it.
-  struct Choice {
-    double smallest = 0;
-    int where = -1, length = 0;
-    void offer(double least, int first, int count) {
-      if (least < smallest) smallest = least, where = first, length = count;
+  // Dantzig's choice among the candidates (the windows' segments and the extra columns, reduced_
+  // fresh on them), `smallest` their least reduced cost or 0: the first candidate in column order
+  // holding it, or -1 when it is not below the entering tolerance, or when that column is basic
+  // (rounding: the full pass then decides).
+  int first_candidate_holding(const Windows& w, double smallest) const {
+    if (!(smallest < -entering_tolerance())) return -1;
+    int first = -1;
+    for (int q = 0; q < w.count && first < 0; ++q) {
+      const int at = first_holding(reduced_.data() + w.begin[q], w.end[q] - w.begin[q], smallest);
+      if (at >= 0) first = w.begin[q] + at;
     }
-  };
-  int chosen(const Choice& best) const {
-    if (!(best.smallest < -entering_tolerance())) return -1;
-    const int first = best.where + first_holding(reduced_.data() + best.where, best.length, best.smallest);
-    // A basic column (rounding) holding the smallest: leave it to the full pass.
+    if (first < 0) first = g_ + first_holding(reduced_.data() + g_, e_, smallest);
     return is_basic(first) ? -1 : first;
   }
 
@@ -1092,10 +1078,13 @@ class FastSimplex {
       if (d[j] == value) return j;
     return -1;
   }
-  bool is_basic(int j) const {
-    bool found = false;  // no early exit: k is fixed, and std::find was a call (~1 % of an LP)
-    for (int i = 0; i < k_; ++i) found |= basis_[i] == j;
-    return found;
+  bool is_basic(int j) const { return basic_position(j) >= 0; }
+  // The position of column j among basis_[0..among), or -1. Selects, no early exit: k is fixed,
+  // and std::find was a call (~1 % of an LP).
+  int basic_position(int j, int among = K) const {
+    int at = -1;
+    for (int i = 0; i < among; ++i) at = basis_[i] == j ? i : at;
+    return at;
   }
 
   // u = B^{-1} a_j, the entering column in basis coordinates.
@@ -1535,8 +1524,7 @@ class FastSimplex {
     double infeasibility = 0;
     int most_negative_column = -1;
     auto judge = [&](int j) {
-      int at = -1;
-      for (int i = 0; i < k_; ++i) at = basis_[i] == j ? i : at;
+      const int at = basic_position(j);
       const double d = at >= 0 ? basic_reduced[at] : precise_reduced_cost(j, y);
       if (-d > infeasibility) infeasibility = -d, most_negative_column = j;
     };
