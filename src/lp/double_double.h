@@ -6,6 +6,10 @@
 // Needs IEEE double arithmetic: no -ffast-math (reassociation would cancel the error terms).
 #include <cmath>
 
+#ifdef __AVX512F__
+#include <immintrin.h>
+#endif
+
 namespace mb::lp {
 
 struct DoubleDouble {
@@ -46,5 +50,45 @@ inline DoubleDouble to_double_double(long double v) {
   return {hi, double(v - hi)};
 }
 inline long double to_long_double(DoubleDouble v) { return (long double)v.hi + v.lo; }
+
+#ifdef __AVX512F__
+// Eight double-doubles side by side, one a lane: the certificate's k <= 8 sums (rows of B x, or
+// positions of B^T y) at once. Every lane runs exactly the scalar functions' operations in their
+// order (FMA where the compiler contracts the scalar add_product), so each lane's result has the
+// same bits as the scalar one: one sum at a time, the dependent chains of the two-sums were most
+// of the certificate's time.
+struct DoubleDouble8 {
+  __m512d hi = _mm512_setzero_pd(), lo = _mm512_setzero_pd();
+};
+
+inline DoubleDouble8 two_sum(__m512d a, __m512d b) {
+  const __m512d s = _mm512_add_pd(a, b), bb = _mm512_sub_pd(s, a);
+  return {s, _mm512_add_pd(_mm512_sub_pd(a, _mm512_sub_pd(s, bb)), _mm512_sub_pd(b, bb))};
+}
+inline DoubleDouble8 fast_two_sum(__m512d a, __m512d b) {
+  const __m512d s = _mm512_add_pd(a, b);
+  return {s, _mm512_sub_pd(b, _mm512_sub_pd(s, a))};
+}
+// acc += b c, lane by lane, for one double-double b (broadcast) and eight doubles c.
+inline void add_product(DoubleDouble8& acc, DoubleDouble b, __m512d c) {
+  const __m512d high = _mm512_set1_pd(b.hi), p = _mm512_mul_pd(high, c);
+  const __m512d e = _mm512_fmadd_pd(_mm512_set1_pd(b.lo), c, _mm512_fmsub_pd(high, c, p));
+  const DoubleDouble8 s = two_sum(acc.hi, p);
+  acc = fast_two_sum(s.hi, _mm512_add_pd(_mm512_add_pd(s.lo, acc.lo), e));
+}
+// acc += b c, lane by lane, for eight double-doubles b and one double c (broadcast).
+inline void add_product(DoubleDouble8& acc, const DoubleDouble8& b, double c) {
+  const __m512d factor = _mm512_set1_pd(c), p = _mm512_mul_pd(b.hi, factor);
+  const __m512d e = _mm512_fmadd_pd(b.lo, factor, _mm512_fmsub_pd(b.hi, factor, p));
+  const DoubleDouble8 s = two_sum(acc.hi, p);
+  acc = fast_two_sum(s.hi, _mm512_add_pd(_mm512_add_pd(s.lo, acc.lo), e));
+}
+// acc += v, lane by lane.
+inline void add(DoubleDouble8& acc, __m512d v) {
+  const DoubleDouble8 s = two_sum(acc.hi, v);
+  acc = fast_two_sum(s.hi, _mm512_add_pd(s.lo, acc.lo));
+}
+inline __m512d value(const DoubleDouble8& v) { return _mm512_add_pd(v.hi, v.lo); }
+#endif
 
 }  // namespace mb::lp

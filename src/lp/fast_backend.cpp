@@ -1441,6 +1441,22 @@ class FastSimplex {
   template <bool Transposed, class Inverse>
   void refine_precisely(DoubleDouble* v, const double* target, const Inverse& inverse) const {
     using Real = std::remove_cvref_t<decltype(inverse[0][0])>;
+    double misfit[kMaxRows];
+#ifdef __AVX512F__
+    // The k sums as the lanes of one vector: rows of B v from B's columns (basic_[i]), or positions
+    // of B^T v from its rows.
+    {
+      DoubleDouble8 sum{_mm512_maskz_loadu_pd(kLanes, target)};
+      if constexpr (Transposed) {
+        __m512d row[K];
+        basic_rows(row);
+        for (int r = 0; r < K; ++r) add_product(sum, v[r], negated(row[r]));
+      } else {
+        for (int i = 0; i < K; ++i) add_product(sum, v[i], negated(_mm512_maskz_loadu_pd(kLanes, basic_[i])));
+      }
+      _mm512_mask_storeu_pd(misfit, kLanes, value(sum));
+    }
+#else
     DoubleDouble sum[kMaxRows];
     for (int q = 0; q < k_; ++q) sum[q] = {target[q], 0};
     if constexpr (Transposed) {
@@ -1450,14 +1466,27 @@ class FastSimplex {
       for (int i = 0; i < k_; ++i)
         for (int r = 0; r < k_; ++r) add_product(sum[r], v[i], -basic_[i][r]);
     }
-    double misfit[kMaxRows];
     for (int q = 0; q < k_; ++q) misfit[q] = sum[q].value();
+#endif
     for (int i = 0; i < k_; ++i) {
       Real correction = 0;
       for (int r = 0; r < k_; ++r) correction += misfit[r] * (Transposed ? inverse[r][i] : inverse[i][r]);
       add(v[i], double(correction));
     }
   }
+#ifdef __AVX512F__
+  static constexpr __mmask8 kLanes = __mmask8((1u << K) - 1);  // one lane a row or basis position
+  // row[r] = (basic_[0][r], ..., basic_[k-1][r]): row r of B, one lane a basis position.
+  void basic_rows(__m512d (&row)[K]) const {
+    const __m512i position = _mm512_mullo_epi64(_mm512_set_epi64(7, 6, 5, 4, 3, 2, 1, 0), _mm512_set1_epi64(kMaxRows));
+    for (int r = 0; r < K; ++r)
+      row[r] = _mm512_mask_i64gather_pd(_mm512_setzero_pd(), kLanes, position, &basic_[0][r], 8);
+  }
+  // -v exactly (the sign bit flipped, as the scalar unary minus).
+  static __m512d negated(__m512d v) {
+    return _mm512_castsi512_pd(_mm512_xor_si512(_mm512_castpd_si512(v), _mm512_set1_epi64(int64_t(1) << 63)));
+  }
+#endif
   // y_ (dual_values' of the current basis) refined by one double-double step into precise_y_, and
   // rounded back into y_ (iterate, for certify_precisely).
   void refine_duals_for_certificate() {
@@ -1486,20 +1515,44 @@ class FastSimplex {
       if (!(x[i].value() >= -kNegligibleWeight)) return false;
       clamped[i] = x[i].hi > 0 ? x[i] : DoubleDouble{};
     }
-    DoubleDouble residual[kMaxRows];  // B max(x, 0) - rhs, rows side by side
-    for (int r = 0; r < k_; ++r) residual[r] = {-p_->rhs[r], 0};
-    for (int i = 0; i < k_; ++i)
-      for (int r = 0; r < k_; ++r) add_product(residual[r], clamped[i], basic_[i][r]);
-    double bound = 0;
-    for (int r = 0; r < k_; ++r) {
-      if (!(std::abs(residual[r].value()) <= kCertifyResidual)) return false;  // x_B not feasible
-      bound += std::abs(y[r].value() * residual[r].value());
-    }
+    double residual[kMaxRows];  // B max(x, 0) - rhs
     // Complementarity as the KKT checker sees it: basic reduced costs, zero in exact arithmetic,
     // are |y| times rounding in practice. Computed for every basic column, since each is also a
     // suspect below (judged twice, they were ~15 % of this certificate).
     double basic_reduced[kMaxRows];
+#ifdef __AVX512F__
+    {  // the rows of the residual, then the positions' reduced costs, as the lanes of one vector
+      DoubleDouble8 sum{negated(_mm512_maskz_loadu_pd(kLanes, p_->rhs.data()))};
+      for (int i = 0; i < K; ++i) add_product(sum, clamped[i], _mm512_maskz_loadu_pd(kLanes, basic_[i]));
+      _mm512_mask_storeu_pd(residual, kLanes, value(sum));
+      double basic_cost[kMaxRows];
+      __mmask8 structural = 0;
+      for (int i = 0; i < K; ++i) {
+        const bool column = basis_[i] < n_;
+        basic_cost[i] = column ? cost_[basis_[i]] : 0.0;
+        structural |= __mmask8(column) << i;
+      }
+      __m512d row[K];
+      basic_rows(row);
+      DoubleDouble8 reduced{_mm512_maskz_loadu_pd(kLanes, basic_cost)};
+      for (int r = 0; r < K; ++r) add_product(reduced, y[r], negated(row[r]));
+      _mm512_mask_storeu_pd(basic_reduced, kLanes, _mm512_maskz_mov_pd(structural, value(reduced)));
+    }
+#else
+    {
+      DoubleDouble sum[kMaxRows];
+      for (int r = 0; r < k_; ++r) sum[r] = {-p_->rhs[r], 0};
+      for (int i = 0; i < k_; ++i)
+        for (int r = 0; r < k_; ++r) add_product(sum[r], clamped[i], basic_[i][r]);
+      for (int r = 0; r < k_; ++r) residual[r] = sum[r].value();
+    }
     for (int i = 0; i < k_; ++i) basic_reduced[i] = basis_[i] < n_ ? precise_reduced_cost(basis_[i], y) : 0.0;
+#endif
+    double bound = 0;
+    for (int r = 0; r < k_; ++r) {
+      if (!(std::abs(residual[r]) <= kCertifyResidual)) return false;  // x_B not feasible
+      bound += std::abs(y[r].value() * residual[r]);
+    }
     for (int i = 0; i < k_; ++i) {
       const double w = clamped[i].value();
       if (w <= 0) continue;
