@@ -41,7 +41,8 @@ struct Solution {
 // Where a fragment sits in its warm-start run (DESIGN.md §Performance shape, extended to two
 // dimensions): its layer, so that it can continue from the same layer of the texel to the left
 // (the last problem solved in that lane), and its texel column, so that it can continue from any
-// layer of the texel above (the last problem solved in that column); -1: no column memory.
+// layer of the texel above or above to the right (the last problems solved in those columns; the
+// run goes in raster order); -1: no column memory.
 struct WarmPosition {
   int layer = 0;
   int column = -1;
@@ -58,10 +59,10 @@ class Backend {
   // The same answer to within the certified 1e-9, possibly faster: `problem` continues a run of
   // neighbouring fragments in raster order, and the backend may start from the optimal bases of
   // the problems it solved last at the texel to the left (same layer; layers >= kWarmLanes share
-  // the last lane) and at the texel above (`at`). The result then depends on the run, so callers
-  // that promise results independent of the thread count must cut runs the same way on every
-  // schedule (warm_run_of) and start each with `solve`, which forgets every basis. Backends
-  // without warm starts solve from scratch.
+  // the last lane) and at the texels above and above to the right (`at`). The result then depends
+  // on the run, so callers that promise results independent of the thread count must cut runs the
+  // same way on every schedule (warm_run_of) and start each with `solve`, which forgets every
+  // basis. Backends without warm starts solve from scratch.
   virtual Solution solve_next(const Problem& problem, WarmPosition at) {
     (void)at;
     return solve(problem);
