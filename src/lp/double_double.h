@@ -76,18 +76,6 @@ inline void add_product(DoubleDouble8& acc, DoubleDouble b, __m512d c) {
   const DoubleDouble8 s = two_sum(acc.hi, p);
   acc = fast_two_sum(s.hi, _mm512_add_pd(_mm512_add_pd(s.lo, acc.lo), e));
 }
-// acc += b c, lane by lane, for eight double-doubles b and one double c (broadcast).
-inline void add_product(DoubleDouble8& acc, const DoubleDouble8& b, double c) {
-  const __m512d factor = _mm512_set1_pd(c), p = _mm512_mul_pd(b.hi, factor);
-  const __m512d e = _mm512_fmadd_pd(b.lo, factor, _mm512_fmsub_pd(b.hi, factor, p));
-  const DoubleDouble8 s = two_sum(acc.hi, p);
-  acc = fast_two_sum(s.hi, _mm512_add_pd(_mm512_add_pd(s.lo, acc.lo), e));
-}
-// acc += v, lane by lane.
-inline void add(DoubleDouble8& acc, __m512d v) {
-  const DoubleDouble8 s = two_sum(acc.hi, v);
-  acc = fast_two_sum(s.hi, _mm512_add_pd(s.lo, acc.lo));
-}
 inline __m512d value(const DoubleDouble8& v) { return _mm512_add_pd(v.hi, v.lo); }
 #endif
 

@@ -1497,7 +1497,8 @@ class FastSimplex {
   static constexpr __mmask8 kLanes = __mmask8((1u << K) - 1);  // one lane a row or basis position
   // row[r] = (basic_[0][r], ..., basic_[k-1][r]): row r of B, one lane a basis position.
   void basic_rows(__m512d (&row)[K]) const {
-    const __m512i position = _mm512_mullo_epi64(_mm512_set_epi64(7, 6, 5, 4, 3, 2, 1, 0), _mm512_set1_epi64(kMaxRows));
+    static_assert(kMaxRows == 8, "basic_[i][r] lies 8 doubles after basic_[i - 1][r]");
+    const __m512i position = _mm512_set_epi64(56, 48, 40, 32, 24, 16, 8, 0);
     for (int r = 0; r < K; ++r)
       row[r] = _mm512_mask_i64gather_pd(_mm512_setzero_pd(), kLanes, position, &basic_[0][r], 8);
   }
