@@ -48,7 +48,11 @@ ProblemFactory::ProblemFactory(const Basis& basis, const Discretization& disc) :
     throw InputError("basis: at most " + std::to_string(kMaxColumnRows - 1) + " functions, got " + std::to_string(k - 1));
   rows_ = k;
   // Evaluate (1, b(z_i)) on the grid and orthonormalise: A^T = Q R, rows := R^{-T} A = Q^T.
-  Eigen::MatrixXd at(n, k);
+  // In long double: Eigen has no SIMD packets for it, so its reductions run in one order on every
+  // CPU. In double, the QR's vectorised sums followed the SIMD width, and an AVX2 build's grid
+  // columns (and so its answers, in their last bits) differed from an AVX-512 build's.
+  using Matrix = Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>;
+  Matrix at(n, k);
   at.col(0).setOnes();
   std::vector<double> values(n);
   for (int j = 0; j + 1 < k; ++j) {
@@ -59,23 +63,23 @@ ProblemFactory::ProblemFactory(const Basis& basis, const Discretization& disc) :
       at(i, j + 1) = values[i];
     }
   }
-  Eigen::HouseholderQR<Eigen::MatrixXd> qr(at);
-  Eigen::MatrixXd r_upper = qr.matrixQR().topRows(k).triangularView<Eigen::Upper>();
-  double largest = r_upper.diagonal().cwiseAbs().maxCoeff();
+  Eigen::HouseholderQR<Matrix> qr(at);
+  Matrix r_upper = qr.matrixQR().topRows(k).triangularView<Eigen::Upper>();
+  const long double largest = r_upper.diagonal().cwiseAbs().maxCoeff();
   for (int r = 0; r < k; ++r)
     if (std::abs(r_upper(r, r)) < 1e-12 * largest) {
       std::string names;
       for (const auto& name : basis.names()) names += (names.empty() ? "" : ", ") + name;
       throw InputError("basis {" + names + "} is linearly dependent together with the constant on the grid");
     }
-  Eigen::MatrixXd t = r_upper.transpose().triangularView<Eigen::Lower>().solve(Eigen::MatrixXd::Identity(k, k));
+  Matrix t = r_upper.transpose().triangularView<Eigen::Lower>().solve(Matrix::Identity(k, k));
   transform_.resize(size_t(k) * k);
   for (int r = 0; r < k; ++r)
-    for (int c = 0; c < k; ++c) transform_[size_t(r) * k + c] = c <= r ? t(r, c) : 0.0;
-  Eigen::MatrixXd rows = r_upper.transpose().triangularView<Eigen::Lower>().solve(at.transpose());
+    for (int c = 0; c < k; ++c) transform_[size_t(r) * k + c] = c <= r ? double(t(r, c)) : 0.0;
+  Matrix rows = r_upper.transpose().triangularView<Eigen::Lower>().solve(at.transpose());
   grid->values.resize(size_t(k) * n);
   for (int r = 0; r < k; ++r)
-    for (int i = 0; i < n; ++i) grid->values[size_t(r) * n + i] = rows(r, i);
+    for (int i = 0; i < n; ++i) grid->values[size_t(r) * n + i] = double(rows(r, i));
   grid->max_abs = largest_magnitude(grid->values);
   grid_ = std::move(grid);
 }
@@ -83,7 +87,9 @@ ProblemFactory::ProblemFactory(const Basis& basis, const Discretization& disc) :
 void ProblemFactory::transform(const double* v, double* out) const {
   for (int r = 0; r < rows_; ++r) {
     double s = 0;
-    for (int c = 0; c <= r; ++c) s += transform_[size_t(r) * rows_ + c] * v[c];
+    // Fused, in this order: as `s += t * v`, GCC's vectorised products (a vector multiply, then
+    // scalar adds) depended on the SIMD width, and so did the columns' last bits.
+    for (int c = 0; c <= r; ++c) s = std::fma(transform_[size_t(r) * rows_ + c], v[c], s);
     out[r] = s;
   }
 }
@@ -221,7 +227,7 @@ void ProblemFactory::from_distribution(std::span<const double> depths, std::span
       if (weights[t] == 0) continue;
       const double w = weights[t] * scale;
       const double* column = depth_columns[t];
-      for (int r = 0; r < rows; ++r) sum[r] += w * column[r];
+      for (int r = 0; r < rows; ++r) sum[r] = std::fma(w, column[r], sum[r]);  // fused: see transform
       // Equal depths are usually neighbours in tap order: look back a few slots only (a duplicate
       // column that slips through is harmless, a quadratic search per fragment is not).
       int slot = -1;  // the earliest match among the last four (selects, not branches)
