@@ -2,6 +2,7 @@
 // flags or a JSON Lines batch; `--check` runs the independent KKT checker on every answer.
 #include <cstdio>
 #include <fstream>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -33,11 +34,34 @@ struct SolveOptions {
 
 using nlohmann::json;
 
-json solve_one(lp::Backend& backend, const std::vector<std::string>& basis_names, const lp::Discretization& disc,
-               const std::vector<double>& moments, double zf, const std::vector<double>& points, bool check) {
-  Basis basis = Basis::parse(basis_names);
-  basis.check_independent(disc.lo, disc.hi);
-  lp::Problem problem = lp::make_problem(basis, disc, moments, zf, points);
+// The problem factory of the last LP line's basis and discretisation: a batch's lines mostly share
+// them, and building one (the basis checked, the grid orthonormalised in long double: ~0.15 ms at
+// 256 points, ~1.7 ms at 1024 with eight functions) costs more than solving the LP.
+class FactoryCache {
+ public:
+  const lp::ProblemFactory& get(const std::vector<std::string>& basis_names, const lp::Discretization& disc) {
+    if (!factory_ || basis_names != names_ || disc.lo != disc_.lo || disc.hi != disc_.hi || disc.grid != disc_.grid ||
+        disc.quantize != disc_.quantize) {
+      factory_.reset();  // a line that fails here must not leave the previous one's factory behind
+      Basis basis = Basis::parse(basis_names);
+      basis.check_independent(disc.lo, disc.hi);
+      factory_ = std::make_unique<lp::ProblemFactory>(basis, disc);
+      names_ = basis_names;
+      disc_ = disc;
+    }
+    return *factory_;
+  }
+
+ private:
+  std::vector<std::string> names_;
+  lp::Discretization disc_;
+  std::unique_ptr<lp::ProblemFactory> factory_;
+};
+
+json solve_one(lp::Backend& backend, FactoryCache& factories, const std::vector<std::string>& basis_names,
+               const lp::Discretization& disc, const std::vector<double>& moments, double zf,
+               const std::vector<double>& points, bool check) {
+  lp::Problem problem = factories.get(basis_names, disc).from_moments(moments, zf, points);
   lp::Solution s = backend.solve(problem);
   json out;
   if (s.call == lp::CallStatus::Failed) {
@@ -89,7 +113,9 @@ int run_solve(const SolveOptions& o) {
   if (o.interval.size() != 2) throw InputError("--interval: expected lo,hi");
   lp::Discretization disc{o.interval[0], o.interval[1], o.grid, o.quantize};
   if (o.input.empty()) {
-    json r = !o.technique.empty() ? solve_closed_form(o.technique, o.alpha, o.moments, o.zf) : solve_one(*backend, o.basis, disc, o.moments, o.zf, o.points, o.check);
+    FactoryCache factories;
+    json r = !o.technique.empty() ? solve_closed_form(o.technique, o.alpha, o.moments, o.zf)
+                                  : solve_one(*backend, factories, o.basis, disc, o.moments, o.zf, o.points, o.check);
     std::printf("%s\n", r.dump(2).c_str());
     return r["status"] == "optimal" ? 0 : 3;
   }
@@ -98,6 +124,7 @@ int run_solve(const SolveOptions& o) {
   std::ostringstream results;
   std::string line;
   int number = 0, failures = 0;
+  FactoryCache factories;
   while (std::getline(in, line)) {
     ++number;
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
@@ -113,7 +140,7 @@ int run_solve(const SolveOptions& o) {
         std::vector<double> interval = q.value("interval", std::vector<double>{0, 1});
         if (interval.size() != 2) throw InputError("interval: expected [lo, hi]");
         lp::Discretization d{interval[0], interval[1], q.value("grid", o.grid), o.quantize};
-        out.update(solve_one(*backend, basis, d, q.at("moments").get<std::vector<double>>(),
+        out.update(solve_one(*backend, factories, basis, d, q.at("moments").get<std::vector<double>>(),
                              q.at("zf").get<double>(), q.value("points", std::vector<double>{}), o.check));
       }
     } catch (const std::exception& e) {
