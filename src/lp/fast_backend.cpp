@@ -1455,26 +1455,36 @@ class FastSimplex {
   // One step of iterative refinement of v in B v = target (Transposed: B^T v = target; x_B from the
   // moments, y from the basic costs) with a double-double residual and the given inverse of B
   // (double or long double): each step gains the digits that cond(B) times the inverse's precision
-  // leaves. The k sums side by side (the inner loops run over independent accumulators): one at a
-  // time, each double-double sum is a chain of dependent adds, and latency dominated.
+  // leaves.
   template <bool Transposed, class Inverse>
   void refine_precisely(DoubleDouble* v, const double* target, const Inverse& inverse) const {
     using Real = std::remove_cvref_t<decltype(inverse[0][0])>;
     double misfit[kMaxRows];
-#ifdef __AVX512F__
-    // The k sums as the lanes of one vector: rows of B v from B's columns (basic_[i]), or positions
-    // of B^T v from its rows.
-    {
-      DoubleDouble8 sum{_mm512_maskz_loadu_pd(kLanes, target)};
-      if constexpr (Transposed) {
-        __m512d row[K];
-        basic_rows(row);
-        for (int r = 0; r < K; ++r) add_product(sum, v[r], negated(row[r]));
-      } else {
-        for (int i = 0; i < K; ++i) add_product(sum, v[i], negated(_mm512_maskz_loadu_pd(kLanes, basic_[i])));
-      }
-      _mm512_mask_storeu_pd(misfit, kLanes, value(sum));
+    misfit_of<Transposed>(v, target, misfit);
+    for (int i = 0; i < k_; ++i) {
+      Real correction = 0;
+      for (int r = 0; r < k_; ++r) correction += misfit[r] * (Transposed ? inverse[r][i] : inverse[i][r]);
+      add(v[i], double(correction));
     }
+  }
+  // misfit = target - B v (Transposed: target - B^T v), summed in double-double and rounded: the
+  // refinements' residuals, the certificate's residual of the clamped x_B, and its basic columns'
+  // reduced costs (c_B - B^T y). The k sums side by side: one at a time, each double-double sum is
+  // a chain of dependent adds, and latency dominated.
+  template <bool Transposed>
+  void misfit_of(const DoubleDouble* v, const double* target, double* misfit) const {
+#ifdef __AVX512F__
+    // As the lanes of one vector: rows of B v from B's columns (basic_[i]), or positions of B^T v
+    // from its rows.
+    DoubleDouble8 sum{_mm512_maskz_loadu_pd(kLanes, target)};
+    if constexpr (Transposed) {
+      __m512d row[K];
+      basic_rows(row);
+      for (int r = 0; r < K; ++r) add_product(sum, v[r], negated(row[r]));
+    } else {
+      for (int i = 0; i < K; ++i) add_product(sum, v[i], negated(_mm512_maskz_loadu_pd(kLanes, basic_[i])));
+    }
+    _mm512_mask_storeu_pd(misfit, kLanes, value(sum));
 #else
     DoubleDouble sum[kMaxRows];
     for (int q = 0; q < k_; ++q) sum[q] = {target[q], 0};
@@ -1487,11 +1497,6 @@ class FastSimplex {
     }
     for (int q = 0; q < k_; ++q) misfit[q] = sum[q].value();
 #endif
-    for (int i = 0; i < k_; ++i) {
-      Real correction = 0;
-      for (int r = 0; r < k_; ++r) correction += misfit[r] * (Transposed ? inverse[r][i] : inverse[i][r]);
-      add(v[i], double(correction));
-    }
   }
 #ifdef __AVX512F__
   static constexpr __mmask8 kLanes = __mmask8((1u << K) - 1);  // one lane a row or basis position
@@ -1535,39 +1540,16 @@ class FastSimplex {
       if (!(x[i].value() >= -kNegligibleWeight)) return false;
       clamped[i] = x[i].hi > 0 ? x[i] : DoubleDouble{};
     }
-    double residual[kMaxRows];  // B max(x, 0) - rhs
+    // rhs - B max(x, 0): only its size counts below.
+    double residual[kMaxRows];
+    misfit_of<false>(clamped, p_->rhs.data(), residual);
     // Complementarity as the KKT checker sees it: basic reduced costs, zero in exact arithmetic,
     // are |y| times rounding in practice. Computed for every basic column, since each is also a
     // suspect below (judged twice, they were ~15 % of this certificate).
-    double basic_reduced[kMaxRows];
-#ifdef __AVX512F__
-    {  // the rows of the residual, then the positions' reduced costs, as the lanes of one vector
-      DoubleDouble8 sum{negated(_mm512_maskz_loadu_pd(kLanes, p_->rhs.data()))};
-      for (int i = 0; i < K; ++i) add_product(sum, clamped[i], _mm512_maskz_loadu_pd(kLanes, basic_[i]));
-      _mm512_mask_storeu_pd(residual, kLanes, value(sum));
-      double basic_cost[kMaxRows];
-      __mmask8 structural = 0;
-      for (int i = 0; i < K; ++i) {
-        const bool column = basis_[i] < n_;
-        basic_cost[i] = column ? cost_[basis_[i]] : 0.0;
-        structural |= __mmask8(column) << i;
-      }
-      __m512d row[K];
-      basic_rows(row);
-      DoubleDouble8 reduced{_mm512_maskz_loadu_pd(kLanes, basic_cost)};
-      for (int r = 0; r < K; ++r) add_product(reduced, y[r], negated(row[r]));
-      _mm512_mask_storeu_pd(basic_reduced, kLanes, _mm512_maskz_mov_pd(structural, value(reduced)));
-    }
-#else
-    {
-      DoubleDouble sum[kMaxRows];
-      for (int r = 0; r < k_; ++r) sum[r] = {-p_->rhs[r], 0};
-      for (int i = 0; i < k_; ++i)
-        for (int r = 0; r < k_; ++r) add_product(sum[r], clamped[i], basic_[i][r]);
-      for (int r = 0; r < k_; ++r) residual[r] = sum[r].value();
-    }
-    for (int i = 0; i < k_; ++i) basic_reduced[i] = basis_[i] < n_ ? precise_reduced_cost(basis_[i], y) : 0.0;
-#endif
+    // (Read for the structural columns only: the composite's atoms count instead.)
+    double basic_cost[kMaxRows], basic_reduced[kMaxRows];
+    for (int i = 0; i < k_; ++i) basic_cost[i] = basis_[i] < n_ ? cost_[basis_[i]] : 0.0;
+    misfit_of<true>(y, basic_cost, basic_reduced);
     double bound = 0;
     for (int r = 0; r < k_; ++r) {
       if (!(std::abs(residual[r]) <= kCertifyResidual)) return false;  // x_B not feasible
