@@ -983,7 +983,8 @@ class FastSimplex {
     add(zf_cell_);
     // The half test first, from the bits alone: at grid 256 the windows of k + 1 centres cover more
     // than half the columns unless they overlap (clustered nodes), and building segments that were
-    // then dropped was ~5 % of an LP. Blocks are whole but the last, which may reach past g_.
+    // then dropped drew ~5 % of the solver's profile samples. Blocks are whole but the last, which may
+    // reach past g_.
     int set_blocks = 0;
     for (int word = 0; word < words; ++word) set_blocks += __builtin_popcountll(bits[word]);
     const int last_block = (g_ - 1) >> 2;
