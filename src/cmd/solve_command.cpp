@@ -40,8 +40,7 @@ using nlohmann::json;
 class FactoryCache {
  public:
   const lp::ProblemFactory& get(const std::vector<std::string>& basis_names, const lp::Discretization& disc) {
-    if (!factory_ || basis_names != names_ || disc.lo != disc_.lo || disc.hi != disc_.hi || disc.grid != disc_.grid ||
-        disc.quantize != disc_.quantize) {
+    if (!factory_ || basis_names != names_ || disc != disc_) {
       factory_.reset();  // a line that fails here must not leave the previous one's factory behind
       Basis basis = Basis::parse(basis_names);
       basis.check_independent(disc.lo, disc.hi);

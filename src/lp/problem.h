@@ -28,6 +28,7 @@ struct Discretization {
   // false: I = grid ∪ extra points (the kernel's depths) ∪ {z_f}. true: depths are rounded to
   // the grid before moments are taken, and I = grid ∪ {z_f}.
   bool quantize = false;
+  bool operator==(const Discretization&) const = default;
 };
 
 // Points and their transformed columns (1, b(z)) -> T (1, b(z)), row-major: values[r * size + j].
