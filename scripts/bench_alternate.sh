@@ -11,7 +11,7 @@ log=$(mktemp); trap 'rm -f "$log"' EXIT
 pin=(); command -v taskset >/dev/null && pin=(taskset -c "$(($(nproc) - 1))")
 for ((round = 1; round <= rounds; ++round)); do
   for binary in "$@"; do
-    "${pin[@]}" "$binary" --benchmark_filter='SolveRuns/(fast_warm|glpk)' --benchmark_repetitions=3 \
+    "${pin[@]}" "$binary" --benchmark_filter="${BENCH_FILTER:-SolveRuns/(fast_warm|glpk)}" --benchmark_repetitions=3 \
         --benchmark_enable_random_interleaving=true 2>/dev/null |
       awk -v b="$binary" '/^BM_SolveRuns/ && !/_(mean|median|stddev|cv) / {
           split($1, name, "/"); rate = ""

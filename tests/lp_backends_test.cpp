@@ -203,8 +203,8 @@ namespace {
 // Warm starts (Backend::solve_next) along runs of neighbouring fragments, as the sweep solves
 // them: the same status and G to 1e-9 as solving each from scratch, KKT-certified, and fewer
 // pivots in all (else the warm start is not doing its job). Real kernels of the tiny dataset.
-// Grid 1024 too: there the iterations price candidate windows first (partial pricing), and the
-// KKT checker, which prices every column itself, sees whether an optimum was declared too early.
+// The iterations price the extra columns first (partial pricing), and the KKT checker, which
+// prices every column itself, sees whether an optimum was declared too early; grid 1024 too.
 TEST(LpWarmStart, RunsOfNeighbouringFragmentsGiveTheColdAnswers) {
   EvalSettings settings;
   settings.threads = 2;

@@ -54,11 +54,6 @@ constexpr int kGuidedSteps = 8;                  // certificate-guided steps per
 constexpr int kWarmTries = 5;                    // warm bases tried before the composite repair
 constexpr int kChangedColumns = 2;  // update_factors: product-form updates instead of a factorisation
 constexpr double kHopelessWeight = 10;          // a warm try with a weight below -10 is given up
-// Partial pricing: grid cells each side of a basic point, 1/16 of the grid but at least 8. On the
-// default dataset's runs (lp_bench) that needs fewer pivots than full Dantzig pricing (2.54 vs 2.71
-// at grid 256, 3.07 vs 3.24 at 1024: the steepest column anywhere is often a poor one); 1/32 needed
-// more (2.91 and 3.54), a fixed 8 cells 7.1 at grid 1024.
-constexpr int kCandidateCells = 8;
 
 // In-place LU with partial pivoting and inverse for k <= 8, in long double for the certificate's
 // last resort: when the double inverse cannot refine x_B and y (cond(B) of boundary instances
@@ -237,7 +232,6 @@ class FastSimplex {
     e_ = p.extra.size();
     composite_ = n_ + k_;
     reduced_.resize(n_);
-    window_bits_.resize(((g_ + 3) / 4 + 63) / 64);
     // Costs once per problem: the grid is ascending, so its cost is a prefix of ones.
     cost_.resize(n_);
     const auto& grid = p.grid->points;
@@ -245,7 +239,6 @@ class FastSimplex {
     extra_points_ = p.extra.points.data();
     cell_scale_ = grid.back() > grid.front() ? (g_ - 1) / (grid.back() - grid.front()) : 0.0;
     const int in_front = grid_bound(grid, p.zf, false, cell_scale_);
-    zf_cell_ = in_front;
     const int taps = int(p.tap_extra.size());
     if (taps != kernel_taps_) {  // the same kernel for every problem of a run, nearly always
       const int side = int(std::lround(std::sqrt(double(taps))));
@@ -948,128 +941,41 @@ class FastSimplex {
       if (basis_[i] < n_) reduced_[basis_[i]] = saved[i];
     return best;
   }
-  // Partial pricing (REFERENCE §2: on each side of z_f the reduced cost c - y.a(z) is a smooth
-  // function of z, zero and minimal at the basic points of an optimal basis; after a warm start the
-  // columns that enter are mostly near them). The candidates: every extra column (the kernel's
-  // depths and z_f) and the grid within kCandidateCells cells of each basic point and of z_f, as
-  // merged grid segments [begin, end) in column order. False when the candidates are more than
-  // half the columns: a full pass then costs hardly more (no segments, one reduction).
-  struct Windows {
-    int begin[kMaxRows + 1], end[kMaxRows + 1], count = 0;
-  };
-  bool candidate_windows(Windows& w) {
-    const double lo = p_->grid->points.front();
-    const int cells = std::max(kCandidateCells, g_ / 16);
-    // The windows as bits, one a block of four grid columns, so that sorting and merging them is
-    // a scan of a few words (sorted and merged one by one, they were ~8 % of an LP: mispredicted
-    // branches). Whole blocks of four: the vectorised loop then needs no scalar tail.
-    uint64_t* bits = window_bits_.data();
-    const int words = int(window_bits_.size());
-    std::fill(bits, bits + words, 0);
-    auto add = [&](int at) {
-      const int first = std::max(0, at - cells) >> 2, last = (std::min(g_, (at + cells + 4) & ~3) + 3) >> 2;
-      for (int block = first; block < last;) {  // blocks [first, last), a word at a time
-        const int word = block >> 6, from = block & 63, to = std::min(64, from + (last - block));
-        bits[word] |= (to == 64 ? ~uint64_t(0) : (uint64_t(1) << to) - 1) & ~((uint64_t(1) << from) - 1);
-        block += to - from;
-      }
-    };
-    for (int i = 0; i < k_; ++i) {
-      const int j = basis_[i];
-      if (j < g_) add(j);
-      else if (j < n_) add(std::clamp(int((point(j) - lo) * cell_scale_), 0, g_ - 1));  // a centre, not a bound
-    }
-    add(zf_cell_);
-    // The half test first, from the bits alone: at grid 256 the windows of k + 1 centres cover more
-    // than half the columns unless they overlap (clustered nodes), and building segments that were
-    // then dropped drew ~5 % of the solver's profile samples. Blocks are whole but the last, which may
-    // reach past g_.
-    int set_blocks = 0;
-    for (int word = 0; word < words; ++word) set_blocks += __builtin_popcountll(bits[word]);
-    const int last_block = (g_ - 1) >> 2;
-    const bool last_set = (bits[last_block >> 6] >> (last_block & 63)) & 1;
-    const int candidates = e_ + 4 * set_blocks - (last_set ? 4 * (last_block + 1) - g_ : 0);
-    if (2 * candidates > n_) return false;
-    // Runs of set bits are the merged segments, in column order (windows that touch merge too).
-    w.count = 0;
-    int open = -1;  // the first block of the run being scanned
-    for (int word = 0; word < words; ++word) {
-      const uint64_t v = bits[word];
-      for (int at = 0; at < 64;) {
-        const uint64_t rest = (open < 0 ? v : ~v) >> at;  // the next set bit, or the next clear one
-        if (!rest) break;
-        at += __builtin_ctzll(rest);
-        if (open < 0) {
-          open = 64 * word + at;
-        } else {
-          w.begin[w.count] = 4 * open, w.end[w.count] = std::min(g_, 4 * (64 * word + at)), ++w.count;
-          open = -1;
-        }
-      }
-    }
-    if (open >= 0) w.begin[w.count] = 4 * open, w.end[w.count] = g_, ++w.count;
-    return true;
-  }
-
-  // The candidates' Dantzig choice, pricing only them, or -1 when none has a reduced cost below
-  // the tolerance or there are too many. reduced_ then holds stale values elsewhere, so the next
-  // full pass or certificate prices afresh. Measured on lp_bench's runs (interleaved repetitions):
-  // 1.25x the throughput at grid 1024; at 256 the windows cover most of the grid.
-  // y_ must be the current basis's duals.
-  int enter_from_candidates() {
-    Windows w;
-    if (!candidate_windows(w)) return -1;
+  // Partial pricing over the extra columns (the kernel's depths and z_f): Dantzig among them first,
+  // and a full pass only when none of them may enter, so optimality is never judged on them. The
+  // optimal support of a kernel's LP often lies on the kernel's own depths (the distribution's
+  // atoms), while a grid column that enters next to a basic point tends to walk a cell per pivot
+  // towards a node. On lp_bench's runs this needs fewer pivots than full Dantzig pricing and than
+  // the grid windows it replaced (grid cells around each basic point and z_f, plus the extras):
+  // 1.43 / 1.41 pivots an LP at grid 256 (power4 / trig4) against 1.61 / 1.58 with the windows, and
+  // 1.71 against 1.95 at 1024; adding the grid's ±2 cells around the basic points to the extras
+  // made it 2.75 at 256. Throughput 1.09-1.11x at 256, 1.03-1.04x at 1024 (4 alternating rounds).
+  // y_ must be the current basis's duals. reduced_ then holds stale values on the grid, so the
+  // next full pass or certificate prices afresh.
+  int enter_from_extras() {
     priced_phase_ = -1;
 #ifdef __AVX512F__
-    // Every segment and the extra block in one loop of eight lanes, masked at each end, with the
-    // weights in registers throughout and one running minimum: block by block, each call's set-up,
-    // reduction and scalar tail made a candidate pass dearer than a full one at grid 256. The same
-    // fused chains per column as combine_block (the same bits), and the same choice: the first
-    // candidate in column order holding the smallest reduced cost.
     {
       __m512d weight[K], low = _mm512_setzero_pd();
       for (int r = 0; r < K; ++r) weight[r] = _mm512_set1_pd(y_[r]);
-      for (int q = 0; q < w.count; ++q)
-        combine_masked(weight, p_->grid->values.data() + w.begin[q], g_, cost_.data() + w.begin[q],
-                       reduced_.data() + w.begin[q], w.end[q] - w.begin[q], low);
       combine_masked(weight, p_->extra.values.data(), e_, cost_.data() + g_, reduced_.data() + g_, e_, low);
-      return first_candidate_holding(w, smallest_lane(low));
+      return extra_holding(smallest_lane(low));
     }
 #endif
     const double* rows[K];
-    double smallest = 0;
-    for (int q = 0; q < w.count; ++q) {
-      for (int r = 0; r < K; ++r) rows[r] = p_->grid->values.data() + size_t(r) * g_ + w.begin[q];
-      smallest = std::min(smallest, combine_block(y_, rows, cost_.data() + w.begin[q], reduced_.data() + w.begin[q],
-                                                  w.end[q] - w.begin[q]));
-    }
     for (int r = 0; r < K; ++r) rows[r] = p_->extra.values.data() + size_t(r) * e_;  // data(): the block may be empty
-    smallest = std::min(smallest, combine_block(y_, rows, cost_.data() + g_, reduced_.data() + g_, e_));
-    return first_candidate_holding(w, smallest);
+    return extra_holding(combine_block(y_, rows, cost_.data() + g_, reduced_.data() + g_, e_));
   }
   // The same choice from reduced_ fresh from a full pass (no arithmetic, the same bits): the first
   // iteration after a start prices every column first, since most warm starts are optimal already
-  // (71 % of lp_bench's LPs need no pivot) and then the candidate pass was wasted.
-  int enter_within_windows() {
-    Windows w;
-    if (!candidate_windows(w)) return -1;
-    double smallest = smallest_of(reduced_.data() + g_, e_);
-    for (int q = 0; q < w.count; ++q)
-      smallest = std::min(smallest, smallest_of(reduced_.data() + w.begin[q], w.end[q] - w.begin[q]));
-    return first_candidate_holding(w, smallest);
-  }
-  // Dantzig's choice among the candidates (the windows' segments and the extra columns, reduced_
-  // fresh on them), `smallest` their least reduced cost or 0: the first candidate in column order
-  // holding it, or -1 when it is not below the entering tolerance, or when that column is basic
-  // (rounding: the full pass then decides).
-  int first_candidate_holding(const Windows& w, double smallest) const {
+  // (78 % of lp_bench's LPs need no pivot) and then a pass over the extras alone was wasted.
+  int enter_among_extras() const { return extra_holding(smallest_of(reduced_.data() + g_, e_)); }
+  // Dantzig's choice among the extra columns (reduced_ fresh on them), `smallest` their least
+  // reduced cost or 0: the first extra column holding it, or -1 when it is not below the entering
+  // tolerance, or when that column is basic (rounding: the full pass then decides).
+  int extra_holding(double smallest) const {
     if (!(smallest < -entering_tolerance())) return -1;
-    int first = -1;
-    for (int q = 0; q < w.count && first < 0; ++q) {
-      const int at = first_holding(reduced_.data() + w.begin[q], w.end[q] - w.begin[q], smallest);
-      if (at >= 0) first = w.begin[q] + at;
-    }
-    if (first < 0) first = g_ + first_holding(reduced_.data() + g_, e_, smallest);
+    const int first = g_ + first_holding(reduced_.data() + g_, e_, smallest);
     return is_basic(first) ? -1 : first;
   }
 
@@ -1144,14 +1050,14 @@ class FastSimplex {
     for (int guard = 0; guard < limit; ++guard) {
       if (updates_ >= kRefactorInterval && !refactor()) return false;
       bool bland = degenerate >= kDegenerateBeforeBland;
-      // Candidates first (phase 2 only, after the first iteration: see enter_within_windows): only
-      // when none of them may enter does a full pass decide, so every run still ends with one, and
-      // optimality is never judged on the candidates.
-      dual_values(y_);  // once per iteration, for the candidates and the full pass alike
+      // The extra columns first (phase 2 only, after the first iteration: see enter_among_extras):
+      // only when none of them may enter does a full pass decide, so every run still ends with one,
+      // and optimality is never judged on the extras alone.
+      dual_values(y_);  // once per iteration, for the extras and the full pass alike
       duals_fresh_ = true;
       precise_duals_ = false;
       const bool partial = phase_ == 2 && !bland;
-      int entering = partial && guard > 0 ? enter_from_candidates() : -1;
+      int entering = partial && guard > 0 ? enter_from_extras() : -1;
       if (entering < 0) {
         // Duals too large for the double certificate (|y| ~ 1e8: narrow kernels) are refined in
         // double-double before the full pass, so that the precise certificate finds the reduced
@@ -1161,7 +1067,7 @@ class FastSimplex {
         reduced_costs();
         // (Only when some column may enter at all: most warm LPs are optimal, and their smallest
         // reduced cost is rounding, below zero but inside the tolerance.)
-        if (partial && guard == 0 && priced_smallest_ < -entering_tolerance()) entering = enter_within_windows();
+        if (partial && guard == 0 && priced_smallest_ < -entering_tolerance()) entering = enter_among_extras();
         if (entering < 0) entering = choose_entering(bland);
       }
       if (entering < 0) return true;
@@ -1661,7 +1567,6 @@ class FastSimplex {
     return composite_cost_;
   }
   int updates_ = 0;
-  int zf_cell_ = 0;         // grid points in front of z_f (solve)
   int kernel_side_ = 0;     // taps a side of the problem's square kernel, 0: not square (texel_tap)
   int kernel_taps_ = -1;    // the taps kernel_side_, tap_column_ and tap_row_ are for
   std::vector<int> tap_column_, tap_row_;
@@ -1674,7 +1579,6 @@ class FastSimplex {
   int priced_phase_ = -1;
   double priced_smallest_ = 0;  // min(0, min_j reduced_[j]), set with reduced_
   std::vector<double> reduced_, alpha_, cost_;
-  std::vector<uint64_t> window_bits_;  // candidate_windows' scratch: a bit a block of four grid columns
   WarmBasis lanes_[kWarmLanes];          // by layer: the texel to the left
   BasisState lane_factors_[kWarmLanes];  // their inverses (update_factors)
   std::vector<WarmBasis> above_;         // by column and layer: the row above
