@@ -206,9 +206,10 @@ class FastSimplex {
     solve(p, offers, s);
     if (s.status == ProblemStatus::Unstable) {
       // Once more from scratch with Dantzig's rule over every column: a narrow kernel's LP (|y| ~
-      // 1e8) that failed every start with the extras priced first (one LP in a power4 sweep of
-      // the default dataset) is optimal in 70 pivots this way (G = 1.98e-7, where GLPK's answer,
-      // 1.3e-10, is not certified).
+      // 1e6) that failed every start with the extras priced first (one LP in a power4 sweep of
+      // the default dataset; LpFastBackend.NarrowKernelThatExtrasFirstPricingLeftUnstableIsSolved)
+      // is optimal in 70 pivots this way (G = 1.98e-7, where GLPK's answer, 1.3e-10, is not
+      // certified).
       WarmOffers none;
       start_over(s);
       extras_first_ = false;
@@ -952,10 +953,10 @@ class FastSimplex {
       if (basis_[i] < n_) reduced_[basis_[i]] = saved[i];
     return best;
   }
-  // Partial pricing over the extra columns (the kernel's depths and z_f): Dantzig among them first,
-  // and a full pass only when none of them may enter, so optimality is never judged on them. The
-  // optimal support of a kernel's LP often lies on the kernel's own depths (the distribution's
-  // atoms), while a grid column that enters next to a basic point tends to walk a cell per pivot
+  // Partial pricing over the extra columns (the kernel's depths and z_f, which REFERENCE.md §2 adds
+  // to the grid): Dantzig among them first, and a full pass only when none of them may enter, so
+  // optimality is never judged on them. The optimal support of a kernel's LP often lies on the
+  // kernel's own depths (the distribution's atoms), while a grid column that enters next to a basic point tends to walk a cell per pivot
   // towards a node. On lp_bench's runs this needs fewer pivots than full Dantzig pricing and than
   // the grid windows it replaced (grid cells around each basic point and z_f, plus the extras):
   // 1.43 / 1.41 pivots an LP at grid 256 (power4 / trig4) against 1.61 / 1.58 with the windows, and
@@ -979,7 +980,7 @@ class FastSimplex {
   }
   // The same choice from reduced_ fresh from a full pass (no arithmetic, the same bits): the first
   // iteration after a start prices every column first, since most warm starts are optimal already
-  // (78 % of lp_bench's LPs need no pivot) and then a pass over the extras alone was wasted.
+  // (84 % of lp_bench's LPs need no pivot) and then a pass over the extras alone was wasted.
   int enter_among_extras() const { return extra_holding(smallest_of(reduced_.data() + g_, e_)); }
   // Dantzig's choice among the extra columns (reduced_ fresh on them), `smallest` their least
   // reduced cost or 0: the first extra column holding it, or -1 when it is not below the entering
