@@ -77,8 +77,8 @@ TEST_P(BothBackends, MomentsOutsideTheMomentSpaceAreInfeasible) {
 INSTANTIATE_TEST_SUITE_P(Lp, BothBackends, ::testing::Values("fast", "glpk"));
 
 // A narrow kernel's LP from the default dataset's power4 sweep (the 81 taps of a 9x9 kernel, all
-// within 0.3621-0.3655 of depth, 7 % of the mass in front of z_f, duals ~1e6): with the extra columns priced
-// first, every start ended unstable, and GLPK's answer (1.3e-10, residual 2.3e-12)
+// within 0.3621-0.3655 of depth, 7 % of the mass in front of z_f, duals ~1e6): with the extra
+// columns priced first, every start ended unstable, and GLPK's answer (1.3e-10, residual 2.3e-12)
 // is rightly refused; the retry from scratch with Dantzig's rule over every column finds the
 // optimum. The KKT checker certifies it independently.
 TEST(LpFastBackend, NarrowKernelThatExtrasFirstPricingLeftUnstableIsSolved) {
