@@ -127,7 +127,8 @@ TEST(LpFastBackend, NarrowKernelThatExtrasFirstPricingLeftUnstableIsSolved) {
       0.0077798074995837612, 0.0071329581725575759, 0.0054975875716454107, 0.0035618554214704502,
       0.0019399121838833851};
   const double zf = 0.36345804232604445;
-  Problem p = make_problem_from_distribution(Basis::parse({"power4"}), Discretization{0, 1, 256, false}, depths, weights, zf);
+  Problem p = make_problem_from_distribution(Basis::parse({"power4"}), Discretization{0, 1, 256, false},
+                                             depths, weights, zf);
   const Solution s = solve_with("fast", p);
   ASSERT_EQ(s.status, ProblemStatus::Optimal);
   const KktReport kkt = check_kkt(p, s);
