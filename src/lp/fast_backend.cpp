@@ -956,8 +956,8 @@ class FastSimplex {
   // Partial pricing over the extra columns (the kernel's depths and z_f, which REFERENCE.md §2 adds
   // to the grid): Dantzig among them first, and a full pass only when none of them may enter, so
   // optimality is never judged on them. The optimal support of a kernel's LP often lies on the
-  // kernel's own depths (the distribution's atoms), while a grid column that enters next to a basic point tends to walk a cell per pivot
-  // towards a node. On lp_bench's runs this needs fewer pivots than full Dantzig pricing and than
+  // kernel's own depths (the distribution's atoms), while a grid column that enters next to a basic
+  // point tends to walk a cell per pivot towards a node. On lp_bench's runs this needs fewer pivots than full Dantzig pricing and than
   // the grid windows it replaced (grid cells around each basic point and z_f, plus the extras):
   // 1.43 / 1.41 pivots an LP at grid 256 (power4 / trig4) against 1.61 / 1.58 with the windows, and
   // 1.71 against 1.95 at 1024; adding the grid's ±2 cells around the basic points to the extras
