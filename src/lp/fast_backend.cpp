@@ -433,9 +433,9 @@ class FastSimplex {
     return x >= 0 && y >= 0 && x < side && y < side ? y * side + x : t;
   }
 
-  // Basic column `i` (negative weight) and the basic point closest to it (its partner) stand for one
-  // node of the distribution, which moved past them since the previous fragment. The pair moves to
-  // the node's bracket when bracket_node finds it; otherwise towards the node's estimate, the
+  // Basic column `i` (negative weight) and the basic point closest to it (its partner) stand for
+  // one node of the distribution, which moved past them since the previous fragment. The pair moves
+  // to the node's bracket when bracket_node finds it; otherwise towards the node's estimate, the
   // pair's weighted mean (an extrapolation while one weight is negative): `i` to the nearest point
   // of I beyond its partner, or both to the two points of I around the estimate when it lies
   // further. False, with the basis unchanged, when there is no such point, the exchange would be
@@ -457,8 +457,8 @@ class FastSimplex {
     // along, a cell a round (seen in most starts that ran out of rounds). The try fails at once.
     const double mass = x_[i] + x_[partner];
     if (!(mass > 0)) return false;
-    const double node = (x_[i] * z + x_[partner] * from) / mass;
     if (bracket_node(i, partner, direction)) return true;
+    const double node = (x_[i] * z + x_[partner] * from) / mass;
     // The point beyond the partner, and the two around the node, in one pass over the extra points
     // (most shifts move both: three passes were ~8 % of a warm LP).
     int beyond[3];
@@ -475,22 +475,23 @@ class FastSimplex {
   }
 
   // The pair (i, partner) replaced by two other points l, m of I, with the other basic columns S
-  // kept: with v = x_p (row i of B^-1) - x_i (row p of B^-1), orthogonal to the moments and to every
-  // column of S (rows of B^-1 are orthogonal to the other basic columns), the new weights satisfy
-  // 0 = v.rhs = w_l phi(l) + w_m phi(m), phi(z) = v.a(z). So they share a sign exactly when phi
-  // changes sign between l and m: that is the node's bracket, found in one walk. (The estimate alone,
-  // a Newton step on the node's position, converges slowly where the pair nearly cancels, a node of
-  // small weight: six shifts and more were common.) phi(z_i) = x_p > 0 and phi(z_p) = -x_i > 0, so
-  // the walk goes from the partner away from i over grid points to the first with phi <= 0, and the
-  // extra points between it and the last positive one narrow the bracket. S's points are roots of
-  // phi too: a walk that would cross one (9 % of them on lp_bench) is left to the estimate, as is a
-  // walk that leaves the grid or an exchange that would be (nearly) singular (false, basis
-  // unchanged). On lp_bench's warm runs at grid 256: 30.4 k shifts instead of 43.5 k, 1.37 / 1.34
-  // pivots an LP instead of 1.43 / 1.41 (power4 / trig4); at 1024, 1.59 instead of 1.71 / 1.70.
+  // kept: with v = x_p (row i of B^-1) - x_i (row p of B^-1), orthogonal to the moments and to
+  // every column of S (rows of B^-1 are orthogonal to the other basic columns), the new weights
+  // satisfy 0 = v.rhs = w_l phi(l) + w_m phi(m), phi(z) = v.a(z). So they share a sign exactly when
+  // phi changes sign between l and m: that is the node's bracket, found in one walk. (The estimate
+  // alone, a Newton step on the node's position, converges slowly where the pair nearly cancels, a
+  // node of small weight: six shifts and more were common.) phi(z_i) = x_p and phi(z_p) = -x_i are
+  // both positive, so the walk goes from the partner away from i over grid points to the first with
+  // phi <= 0, and the extra points between it and the last positive one narrow the bracket. S's
+  // points are roots of phi too: a walk that would cross one is left to the estimate, as are walks
+  // that leave the grid and exchanges that would be (nearly) singular (false, basis unchanged; 9 %
+  // of the calls on lp_bench). On its warm runs at grid 256: 30.4 k shifts instead of 43.5 k, 1.37
+  // (power4) and 1.34 (trig4) pivots an LP instead of 1.43 and 1.41; at 1024, 1.59 instead of 1.71
+  // and 1.70.
   bool bracket_node(int i, int partner, double direction) {
     double v[K];
     for (int r = 0; r < K; ++r) v[r] = x_[partner] * binv_[i][r] - x_[i] * binv_[partner][r];
-    // phi as one chain of fused multiply-adds, so that the lanes below give the same bits.
+    // phi as one chain of fused multiply-adds, the same bits as first_sign_change's lanes.
     auto phi = [&](int j) {
       double a[kMaxRows];
       load_column(j, a);
@@ -535,7 +536,8 @@ class FastSimplex {
     for (int e = 0; e < e_; e += 8) {
       const __mmask8 live = lanes_below(e_, e);
       const __m512d points = _mm512_maskz_loadu_pd(live, extra_points_ + e);
-      unsigned inside = _mm512_mask_cmp_pd_mask(_mm512_mask_cmp_pd_mask(live, points, low, _CMP_GT_OQ), points, high, _CMP_LT_OQ);
+      const __mmask8 above = _mm512_mask_cmp_pd_mask(live, points, low, _CMP_GT_OQ);
+      unsigned inside = _mm512_mask_cmp_pd_mask(above, points, high, _CMP_LT_OQ);
       for (; inside; inside &= inside - 1) judge(e + __builtin_ctz(inside));
     }
 #else
@@ -543,7 +545,8 @@ class FastSimplex {
       if (extra_points_[e] > lo && extra_points_[e] < hi) judge(e);
 #endif
     if (!exchange(i, far)) return false;
-    if (near != from_column) exchange(partner, near);  // if refused (singular), the first half still helps
+    // If the second exchange is refused (singular), the first half still helps.
+    if (near != from_column) exchange(partner, near);
     return true;
   }
 
@@ -561,7 +564,10 @@ class FastSimplex {
       const int start = step > 0 ? g : std::max(0, g - 7);
       const __mmask8 live = step > 0 ? lanes_below(g_, g) : __mmask8((1u << (g - start + 1)) - 1);
       __m512d sum = zero;
-      for (int r = 0; r < K; ++r) sum = _mm512_fmadd_pd(weight[r], _mm512_maskz_loadu_pd(live, values + size_t(r) * g_ + start), sum);
+      for (int r = 0; r < K; ++r) {
+        const __m512d row = _mm512_maskz_loadu_pd(live, values + size_t(r) * g_ + start);
+        sum = _mm512_fmadd_pd(weight[r], row, sum);
+      }
       const __m512d points = _mm512_maskz_loadu_pd(live, grid + start);
       const unsigned beyond = step > 0 ? _mm512_mask_cmp_pd_mask(live, points, bound, _CMP_GE_OQ)
                                        : _mm512_mask_cmp_pd_mask(live, points, bound, _CMP_LE_OQ);
