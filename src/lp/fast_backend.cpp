@@ -434,12 +434,13 @@ class FastSimplex {
   }
 
   // Basic column `i` (negative weight) and the basic point closest to it (its partner) stand for
-  // one node of the distribution, which moved past them since the previous fragment. The pair moves
-  // to the node's bracket when bracket_node finds it; otherwise towards the node's estimate, the
-  // pair's weighted mean (an extrapolation while one weight is negative): `i` to the nearest point
-  // of I beyond its partner, or both to the two points of I around the estimate when it lies
-  // further. False, with the basis unchanged, when there is no such point, the exchange would be
-  // (nearly) singular, or the start is hopeless.
+  // one node of the distribution (a basic solution: at most m + 1 points of I, REFERENCE.md §2),
+  // which moved past them since the previous fragment. The pair moves to the node's bracket when
+  // bracket_node finds it; otherwise towards the node's estimate, the pair's weighted mean (an
+  // extrapolation while one weight is negative): `i` to the nearest point of I beyond its partner,
+  // or both to the two points of I around the estimate when it lies further. False, with the basis
+  // unchanged, when there is no such point, the exchange would be (nearly) singular, or the start
+  // is hopeless.
   bool shift_bracket(int i) {
     const int j = basis_[i];
     // Weights are probabilities: one below -kHopelessWeight means a basis far from any feasible
