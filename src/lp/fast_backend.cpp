@@ -492,20 +492,11 @@ class FastSimplex {
   bool bracket_node(int i, int partner, double direction) {
     double v[K];
     for (int r = 0; r < K; ++r) v[r] = x_[partner] * binv_[i][r] - x_[i] * binv_[partner][r];
-    // phi as one chain of fused multiply-adds, the same bits as first_sign_change's lanes.
-    auto phi = [&](int j) {
-      double a[kMaxRows];
-      load_column(j, a);
-      double sum = 0;
-      for (int r = 0; r < K; ++r) sum = std::fma(v[r], a[r], sum);
-      return sum;
-    };
+    auto phi = [&](int j) { return fused_dot(v, j); };
     const int from_column = basis_[partner], step = direction > 0 ? 1 : -1;
     const double from = point(from_column);
     const auto& grid = p_->grid->points;
-    int g = from_column < g_ ? from_column + step
-            : direction > 0 ? grid_bound(grid, from, true, cell_scale_)
-                            : grid_bound(grid, from, false, cell_scale_) - 1;
+    int g = grid_beyond(from, direction, from_column);
     // The walk ends before S's nearest point beyond the partner (a root of phi that is no node's).
     double limit = direction * std::numeric_limits<double>::infinity();
     for (int q = 0; q < K; ++q)
@@ -551,12 +542,31 @@ class FastSimplex {
     return true;
   }
 
+  // v.a_j as one chain of fused multiply-adds, r = 0 first: the same bits as first_sign_change's
+  // lanes, so that bracket_node's judgements agree whichever path computed them.
+  double fused_dot(const double* v, int j) const {
+    double a[kMaxRows];
+    load_column(j, a);
+    double sum = 0;
+    for (int r = 0; r < K; ++r) sum = std::fma(v[r], a[r], sum);
+    return sum;
+  }
+  // The first grid index strictly beyond `from` in `direction` (-1 or g_ past the ends): the
+  // neighbour of `column` when that is the grid point at `from` (the grid ascends strictly), else
+  // by grid_bound.
+  int grid_beyond(double from, double direction, int column) const {
+    const auto& grid = p_->grid->points;
+    if (column >= 0 && column < g_) return column + (direction > 0 ? 1 : -1);
+    return direction > 0 ? grid_bound(grid, from, true, cell_scale_)
+                         : grid_bound(grid, from, false, cell_scale_) - 1;
+  }
+
   // From grid point g on, in steps of `step`: the first grid point where phi = v.a <= 0, or -1 when
   // the grid ends or `limit` is reached first (at or beyond it).
   int first_sign_change(const double* v, int g, int step, double limit) const {
-    const double* values = p_->grid->values.data();
     const double* grid = grid_points_;
 #ifdef __AVX512F__
+    const double* values = p_->grid->values.data();
     // Eight grid points at a time (walks at grid 1024 are ~4x longer than at 256).
     __m512d weight[K];
     for (int r = 0; r < K; ++r) weight[r] = _mm512_set1_pd(v[r]);
@@ -581,9 +591,7 @@ class FastSimplex {
 #else
     for (; g >= 0 && g < g_; g += step) {
       if ((grid[g] - limit) * step >= 0) return -1;
-      double sum = 0;
-      for (int r = 0; r < K; ++r) sum = std::fma(v[r], values[size_t(r) * g_ + g], sum);
-      if (sum <= 0) return g;
+      if (fused_dot(v, g) <= 0) return g;
     }
     return -1;
 #endif
@@ -601,9 +609,7 @@ class FastSimplex {
     const auto& grid = p_->grid->points;
     double distance[Q];
     for (int q = 0; q < Q; ++q) {
-      const int g = column[q] >= 0 && column[q] < g_ ? column[q] + (direction[q] > 0 ? 1 : -1)
-                    : direction[q] > 0 ? grid_bound(grid, from[q], true, cell_scale_)
-                                       : grid_bound(grid, from[q], false, cell_scale_) - 1;
+      const int g = grid_beyond(from[q], direction[q], column[q]);
       out[q] = -1, distance[q] = kNone;
       if (g >= 0 && g < g_) out[q] = g, distance[q] = std::abs(grid[g] - from[q]);
     }
@@ -1074,13 +1080,13 @@ class FastSimplex {
   // to the grid): Dantzig among them first, and a full pass only when none of them may enter, so
   // optimality is never judged on them. The optimal support of a kernel's LP often lies on the
   // kernel's own depths (the distribution's atoms), while a grid column that enters next to a basic
-  // point tends to walk a cell per pivot towards a node. On lp_bench's runs this needs fewer pivots than full Dantzig pricing and than
-  // the grid windows it replaced (grid cells around each basic point and z_f, plus the extras):
-  // 1.43 / 1.41 pivots an LP at grid 256 (power4 / trig4) against 1.61 / 1.58 with the windows, and
-  // 1.71 against 1.95 at 1024; adding the grid's ±2 cells around the basic points to the extras
-  // made it 2.75 at 256. Throughput 1.09-1.11x at 256, 1.03-1.04x at 1024 (4 alternating rounds).
-  // y_ must be the current basis's duals. reduced_ then holds stale values on the grid, so the
-  // next full pass or certificate prices afresh.
+  // point tends to walk a cell per pivot towards a node. On lp_bench's runs this needs fewer pivots
+  // than full Dantzig pricing and than the grid windows it replaced (grid cells around each basic
+  // point and z_f, plus the extras): 1.43 / 1.41 pivots an LP at grid 256 (power4 / trig4) against
+  // 1.61 / 1.58 with the windows, and 1.71 against 1.95 at 1024; adding the grid's ±2 cells around
+  // the basic points to the extras made it 2.75 at 256. Throughput 1.09-1.11x at 256, 1.03-1.04x at
+  // 1024 (4 alternating rounds). y_ must be the current basis's duals. reduced_ then holds stale
+  // values on the grid, so the next full pass or certificate prices afresh.
   int enter_from_extras() {
     priced_phase_ = -1;
 #ifdef __AVX512F__
