@@ -554,22 +554,10 @@ class FastSimplex {
       far_best = _mm512_mask_mov_pd(far_best, closer, progress);
       far_index = _mm512_mask_mov_epi64(far_index, closer, index);
     }
-    // The best lane, ties to the lowest index (lanes that never improved hold -1 and their start).
-    constexpr double kBig = std::numeric_limits<double>::infinity();
-    constexpr int64_t kBigIndex = std::numeric_limits<int>::max();
-    auto first_best = [&](__m512d best, __m512i index, bool largest) {
-      const double value = largest ? -smallest_lane(negated(best), 0) : smallest_lane(best, kBig);
-      const __mmask8 holding = _mm512_cmp_pd_mask(best, _mm512_set1_pd(value), _CMP_EQ_OQ);
-      const __mmask8 improved = _mm512_cmp_epi64_mask(index, _mm512_set1_epi64(-1), _MM_CMPINT_NE);
-      const __m512i candidates = _mm512_mask_mov_epi64(_mm512_set1_epi64(kBigIndex), holding & improved, index);
-      alignas(64) int64_t lanes[8];  // (GCC 12's _mm512_reduce_min_epi64 warns, as in smallest_lane)
-      _mm512_store_si512(lanes, candidates);
-      return int(*std::min_element(lanes, lanes + 8));
-    };
-    const int nearest_positive = first_best(near_best, near_index, true);
-    const int nearest_other = first_best(far_best, far_index, false);
-    if (nearest_positive < kBigIndex) near = g_ + nearest_positive;
-    if (nearest_other < kBigIndex) far = g_ + nearest_other;
+    const int nearest_positive = first_least_lane(negated(near_best), near_index);
+    const int nearest_other = first_least_lane(far_best, far_index);
+    if (nearest_positive >= 0) near = g_ + nearest_positive;
+    if (nearest_other >= 0) far = g_ + nearest_other;
     (void)judge;
 #else
     for (int e = 0; e < e_; ++e)
@@ -999,6 +987,18 @@ class FastSimplex {
       low = _mm512_mask_min_pd(low, live, v, low);
     }
   }
+  // The index of the least of the lanes that hold one (index >= 0; each lane keeps its first strict
+  // best, so the lowest index among the lanes holding the least is the first overall), or -1.
+  static int first_least_lane(__m512d best, __m512i index) {
+    const __mmask8 improved = _mm512_cmp_epi64_mask(index, _mm512_set1_epi64(-1), _MM_CMPINT_NE);
+    if (!improved) return -1;
+    const double least = smallest_lane(_mm512_mask_mov_pd(_mm512_set1_pd(std::numeric_limits<double>::infinity()), improved, best),
+                                       std::numeric_limits<double>::infinity());
+    const __mmask8 holding = improved & _mm512_cmp_pd_mask(best, _mm512_set1_pd(least), _CMP_EQ_OQ);
+    alignas(64) int64_t lanes[8];  // (GCC 12's _mm512_reduce_min_epi64 warns, as in smallest_lane)
+    _mm512_store_si512(lanes, _mm512_mask_mov_epi64(_mm512_set1_epi64(std::numeric_limits<int64_t>::max()), holding, index));
+    return int(*std::min_element(lanes, lanes + 8));
+  }
   // min(start, the smallest lane of low).
   static double smallest_lane(__m512d low, double start = 0) {
     // Three shuffle-and-minimum steps, not a store and eight dependent scalar ones. (The masked
@@ -1115,6 +1115,99 @@ class FastSimplex {
       if (basis_[i] < n_) reduced_[basis_[i]] = saved[i];
     return best;
   }
+  // Greatest decrease for a node that slides. When a basis position loses the column that had just
+  // entered it, twice in a row, a node of small weight is walking through I: Dantzig's column (the
+  // steepest reduced cost) moves it a few cells a pivot, e.g. 1 -> 0.87 -> 0.77 -> ... -> 0.48 in
+  // 14 pivots of one composite repair. The next column is then the one whose step decreases the
+  // objective most, d_j theta_j (theta_j from the ratio test of u = B^-1 a_j), among the columns
+  // with d_j below the entering tolerance, ties to the first: usually the node's place at once.
+  // On lp_bench's warm runs: 1.37 -> 0.94 pivots an LP (power4, 256), 1.34 -> 0.97 (trig4), 1.59
+  // -> 1.05 (power4, 1024); as the rule for every pivot, or for every pivot once a node slid, it
+  // needed more (the extras-first pricing is the better guess elsewhere). reduced_ fresh for y_;
+  // -1 when no column qualifies.
+  int slide_entering() {
+    const double tolerance = entering_tolerance();
+    double saved[kMaxRows] = {};  // basic columns out of the race (their reduced costs are rounding)
+    for (int i = 0; i < k_; ++i)
+      if (basis_[i] < n_) saved[i] = reduced_[basis_[i]], reduced_[basis_[i]] = 0;
+    int chosen = -1;
+#ifdef __AVX512F__
+    __m512d best = _mm512_setzero_pd();
+    __m512i index = _mm512_set1_epi64(-1);
+    greatest_decrease(p_->grid->values.data(), g_, 0, g_, tolerance, best, index);
+    greatest_decrease(p_->extra.values.data(), e_, g_, e_, tolerance, best, index);
+    chosen = first_least_lane(best, index);
+#else
+    double best = 0;
+    auto judge = [&](const double* values, size_t stride, int offset, int n) {
+      for (int j = 0; j < n; ++j) {
+        const double d = reduced_[offset + j];
+        if (!(d < -tolerance)) continue;
+        double a[kMaxRows];
+        for (int r = 0; r < K; ++r) a[r] = values[r * stride + j];
+        const double theta = blocking_step(a);
+        if (!(theta < std::numeric_limits<double>::infinity())) continue;
+        if (d * theta < best) best = d * theta, chosen = offset + j;
+      }
+    };
+    judge(p_->grid->values.data(), g_, 0, g_);
+    judge(p_->extra.values.data(), e_, g_, e_);
+#endif
+    for (int i = 0; i < k_; ++i)
+      if (basis_[i] < n_) reduced_[basis_[i]] = saved[i];
+    return chosen;
+  }
+  // The ratio test's step for column a without Harris' relaxation: min over u_i > kPivotTolerance
+  // of max(x_i, 0) / u_i, u = B^-1 a as a fused chain over r from 0 (infinity when no u_i is). The
+  // ratios are compared as products (x_i den < num u_i), so one division, not k: eight columns' k
+  // divisions each made the search cost more than the pivots it saved at grid 1024.
+  double blocking_step(const double* a) const {
+    double num = std::numeric_limits<double>::infinity(), den = 1;
+    for (int i = 0; i < K; ++i) {
+      double u = 0;
+      for (int r = 0; r < K; ++r) u = std::fma(binv_[i][r], a[r], u);
+      const double x = std::max(x_[i], 0.0);
+      if (u > kPivotTolerance && x * den < num * u) num = x, den = u;
+    }
+    return num / den;
+  }
+#ifdef __AVX512F__
+  // slide_entering's search over one column block (rows `stride` apart, reduced costs from
+  // reduced_[offset]), eight columns at a time in the same chains as blocking_step; each lane
+  // keeps its first strict least d_j theta_j (below 0) and its column.
+  void greatest_decrease(const double* values, size_t stride, int offset, int n, double tolerance, __m512d& best,
+                         __m512i& index) const {
+    const __m512d limit = _mm512_set1_pd(-tolerance), pivot_tolerance = _mm512_set1_pd(kPivotTolerance);
+    const __m512d infinity = _mm512_set1_pd(std::numeric_limits<double>::infinity());
+    __m512d weight[K];
+    for (int i = 0; i < K; ++i) weight[i] = _mm512_set1_pd(std::max(x_[i], 0.0));
+    const __m512i lane = _mm512_set_epi64(7, 6, 5, 4, 3, 2, 1, 0);
+    for (int j = 0; j < n; j += 8) {
+      const __mmask8 live = lanes_below(n, j);
+      const __m512d d = _mm512_maskz_loadu_pd(live, reduced_.data() + offset + j);
+      const __mmask8 entering = _mm512_mask_cmp_pd_mask(live, d, limit, _CMP_LT_OQ);
+      if (!entering) continue;
+      __m512d a[K];
+      for (int r = 0; r < K; ++r) a[r] = _mm512_maskz_loadu_pd(entering, values + r * stride + j);
+      __m512d num = infinity, den = _mm512_set1_pd(1);
+      for (int i = 0; i < K; ++i) {
+        __m512d u = _mm512_setzero_pd();
+        for (int r = 0; r < K; ++r) u = _mm512_fmadd_pd(_mm512_set1_pd(binv_[i][r]), a[r], u);
+        const __mmask8 blocks = _mm512_mask_cmp_pd_mask(entering, u, pivot_tolerance, _CMP_GT_OQ);
+        const __mmask8 less = _mm512_mask_cmp_pd_mask(blocks, _mm512_mul_pd(weight[i], den), _mm512_mul_pd(num, u), _CMP_LT_OQ);
+        num = _mm512_mask_mov_pd(num, less, weight[i]);
+        den = _mm512_mask_mov_pd(den, less, u);
+      }
+      const __m512d theta = _mm512_maskz_div_pd(entering, num, den);
+      const __mmask8 finite = _mm512_mask_cmp_pd_mask(entering, theta, infinity, _CMP_LT_OQ);
+      const __m512d decrease = _mm512_mul_pd(d, theta);
+      const __mmask8 better = _mm512_mask_cmp_pd_mask(finite, decrease, best, _CMP_LT_OQ);
+      best = _mm512_mask_mov_pd(best, better, decrease);
+      index = _mm512_mask_mov_epi64(index, better, _mm512_add_epi64(_mm512_set1_epi64(offset + j), lane));
+    }
+  }
+#endif
+
   // Partial pricing over the extra columns (the kernel's depths and z_f, which REFERENCE.md §2 adds
   // to the grid): Dantzig among them first, and a full pass only when none of them may enter, so
   // optimality is never judged on them. The optimal support of a kernel's LP often lies on the
@@ -1218,6 +1311,9 @@ class FastSimplex {
   // One simplex run to optimality for the current phase. False on numerical failure.
   bool iterate(Solution& s) {
     int degenerate = 0;
+    // A node slides when the last two pivots left the same basis position (slide_entering).
+    bool sliding = false;
+    int previous_leave = -1;
     // Optimal bases are reached in ~20-40 pivots (measured on dataset fragments); a run past 1000
     // is stalling on an ill-conditioned basis and goes to the fallback instead.
     const int limit = std::min(20 * (n_ + k_), 1000);
@@ -1231,7 +1327,7 @@ class FastSimplex {
       duals_fresh_ = true;
       precise_duals_ = false;
       const bool partial = phase_ == 2 && !bland && extras_first_;
-      int entering = partial && guard > 0 ? enter_from_extras() : -1;
+      int entering = partial && guard > 0 && !sliding ? enter_from_extras() : -1;
       if (entering < 0) {
         // Duals too large for the double certificate (|y| ~ 1e8: narrow kernels) are refined in
         // double-double before the full pass, so that the precise certificate finds the reduced
@@ -1242,6 +1338,7 @@ class FastSimplex {
         // (Only when some column may enter at all: most warm LPs are optimal, and their smallest
         // reduced cost is rounding, below zero but inside the tolerance.)
         if (partial && guard == 0 && priced_smallest_ < -entering_tolerance()) entering = enter_among_extras();
+        if (entering < 0 && sliding && !bland && phase_ == 2) entering = slide_entering();
         if (entering < 0) entering = choose_entering(bland);
       }
       if (entering < 0) return true;
@@ -1251,6 +1348,8 @@ class FastSimplex {
       if (!(theta >= 0)) return false;
       // Near-zero steps count as degenerate too: Harris steps of 1e-18 can cycle as well.
       degenerate = theta < 1e-12 ? degenerate + 1 : 0;
+      sliding = last_leave_ == previous_leave;
+      previous_leave = last_leave_;
     }
     return false;
   }
@@ -1287,6 +1386,7 @@ class FastSimplex {
     for (int i = 0; i < k_; ++i) x_[i] -= theta * u[i];
     x_[leave] = theta;
     pivot(leave, entering, u);
+    last_leave_ = leave;
     ++s.iterations;
     return theta;
   }
@@ -1716,6 +1816,7 @@ class FastSimplex {
     s.weights.push_back(w);
   }
 
+  int last_leave_ = -1;
   const Problem* p_ = nullptr;
   const WarmPosition* at_ = nullptr;  // where the problem being solved sits (run), or null
   static constexpr int k_ = K;
