@@ -205,11 +205,11 @@ class FastSimplex {
     at_ = at;
     solve(p, offers, s);
     if (s.status == ProblemStatus::Unstable) {
-      // Once more from scratch with Dantzig's rule over every column: a narrow kernel's LP (|y| ~
-      // 1e6) that failed every start with the extras priced first (one LP in a power4 sweep of
-      // the default dataset; LpFastBackend.NarrowKernelThatExtrasFirstPricingLeftUnstableIsSolved)
-      // is optimal in 70 pivots this way (G = 1.98e-7, where GLPK's answer, 1.3e-10, is not
-      // certified).
+      // Once more from scratch with Dantzig's rule over every column (no slide_entering either): a
+      // narrow kernel's LP (|y| ~ 1e6) that failed every start with the extras priced first (one
+      // LP in a power4 sweep of the default dataset;
+      // LpFastBackend.NarrowKernelThatExtrasFirstPricingLeftUnstableIsSolved) is optimal in 70
+      // pivots this way (G = 1.98e-7, where GLPK's answer, 1.3e-10, is not certified).
       WarmOffers none;
       start_over(s);
       extras_first_ = false;
@@ -1120,15 +1120,15 @@ class FastSimplex {
     return best;
   }
   // Greatest decrease for a node that slides. When a basis position loses the column that had just
-  // entered it, twice in a row, a node of small weight is walking through I: Dantzig's column (the
-  // steepest reduced cost) moves it a few cells a pivot, e.g. 1 -> 0.87 -> 0.77 -> ... -> 0.48 in
-  // 14 pivots of one composite repair. The next column is then the one whose step decreases the
-  // objective most, d_j theta_j (theta_j from the ratio test of u = B^-1 a_j), among the columns
-  // with d_j below the entering tolerance, ties to the first: usually the node's place at once.
-  // On lp_bench's warm runs: 1.37 -> 0.94 pivots an LP (power4, 256), 1.34 -> 0.97 (trig4), 1.59
-  // -> 1.05 (power4, 1024); as the rule for every pivot, or for every pivot once a node slid, it
-  // needed more (the extras-first pricing is the better guess elsewhere). reduced_ fresh for y_;
-  // -1 when no column qualifies.
+  // entered it, twice in a row (or a column at an end of the grid entered), a node of small weight
+  // is walking through I: Dantzig's column (the steepest reduced cost) moves it a few cells a
+  // pivot, e.g. 1 -> 0.87 -> 0.77 -> ... -> 0.48 in 14 pivots of one composite repair. The next
+  // column is then the one whose step decreases the objective most, d_j theta_j (theta_j from the
+  // ratio test of u = B^-1 a_j), among the columns with d_j below the entering tolerance, ties to
+  // the first: usually the node's place at once. On lp_bench's warm runs: 1.37 -> 0.90 pivots an LP
+  // (power4, 256), 1.34 -> 0.96 (trig4), 1.59 -> 0.99 / 1.11 (1024). As the rule for every pivot,
+  // or for every pivot once a node slid, it needed more (the extras-first pricing is the better
+  // guess elsewhere). reduced_ fresh for y_; -1 when no column qualifies.
   int slide_entering() {
     const double tolerance = entering_tolerance();
     double saved[kMaxRows] = {};  // basic columns out of the race (their reduced costs are rounding)
@@ -1315,7 +1315,10 @@ class FastSimplex {
   // One simplex run to optimality for the current phase. False on numerical failure.
   bool iterate(Solution& s) {
     int degenerate = 0;
-    // A node slides when the last two pivots left the same basis position (slide_entering).
+    // A node slides when the last two pivots left the same basis position, or the last one entered
+    // an end of the grid, where Dantzig's steepest column often lies and from where a node of small
+    // weight then walks back (slide_entering; the ends as a trigger: 0.94 -> 0.90 pivots an LP,
+    // power4, 256).
     bool sliding = false;
     int previous_leave = -1;
     // Optimal bases are reached in ~20-40 pivots (measured on dataset fragments); a run past 1000
@@ -1342,7 +1345,7 @@ class FastSimplex {
         // (Only when some column may enter at all: most warm LPs are optimal, and their smallest
         // reduced cost is rounding, below zero but inside the tolerance.)
         if (partial && guard == 0 && priced_smallest_ < -entering_tolerance()) entering = enter_among_extras();
-        if (entering < 0 && sliding && !bland && phase_ == 2) entering = slide_entering();
+        if (entering < 0 && sliding && partial) entering = slide_entering();  // (not in run's retry)
         if (entering < 0) entering = choose_entering(bland);
       }
       if (entering < 0) return true;
@@ -1352,7 +1355,7 @@ class FastSimplex {
       if (!(theta >= 0)) return false;
       // Near-zero steps count as degenerate too: Harris steps of 1e-18 can cycle as well.
       degenerate = theta < 1e-12 ? degenerate + 1 : 0;
-      sliding = last_leave_ == previous_leave;
+      sliding = last_leave_ == previous_leave || entering == 0 || entering == g_ - 1;
       previous_leave = last_leave_;
     }
     return false;
