@@ -528,7 +528,8 @@ class FastSimplex {
     // one, each a chain of k fused multiply-adds and two unpredictable branches, they were ~40 %
     // of a shift. Each lane keeps its first strict best, so the first index of the best overall
     // wins, as in judge's order; phi in lanes is fused_dot's chain.
-    const __m512d low = _mm512_set1_pd(lo), high = _mm512_set1_pd(hi), from_point = _mm512_set1_pd(previous);
+    const __m512d low = _mm512_set1_pd(lo), high = _mm512_set1_pd(hi);
+    const __m512d from_point = _mm512_set1_pd(previous), zero = _mm512_setzero_pd();
     __m512d weight[K];
     for (int r = 0; r < K; ++r) weight[r] = _mm512_set1_pd(v[r]);
     __m512d near_best = _mm512_setzero_pd(), far_best = _mm512_set1_pd(far_progress);
@@ -541,16 +542,19 @@ class FastSimplex {
       const __mmask8 above = _mm512_mask_cmp_pd_mask(live, points, low, _CMP_GT_OQ);
       const __mmask8 inside = _mm512_mask_cmp_pd_mask(above, points, high, _CMP_LT_OQ);
       if (!inside) continue;
-      __m512d sum = _mm512_setzero_pd();
-      for (int r = 0; r < K; ++r)
-        sum = _mm512_fmadd_pd(weight[r], _mm512_maskz_loadu_pd(inside, values + size_t(r) * e_ + e), sum);
-      const __mmask8 positive = _mm512_mask_cmp_pd_mask(inside, sum, _mm512_setzero_pd(), _CMP_GT_OQ);
+      __m512d sum = zero;
+      for (int r = 0; r < K; ++r) {
+        const __m512d row = _mm512_maskz_loadu_pd(inside, values + size_t(r) * e_ + e);
+        sum = _mm512_fmadd_pd(weight[r], row, sum);
+      }
+      const __mmask8 positive = _mm512_mask_cmp_pd_mask(inside, sum, zero, _CMP_GT_OQ);
       const __m512d progress = _mm512_abs_pd(_mm512_sub_pd(points, from_point));
       const __m512i index = _mm512_add_epi64(_mm512_set1_epi64(e), lane_index);
       const __mmask8 nearer = _mm512_mask_cmp_pd_mask(positive, progress, near_best, _CMP_GT_OQ);
       near_best = _mm512_mask_mov_pd(near_best, nearer, progress);
       near_index = _mm512_mask_mov_epi64(near_index, nearer, index);
-      const __mmask8 closer = _mm512_mask_cmp_pd_mask(inside & ~positive, progress, far_best, _CMP_LT_OQ);
+      const __mmask8 closer =
+          _mm512_mask_cmp_pd_mask(inside & ~positive, progress, far_best, _CMP_LT_OQ);
       far_best = _mm512_mask_mov_pd(far_best, closer, progress);
       far_index = _mm512_mask_mov_epi64(far_index, closer, index);
     }
@@ -992,12 +996,14 @@ class FastSimplex {
   static int first_least_lane(__m512d best, __m512i index) {
     const __mmask8 improved = _mm512_cmp_epi64_mask(index, _mm512_set1_epi64(-1), _MM_CMPINT_NE);
     if (!improved) return -1;
-    const double least = smallest_lane(_mm512_mask_mov_pd(_mm512_set1_pd(std::numeric_limits<double>::infinity()), improved, best),
-                                       std::numeric_limits<double>::infinity());
+    constexpr double kNone = std::numeric_limits<double>::infinity();
+    const __m512d held = _mm512_mask_mov_pd(_mm512_set1_pd(kNone), improved, best);
+    const double least = smallest_lane(held, kNone);
     const __mmask8 holding = improved & _mm512_cmp_pd_mask(best, _mm512_set1_pd(least), _CMP_EQ_OQ);
     // The least index as smallest_lane finds the least value (GCC 12's _mm512_reduce_min_epi64
     // warns likewise); a store and a scalar minimum of eight were ~2 % of the solver's samples.
-    __m512i low = _mm512_mask_mov_epi64(_mm512_set1_epi64(std::numeric_limits<int64_t>::max()), holding, index);
+    const __m512i none = _mm512_set1_epi64(std::numeric_limits<int64_t>::max());
+    __m512i low = _mm512_mask_mov_epi64(none, holding, index);
     low = _mm512_mask_min_epi64(low, 0xff, low, _mm512_mask_shuffle_i64x2(low, 0xff, low, low, 0x4e));
     low = _mm512_mask_min_epi64(low, 0xff, low, _mm512_mask_shuffle_i64x2(low, 0xff, low, low, 0xb1));
     low = _mm512_mask_min_epi64(low, 0xff, low, _mm512_mask_permutex_epi64(low, 0xff, low, 0xb1));
@@ -1109,16 +1115,27 @@ class FastSimplex {
       if (first >= 0 && !is_basic(first)) return first;
     }
     // Basic columns out of the race, then a vectorised minimum and the first index holding it.
-    double saved[kMaxRows] = {};
-    for (int i = 0; i < k_; ++i)
-      if (basis_[i] < n_) saved[i] = reduced_[basis_[i]], reduced_[basis_[i]] = 0;
+    const BasicColumnsHidden hidden(*this);
     const double* d = reduced_.data();
     const double smallest = smallest_of(d, n_);
-    const int best = smallest < -tolerance ? first_holding(d, n_, smallest) : -1;
-    for (int i = 0; i < k_; ++i)
-      if (basis_[i] < n_) reduced_[basis_[i]] = saved[i];
-    return best;
+    return smallest < -tolerance ? first_holding(d, n_, smallest) : -1;
   }
+  // While it lives, the basic columns' reduced costs (rounding; zero in exact arithmetic) read 0,
+  // so that no rule picks a basic column.
+  struct BasicColumnsHidden {
+    FastSimplex& simplex;
+    double saved[kMaxRows] = {};
+    explicit BasicColumnsHidden(FastSimplex& s) : simplex(s) {
+      for (int i = 0; i < K; ++i)
+        if (int j = s.basis_[i]; j < s.n_) saved[i] = s.reduced_[j], s.reduced_[j] = 0;
+    }
+    ~BasicColumnsHidden() {
+      for (int i = 0; i < K; ++i)
+        if (int j = simplex.basis_[i]; j < simplex.n_) simplex.reduced_[j] = saved[i];
+    }
+    BasicColumnsHidden(const BasicColumnsHidden&) = delete;
+    BasicColumnsHidden& operator=(const BasicColumnsHidden&) = delete;
+  };
   // Greatest decrease for a node that slides. When a basis position loses the column that had just
   // entered it, twice in a row (or a column at an end of the grid entered), a node of small weight
   // is walking through I: Dantzig's column (the steepest reduced cost) moves it a few cells a
@@ -1131,9 +1148,7 @@ class FastSimplex {
   // guess elsewhere). reduced_ fresh for y_; -1 when no column qualifies.
   int slide_entering() {
     const double tolerance = entering_tolerance();
-    double saved[kMaxRows] = {};  // basic columns out of the race (their reduced costs are rounding)
-    for (int i = 0; i < k_; ++i)
-      if (basis_[i] < n_) saved[i] = reduced_[basis_[i]], reduced_[basis_[i]] = 0;
+    const BasicColumnsHidden hidden(*this);
     int chosen = -1;
 #ifdef __AVX512F__
     __m512d best = _mm512_setzero_pd();
@@ -1157,8 +1172,6 @@ class FastSimplex {
     judge(p_->grid->values.data(), g_, 0, g_);
     judge(p_->extra.values.data(), e_, g_, e_);
 #endif
-    for (int i = 0; i < k_; ++i)
-      if (basis_[i] < n_) reduced_[basis_[i]] = saved[i];
     return chosen;
   }
   // The ratio test's step for column a without Harris' relaxation: min over u_i > kPivotTolerance
@@ -1179,9 +1192,10 @@ class FastSimplex {
   // slide_entering's search over one column block (rows `stride` apart, reduced costs from
   // reduced_[offset]), eight columns at a time in the same chains as blocking_step; each lane
   // keeps its first strict least d_j theta_j (below 0) and its column.
-  void greatest_decrease(const double* values, size_t stride, int offset, int n, double tolerance, __m512d& best,
-                         __m512i& index) const {
-    const __m512d limit = _mm512_set1_pd(-tolerance), pivot_tolerance = _mm512_set1_pd(kPivotTolerance);
+  void greatest_decrease(const double* values, size_t stride, int offset, int n, double tolerance,
+                         __m512d& best, __m512i& index) const {
+    const __m512d limit = _mm512_set1_pd(-tolerance);
+    const __m512d pivot_tolerance = _mm512_set1_pd(kPivotTolerance);
     const __m512d infinity = _mm512_set1_pd(std::numeric_limits<double>::infinity());
     __m512d weight[K];
     for (int i = 0; i < K; ++i) weight[i] = _mm512_set1_pd(std::max(x_[i], 0.0));
@@ -1198,7 +1212,8 @@ class FastSimplex {
         __m512d u = _mm512_setzero_pd();
         for (int r = 0; r < K; ++r) u = _mm512_fmadd_pd(_mm512_set1_pd(binv_[i][r]), a[r], u);
         const __mmask8 blocks = _mm512_mask_cmp_pd_mask(entering, u, pivot_tolerance, _CMP_GT_OQ);
-        const __mmask8 less = _mm512_mask_cmp_pd_mask(blocks, _mm512_mul_pd(weight[i], den), _mm512_mul_pd(num, u), _CMP_LT_OQ);
+        const __m512d candidate = _mm512_mul_pd(weight[i], den), current = _mm512_mul_pd(num, u);
+        const __mmask8 less = _mm512_mask_cmp_pd_mask(blocks, candidate, current, _CMP_LT_OQ);
         num = _mm512_mask_mov_pd(num, less, weight[i]);
         den = _mm512_mask_mov_pd(den, less, u);
       }
@@ -1207,7 +1222,8 @@ class FastSimplex {
       const __m512d decrease = _mm512_mul_pd(d, theta);
       const __mmask8 better = _mm512_mask_cmp_pd_mask(finite, decrease, best, _CMP_LT_OQ);
       best = _mm512_mask_mov_pd(best, better, decrease);
-      index = _mm512_mask_mov_epi64(index, better, _mm512_add_epi64(_mm512_set1_epi64(offset + j), lane));
+      const __m512i column = _mm512_add_epi64(_mm512_set1_epi64(offset + j), lane);
+      index = _mm512_mask_mov_epi64(index, better, column);
     }
   }
 #endif
@@ -1345,7 +1361,7 @@ class FastSimplex {
         // (Only when some column may enter at all: most warm LPs are optimal, and their smallest
         // reduced cost is rounding, below zero but inside the tolerance.)
         if (partial && guard == 0 && priced_smallest_ < -entering_tolerance()) entering = enter_among_extras();
-        if (entering < 0 && sliding && partial) entering = slide_entering();  // (not in run's retry)
+        if (entering < 0 && sliding && partial) entering = slide_entering();  // (not run's retry)
         if (entering < 0) entering = choose_entering(bland);
       }
       if (entering < 0) return true;
