@@ -492,7 +492,6 @@ class FastSimplex {
   bool bracket_node(int i, int partner, double direction) {
     double v[K];
     for (int r = 0; r < K; ++r) v[r] = x_[partner] * binv_[i][r] - x_[i] * binv_[partner][r];
-    auto phi = [&](int j) { return fused_dot(v, j); };
     const int from_column = basis_[partner], step = direction > 0 ? 1 : -1;
     const double from = point(from_column);
     const auto& grid = p_->grid->points;
@@ -513,26 +512,17 @@ class FastSimplex {
     int near = g == first ? from_column : g - step, far = g;
     if (near != from_column && is_basic(near)) return false;
     const double lo = std::min(previous, grid[g]), hi = std::max(previous, grid[g]);
-    double near_progress = 0, far_progress = hi - lo;
-    auto judge = [&](int e) {
-      const double progress = std::abs(extra_points_[e] - previous);
-      if (phi(g_ + e) > 0) {
-        if (progress > near_progress) near_progress = progress, near = g_ + e;
-      } else if (progress < far_progress) {
-        far_progress = progress, far = g_ + e;
-      }
-    };
 #ifdef __AVX512F__
     // The extra points inside, eight at a time, judged in lanes: a narrow kernel's depths crowd
     // into the cell (4.5 judged a call on lp_bench's power4 runs at grid 256), and judged one by
     // one, each a chain of k fused multiply-adds and two unpredictable branches, they were ~40 %
     // of a shift. Each lane keeps its first strict best, so the first index of the best overall
-    // wins, as in judge's order; phi in lanes is fused_dot's chain.
+    // wins, as in the scalar path's order; phi in lanes is fused_dot's chain.
     const __m512d low = _mm512_set1_pd(lo), high = _mm512_set1_pd(hi);
     const __m512d from_point = _mm512_set1_pd(previous), zero = _mm512_setzero_pd();
     __m512d weight[K];
     for (int r = 0; r < K; ++r) weight[r] = _mm512_set1_pd(v[r]);
-    __m512d near_best = _mm512_setzero_pd(), far_best = _mm512_set1_pd(far_progress);
+    __m512d near_best = _mm512_setzero_pd(), far_best = _mm512_set1_pd(hi - lo);
     __m512i near_index = _mm512_set1_epi64(-1), far_index = _mm512_set1_epi64(-1);
     const __m512i lane_index = _mm512_set_epi64(7, 6, 5, 4, 3, 2, 1, 0);
     const double* values = p_->extra.values.data();
@@ -562,10 +552,17 @@ class FastSimplex {
     const int nearest_other = first_least_lane(far_best, far_index);
     if (nearest_positive >= 0) near = g_ + nearest_positive;
     if (nearest_other >= 0) far = g_ + nearest_other;
-    (void)judge;
 #else
-    for (int e = 0; e < e_; ++e)
-      if (extra_points_[e] > lo && extra_points_[e] < hi) judge(e);
+    double near_progress = 0, far_progress = hi - lo;
+    for (int e = 0; e < e_; ++e) {
+      if (!(extra_points_[e] > lo && extra_points_[e] < hi)) continue;
+      const double progress = std::abs(extra_points_[e] - previous);
+      if (fused_dot(v, g_ + e) > 0) {
+        if (progress > near_progress) near_progress = progress, near = g_ + e;
+      } else if (progress < far_progress) {
+        far_progress = progress, far = g_ + e;
+      }
+    }
 #endif
     if (!exchange(i, far)) return false;
     // If the second exchange is refused (singular), the first half still helps.
@@ -1371,8 +1368,9 @@ class FastSimplex {
       if (!(theta >= 0)) return false;
       // Near-zero steps count as degenerate too: Harris steps of 1e-18 can cycle as well.
       degenerate = theta < 1e-12 ? degenerate + 1 : 0;
-      sliding = last_leave_ == previous_leave || entering == 0 || entering == g_ - 1;
-      previous_leave = last_leave_;
+      const int left = basic_position(entering);  // the position the step's leaving column held
+      sliding = left == previous_leave || entering == 0 || entering == g_ - 1;
+      previous_leave = left;
     }
     return false;
   }
@@ -1409,7 +1407,6 @@ class FastSimplex {
     for (int i = 0; i < k_; ++i) x_[i] -= theta * u[i];
     x_[leave] = theta;
     pivot(leave, entering, u);
-    last_leave_ = leave;
     ++s.iterations;
     return theta;
   }
@@ -1839,7 +1836,6 @@ class FastSimplex {
     s.weights.push_back(w);
   }
 
-  int last_leave_ = -1;
   const Problem* p_ = nullptr;
   const WarmPosition* at_ = nullptr;  // where the problem being solved sits (run), or null
   static constexpr int k_ = K;
