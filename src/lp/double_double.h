@@ -50,6 +50,7 @@ inline DoubleDouble to_double_double(long double v) {
   return {hi, double(v - hi)};
 }
 inline long double to_long_double(DoubleDouble v) { return (long double)v.hi + v.lo; }
+inline long double to_long_double(double v) { return v; }
 
 #ifdef __AVX512F__
 // Eight double-doubles side by side, one a lane: the certificate's k <= 8 sums (rows of B x, or

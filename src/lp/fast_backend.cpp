@@ -1584,26 +1584,28 @@ class FastSimplex {
     return true;
   }
 
-  template <class Real>
-  void report(Solution& s, Real objective, const Real* weights, const Real* y) const {
+  // weights: x_B clamped at 0; y: the duals, double or double-double (Solution keeps long double).
+  template <class Dual>
+  void report(Solution& s, double objective, const double* weights, const Dual* y) const {
     s.status = ProblemStatus::Optimal;
     s.support.clear();
     s.weights.clear();
     s.support.reserve(k_);  // one allocation each, not one per doubling
     s.weights.reserve(k_);
     for (int i = 0; i < k_; ++i) {
-      const Real w = weights[i];
+      const double w = weights[i];
       if (w <= 0) continue;
       if (basis_[i] == composite_) {
         // The composite column stands for the known distribution: report its atoms.
         for (size_t t = 0; t < p_->start_support.size(); ++t)
-          add_support(s, p_->start_support[t], double(w * p_->start_weights[t]));
+          add_support(s, p_->start_support[t], w * p_->start_weights[t]);
       } else {
-        add_support(s, basis_[i], double(w));
+        add_support(s, basis_[i], w);
       }
     }
-    s.G = double(objective);
-    s.duals.assign(y, y + k_);
+    s.G = objective;
+    s.duals.resize(k_);
+    for (int r = 0; r < k_; ++r) s.duals[r] = to_long_double(y[r]);
   }
 
   // The precise certificate, in double-double: x_B and y refined from the double inverse first
@@ -1815,14 +1817,16 @@ class FastSimplex {
       if (infeasibility > 0 && !is_basic(most_negative_column)) certificate_entering_ = most_negative_column;
       return false;
     }
-    long double objective = 0, weights[kMaxRows], duals[kMaxRows];
+    // G and the weights from double-double sums, rounded once (x87 long double here was ~100
+    // ticks of this certificate's ~600).
+    DoubleDouble objective;
+    double weights[kMaxRows];
     for (int i = 0; i < k_; ++i) {
-      weights[i] = to_long_double(clamped[i]);
-      objective += (long double)cost(basis_[i]) * weights[i];
+      weights[i] = clamped[i].value();
+      add_product(objective, clamped[i], cost(basis_[i]));
       x_[i] = x[i].value();
     }
-    for (int r = 0; r < k_; ++r) duals[r] = to_long_double(y[r]);
-    report(s, objective, weights, duals);
+    report(s, objective.value(), weights, y);
     return true;
   }
 
