@@ -261,9 +261,30 @@ class FastSimplex {
       tap_column_.resize(taps), tap_row_.resize(taps);
       for (int t = 0; t < taps && kernel_side_ > 0; ++t) tap_column_[t] = t % kernel_side_, tap_row_[t] = t / kernel_side_;
     }
-    std::fill(cost_.begin(), cost_.begin() + in_front, 1.0);
-    std::fill(cost_.begin() + in_front, cost_.begin() + g_, 0.0);
+    // Along a run the grid stays and z_f moves by a few cells, so only the cells between the last
+    // problem's prefix and this one's are rewritten (the whole fill was ~2 % of a warm LP).
+    if (p.grid != costed_grid_) {
+      std::fill(cost_.begin(), cost_.begin() + in_front, 1.0);
+      std::fill(cost_.begin() + in_front, cost_.begin() + g_, 0.0);
+      costed_grid_ = p.grid;
+    } else if (in_front != costed_front_) {
+      const bool ones = in_front > costed_front_;
+      std::fill(cost_.begin() + std::min(in_front, costed_front_), cost_.begin() + std::max(in_front, costed_front_),
+                ones ? 1.0 : 0.0);
+    }
+    costed_front_ = in_front;
+#ifdef __AVX512F__
+    {
+      const __m512d zf = _mm512_set1_pd(p.zf), one = _mm512_set1_pd(1.0), zero = _mm512_setzero_pd();
+      for (int e = 0; e < e_; e += 8) {
+        const __mmask8 live = lanes_below(e_, e);
+        const __mmask8 front = _mm512_mask_cmp_pd_mask(live, _mm512_maskz_loadu_pd(live, extra_points_ + e), zf, _CMP_LT_OQ);
+        _mm512_mask_storeu_pd(cost_.data() + g_ + e, live, _mm512_mask_blend_pd(front, zero, one));
+      }
+    }
+#else
     for (int e = 0; e < e_; ++e) cost_[g_ + e] = p.extra.points[e] < p.zf ? 1.0 : 0.0;
+#endif
     composite_cost_ = std::numeric_limits<double>::quiet_NaN();  // cost() computes it if asked
 
     if (warm.usable > 0) {
@@ -1607,18 +1628,32 @@ class FastSimplex {
     s.status = ProblemStatus::Optimal;
     s.support.clear();
     s.weights.clear();
-    s.support.reserve(k_);  // one allocation each, not one per doubling
-    s.weights.reserve(k_);
-    for (int i = 0; i < k_; ++i) {
-      const double w = weights[i];
-      if (w <= 0) continue;
-      if (basis_[i] == composite_) {
-        // The composite column stands for the known distribution: report its atoms.
-        for (size_t t = 0; t < p_->start_support.size(); ++t)
-          add_support(s, p_->start_support[t], w * p_->start_weights[t]);
-      } else {
-        add_support(s, basis_[i], w);
+    if (is_basic(composite_)) {
+      s.support.reserve(k_);  // one allocation each, not one per doubling
+      s.weights.reserve(k_);
+      for (int i = 0; i < k_; ++i) {
+        const double w = weights[i];
+        if (w <= 0) continue;
+        if (basis_[i] == composite_) {
+          // The composite column stands for the known distribution: report its atoms.
+          for (size_t t = 0; t < p_->start_support.size(); ++t)
+            add_support(s, p_->start_support[t], w * p_->start_weights[t]);
+        } else {
+          add_support(s, basis_[i], w);
+        }
       }
+    } else {
+      // Distinct basic columns: no atom to merge, so no search (add_support's was ~1 % of an LP).
+      s.support.resize(k_);
+      s.weights.resize(k_);
+      int count = 0;
+      for (int i = 0; i < k_; ++i) {
+        s.support[count] = basis_[i];
+        s.weights[count] = weights[i];
+        count += weights[i] > 0;
+      }
+      s.support.resize(count);
+      s.weights.resize(count);
     }
     s.G = objective;
     s.duals.resize(k_);
@@ -1903,6 +1938,9 @@ class FastSimplex {
   int priced_phase_ = -1;
   double priced_smallest_ = 0;  // min(0, min_j reduced_[j]), set with reduced_
   std::vector<double> reduced_, alpha_, cost_;
+  // The grid whose costs cost_[0, g_) holds, ones up to costed_front_ (solve).
+  std::shared_ptr<const ColumnBlock> costed_grid_;
+  int costed_front_ = 0;
   WarmBasis lanes_[kWarmLanes];          // by layer: the texel to the left
   BasisState lane_factors_[kWarmLanes];  // their inverses (update_factors)
   std::vector<WarmBasis> above_;         // by column and layer: the row above
