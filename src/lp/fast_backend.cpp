@@ -269,16 +269,18 @@ class FastSimplex {
       costed_grid_ = p.grid;
     } else if (in_front != costed_front_) {
       const bool ones = in_front > costed_front_;
-      std::fill(cost_.begin() + std::min(in_front, costed_front_), cost_.begin() + std::max(in_front, costed_front_),
-                ones ? 1.0 : 0.0);
+      std::fill(cost_.begin() + std::min(in_front, costed_front_),
+                cost_.begin() + std::max(in_front, costed_front_), ones ? 1.0 : 0.0);
     }
     costed_front_ = in_front;
 #ifdef __AVX512F__
     {
-      const __m512d zf = _mm512_set1_pd(p.zf), one = _mm512_set1_pd(1.0), zero = _mm512_setzero_pd();
+      const __m512d zf = _mm512_set1_pd(p.zf), one = _mm512_set1_pd(1.0),
+                    zero = _mm512_setzero_pd();
       for (int e = 0; e < e_; e += 8) {
         const __mmask8 live = lanes_below(e_, e);
-        const __mmask8 front = _mm512_mask_cmp_pd_mask(live, _mm512_maskz_loadu_pd(live, extra_points_ + e), zf, _CMP_LT_OQ);
+        const __mmask8 front = _mm512_mask_cmp_pd_mask(
+            live, _mm512_maskz_loadu_pd(live, extra_points_ + e), zf, _CMP_LT_OQ);
         _mm512_mask_storeu_pd(cost_.data() + g_ + e, live, _mm512_mask_blend_pd(front, zero, one));
       }
     }
@@ -472,8 +474,10 @@ class FastSimplex {
       constexpr double kNone = std::numeric_limits<double>::infinity();
       const __m512d gaps = _mm512_abs_pd(_mm512_sub_pd(basic_points(), _mm512_set1_pd(z)));
       const __mmask8 others = _mm512_mask_cmp_pd_mask(kLanes & ~(1u << i), gaps, gaps, _CMP_ORD_Q);
-      const double least = smallest_lane(_mm512_mask_mov_pd(_mm512_set1_pd(kNone), others, gaps), kNone);
-      const unsigned holding = _mm512_mask_cmp_pd_mask(others, gaps, _mm512_set1_pd(least), _CMP_EQ_OQ);
+      const double least =
+          smallest_lane(_mm512_mask_mov_pd(_mm512_set1_pd(kNone), others, gaps), kNone);
+      const unsigned holding =
+          _mm512_mask_cmp_pd_mask(others, gaps, _mm512_set1_pd(least), _CMP_EQ_OQ);
       partner = least < kNone && holding ? __builtin_ctz(holding) : -1;
     }
 #else
@@ -532,10 +536,12 @@ class FastSimplex {
     {  // the least z direction beyond `from`, in lanes; NaN lanes (no point) never count
       constexpr double kNone = std::numeric_limits<double>::infinity();
       const __m512d points = basic_points(), sign = _mm512_set1_pd(direction);
-      const __mmask8 beyond = _mm512_mask_cmp_pd_mask(kLanes & ~(1u << i) & ~(1u << partner),
-                                                      _mm512_mul_pd(_mm512_sub_pd(points, _mm512_set1_pd(from)), sign),
-                                                      _mm512_setzero_pd(), _CMP_GT_OQ);
-      const double nearest = smallest_lane(_mm512_mask_mov_pd(_mm512_set1_pd(kNone), beyond, _mm512_mul_pd(points, sign)), kNone);
+      const __mmask8 beyond =
+          _mm512_mask_cmp_pd_mask(kLanes & ~(1u << i) & ~(1u << partner),
+                                  _mm512_mul_pd(_mm512_sub_pd(points, _mm512_set1_pd(from)), sign),
+                                  _mm512_setzero_pd(), _CMP_GT_OQ);
+      const double nearest = smallest_lane(
+          _mm512_mask_mov_pd(_mm512_set1_pd(kNone), beyond, _mm512_mul_pd(points, sign)), kNone);
       limit = direction * nearest;  // (z direction) direction = z exactly
     }
 #else
@@ -840,8 +846,8 @@ class FastSimplex {
   // Whether the k entries of two rows are equal (==: NaN never is).
   static bool same_row(const double* a, const double* b) {
 #ifdef __AVX512F__
-    return _mm512_mask_cmp_pd_mask(kLanes, _mm512_maskz_loadu_pd(kLanes, a), _mm512_maskz_loadu_pd(kLanes, b),
-                                   _CMP_EQ_OQ) == kLanes;
+    return _mm512_mask_cmp_pd_mask(kLanes, _mm512_maskz_loadu_pd(kLanes, a),
+                                   _mm512_maskz_loadu_pd(kLanes, b), _CMP_EQ_OQ) == kLanes;
 #else
     bool same = true;
     for (int r = 0; r < K; ++r) same &= a[r] == b[r];
@@ -1497,12 +1503,14 @@ class FastSimplex {
     // A row of B^-1 a vector: one multiply-add a row, rows left alone masked, not branched (the
     // scalar loops, with a branch a row, were ~3 % of the solver's samples). The same bits: the
     // compiler contracts the scalar update into the same fused multiply-add.
-    const __m512d pivot_row = _mm512_mul_pd(_mm512_maskz_loadu_pd(kLanes, binv_[leave]), _mm512_set1_pd(reciprocal));
+    const __m512d pivot_row =
+        _mm512_mul_pd(_mm512_maskz_loadu_pd(kLanes, binv_[leave]), _mm512_set1_pd(reciprocal));
     _mm512_mask_storeu_pd(binv_[leave], kLanes, pivot_row);
     for (int i = 0; i < K; ++i) {
       const __mmask8 update = i == leave || u[i] == 0 ? 0 : kLanes;
       const __m512d row = _mm512_maskz_loadu_pd(kLanes, binv_[i]);
-      _mm512_mask_storeu_pd(binv_[i], update, _mm512_fnmadd_pd(_mm512_set1_pd(u[i]), pivot_row, row));
+      _mm512_mask_storeu_pd(binv_[i], update,
+                            _mm512_fnmadd_pd(_mm512_set1_pd(u[i]), pivot_row, row));
     }
 #else
     for (int r = 0; r < k_; ++r) binv_[leave][r] *= reciprocal;
@@ -1823,14 +1831,18 @@ class FastSimplex {
       row[r] = _mm512_mask_i64gather_pd(_mm512_setzero_pd(), kLanes, position, &basic_[0][r], 8);
   }
   // The points of the basic structural columns, one lane a basis position, NaN in the others (the
-  // composite, artificials, lanes beyond k): two gathers instead of k point() calls.
+  // composite, artificials, lanes beyond k): two gathers instead of k point() calls. (AVX-512F
+  // alone: the column indices widened to 64-bit lanes; basis_ holds kMaxRows entries, set or not.)
   __m512d basic_points() const {
-    const __m256i j = _mm256_maskz_loadu_epi32(kLanes, basis_);
-    const __mmask8 on_grid = _mm256_mask_cmplt_epi32_mask(kLanes, j, _mm256_set1_epi32(g_));
-    const __mmask8 extra = _mm256_mask_cmplt_epi32_mask(kLanes, j, _mm256_set1_epi32(n_)) & ~on_grid;
+    const __m512i j = _mm512_maskz_cvtepi32_epi64(
+        kLanes, _mm256_loadu_si256(reinterpret_cast<const __m256i*>(basis_)));
+    const __mmask8 on_grid = _mm512_mask_cmplt_epi64_mask(kLanes, j, _mm512_set1_epi64(g_));
+    const __mmask8 extra =
+        _mm512_mask_cmplt_epi64_mask(kLanes, j, _mm512_set1_epi64(n_)) & ~on_grid;
     const __m512d none = _mm512_set1_pd(std::numeric_limits<double>::quiet_NaN());
-    const __m512d grid = _mm512_mask_i32gather_pd(none, on_grid, j, grid_points_, 8);
-    return _mm512_mask_i32gather_pd(grid, extra, _mm256_sub_epi32(j, _mm256_set1_epi32(g_)), extra_points_, 8);
+    const __m512d grid = _mm512_mask_i64gather_pd(none, on_grid, j, grid_points_, 8);
+    return _mm512_mask_i64gather_pd(grid, extra, _mm512_sub_epi64(j, _mm512_set1_epi64(g_)),
+                                    extra_points_, 8);
   }
   // -v exactly (the sign bit flipped, as the scalar unary minus).
   static __m512d negated(__m512d v) {
@@ -1973,7 +1985,7 @@ class FastSimplex {
   bool precise_duals_ = false;  // and refined into precise_y_ (refine_duals_for_certificate)
   DoubleDouble precise_y_[kMaxRows];
   int phase_ = 1;
-  int basis_[kMaxRows];
+  int basis_[kMaxRows] = {};
   double x_[kMaxRows], y_[kMaxRows], artificial_sign_[kMaxRows];
   double binv_[kMaxRows][kMaxRows];
   double basic_[kMaxRows][kMaxRows];  // basic_[i] = column basis_[i] (kept by refactor and pivot)
