@@ -468,11 +468,14 @@ class FastSimplex {
     // one, and shifts from such starts nearly always ran out of rounds.
     if (j >= n_ || x_[i] < -kHopelessWeight) return false;
     const double z = point(j);
+    // Once for the partner and bracket_node's limit (the basis stays until an exchange).
+    double points[kMaxRows];
+    basic_points(points);
     int partner = -1;
 #ifdef __AVX512F__
     {  // the first nearest, as the scalar loop finds it, in lanes (the loop was ~2 % of a warm LP)
       constexpr double kNone = std::numeric_limits<double>::infinity();
-      const __m512d gaps = _mm512_abs_pd(_mm512_sub_pd(basic_points(), _mm512_set1_pd(z)));
+      const __m512d gaps = _mm512_abs_pd(_mm512_sub_pd(_mm512_loadu_pd(points), _mm512_set1_pd(z)));
       const __mmask8 others = _mm512_mask_cmp_pd_mask(kLanes & ~(1u << i), gaps, gaps, _CMP_ORD_Q);
       const double least =
           smallest_lane(_mm512_mask_mov_pd(_mm512_set1_pd(kNone), others, gaps), kNone);
@@ -482,17 +485,16 @@ class FastSimplex {
     }
 #else
     double gap = std::numeric_limits<double>::infinity();
-    for (int q = 0; q < k_; ++q)
-      if (q != i && basis_[q] < n_ && std::abs(point(basis_[q]) - z) < gap)
-        partner = q, gap = std::abs(point(basis_[q]) - z);
+    for (int q = 0; q < k_; ++q)  // (NaN, no point, is never nearer)
+      if (q != i && std::abs(points[q] - z) < gap) partner = q, gap = std::abs(points[q] - z);
 #endif
     if (partner < 0) return false;
-    const double from = point(basis_[partner]), direction = from > z ? 1.0 : -1.0;
+    const double from = points[partner], direction = from > z ? 1.0 : -1.0;
     // A pair whose weights sum to <= 0 stands for no node: a shift only drags the negative weight
     // along, a cell a round (seen in most starts that ran out of rounds). The try fails at once.
     const double mass = x_[i] + x_[partner];
     if (!(mass > 0)) return false;
-    if (bracket_node(i, partner, direction)) return true;
+    if (bracket_node(i, partner, direction, points)) return true;
     const double node = (x_[i] * z + x_[partner] * from) / mass;
     // The point beyond the partner, and the two around the node, in one pass over the extra points
     // (most shifts move both: three passes were ~8 % of a warm LP).
@@ -523,7 +525,8 @@ class FastSimplex {
   // of the calls on lp_bench). On its warm runs at grid 256: 30.4 k shifts instead of 43.5 k, 1.37
   // (power4) and 1.34 (trig4) pivots an LP instead of 1.43 and 1.41; at 1024, 1.59 instead of 1.71
   // and 1.70.
-  bool bracket_node(int i, int partner, double direction) {
+  // `points`: basic_points' of the current basis.
+  bool bracket_node(int i, int partner, double direction, const double* points) {
     double v[K];
     for (int r = 0; r < K; ++r) v[r] = x_[partner] * binv_[i][r] - x_[i] * binv_[partner][r];
     const int from_column = basis_[partner], step = direction > 0 ? 1 : -1;
@@ -535,21 +538,20 @@ class FastSimplex {
 #ifdef __AVX512F__
     {  // the least z direction beyond `from`, in lanes; NaN lanes (no point) never count
       constexpr double kNone = std::numeric_limits<double>::infinity();
-      const __m512d points = basic_points(), sign = _mm512_set1_pd(direction);
+      const __m512d basic = _mm512_loadu_pd(points), sign = _mm512_set1_pd(direction);
       const __mmask8 beyond =
           _mm512_mask_cmp_pd_mask(kLanes & ~(1u << i) & ~(1u << partner),
-                                  _mm512_mul_pd(_mm512_sub_pd(points, _mm512_set1_pd(from)), sign),
+                                  _mm512_mul_pd(_mm512_sub_pd(basic, _mm512_set1_pd(from)), sign),
                                   _mm512_setzero_pd(), _CMP_GT_OQ);
       const double nearest = smallest_lane(
-          _mm512_mask_mov_pd(_mm512_set1_pd(kNone), beyond, _mm512_mul_pd(points, sign)), kNone);
+          _mm512_mask_mov_pd(_mm512_set1_pd(kNone), beyond, _mm512_mul_pd(basic, sign)), kNone);
       limit = direction * nearest;  // (z direction) direction = z exactly
     }
 #else
-    for (int q = 0; q < K; ++q)
-      if (q != i && q != partner && basis_[q] < n_) {
-        const double z = point(basis_[q]);
-        if ((z - from) * direction > 0 && (limit - z) * direction > 0) limit = z;
-      }
+    for (int q = 0; q < K; ++q)  // (NaN, no point, never counts)
+      if (q != i && q != partner && (points[q] - from) * direction > 0 &&
+          (limit - points[q]) * direction > 0)
+        limit = points[q];
 #endif
     const int first = g;
     g = first_sign_change(v, g, step, limit);
@@ -841,6 +843,28 @@ class FastSimplex {
     _mm512_mask_storeu_pd(to, kLanes, _mm512_maskz_loadu_pd(kLanes, from));
 #else
     std::copy(from, from + K, to);
+#endif
+  }
+  // The points of the basic structural columns by basis position, NaN for the others (the
+  // composite, artificials) and in out[k..kMaxRows).
+  void basic_points(double (&out)[kMaxRows]) const {
+#ifdef __AVX512F__
+    // Two gathers instead of k point() calls (AVX-512F alone: the column indices widened to 64-bit
+    // lanes; basis_ holds kMaxRows entries, set or not).
+    const __m512i j = _mm512_maskz_cvtepi32_epi64(
+        kLanes, _mm256_loadu_si256(reinterpret_cast<const __m256i*>(basis_)));
+    const __mmask8 on_grid = _mm512_mask_cmplt_epi64_mask(kLanes, j, _mm512_set1_epi64(g_));
+    const __mmask8 extra =
+        _mm512_mask_cmplt_epi64_mask(kLanes, j, _mm512_set1_epi64(n_)) & ~on_grid;
+    const __m512d none = _mm512_set1_pd(std::numeric_limits<double>::quiet_NaN());
+    const __m512d grid = _mm512_mask_i64gather_pd(none, on_grid, j, grid_points_, 8);
+    _mm512_storeu_pd(
+        out, _mm512_mask_i64gather_pd(grid, extra, _mm512_sub_epi64(j, _mm512_set1_epi64(g_)),
+                                      extra_points_, 8));
+#else
+    for (int q = 0; q < kMaxRows; ++q)
+      out[q] =
+          q < K && basis_[q] < n_ ? point(basis_[q]) : std::numeric_limits<double>::quiet_NaN();
 #endif
   }
   // Whether the k entries of two rows are equal (==: NaN never is).
@@ -1162,7 +1186,8 @@ class FastSimplex {
     __mmask8 below = 0;
     for (; j < n; j += 8) {
       const __mmask8 live = lanes_below(n, j);
-      below |= _mm512_mask_cmp_pd_mask(live, _mm512_maskz_loadu_pd(live, d + j), limit, _CMP_NGE_UQ);
+      below |=
+          _mm512_mask_cmp_pd_mask(live, _mm512_maskz_loadu_pd(live, d + j), limit, _CMP_NGE_UQ);
     }
     return below != 0;
 #endif
@@ -1829,20 +1854,6 @@ class FastSimplex {
     const __m512i position = _mm512_set_epi64(56, 48, 40, 32, 24, 16, 8, 0);
     for (int r = 0; r < K; ++r)
       row[r] = _mm512_mask_i64gather_pd(_mm512_setzero_pd(), kLanes, position, &basic_[0][r], 8);
-  }
-  // The points of the basic structural columns, one lane a basis position, NaN in the others (the
-  // composite, artificials, lanes beyond k): two gathers instead of k point() calls. (AVX-512F
-  // alone: the column indices widened to 64-bit lanes; basis_ holds kMaxRows entries, set or not.)
-  __m512d basic_points() const {
-    const __m512i j = _mm512_maskz_cvtepi32_epi64(
-        kLanes, _mm256_loadu_si256(reinterpret_cast<const __m256i*>(basis_)));
-    const __mmask8 on_grid = _mm512_mask_cmplt_epi64_mask(kLanes, j, _mm512_set1_epi64(g_));
-    const __mmask8 extra =
-        _mm512_mask_cmplt_epi64_mask(kLanes, j, _mm512_set1_epi64(n_)) & ~on_grid;
-    const __m512d none = _mm512_set1_pd(std::numeric_limits<double>::quiet_NaN());
-    const __m512d grid = _mm512_mask_i64gather_pd(none, on_grid, j, grid_points_, 8);
-    return _mm512_mask_i64gather_pd(grid, extra, _mm512_sub_epi64(j, _mm512_set1_epi64(g_)),
-                                    extra_points_, 8);
   }
   // -v exactly (the sign bit flipped, as the scalar unary minus).
   static __m512d negated(__m512d v) {
