@@ -6,11 +6,13 @@
 // scratch. Falls back to the tiny dataset without data/.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <bit>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <utility>
@@ -133,11 +135,13 @@ struct TimedSolver {
   Ticks solving = 0;
   Ticks pass_ticks = now();
   std::chrono::steady_clock::time_point pass_start = std::chrono::steady_clock::now();
+  Ticks last = 0;  // the last solve's ticks
   const lp::Solution& solve(const lp::Problem& stored, const lp::WarmPosition* at) {
     problem = stored;
     const Ticks start = now();
     backend->solve_into(problem, at, solution);
-    solving += now() - start;
+    last = now() - start;
+    solving += last;
     return solution;
   }
   // The solving time since the last call, for State::SetIterationTime.
@@ -159,11 +163,15 @@ void BM_SolveRuns(benchmark::State& state, const std::string& backend, const std
   size_t unstable = 0, iterations = 0, solved = 0;
   double checksum = 0;
   uint64_t answers = 0;  // a hash of every G's bits in the last pass: equal across builds = the same answers
+  // Each LP's ticks and pivots in the last pass: where the time goes (the tail_share counters).
+  std::vector<std::pair<double, int>> costs;
   for (auto _ : state) {
     answers = 0;
+    costs.clear();
     for (const auto& run : list)
       for (size_t i = 0; i < run.problems.size(); ++i) {
         const lp::Solution& s = solver.solve(run.problems[i], warm && i > 0 ? &run.positions[i] : nullptr);
+        costs.emplace_back(double(solver.last), s.iterations);
         unstable += s.status != lp::ProblemStatus::Optimal;
         iterations += s.iterations;
         checksum += s.G;
@@ -178,6 +186,15 @@ void BM_SolveRuns(benchmark::State& state, const std::string& backend, const std
   state.counters["not_optimal"] = double(unstable) / double(solved);
   state.counters["lps_per_pass"] = double(solved) / double(state.iterations());
   state.counters["answers"] = double(answers >> 12);  // exact in a double (52 bits); compare with --benchmark_format=json
+  // The share of the last pass's solve time in its slowest 5 % of LPs, and in the LPs that took
+  // 8 pivots or more (warm starts that needed the composite repair, and the runs' cold starts).
+  double total = 0, many_pivots = 0;
+  for (const auto& [ticks, pivots] : costs) total += ticks, many_pivots += pivots >= 8 ? ticks : 0;
+  std::sort(costs.begin(), costs.end(), std::greater<>());
+  double slowest = 0;
+  for (size_t i = 0; i < costs.size() / 20; ++i) slowest += costs[i].first;
+  state.counters["tail_share_slowest_5pct"] = total > 0 ? slowest / total : 0;
+  state.counters["tail_share_8_pivots"] = total > 0 ? many_pivots / total : 0;
 }
 
 BENCHMARK_CAPTURE(BM_SolveRuns, fast_warm_power4_256, "fast", "power4", 256, true)->UseManualTime()->Unit(benchmark::kMillisecond);
