@@ -1768,11 +1768,15 @@ class FastSimplex {
         refine_precisely<true>(y, basic_cost, inverse);
       }
     };
-    // Two steps for x_B: after one, a third of the bounds failed on |y| times its residual, and
-    // the second attempt refined y again, and so priced again.
+    // x_B: one step, then its residual, which the bound needs anyway, decides whether a second
+    // step is taken (a third of the bounds fail on |y| times the residual one step leaves); the
+    // second starts from that residual, so no residual is computed twice.
     refine_precisely<false>(x, p_->rhs.data(), binv_);
-    refine_precisely<false>(x, p_->rhs.data(), binv_);
+    double residual[kMaxRows];
+    misfit_of<false>(x, p_->rhs.data(), residual);
     if (!refined) refine_precisely<true>(y, basic_cost, binv_);
+    if (precise_bound(x, y, s, residual)) return true;
+    correct_precisely<false>(x, residual, binv_);
     if (precise_bound(x, y, s)) return true;
     refine(binv_, 1);
     if (precise_bound(x, y, s)) return true;
@@ -1806,9 +1810,14 @@ class FastSimplex {
   // leaves.
   template <bool Transposed, class Inverse>
   void refine_precisely(DoubleDouble* v, const double* target, const Inverse& inverse) const {
-    using Real = std::remove_cvref_t<decltype(inverse[0][0])>;
     double misfit[kMaxRows];
     misfit_of<Transposed>(v, target, misfit);
+    correct_precisely<Transposed>(v, misfit, inverse);
+  }
+  // v += B^{-1} misfit (Transposed: B^{-T} misfit): refine_precisely's step from its residual.
+  template <bool Transposed, class Inverse>
+  void correct_precisely(DoubleDouble* v, const double* misfit, const Inverse& inverse) const {
+    using Real = std::remove_cvref_t<decltype(inverse[0][0])>;
     for (int i = 0; i < k_; ++i) {
       Real correction = 0;
       for (int r = 0; r < k_; ++r) correction += misfit[r] * (Transposed ? inverse[r][i] : inverse[i][r]);
@@ -1882,15 +1891,30 @@ class FastSimplex {
   // Accepts x_B and y when the same first-order bound on |G - G*| as the KKT checker's (|y| times
   // the residual of the clamped x_B, plus complementarity, plus dual infeasibility) is <= 1e-9,
   // every term from double-double sums (the bound's own double rounding is ~1e-16 of it).
-  bool precise_bound(const DoubleDouble* x, const DoubleDouble* y, Solution& s) {
+  // `residual_of_x`: rhs - B x when known (used when no weight is clamped).
+  bool precise_bound(const DoubleDouble* x, const DoubleDouble* y, Solution& s,
+                     const double* residual_of_x = nullptr) {
     DoubleDouble clamped[kMaxRows];
+    bool unclamped = true;
     for (int i = 0; i < k_; ++i) {
       if (!(x[i].value() >= -kNegligibleWeight)) return false;
       clamped[i] = x[i].hi > 0 ? x[i] : DoubleDouble{};
+      unclamped &= x[i].hi > 0 || (x[i].hi == 0 && x[i].lo == 0);
     }
     // rhs - B max(x, 0): only its size counts below.
     double residual[kMaxRows];
-    misfit_of<false>(clamped, p_->rhs.data(), residual);
+    if (residual_of_x && unclamped)
+      std::copy(residual_of_x, residual_of_x + k_, residual);
+    else
+      misfit_of<false>(clamped, p_->rhs.data(), residual);
+    // Its part of the bound first: when it alone is too large (refinement needs another step), the
+    // rest is not computed.
+    double bound = 0;
+    for (int r = 0; r < k_; ++r) {
+      if (!(std::abs(residual[r]) <= kCertifyResidual)) return false;  // x_B not feasible
+      bound += std::abs(y[r].value() * residual[r]);
+    }
+    if (!(bound <= kCertifyBound)) return false;
     // Complementarity as the KKT checker sees it: basic reduced costs, zero in exact arithmetic,
     // are |y| times rounding in practice. Computed for every basic column, since each is also a
     // suspect below (judged twice, they were ~15 % of this certificate).
@@ -1898,11 +1922,6 @@ class FastSimplex {
     double basic_cost[kMaxRows], basic_reduced[kMaxRows];
     for (int i = 0; i < k_; ++i) basic_cost[i] = basis_[i] < n_ ? cost_[basis_[i]] : 0.0;
     misfit_of<true>(y, basic_cost, basic_reduced);
-    double bound = 0;
-    for (int r = 0; r < k_; ++r) {
-      if (!(std::abs(residual[r]) <= kCertifyResidual)) return false;  // x_B not feasible
-      bound += std::abs(y[r].value() * residual[r]);
-    }
     for (int i = 0; i < k_; ++i) {
       const double w = clamped[i].value();
       if (w <= 0) continue;
