@@ -44,7 +44,15 @@ constexpr double kCertifyResidual = 1e-12;
 constexpr double kNegligibleWeight = 1e-18;
 // The residual a GLPK fallback answer may leave (its weights, rounded to double, leave ~1e-16).
 constexpr double kFallbackResidual = 1e-14;
-constexpr int kRefactorInterval = 16;            // rank-1 updates between fresh inverses
+// Rank-1 updates between fresh inverses. The updates carry over from LP to LP in the left texel's
+// factors, and the certificates refine x_B and y against B itself: 32 instead of 16 was 1.04-1.05x
+// on lp_bench's warm runs at grid 256 (24 and 64 alike), the same pivots, and left the 100 000
+// random instances' and three sweeps' unstable counts as they were. Only run's retry from scratch,
+// the last resort of ill-conditioned LPs (70 pivots on a narrow kernel, |y| ~ 1e6), keeps 16: with
+// 32 that LP stayed unstable
+// (LpFastBackend.NarrowKernelThatExtrasFirstPricingLeftUnstableIsSolved).
+constexpr int kRefactorInterval = 32;
+constexpr int kCarefulRefactorInterval = 16;
 constexpr int kDegenerateBeforeBland = 24;       // degenerate pivots in a row before Bland's rule
 // Bracket-shift rounds per warm basis: the closest z_f's gets 4k, the others, which succeed less
 // often, 6: on the default dataset that saved 3.1M of 17.6M exchanges for 0.15M more pivots (power4
@@ -213,8 +221,10 @@ class FastSimplex {
       WarmOffers none;
       start_over(s);
       extras_first_ = false;
+      refactor_interval_ = kCarefulRefactorInterval;
       solve(p, none, s);
       extras_first_ = true;
+      refactor_interval_ = kRefactorInterval;
     }
     lane_zf_[layer] = remember_basis(s, lanes_[layer]);
     if (!std::isnan(lane_zf_[layer])) save_basis(lane_factors_[layer]);
@@ -424,7 +434,7 @@ class FastSimplex {
       load_column(basis_[i], a[i]);
       if (!same_row(a[i], factors.basic[i])) changed[count++] = i;
     }
-    if (count > kChangedColumns || factors.updates + count > kRefactorInterval) return false;
+    if (count > kChangedColumns || factors.updates + count > refactor_interval_) return false;
     for (int i = 0; i < k_; ++i) {
       copy_row(factors.binv[i], binv_[i]);
       copy_row(factors.basic[i], basic_[i]);
@@ -789,7 +799,7 @@ class FastSimplex {
     // A fresh inverse rather than an end to the shifts: the limit used to stop the first warm
     // basis's shifts in most of the starts that then failed (~85 k of the 119 k composite repairs
     // of a power4 sweep).
-    if (updates_ >= kRefactorInterval && !refactor()) return false;
+    if (updates_ >= refactor_interval_ && !refactor()) return false;
     double u[kMaxRows] = {};  // (GCC cannot see that column_in_basis fills k_ <= kMaxRows)
     column_in_basis(entering, u);
     if (!stable_pivot(u, i)) return false;
@@ -1448,7 +1458,7 @@ class FastSimplex {
     // is stalling on an ill-conditioned basis and goes to the fallback instead.
     const int limit = std::min(20 * (n_ + k_), 1000);
     for (int guard = 0; guard < limit; ++guard) {
-      if (updates_ >= kRefactorInterval && !refactor()) return false;
+      if (updates_ >= refactor_interval_ && !refactor()) return false;
       bool bland = degenerate >= kDegenerateBeforeBland;
       // The extra columns first (phase 2 only, after the first iteration: see enter_among_extras):
       // only when none of them may enter does a full pass decide, so every run still ends with one,
@@ -2031,6 +2041,7 @@ class FastSimplex {
     return composite_cost_;
   }
   int updates_ = 0;
+  int refactor_interval_ = kRefactorInterval;  // kCarefulRefactorInterval in run's retry
   bool extras_first_ = true;  // partial pricing over the extra columns (iterate), off for a retry (run)
   int kernel_side_ = 0;     // taps a side of the problem's square kernel, 0: not square (texel_tap)
   int kernel_taps_ = -1;    // the taps kernel_side_, tap_column_ and tap_row_ are for
