@@ -60,7 +60,9 @@ constexpr int kDegenerateBeforeBland = 24;       // degenerate pivots in a row b
 constexpr int kLaterTryRounds = 6;
 constexpr int kGuidedSteps = 8;                  // certificate-guided steps per LP (solve_phase2)
 constexpr int kWarmTries = 5;                    // warm bases tried before the composite repair
-constexpr int kChangedColumns = 2;  // update_factors: product-form updates instead of a factorisation
+// update_factors: product-form updates instead of a factorisation for up to this many changed
+// columns (3 rather than 2 once kRefactorInterval was 32: 1.00-1.02x, two sets of 6 runs).
+constexpr int kChangedColumns = 3;
 constexpr double kHopelessWeight = 10;          // a warm try with a weight below -10 is given up
 
 // In-place LU with partial pivoting and inverse for k <= 8, in long double for the certificate's
