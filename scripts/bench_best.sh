@@ -13,7 +13,7 @@ log=$(mktemp); trap 'rm -f "$log"' EXIT
 pin=(); command -v taskset >/dev/null && pin=(taskset -c "$(($(nproc) - 1))")
 for ((round = 1; round <= rounds; ++round)); do
   # Each round in a fresh random order: the VM drifts within a set by as much as the effects
-  # measured (results/BENCHMARKS.md, session 26), and a fixed order turns drift into a bias.
+  # measured (results/BENCHMARKS.md, session 26), and a fixed order can turn drift into a bias.
   mapfile -t order < <(printf '%s\n' "$@" | shuf)
   for binary in "${order[@]}"; do
     "${pin[@]}" "$binary" --benchmark_filter="$filter" --benchmark_min_time=0.05 --benchmark_repetitions=10 \

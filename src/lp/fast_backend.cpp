@@ -45,11 +45,11 @@ constexpr double kNegligibleWeight = 1e-18;
 // The residual a GLPK fallback answer may leave (its weights, rounded to double, leave ~1e-16).
 constexpr double kFallbackResidual = 1e-14;
 // Rank-1 updates between fresh inverses. The updates carry over from LP to LP in the left texel's
-// factors, and the certificates refine x_B and y against B itself: 32 instead of 16 was 1.04-1.05x
-// on lp_bench's warm runs at grid 256 (24 and 64 alike), the same pivots, and left the 100 000
-// random instances' and three sweeps' unstable counts as they were. Only run's retry from scratch,
-// the last resort of ill-conditioned LPs (70 pivots on a narrow kernel, |y| ~ 1e6), keeps 16: with
-// 32 that LP stayed unstable
+// factors, and the certificates refine x_B and y against B itself. 32 instead of 16 (with
+// kChangedColumns 3 instead of 2): 0.36 instead of 0.46 factorisations an LP on lp_bench's warm
+// runs at grid 256, the same pivots, and the 100 000 random instances' and three sweeps' unstable
+// counts as they were. Only run's retry from scratch, the last resort of ill-conditioned LPs (70
+// pivots on a narrow kernel, |y| ~ 1e6), keeps 16: with 32 that LP stayed unstable
 // (LpFastBackend.NarrowKernelThatExtrasFirstPricingLeftUnstableIsSolved).
 constexpr int kRefactorInterval = 32;
 constexpr int kCarefulRefactorInterval = 16;
@@ -61,7 +61,7 @@ constexpr int kLaterTryRounds = 6;
 constexpr int kGuidedSteps = 8;                  // certificate-guided steps per LP (solve_phase2)
 constexpr int kWarmTries = 5;                    // warm bases tried before the composite repair
 // update_factors: product-form updates instead of a factorisation for up to this many changed
-// columns (3 rather than 2 once kRefactorInterval was 32: 1.00-1.02x, two sets of 6 runs).
+// columns (see kRefactorInterval).
 constexpr int kChangedColumns = 3;
 constexpr double kHopelessWeight = 10;          // a warm try with a weight below -10 is given up
 
