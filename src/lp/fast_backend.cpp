@@ -1110,7 +1110,7 @@ class FastSimplex {
   // orthonormalised constant function, problem.h): row 0 from a register instead of loaded, the
   // same fused chain and bits. 1.01x (power4) and 1.02x (trig4) on lp_bench's warm runs at grid
   // 256 (scripts/bench_best.sh, 80 runs each); a blend of two precomputed first steps instead,
-  // without the cost's load either, was 0.97x (mask operations; the pass is not load-bound).
+  // without the cost's load either, was 0.97x (its mask operations cost more than the loads saved).
   void combine_constant_first_row(const __m512d* weight, const double* values, int n,
                                   const double* base, double* out, __m512d& low) const {
     const __m512d first_row = _mm512_set1_pd(grid_first_row_);
