@@ -224,11 +224,9 @@ class FastSimplex {
       // pivots this way (G = 1.98e-7, where GLPK's answer, 1.3e-10, is not certified).
       WarmOffers none;
       start_over(s);
-      extras_first_ = false;
-      refactor_interval_ = kCarefulRefactorInterval;
+      retrying_ = true;
       solve(p, none, s);
-      extras_first_ = true;
-      refactor_interval_ = kRefactorInterval;
+      retrying_ = false;
     }
     lane_zf_[layer] = remember_basis(s, lanes_[layer]);
     if (!std::isnan(lane_zf_[layer])) save_basis(lane_factors_[layer]);
@@ -439,7 +437,7 @@ class FastSimplex {
       load_column(basis_[i], a[i]);
       if (!same_row(a[i], factors.basic[i])) changed[count++] = i;
     }
-    if (count > kChangedColumns || factors.updates + count > refactor_interval_) return false;
+    if (count > kChangedColumns || factors.updates + count > refactor_interval()) return false;
     for (int i = 0; i < k_; ++i) {
       copy_row(factors.binv[i], binv_[i]);
       copy_row(factors.basic[i], basic_[i]);
@@ -804,7 +802,7 @@ class FastSimplex {
     // A fresh inverse rather than an end to the shifts: the limit used to stop the first warm
     // basis's shifts in most of the starts that then failed (~85 k of the 119 k composite repairs
     // of a power4 sweep).
-    if (updates_ >= refactor_interval_ && !refactor()) return false;
+    if (updates_ >= refactor_interval() && !refactor()) return false;
     double u[kMaxRows] = {};  // (GCC cannot see that column_in_basis fills k_ <= kMaxRows)
     column_in_basis(entering, u);
     if (!stable_pivot(u, i)) return false;
@@ -1078,10 +1076,7 @@ class FastSimplex {
 #ifdef __AVX512F__
     __m512d weight[K], low = _mm512_setzero_pd();
     for (int r = 0; r < K; ++r) weight[r] = _mm512_set1_pd(w[r]);
-    if (!std::isnan(grid_first_row_))
-      combine_constant_first_row(weight, p_->grid->values.data(), g_, base, out, low);
-    else
-      combine_masked(weight, p_->grid->values.data(), g_, base, out, g_, low);
+    combine_masked(weight, p_->grid->values.data(), g_, base, out, g_, low, grid_first_row_);
     combine_masked(weight, p_->extra.values.data(), e_, base ? base + g_ : nullptr, out + g_, e_, low);
     return smallest_lane(low);
 #endif
@@ -1093,33 +1088,27 @@ class FastSimplex {
     return extra_smallest < grid_smallest ? extra_smallest : grid_smallest;
   }
 #ifdef __AVX512F__
-  // out_j = base_j - sum_r w_r A_rj (base 0 when null) for the n columns of one block whose rows lie
-  // `stride` apart, eight lanes masked at the end (no scalar tail), each value folded into the
+  // out_j = base_j - sum_r w_r A_rj (base 0 when null) for the n columns of one block whose rows
+  // lie `stride` apart, eight lanes masked at the end (no scalar tail), each value folded into the
   // running minimum `low` (NaN keeps the minimum so far). The same fused chains as combine_block.
-  static void combine_masked(const __m512d* weight, const double* values, size_t stride, const double* base,
-                             double* out, int n, __m512d& low) {
-    for (int j = 0; j < n; j += 8) {
-      const __mmask8 live = lanes_below(n, j);
-      __m512d v = base ? _mm512_maskz_loadu_pd(live, base + j) : _mm512_setzero_pd();
-      for (int r = 0; r < K; ++r) v = _mm512_fnmadd_pd(weight[r], _mm512_maskz_loadu_pd(live, values + r * stride + j), v);
-      _mm512_mask_storeu_pd(out + j, live, v);
-      low = _mm512_mask_min_pd(low, live, v, low);
-    }
-  }
-  // combine_masked over the grid block when its first row is the constant grid_first_row_ (the
-  // orthonormalised constant function, problem.h): row 0 from a register instead of loaded, the
-  // same fused chain and bits. 1.01x (power4) and 1.02x (trig4) on lp_bench's warm runs at grid
-  // 256 (scripts/bench_best.sh, 80 runs each); a blend of two precomputed first steps instead,
+  // `first_row`: the block's row 0 when it is one constant (the orthonormalised constant function,
+  // problem.h; the grid's, grid_first_row_), else NaN: then row 0 comes from a register instead of
+  // loaded, the same chain and bits. 1.01x (power4) and 1.02x (trig4) on lp_bench's warm runs at
+  // grid 256 (scripts/bench_best.sh, 80 runs each); a blend of two precomputed first steps instead,
   // without the cost's load either, was 0.97x (its mask operations cost more than the loads saved).
-  void combine_constant_first_row(const __m512d* weight, const double* values, int n,
-                                  const double* base, double* out, __m512d& low) const {
-    const __m512d first_row = _mm512_set1_pd(grid_first_row_);
+  static void combine_masked(const __m512d* weight, const double* values, size_t stride,
+                             const double* base, double* out, int n, __m512d& low,
+                             double first_row = std::numeric_limits<double>::quiet_NaN()) {
+    const bool constant_first_row = !std::isnan(first_row);
+    const __m512d first_row_values = _mm512_set1_pd(first_row);
     for (int j = 0; j < n; j += 8) {
       const __mmask8 live = lanes_below(n, j);
       __m512d v = base ? _mm512_maskz_loadu_pd(live, base + j) : _mm512_setzero_pd();
-      v = _mm512_fnmadd_pd(weight[0], first_row, v);
+      v = _mm512_fnmadd_pd(
+          weight[0],
+          constant_first_row ? first_row_values : _mm512_maskz_loadu_pd(live, values + j), v);
       for (int r = 1; r < K; ++r)
-        v = _mm512_fnmadd_pd(weight[r], _mm512_maskz_loadu_pd(live, values + r * n + j), v);
+        v = _mm512_fnmadd_pd(weight[r], _mm512_maskz_loadu_pd(live, values + r * stride + j), v);
       _mm512_mask_storeu_pd(out + j, live, v);
       low = _mm512_mask_min_pd(low, live, v, low);
     }
@@ -1492,7 +1481,7 @@ class FastSimplex {
     // is stalling on an ill-conditioned basis and goes to the fallback instead.
     const int limit = std::min(20 * (n_ + k_), 1000);
     for (int guard = 0; guard < limit; ++guard) {
-      if (updates_ >= refactor_interval_ && !refactor()) return false;
+      if (updates_ >= refactor_interval() && !refactor()) return false;
       bool bland = degenerate >= kDegenerateBeforeBland;
       // The extra columns first (phase 2 only, after the first iteration: see enter_among_extras):
       // only when none of them may enter does a full pass decide, so every run still ends with one,
@@ -1500,7 +1489,7 @@ class FastSimplex {
       dual_values(y_);  // once per iteration, for the extras and the full pass alike
       duals_fresh_ = true;
       precise_duals_ = false;
-      const bool partial = phase_ == 2 && !bland && extras_first_;
+      const bool partial = phase_ == 2 && !bland && !retrying_;
       int entering = partial && guard > 0 && !sliding ? enter_from_extras() : -1;
       if (entering < 0) {
         // Duals too large for the double certificate (|y| ~ 1e8: narrow kernels) are refined in
@@ -2075,8 +2064,12 @@ class FastSimplex {
     return composite_cost_;
   }
   int updates_ = 0;
-  int refactor_interval_ = kRefactorInterval;  // kCarefulRefactorInterval in run's retry
-  bool extras_first_ = true;  // partial pricing over the extra columns (iterate), off for a retry (run)
+  // run's retry from scratch: no partial pricing over the extra columns (iterate), and fresh
+  // inverses every kCarefulRefactorInterval updates.
+  bool retrying_ = false;
+  int refactor_interval() const {
+    return retrying_ ? kCarefulRefactorInterval : kRefactorInterval;
+  }
   int kernel_side_ = 0;     // taps a side of the problem's square kernel, 0: not square (texel_tap)
   int kernel_taps_ = -1;    // the taps kernel_side_, tap_column_ and tap_row_ are for
   std::vector<int> tap_column_, tap_row_;
@@ -2092,8 +2085,7 @@ class FastSimplex {
   // The grid whose costs cost_[0, g_) holds, ones up to costed_front_ (solve).
   std::shared_ptr<const ColumnBlock> costed_grid_;
   int costed_front_ = 0;
-  // The value of every entry of that grid's first row, or NaN when they differ
-  // (combine_constant_first_row).
+  // The value of every entry of that grid's first row, or NaN when they differ (combine_masked).
   double grid_first_row_ = std::numeric_limits<double>::quiet_NaN();
   WarmBasis lanes_[kWarmLanes];          // by layer: the texel to the left
   BasisState lane_factors_[kWarmLanes];  // their inverses (update_factors)
