@@ -115,13 +115,6 @@ const std::vector<Run>& runs(const std::string& basis_name, int grid) {
 // The TSC reads are fenced (mfence, lfence): unfenced, the read before a solve executed while the
 // copy's stores were still in flight, and ~5 % of our solver's measured time was the copy's
 // (session 18: fencing raised our rate 1.04-1.05x and GLPK's 1.01x, 4 paired runs).
-// The fenced pair itself costs ~80 ticks (an empty window: 63 or 84, the TSC counting in steps of
-// 21 here), ~3.5 % of one of our LPs and 0.04 % of GLPK's; it is not the solver's time, so each
-// pass measures it (the mean of kEmptyWindows empty windows, those over twice their median, i.e.
-// interrupted, left out) and subtracts it once per solve, for both backends alike. The counter
-// timer_share is the part of the measured time subtracted: items_per_second * (1 - timer_share)
-// is the rate uncorrected.
-constexpr int kEmptyWindows = 256;
 struct TimedSolver {
   std::unique_ptr<lp::Backend> backend;
   lp::Problem problem;  // the in-cache copy
@@ -139,51 +132,27 @@ struct TimedSolver {
   using Ticks = std::chrono::steady_clock::rep;
   static Ticks now() { return std::chrono::steady_clock::now().time_since_epoch().count(); }
 #endif
-  Ticks solving = 0;  // the windows' ticks since take_seconds, timer included
-  size_t solves = 0;  // and their count
+  Ticks solving = 0;
   Ticks pass_ticks = now();
   std::chrono::steady_clock::time_point pass_start = std::chrono::steady_clock::now();
-  Ticks last = 0;                    // the last solve's ticks, timer included
-  double removed = 0, measured = 0;  // timer ticks subtracted and window ticks, over all passes
+  Ticks last = 0;  // the last solve's ticks
   const lp::Solution& solve(const lp::Problem& stored, const lp::WarmPosition* at) {
     problem = stored;
     const Ticks start = now();
     backend->solve_into(problem, at, solution);
     last = now() - start;
     solving += last;
-    ++solves;
     return solution;
   }
-  // The mean ticks of an empty window (see kEmptyWindows).
-  static double empty_window() {
-    std::vector<Ticks> window(kEmptyWindows);
-    for (auto& w : window) {
-      const Ticks start = now();
-      w = now() - start;
-    }
-    std::vector<Ticks> sorted = window;
-    std::nth_element(sorted.begin(), sorted.begin() + kEmptyWindows / 2, sorted.end());
-    const Ticks median = sorted[kEmptyWindows / 2];
-    double sum = 0;
-    int count = 0;
-    for (Ticks w : window)
-      if (w <= 2 * median) sum += double(w), ++count;
-    return sum / count;
-  }
-  // The solving time since the last call, timer subtracted, for State::SetIterationTime.
+  // The solving time since the last call, for State::SetIterationTime.
   double take_seconds() {
-    const double timer = std::min(double(solving), empty_window() * double(solves));
-    removed += timer, measured += double(solving);
     const Ticks ticks = now();
     const auto clock = std::chrono::steady_clock::now();
     const double seconds_per_tick =
         std::chrono::duration<double>(clock - pass_start).count() / double(ticks - pass_ticks);
-    const double seconds = (double(solving) - timer) * seconds_per_tick;
-    solving = 0, solves = 0, pass_ticks = ticks, pass_start = clock;
+    const double seconds = double(solving) * seconds_per_tick;
+    solving = 0, pass_ticks = ticks, pass_start = clock;
     return seconds;
-  }
-  double timer_share() const {
-    return measured > 0 ? removed / measured : 0;
   }
 };
 
@@ -216,7 +185,6 @@ void BM_SolveRuns(benchmark::State& state, const std::string& backend, const std
   state.counters["pivots"] = double(iterations) / double(solved);
   state.counters["not_optimal"] = double(unstable) / double(solved);
   state.counters["lps_per_pass"] = double(solved) / double(state.iterations());
-  state.counters["timer_share"] = solver.timer_share();
   state.counters["answers"] = double(answers >> 12);  // exact in a double (52 bits); compare with --benchmark_format=json
   // The share of the last pass's solve time in its slowest 5 % of LPs, and in the LPs that took
   // 8 pivots or more (warm starts that needed the composite repair, and the runs' cold starts).
@@ -376,7 +344,6 @@ void BM_Solve(benchmark::State& state, const std::string& backend, const std::st
   state.SetItemsProcessed(int64_t(solved));
   state.counters["pivots"] = double(iterations) / double(solved);
   state.counters["not_optimal"] = double(unstable) / double(solved);
-  state.counters["timer_share"] = solver.timer_share();
 }
 
 BENCHMARK_CAPTURE(BM_Solve, fast_power4_256, "fast", "power4", 256)->UseManualTime()->Unit(benchmark::kMillisecond);
