@@ -419,18 +419,20 @@ class FastSimplex {
     warm.column = at_ ? at_->column : -1;
     warm.row = at_ ? at_->row : -1;
     warm.zf = p_->zf;
+    // Roles by selects, not a chain of branches: which basis position holds which kind of column
+    // varies from LP to LP, and the branches mispredicted (with start_from_previous_basis's switch
+    // ~2 % of the solver's samples).
+    const int* extra_tap = p_->extra_tap.empty() ? nullptr : p_->extra_tap.data();
     for (int i = 0; i < k_; ++i) {
       const int j = basis_[i];
-      if (j == composite_)
-        warm.role[i] = Role::Composite, warm.index[i] = 0;
-      else if (j < g_)
-        warm.role[i] = Role::Grid, warm.index[i] = j;
-      else if (j - g_ == p_->zf_extra)
-        warm.role[i] = Role::Zf, warm.index[i] = 0;
-      else if (j < n_ && !p_->extra_tap.empty() && p_->extra_tap[j - g_] >= 0)
-        warm.role[i] = Role::Tap, warm.index[i] = p_->extra_tap[j - g_];
-      else
-        return kNoBasis;  // an extra point without a tap (from_moments): nothing to map
+      const bool composite = j == composite_, grid = j < g_, extra = !grid && j < n_;
+      const int e = extra ? j - g_ : 0;
+      const bool zf = extra && e == p_->zf_extra;
+      const int tap = extra && extra_tap ? extra_tap[e] : -1;
+      // An extra point without a tap (from_moments), or an artificial: nothing to map.
+      if (!(composite || grid || zf || tap >= 0)) return kNoBasis;
+      warm.role[i] = composite ? Role::Composite : grid ? Role::Grid : zf ? Role::Zf : Role::Tap;
+      warm.index[i] = grid ? j : composite || zf ? 0 : tap;
     }
     return warm.zf;
   }
@@ -438,24 +440,22 @@ class FastSimplex {
   // `factors`: the basis's inverse as its own LP left it, when kept (the texel to the left).
   bool start_from_previous_basis(const WarmBasis& warm, int rounds, const BasisState* factors) {
     if (warm.rows != k_ || warm.grid != g_) return false;
+    // Each position's column by its role, picked from the four candidates by index rather than by
+    // a switch (see remember_basis); -1: none in this problem.
+    static_assert(int(Role::Grid) == 0 && int(Role::Tap) == 1 && int(Role::Zf) == 2 &&
+                  int(Role::Composite) == 3);
+    int candidate[4];
+    candidate[int(Role::Zf)] = p_->zf_extra < 0 ? -1 : g_ + p_->zf_extra;
+    candidate[int(Role::Composite)] = p_->start_support.empty() ? -1 : composite_;
+    const int taps = int(p_->tap_extra.size());
+    const TapShift shift = tap_shift(warm);
     for (int i = 0; i < k_; ++i) {
-      int j = -1;
-      switch (warm.role[i]) {
-        case Role::Grid:
-          j = warm.index[i];
-          break;
-        case Role::Composite:
-          j = p_->start_support.empty() ? -1 : composite_;
-          break;
-        case Role::Zf:
-          j = p_->zf_extra < 0 ? -1 : g_ + p_->zf_extra;
-          break;
-        case Role::Tap: {
-          const int t = texel_tap(warm, warm.index[i]);
-          j = t < int(p_->tap_extra.size()) && p_->tap_extra[t] >= 0 ? g_ + p_->tap_extra[t] : -1;
-          break;
-        }
-      }
+      const Role role = warm.role[i];
+      candidate[int(Role::Grid)] = warm.index[i];
+      const int t = texel_tap(shift, role == Role::Tap ? warm.index[i] : 0);
+      const int tap = unsigned(t) < unsigned(taps) ? p_->tap_extra[t] : -1;
+      candidate[int(Role::Tap)] = tap >= 0 ? g_ + tap : -1;
+      const int j = candidate[int(role)];
       if (j < 0 || basic_position(j, i) >= 0) return false;
       basis_[i] = j;
     }
@@ -501,14 +501,24 @@ class FastSimplex {
   }
 
   // The tap of this problem's kernel that sees the texel tap `t` of `warm`'s saw (taps in row-major
-  // order of a square kernel, as kernel_distribution lists them), so that the same depth, and so the
-  // same column, comes back; `t` itself when that texel is outside this kernel or either position
-  // is unknown (the same offset then sees a nearby surface).
-  int texel_tap(const WarmBasis& warm, int t) const {
+  // order of a square kernel, as kernel_distribution lists them), so that the same depth, and so
+  // the same column, comes back; `t` itself when that texel is outside this kernel or either
+  // position is unknown (the same offset then sees a nearby surface).
+  // (`shift`: tap_shift(warm), once per warm basis.)
+  struct TapShift {
+    bool known = false;         // both positions known, and the kernel square
+    int columns = 0, rows = 0;  // this texel's position less warm's
+  };
+  TapShift tap_shift(const WarmBasis& warm) const {
+    if (!at_ || at_->row < 0 || warm.row < 0 || warm.column < 0 || at_->column < 0 ||
+        kernel_side_ == 0)
+      return {};
+    return {true, at_->column - warm.column, at_->row - warm.row};
+  }
+  int texel_tap(const TapShift& shift, int t) const {
     const int side = kernel_side_;
-    if (!at_ || at_->row < 0 || warm.row < 0 || warm.column < 0 || at_->column < 0 || side == 0) return t;
-    if (t < 0 || t >= kernel_taps_) return t;
-    const int x = tap_column_[t] - (at_->column - warm.column), y = tap_row_[t] - (at_->row - warm.row);
+    if (!shift.known || t < 0 || t >= kernel_taps_) return t;
+    const int x = tap_column_[t] - shift.columns, y = tap_row_[t] - shift.rows;
     return x >= 0 && y >= 0 && x < side && y < side ? y * side + x : t;
   }
 
