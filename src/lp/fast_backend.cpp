@@ -1579,15 +1579,19 @@ class FastSimplex {
     int leave = -1;
     if (!bland) {
       // Harris ratio test: a relaxed bound first, then the largest pivot within it.
+      // Selects, not branches (which rows block varies from pivot to pivot).
       double theta_max = std::numeric_limits<double>::infinity();
-      for (int i = 0; i < k_; ++i)
-        if (u[i] > kPivotTolerance)
-          theta_max = std::min(theta_max, (x_[i] + kFeasibilityTolerance) / u[i]);
+      for (int i = 0; i < k_; ++i) {
+        const double ratio = (x_[i] + kFeasibilityTolerance) / u[i];
+        theta_max = u[i] > kPivotTolerance && ratio < theta_max ? ratio : theta_max;
+      }
       if (!std::isfinite(theta_max)) return -1;  // unbounded: impossible with sum w = 1
+      const double limit = std::max(theta_max, 0.0);
       double best_pivot = 0;
       for (int i = 0; i < k_; ++i) {
-        if (u[i] <= kPivotTolerance || x_[i] / u[i] > std::max(theta_max, 0.0)) continue;
-        if (u[i] > best_pivot) leave = i, best_pivot = u[i];
+        const bool better = u[i] > kPivotTolerance && !(x_[i] / u[i] > limit) && u[i] > best_pivot;
+        leave = better ? i : leave;
+        best_pivot = better ? u[i] : best_pivot;
       }
     } else {
       // Bland's rule needs the textbook ratio test (Harris' relaxation can cycle): the minimum
