@@ -132,6 +132,18 @@ int grid_bound(const std::vector<double>& grid, double z, bool strict, double sc
 // The lanes of the block of eight starting at index j that lie below n: all eight but in the last
 // block (the AVX-512 loops load, compare and store with it, so they need no scalar tail).
 __mmask8 lanes_below(int n, int j) { return n - j >= 8 ? __mmask8(0xff) : __mmask8((1u << (n - j)) - 1); }
+// min(start, the smallest lane of low).
+double smallest_lane(__m512d low, double start = 0) {
+  // Three shuffle-and-minimum steps, not a store and eight dependent scalar ones. (The masked
+  // forms with every lane set: GCC 12's unmasked ones, and _mm512_reduce_min_pd, warn of an
+  // uninitialised variable.) No lane is NaN: every caller's masked minimum keeps its previous
+  // value for NaN inputs.
+  low = _mm512_mask_min_pd(low, 0xff, low, _mm512_mask_shuffle_f64x2(low, 0xff, low, low, 0x4e));
+  low = _mm512_mask_min_pd(low, 0xff, low, _mm512_mask_shuffle_f64x2(low, 0xff, low, low, 0xb1));
+  low = _mm512_mask_min_pd(low, 0xff, low, _mm512_mask_permute_pd(low, 0xff, low, 0x55));
+  const double smallest = _mm512_cvtsd_f64(low);
+  return smallest < start ? smallest : start;
+}
 #endif
 
 // The previous fragment's optimal basis, in terms that carry over to a neighbouring fragment:
@@ -194,15 +206,11 @@ struct WarmOffers {
         const __m512d d = _mm512_loadu_pd(distance + b * kWarmLanes);
         block[b] = _mm512_mask_mov_pd(none, _mm512_mask_cmp_pd_mask(0xff, d, d, _CMP_ORD_Q), d);
       }
-      // Every lane the least, in three shuffle-and-minimum steps (masked forms: see offer).
-      __m512d least = _mm512_mask_min_pd(
-          none, 0xff, _mm512_mask_min_pd(none, 0xff, block[0], block[1]), block[2]);
-      least = _mm512_mask_min_pd(least, 0xff, least,
-                                 _mm512_mask_shuffle_f64x2(least, 0xff, least, least, 0x4e));
-      least = _mm512_mask_min_pd(least, 0xff, least,
-                                 _mm512_mask_shuffle_f64x2(least, 0xff, least, least, 0xb1));
-      least =
-          _mm512_mask_min_pd(least, 0xff, least, _mm512_mask_permute_pd(least, 0xff, least, 0x55));
+      // (Masked forms: see offer.)
+      const __m512d least = _mm512_set1_pd(smallest_lane(
+          _mm512_mask_min_pd(none, 0xff, _mm512_mask_min_pd(none, 0xff, block[0], block[1]),
+                             block[2]),
+          kNone));
       uint32_t holding = 0;
       for (int b = 0; b < kBlocks; ++b)
         holding |= uint32_t(_mm512_mask_cmp_pd_mask(0xff, block[b], least, _CMP_EQ_OQ))
@@ -1185,18 +1193,6 @@ class FastSimplex {
     low = _mm512_mask_min_epi64(low, 0xff, low, _mm512_mask_shuffle_i64x2(low, 0xff, low, low, 0xb1));
     low = _mm512_mask_min_epi64(low, 0xff, low, _mm512_mask_permutex_epi64(low, 0xff, low, 0xb1));
     return _mm512_cvtsi512_si32(low);  // a column index: its low half
-  }
-  // min(start, the smallest lane of low).
-  static double smallest_lane(__m512d low, double start = 0) {
-    // Three shuffle-and-minimum steps, not a store and eight dependent scalar ones. (The masked
-    // forms with every lane set: GCC 12's unmasked ones, and _mm512_reduce_min_pd, warn of an
-    // uninitialised variable.) No lane is NaN: every caller's masked minimum keeps its previous
-    // value for NaN inputs.
-    low = _mm512_mask_min_pd(low, 0xff, low, _mm512_mask_shuffle_f64x2(low, 0xff, low, low, 0x4e));
-    low = _mm512_mask_min_pd(low, 0xff, low, _mm512_mask_shuffle_f64x2(low, 0xff, low, low, 0xb1));
-    low = _mm512_mask_min_pd(low, 0xff, low, _mm512_mask_permute_pd(low, 0xff, low, 0x55));
-    const double smallest = _mm512_cvtsd_f64(low);
-    return smallest < start ? smallest : start;
   }
 #endif
   // Each out_j is the chain base_j - w_0 a_0j - w_1 a_1j - ... in fused multiply-adds, as the
