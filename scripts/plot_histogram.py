@@ -1,7 +1,9 @@
 #!/usr/bin/python3
-"""Histogram of sweep candidates by mean error with the reference techniques marked, as in the
-seed paper's Figure 4. Reads momentbench report's histogram.csv and references.csv; writes
-<out>.png and <out>.pdf. Run with Debian's /usr/bin/python3 (python3-matplotlib)."""
+"""Histogram of sweep candidates by mean error, one series per results database (e.g. two, three
+and four functions per candidate), with each series' best and median and the reference techniques
+marked, as in the seed paper's Figures 3 and 4. Reads momentbench report's histogram.csv,
+series.csv and references.csv; writes <out>.png and <out>.pdf. Run with Debian's /usr/bin/python3
+(python3-matplotlib)."""
 import argparse
 import csv
 
@@ -10,35 +12,60 @@ from plot_common import save_png_and_pdf  # first: it selects the headless backe
 import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.ticker  # noqa: E402
 
+# References drawn as lines; the others stay in the report's table (too many labels overlap).
+SHOWN_REFERENCES = ("vsm", "esm", "hamburger4", "hamburger6", "lp:power4", "lp:trig4", "oracle")
+
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--histogram", required=True)
+    parser.add_argument("--series", required=True)
     parser.add_argument("--references", required=True)
     parser.add_argument("--out", required=True, help="output path without extension")
     args = parser.parse_args()
 
     with open(args.histogram) as f:
         rows = list(csv.DictReader(f))
-    lo = [100 * float(r["error_lo"]) for r in rows]
-    hi = [100 * float(r["error_hi"]) for r in rows]
-    counts = [int(r["candidates"]) for r in rows]
+    with open(args.series) as f:
+        series = list(csv.DictReader(f))
     with open(args.references) as f:
         references = [(r["technique"], 100 * float(r["mean_error"])) for r in csv.DictReader(f)]
 
-    fig, ax = plt.subplots(figsize=(7, 3.6))
-    ax.bar(lo, counts, width=[h - l for l, h in zip(lo, hi)], align="edge", color="#7f9fbf", edgecolor="#4f6f8f",
-           linewidth=0.4, label="candidates")
-    top = max(counts) if counts else 1
+    fig, ax = plt.subplots(figsize=(7.5, 4.0))
     colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
-    for i, (name, error) in enumerate(r for r in references if r[0] != "pcf"):
-        ax.axvline(error, color=colours[i % len(colours)], linestyle="--", linewidth=1)
-        ax.text(error, top * (0.95 - 0.08 * (i % 6)), " " + name, color=colours[i % len(colours)], fontsize=7,
-                rotation=0, va="top")
+    several = len(series) > 1
+    top = 1
+    for i, s in enumerate(series):
+        mine = [r for r in rows if r["series"] == s["series"]]
+        lo = [100 * float(r["error_lo"]) for r in mine]
+        hi = [100 * float(r["error_hi"]) for r in mine]
+        counts = [int(r["candidates"]) for r in mine]
+        top = max([top] + counts)
+        colour = colours[i % len(colours)]
+        label = f"{s['series']} ({s['evaluated']} candidates)"
+        if several:
+            edges = lo + hi[-1:]
+            ax.stairs(counts, edges, color=colour, linewidth=1.2, fill=False, label=label)
+            ax.stairs(counts, edges, color=colour, alpha=0.15, fill=True)
+        else:
+            ax.bar(lo, counts, width=[h - l for l, h in zip(lo, hi)], align="edge", color="#7f9fbf",
+                   edgecolor="#4f6f8f", linewidth=0.4, label=label)
+            colour = "#2f4f6f"
+        ax.axvline(100 * float(s["best"]), color=colour, linestyle="-", linewidth=1.2)
+        ax.axvline(100 * float(s["median"]), color=colour, linestyle=":", linewidth=1.2)
+    # Vertical labels, alternately left and right of their line, so that close references stay legible.
+    shown = sorted((r for r in references if r[0] in SHOWN_REFERENCES), key=lambda r: r[1])
+    for i, (name, error) in enumerate(shown):
+        ax.axvline(error, color="#555555", linestyle="--", linewidth=0.8)
+        ax.text(error, top * 1.02, name, color="#333333", fontsize=6.5, va="bottom", rotation=90,
+                ha="right" if i % 2 else "left")
+    ax.plot([], [], color="#555555", linestyle="-", label="best (solid), median (dotted)")
     ax.yaxis.set_major_locator(matplotlib.ticker.MaxNLocator(integer=True))
     ax.set_xlabel("mean |PCF - G| over receiver fragments (%)")
     ax.set_ylabel("candidates")
-    ax.set_title("Sweep candidates by mean error")
+    ax.set_title("Sweep candidates by mean error" + (" and functions per candidate" if several else ""))
+    ax.set_ylim(0, top * 1.35)
+    ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.16), ncol=2, frameon=False)
     save_png_and_pdf(fig, args.out, "plot_histogram.py")
 
 

@@ -289,7 +289,7 @@ TEST(LpWarmStart, RunsOfNeighbouringFragmentsGiveTheColdAnswers) {
         const int x = int(t % v.map.width), y = int(t / v.map.width);
         if (warm_run_of(t, v.map.width) % 3 != 0) continue;
         const bool first = warm_run_of(t, v.map.width) != run;
-        const double zf = v.fragments.zf[k] - settings.depth_bias;
+        const double zf = v.fragments.ztest[k];
         if (kernel_cdf(v.map, settings.kernel, x, y, zf) == 0) continue;
         kernel_distribution(v.map, settings.kernel, x, y, depths, weights);
         const Problem p = factory.from_distribution(depths, weights, zf);
@@ -335,7 +335,7 @@ TEST(LpWarmStart, TheSameTexelGivesTheSameBasisBack) {
   for (size_t k = 0; k < v.fragments.size() && checked < 40; k += 7) {
     const size_t t = v.fragments.texel[k];
     const int x = int(t % v.map.width), y = int(t / v.map.width);
-    const double zf = v.fragments.zf[k] - settings.depth_bias;
+    const double zf = v.fragments.ztest[k];
     if (x + 1 >= v.map.width || kernel_cdf(v.map, settings.kernel, x, y, zf) == 0) continue;
     kernel_distribution(v.map, settings.kernel, x, y, depths, weights);
     const Problem p = factory.from_distribution(depths, weights, zf);

@@ -35,7 +35,7 @@ TEST(Pcf, PenumbraOfASquareOccluderEqualsTheSumOfGaussianWeights) {
   const int size = 9;
   const double sigma = 2.4;
   GaussianKernel kernel = make_gaussian_kernel(size, sigma);
-  Fragments f = collect_receivers(stack, kernel, PcfParams{}, 2);
+  Fragments f = collect_receivers(stack, kernel, BiasParams{Reference::ReceiverPlane}, 2);
   double norm = 0;
   for (int d = -4; d <= 4; ++d) norm += std::exp(-d * d / (2 * sigma * sigma));
   int checked = 0, penumbra = 0;

@@ -4,7 +4,10 @@
 #include <chrono>
 #include <ctime>
 #include <optional>
+#include <algorithm>
+#include <map>
 #include <set>
+#include <tuple>
 #include <cstdio>
 #include <filesystem>
 
@@ -13,6 +16,7 @@
 #include "eval/candidate_evaluation.h"
 #include "eval/eval_config.h"
 #include "eval/evaluation.h"
+#include "eval/lp_technique.h"
 #include "eval/results_store.h"
 #include "eval/sweep_plan.h"
 #include "eval/technique.h"
@@ -34,7 +38,7 @@ std::vector<OptionSpec> sweep_specs() {
                    "Explicit candidates, each 'f1; f2; ...'; empty = all (or a sample)."});
   specs.push_back({"sample", OptionType::Integer, "0", "Evaluate a seeded random sample of this many; 0 = all.", 0, 1e12});
   specs.push_back({"sample_seed", OptionType::Integer, "1", "Seed of the sample.", 0, 1e18});
-  specs.push_back({"references", OptionType::StringList, "[pcf, vsm, esm, hamburger4, hausdorff4, tmsm, lp:power4, lp:trig4]",
+  specs.push_back({"references", OptionType::StringList, "[pcf, vsm, esm, hamburger4, hausdorff4, hamburger6, tmsm, lp:power4, lp:trig4]",
                    "Techniques evaluated once on the same dataset, for the report."});
   return specs;
 }
@@ -83,8 +87,16 @@ int run_sweep(const SweepOptions& options) {
   SweepPlan plan = make_sweep_plan(config.strings("catalog"), int(config.integer("combination_size")),
                                    config.strings("candidates"), uint64_t(config.integer("sample")),
                                    uint64_t(config.integer("sample_seed")));
-  const auto references = config.strings("references");
-  for (const auto& name : references) make_technique(name, settings.technique);
+  auto references = config.strings("references");
+  // REFERENCE.md §3: under the receiver-plane reference every table shows the oracle floor.
+  if (settings.bias.reference == Reference::ReceiverPlane &&
+      std::find(references.begin(), references.end(), "oracle") == references.end())
+    references.push_back("oracle");
+  std::map<std::string, std::pair<double, std::string>> darkening;  // Technique::darkening_bound, _reason
+  for (const auto& name : references) {
+    auto technique = make_technique(name, settings.technique);
+    darkening[name] = {technique->darkening_bound(), technique->darkening_reason()};
+  }
   DatasetDesc dataset = load_dataset(config.string("dataset"));
   if (options.common.out.empty()) throw InputError("--out: a sweep needs an output directory");
 
@@ -113,6 +125,8 @@ int run_sweep(const SweepOptions& options) {
     write_file_atomically(out / "config.yaml", config.to_yaml());
     store.emplace(ResultsStore::create(
         db_path.string(), {{"config_hash", hash}, {"shard", shard_text}, {"dataset", dataset.name},
+                           {"reference", reference_name(settings.bias.reference)},
+                           {"git_sha", collect_run_metadata(threads, {}).git_sha},
                            {"catalog_size", std::to_string(plan.catalog.size())},
                            {"combination_size", std::to_string(plan.size)}, {"planned", std::to_string(plan.ids.size())},
                            {"settings", describe_settings(settings)}, {"config", config.to_yaml()}}));
@@ -138,6 +152,7 @@ int run_sweep(const SweepOptions& options) {
     }
     ResultRow row = make_result_row(0, name, total, view_errors(views, per_view));
     row.unstable = total.failures;
+    std::tie(row.darkening_bound, row.darkening_reason) = darkening[name];
     row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     store->put_reference(row);
   }
@@ -176,6 +191,7 @@ int run_sweep(const SweepOptions& options) {
     row.skipped = result.skipped;
     row.infeasible = result.infeasible;
     row.unstable = result.unstable;
+    row.darkening_bound = kLpDarkeningBound;
     row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     store->put_candidate(row);
     lps += result.solved + result.infeasible + result.unstable;

@@ -69,7 +69,7 @@ std::vector<VerifyInstance> dataset_instances(const std::vector<ViewData>& views
       inst.depths.resize(taps);
       inst.weights.resize(taps);
       kernel_distribution(v.map, settings.kernel, x, y, inst.depths, inst.weights);
-      inst.zf = v.fragments.zf[index] - settings.depth_bias;
+      inst.zf = v.fragments.ztest[index];
       inst.source = "dataset:" + v.scene + "/" + v.view + " texel (" + std::to_string(x) + "," + std::to_string(y) +
                     ") layer " + std::to_string(v.fragments.layer[index]);
       out.push_back(std::move(inst));
@@ -132,8 +132,9 @@ int run_verify(const CommonOptions& options) {
      << "Made by momentbench " << meta.version << " (git " << meta.git_sha << "), " << threads << " threads, "
      << meta.started_utc << ".\n\n"
      << "- " << random_count << " seeded random distributions (seed " << seed << "; 1-8 atoms, two-bump mixtures), "
-     << instances.size() - random_count << " real receiver kernels of dataset " << dataset_name << " (z_f - "
-     << num(settings.depth_bias) << ")\n"
+     << instances.size() - random_count << " real receiver kernels of dataset " << dataset_name
+     << " (at z_f - delta_f, delta_f = " << num(settings.bias.constant) << " + " << num(settings.bias.slope) << " * "
+     << settings.kernel.radius() << " * (|dz/dx| + |dz/dy|))\n"
      << "- The LP sees the exact distribution (its depths join the grid); the closed form sees its moments as its "
         "map stores them. Exact solvers run with alpha = 0; float/16-bit ones with their own bias.\n"
      << "- Pass: on the finest grid |dG| <= " << num(tolerance)

@@ -12,12 +12,8 @@ CandidateEvaluator::CandidateEvaluator(const std::vector<ViewData>& views,
     : views_(views), settings_(settings) {
   for (const auto& v : views) {
     std::vector<uint32_t> list;
-    for (size_t k = 0; k < v.fragments.size(); ++k) {
-      const size_t t = v.fragments.texel[k];
-      const double zf = v.fragments.zf[k] - settings.depth_bias;
-      if (kernel_cdf(v.map, settings.kernel, int(t % v.map.width), int(t / v.map.width), zf) > 0)
-        list.push_back(uint32_t(k));
-    }
+    for (size_t k = 0; k < v.fragments.size(); ++k)
+      if (v.fragments.oracle[k] > 0) list.push_back(uint32_t(k));
     needs_lp_.push_back(std::move(list));
   }
 }
@@ -28,7 +24,7 @@ uint64_t CandidateEvaluator::lp_fragments() const {
   return n;
 }
 
-CandidateResult CandidateEvaluator::evaluate(const Basis& basis) const {
+CandidateResult CandidateEvaluator::evaluate(const Basis& basis, std::vector<std::vector<double>>* shadow) const {
   const lp::Discretization& disc = settings_.technique.lp;
   lp::ProblemFactory factory(basis, disc);
   const int k = factory.rows(), m = int(basis.size());
@@ -76,7 +72,7 @@ CandidateResult CandidateEvaluator::evaluate(const Basis& basis) const {
         for (size_t i = run_begin[run]; i < run_begin[run + 1]; ++i) {
           const size_t f = list[i], t = view.fragments.texel[f];
           const int x = int(t % map.width), y = int(t / map.width);
-          const double zf = view.fragments.zf[f] - settings_.depth_bias;
+          const double zf = view.fragments.ztest[f];  // z_f - delta_f (REFERENCE.md §3)
           // The fragments of one texel share its kernel (41 % of them follow one of their texel's):
           // then only z_f's column changes, and the problem is the same as built anew.
           const bool same_kernel = i > run_begin[run] && view.fragments.texel[list[i - 1]] == t;
@@ -106,6 +102,7 @@ CandidateResult CandidateEvaluator::evaluate(const Basis& basis) const {
     stats.add_all(view.fragments.pcf, g);
     result.overall.merge(stats);
     result.per_view.push_back(std::move(stats));
+    if (shadow) shadow->push_back(std::move(g));
   }
   result.solved = solved;
   result.infeasible = infeasible;

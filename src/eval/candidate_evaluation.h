@@ -22,7 +22,8 @@ class CandidateEvaluator {
  public:
   // Keeps a reference to `views`; finds the fragments that need an LP (candidate-independent).
   CandidateEvaluator(const std::vector<ViewData>& views, const EvalSettings& settings);
-  CandidateResult evaluate(const Basis& basis) const;
+  // With `shadow`, also G per fragment of every view (in fragment order), for tests and images.
+  CandidateResult evaluate(const Basis& basis, std::vector<std::vector<double>>* shadow = nullptr) const;
   uint64_t lp_fragments() const;  // LPs per candidate
 
  private:

@@ -11,7 +11,10 @@ void ErrorStats::add(double pcf, double g) {
   ++count;
   sum_abs += e;
   if (pcf > g) sum_leak += pcf - g;
-  else sum_dark += g - pcf;
+  else {
+    sum_dark += g - pcf;
+    max_dark = std::max(max_dark, g - pcf);
+  }
   max = std::max(max, e);
   if (e > 0.1) ++over_tenth;
   ++histogram[std::min(int(e * kHistogramBins), kHistogramBins - 1)];
@@ -29,6 +32,7 @@ void ErrorStats::merge(const ErrorStats& o) {
   sum_leak += o.sum_leak;
   sum_dark += o.sum_dark;
   max = std::max(max, o.max);
+  max_dark = std::max(max_dark, o.max_dark);
   for (int i = 0; i < kHistogramBins; ++i) histogram[i] += o.histogram[i];
 }
 

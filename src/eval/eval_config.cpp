@@ -12,9 +12,14 @@ std::vector<OptionSpec> shadow_option_specs() {
   return {
       {"kernel.size", OptionType::Integer, "9", "Filter taps per axis (odd), for PCF and moment maps."},
       {"kernel.sigma", OptionType::Number, "2.4", "Gaussian standard deviation in texels."},
-      {"pcf.receiver_plane", OptionType::Boolean, "true", "PCF compares taps against the fragment's triangle plane."},
-      {"pcf.constant_bias", OptionType::Number, "1e-4", "PCF: constant subtracted from the reference depth.", 0, 1},
-      {"depth_bias", OptionType::Number, "1e-3", "delta: moment techniques see z_f - delta (REFERENCE.md §3).", 0, 1},
+      {"reference", OptionType::String, "biased",
+       "What G is compared against: biased = PCF at z_f - delta_f (the paper's protocol, errors are light leaking), "
+       "receiver_plane = each tap against the fragment's plane (the ideal hard shadow; tables add the oracle floor).",
+       -kInf, kInf, {"biased", "receiver_plane"}},
+      {"bias.slope", OptionType::Number, "1",
+       "s in delta_f = c + s r (|dz/dx| + |dz/dy|) (REFERENCE.md §3); 0 with bias.constant 1e-3 is the old constant bias.",
+       0, 1e6},
+      {"bias.constant", OptionType::Number, "1e-4", "c in delta_f: absorbs curvature and rasterisation rounding.", 0, 1},
       {"hamburger4.alpha", OptionType::Number, "1e-10", "Moment bias of Hamburger 4MSM in double."},
       {"hamburger4_float.alpha", OptionType::Number, "5e-6", "Moment bias of Hamburger 4MSM in float32."},
       {"hamburger4_16bit.alpha", OptionType::Number, "3e-5", "Moment bias of Hamburger 4MSM from 16-bit maps."},
@@ -50,9 +55,9 @@ lp::Discretization lp_discretization_from(const Config& config) {
 EvalSettings shadow_settings_from(const Config& config, int threads) {
   EvalSettings s;
   s.kernel = kernel_from(config);
-  s.pcf.receiver_plane = config.boolean("pcf.receiver_plane");
-  s.pcf.constant_bias = config.number("pcf.constant_bias");
-  s.depth_bias = config.number("depth_bias");
+  s.bias.reference = parse_reference(config.string("reference"), "reference");
+  s.bias.slope = config.number("bias.slope");
+  s.bias.constant = config.number("bias.constant");
   auto& t = s.technique;
   t.hamburger4_alpha = config.number("hamburger4.alpha");
   t.hamburger4_float_alpha = config.number("hamburger4_float.alpha");
@@ -73,10 +78,12 @@ EvalSettings shadow_settings_from(const Config& config, int threads) {
 std::string describe_settings(const EvalSettings& s) {
   char buffer[512];
   std::snprintf(buffer, sizeof buffer,
-                "kernel %dx%d Gaussian, sigma %g texels; PCF receiver-plane bias %s, constant bias %g; moment depth "
-                "bias delta %g; LP grid %d on [%g, %g]%s, backend %s",
-                s.kernel.size, s.kernel.size, s.kernel.sigma, s.pcf.receiver_plane ? "on" : "off",
-                s.pcf.constant_bias, s.depth_bias, s.technique.lp.grid, s.technique.lp.lo, s.technique.lp.hi,
+                "kernel %dx%d Gaussian, sigma %g texels; reference %s; depth bias delta_f = %g + %g * %d * "
+                "(|dz/dx| + |dz/dy|) for the reference and every technique; LP grid %d on [%g, %g]%s, backend %s",
+                s.kernel.size, s.kernel.size, s.kernel.sigma,
+                s.bias.reference == Reference::Biased ? "biased (PCF = F_Z(z_f - delta_f))"
+                                                      : "receiver_plane (each tap against the fragment's plane)",
+                s.bias.constant, s.bias.slope, s.kernel.radius(), s.technique.lp.grid, s.technique.lp.lo, s.technique.lp.hi,
                 s.technique.lp.quantize ? " (quantized depths)" : "", s.technique.lp_backend.c_str());
   return buffer;
 }

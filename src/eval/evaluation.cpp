@@ -8,6 +8,12 @@
 
 namespace mb {
 
+ViewData prepare_view(const Scene& scene, const LightViewDesc& view, const EvalSettings& settings) {
+  LayerStack stack = render_view(scene, view, settings.threads);
+  return ViewData{scene.name, view.name, layer0_shadow_map(stack),
+                  collect_receivers(stack, settings.kernel, settings.bias, settings.threads)};
+}
+
 std::vector<ViewData> prepare_views(const DatasetDesc& dataset, int resolution, const EvalSettings& settings,
                                     bool quiet) {
   std::vector<Scene> scenes;
@@ -20,10 +26,7 @@ std::vector<ViewData> prepare_views(const DatasetDesc& dataset, int resolution, 
   for (const auto& scene : scenes)
     for (auto view : scene.views) {
       if (resolution > 0) view.resolution = resolution;
-      LayerStack stack = render_view(scene, view, settings.threads);
-      ViewData data{scene.name, view.name, layer0_shadow_map(stack),
-                    collect_receivers(stack, settings.kernel, settings.pcf, settings.threads)};
-      views.push_back(std::move(data));
+      views.push_back(prepare_view(scene, view, settings));
       bar.advance();
     }
   return views;
@@ -55,8 +58,9 @@ TechniqueResult evaluate_technique(const ViewData& view, const std::string& tech
         const size_t texel = f.texel[k];
         FragmentInput in;
         if (moments.m > 0) in.moments = moments.at(texel);
-        in.zf = f.zf[k] - settings.depth_bias;
+        in.zf = f.ztest[k];
         in.pcf = f.pcf[k];
+        in.oracle = f.oracle[k];
         in.fragment = k;
         in.layer = f.layer[k];
         in.column = int(texel % f.width);

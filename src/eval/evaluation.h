@@ -5,13 +5,14 @@
 
 #include "eval/technique.h"
 #include "scene/dataset.h"
+#include "scene/scene.h"
 #include "shadow/fragments.h"
 #include "shadow/gaussian_kernel.h"
 #include "util/progress.h"
 
 namespace mb {
 
-// One light view, ready to evaluate: its shadow map and receivers with the PCF reference.
+// One light view, ready to evaluate: its shadow map and receivers with their bias and reference.
 struct ViewData {
   std::string scene, view;
   ShadowMap map;
@@ -20,12 +21,13 @@ struct ViewData {
 
 struct EvalSettings {
   GaussianKernel kernel = make_gaussian_kernel(9, 2.4);
-  PcfParams pcf;
-  double depth_bias = 1e-3;  // delta: techniques see z_f - delta (REFERENCE.md §3)
+  BiasParams bias;  // delta_f and the reference: techniques see z_f - delta_f (REFERENCE.md §3)
   TechniqueParams technique;
   int threads = 1;
 };
 
+// Renders one view of a scene and collects its receivers with their bias and reference.
+ViewData prepare_view(const Scene& scene, const LightViewDesc& view, const EvalSettings& settings);
 // Renders every view of the dataset (resolution > 0 overrides the dataset's, which overrides the
 // scene's) and collects its receivers.
 std::vector<ViewData> prepare_views(const DatasetDesc& dataset, int resolution, const EvalSettings& settings,

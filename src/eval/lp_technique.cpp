@@ -15,9 +15,11 @@ class LpTechnique : public Technique {
         factory_((this->basis().check_independent(disc.lo, disc.hi), this->basis()), disc),
         backend_(lp::make_backend(backend)) {}
   bool needs_distribution() const override { return true; }
+  double darkening_bound() const override { return kLpDarkeningBound; }
 
   double shadow(const FragmentInput& in) override {
-    // REFERENCE.md §2: G <= F_Z(z_f), so F_Z(z_f) = 0 gives G = 0 without solving.
+    // REFERENCE.md §2: G <= F_Z(z_f), so F_Z(z_f) = 0 gives G = 0 without solving (z_f here is
+    // already z_f - delta_f, REFERENCE.md §3).
     double cdf = 0;
     for (size_t t = 0; t < in.kernel_depths.size(); ++t)
       if (in.kernel_depths[t] < in.zf) cdf += in.kernel_weights[t];

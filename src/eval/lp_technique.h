@@ -8,6 +8,10 @@
 
 namespace mb {
 
+// An LP answer is certified to within 1e-9 of the optimum over a set of distributions that holds
+// the kernel's own (REFERENCE.md §2), so it exceeds F_Z(z_f - delta_f) by at most this.
+constexpr double kLpDarkeningBound = 1e-9;
+
 // `name` = "lp:" + a named set (power4, trig4, ...) or functions separated by ';' or ','.
 std::unique_ptr<Technique> make_lp_technique(const std::string& name, const lp::Discretization& disc,
                                              const std::string& backend);

@@ -14,10 +14,11 @@ const char* kSchema =
     "CREATE TABLE meta (key TEXT PRIMARY KEY, value TEXT NOT NULL);"
     "CREATE TABLE candidates (id INTEGER PRIMARY KEY, name TEXT NOT NULL, fragments INTEGER, solved INTEGER,"
     " skipped INTEGER, infeasible INTEGER, unstable INTEGER, mean REAL, leak REAL, dark REAL, max REAL,"
-    " share_over_tenth REAL, view_errors TEXT, histogram TEXT, seconds REAL);"
+    " share_over_tenth REAL, max_dark REAL, darkening_bound REAL, darkening_reason TEXT, view_errors TEXT, histogram TEXT,"
+    " seconds REAL);"
     "CREATE TABLE references_ (name TEXT PRIMARY KEY, fragments INTEGER, solved INTEGER, skipped INTEGER,"
     " infeasible INTEGER, unstable INTEGER, mean REAL, leak REAL, dark REAL, max REAL, share_over_tenth REAL,"
-    " view_errors TEXT, histogram TEXT, seconds REAL);";
+    " max_dark REAL, darkening_bound REAL, darkening_reason TEXT, view_errors TEXT, histogram TEXT, seconds REAL);";
 
 struct Statement {
   sqlite3_stmt* s = nullptr;
@@ -100,14 +101,16 @@ std::set<uint64_t> ResultsStore::candidate_ids() const {
 void ResultsStore::put(const char* table, const ResultRow& row) {
   const bool candidate = std::string(table) == "candidates";
   std::string sql = std::string("INSERT INTO ") + table + " VALUES (" + (candidate ? "?, " : "") +
-                    "?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)";
+                    "?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)";
   Statement st(db_, sql, path_);
   int c = 1;
   if (candidate) sqlite3_bind_int64(st.s, c++, int64_t(row.id));
   sqlite3_bind_text(st.s, c++, row.name.c_str(), -1, SQLITE_TRANSIENT);
   for (uint64_t v : {row.fragments, row.solved, row.skipped, row.infeasible, row.unstable})
     sqlite3_bind_int64(st.s, c++, int64_t(v));
-  for (double v : {row.mean, row.leak, row.dark, row.max, row.share_over_tenth}) sqlite3_bind_double(st.s, c++, v);
+  for (double v : {row.mean, row.leak, row.dark, row.max, row.share_over_tenth, row.max_dark, row.darkening_bound})
+    sqlite3_bind_double(st.s, c++, v);
+  sqlite3_bind_text(st.s, c++, row.darkening_reason.c_str(), -1, SQLITE_TRANSIENT);
   sqlite3_bind_text(st.s, c++, row.view_errors.c_str(), -1, SQLITE_TRANSIENT);
   sqlite3_bind_text(st.s, c++, row.histogram.c_str(), -1, SQLITE_TRANSIENT);
   sqlite3_bind_double(st.s, c++, row.seconds);
@@ -129,7 +132,9 @@ std::vector<ResultRow> ResultsStore::rows(const char* table, const char* order) 
     r.name = reinterpret_cast<const char*>(sqlite3_column_text(st.s, c++));
     for (uint64_t* v : {&r.fragments, &r.solved, &r.skipped, &r.infeasible, &r.unstable})
       *v = uint64_t(sqlite3_column_int64(st.s, c++));
-    for (double* v : {&r.mean, &r.leak, &r.dark, &r.max, &r.share_over_tenth}) *v = sqlite3_column_double(st.s, c++);
+    for (double* v : {&r.mean, &r.leak, &r.dark, &r.max, &r.share_over_tenth, &r.max_dark, &r.darkening_bound})
+      *v = sqlite3_column_double(st.s, c++);
+    r.darkening_reason = reinterpret_cast<const char*>(sqlite3_column_text(st.s, c++));
     r.view_errors = reinterpret_cast<const char*>(sqlite3_column_text(st.s, c++));
     r.histogram = reinterpret_cast<const char*>(sqlite3_column_text(st.s, c++));
     r.seconds = sqlite3_column_double(st.s, c++);
@@ -152,6 +157,7 @@ ResultRow make_result_row(uint64_t id, const std::string& name, const ErrorStats
   r.dark = s.dark();
   r.max = s.max;
   r.share_over_tenth = s.share_over_tenth();
+  r.max_dark = s.max_dark;
   nlohmann::ordered_json views = nlohmann::ordered_json::object();
   for (const auto& [view, error] : view_errors) views[view] = error;
   r.view_errors = views.dump();

@@ -20,6 +20,9 @@ struct ResultRow {
   std::string name;        // the functions, "z; z^2; z^3; z^4", or the technique name
   uint64_t fragments = 0, solved = 0, skipped = 0, infeasible = 0, unstable = 0;
   double mean = 0, leak = 0, dark = 0, max = 0, share_over_tenth = 0;
+  double max_dark = 0;         // the largest G - PCF at one fragment
+  double darkening_bound = 0;  // Technique::darkening_bound (candidates: the LP's 1e-9)
+  std::string darkening_reason;  // Technique::darkening_reason
   std::string view_errors;  // JSON object: "scene/view" -> mean error
   std::string histogram;    // comma-separated counts of ErrorStats::kHistogramBins bins
   double seconds = 0;       // wall time (not part of the results' identity)

@@ -21,6 +21,14 @@ class PcfTechnique : public Technique {
   double shadow(const FragmentInput& in) override { return in.pcf; }
 };
 
+// F_Z(z_f - delta_f) itself: every valid lower bound lies below it, so under the receiver-plane
+// reference its error is the floor that no technique can go under (REFERENCE.md §3).
+class OracleTechnique : public Technique {
+ public:
+  OracleTechnique() : Technique("oracle", Basis(), double_storage()) {}
+  double shadow(const FragmentInput& in) override { return in.oracle; }
+};
+
 class VsmTechnique : public Technique {
  public:
   explicit VsmTechnique(double min_variance)
@@ -52,6 +60,19 @@ class ClosedFormTechnique : public Technique {
 
  protected:
   using Technique::Technique;
+  // Moments biased by alpha towards those of a distribution on I are a mixture's; the sharp bound of
+  // the mixture lies below (1 - alpha) F_Z + alpha, so G exceeds F_Z by at most alpha. Float and
+  // 16-bit storage round the moments off the kernel's moment set, and beta > 0 blends towards the
+  // upper bound: neither is a lower bound any more.
+  double closed_form_bound(double alpha, double beta) const {
+    const bool exact_storage = storage().kind == StorageKind::Double;
+    return exact_storage && beta == 0 ? alpha : std::numeric_limits<double>::infinity();
+  }
+  std::string closed_form_reason(double beta) const {
+    if (beta > 0) return "beta > 0 blends the lower bound towards the upper bound (seed 004)";
+    return "moments stored in " + storage().name() +
+           " are rounded off the kernel's moment set, and the bias alpha does not always pull them back";
+  }
   double finish(double g) {
     if (std::isfinite(g)) return std::clamp(g, 0.0, 1.0);
     ++failures_;
@@ -88,6 +109,8 @@ class PowerMomentTechnique : public ClosedFormTechnique {
                                                               : hamburger4(b, in.zf);
     return finish(r.lower + beta_ * r.at_zf);
   }
+  double darkening_bound() const override { return closed_form_bound(alpha_, beta_); }
+  std::string darkening_reason() const override { return closed_form_reason(beta_); }
 
  private:
   PowerSolver solver_;
@@ -104,6 +127,9 @@ class TmsmTechnique : public ClosedFormTechnique {
     if (in_float_) return finish(solve<float>(in));
     return finish(solve<double>(in));
   }
+  // The bias pulls towards the uniform distribution on [0, 1], whose mass below z_f is at most 1.
+  double darkening_bound() const override { return closed_form_bound(alpha_, beta_); }
+  std::string darkening_reason() const override { return closed_form_reason(beta_); }
 
  private:
   template <class Real>
@@ -125,7 +151,7 @@ void check_alpha(const char* key, double alpha) {
 }  // namespace
 
 std::vector<std::string> closed_form_technique_names() {
-  return {"pcf", "vsm", "esm", "hamburger4", "hamburger4_float", "hamburger4_16bit", "hausdorff4", "hamburger6",
+  return {"pcf", "oracle", "vsm", "esm", "hamburger4", "hamburger4_float", "hamburger4_16bit", "hausdorff4", "hamburger6",
           "tmsm", "tmsm_float"};
 }
 
@@ -138,6 +164,7 @@ std::unique_ptr<Technique> make_technique(const std::string& name, const Techniq
   check_alpha("tmsm.alpha", p.tmsm_alpha);
   check_alpha("tmsm_float.alpha", p.tmsm_float_alpha);
   if (name == "pcf") return std::make_unique<PcfTechnique>();
+  if (name == "oracle") return std::make_unique<OracleTechnique>();
   if (name == "vsm") return std::make_unique<VsmTechnique>(p.vsm_min_variance);
   if (name == "esm") return std::make_unique<EsmTechnique>(p.esm_c);
   if (name == "hamburger4")

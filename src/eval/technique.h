@@ -4,6 +4,7 @@
 // implement it, so they appear in the same error tables.
 #include <memory>
 #include <span>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -15,8 +16,9 @@ namespace mb {
 
 struct FragmentInput {
   std::span<const double> moments;  // the filtered moment map at the fragment's texel
-  double zf = 0;                    // the fragment depth, moment bias already applied (z_f - delta)
+  double zf = 0;                    // the fragment depth, bias already applied (z_f - delta_f)
   double pcf = 0;                   // the reference (for the `pcf` sanity row)
+  double oracle = 0;                // F_Z(z_f - delta_f) (the `oracle` row)
   // The kernel's depth distribution (layer-0 depths and weights), for techniques that need it.
   std::span<const double> kernel_depths, kernel_weights;
   // Where the fragment is in its view's fragment order, its layer, texel column and warm-start
@@ -44,6 +46,12 @@ class Technique {
   const Basis& basis() const { return basis_; }
   const MomentStorage& storage() const { return storage_; }
   virtual bool needs_distribution() const { return false; }
+  // A proven bound on G - F_Z(z_f - delta_f) (REFERENCE.md §3): 0 for a valid lower bound (the LP,
+  // VSM, ESM), alpha for a bias towards a distribution on I, infinity where storage rounding or the
+  // beta blend can over-darken. Reports show over-darkening only where this exceeds 1e-9.
+  virtual double darkening_bound() const { return 0; }
+  // Why a technique with an infinite darkening bound can over-darken, for reports.
+  virtual std::string darkening_reason() const { return ""; }
   // Not thread-safe (LP backends keep state): make one instance per thread.
   virtual double shadow(const FragmentInput& input) = 0;
   // Fragments the technique could not answer (LP infeasible or unstable), for the report.
@@ -59,7 +67,7 @@ class Technique {
   MomentStorage storage_;
 };
 
-// "pcf", "vsm", "esm", "hamburger4", "hamburger4_float", "hamburger4_16bit", "hausdorff4",
+// "pcf", "oracle" (F_Z(z_f - delta_f), the bias's own error under the receiver-plane reference), "vsm", "esm", "hamburger4", "hamburger4_float", "hamburger4_16bit", "hausdorff4",
 // "hamburger6", "tmsm", "tmsm_float", or "lp:<basis>" (a named set such as power4, or functions separated by ';').
 // Unknown names are an InputError listing the valid ones.
 std::unique_ptr<Technique> make_technique(const std::string& name, const TechniqueParams& params);

@@ -2,7 +2,26 @@
 
 #include <omp.h>
 
+#include <algorithm>
+#include <cmath>
+
+#include "util/error.h"
+
 namespace mb {
+
+const char* reference_name(Reference reference) {
+  return reference == Reference::Biased ? "biased" : "receiver_plane";
+}
+
+Reference parse_reference(const std::string& text, const std::string& key) {
+  if (text == "biased") return Reference::Biased;
+  if (text == "receiver_plane") return Reference::ReceiverPlane;
+  throw InputError(key + ": expected biased or receiver_plane, got '" + text + "'");
+}
+
+double fragment_bias(const BiasParams& bias, int kernel_radius, double dz_dx, double dz_dy) {
+  return bias.constant + bias.slope * kernel_radius * (std::abs(dz_dx) + std::abs(dz_dy));
+}
 
 ShadowMap layer0_shadow_map(const LayerStack& stack) {
   ShadowMap map;
@@ -13,9 +32,10 @@ ShadowMap layer0_shadow_map(const LayerStack& stack) {
   return map;
 }
 
-Fragments collect_receivers(const LayerStack& stack, const GaussianKernel& kernel, const PcfParams& pcf,
+Fragments collect_receivers(const LayerStack& stack, const GaussianKernel& kernel, const BiasParams& bias,
                             int threads) {
   Fragments f;
+  f.reference = bias.reference;
   f.width = stack.width;
   f.height = stack.height;
   for (size_t t = 0; t < stack.texel_count(); ++t)
@@ -26,6 +46,8 @@ Fragments collect_receivers(const LayerStack& stack, const GaussianKernel& kerne
       }
   const size_t count = f.texel.size();
   f.zf.resize(count);
+  f.ztest.resize(count);
+  f.oracle.resize(count);
   f.pcf.resize(count);
   const ShadowMap map = layer0_shadow_map(stack);
   const int r = kernel.radius();
@@ -34,16 +56,22 @@ Fragments collect_receivers(const LayerStack& stack, const GaussianKernel& kerne
     const size_t t = f.texel[k];
     const uint64_t i = stack.offsets[t] + f.layer[k];
     const int x = int(t % stack.width), y = int(t / stack.width);
-    const double zf = stack.depth[i];
-    const double gx = pcf.receiver_plane ? stack.dz_dx[i] : 0.0, gy = pcf.receiver_plane ? stack.dz_dy[i] : 0.0;
-    double shadow = 0;
+    const double zf = stack.depth[i], gx = stack.dz_dx[i], gy = stack.dz_dy[i];
+    const double ztest = zf - fragment_bias(bias, r, gx, gy);
+    double oracle = 0, plane = 0;
     for (int dy = -r; dy <= r; ++dy)
       for (int dx = -r; dx <= r; ++dx) {
-        double reference = zf + dx * gx + dy * gy - pcf.constant_bias;
-        if (map.at(x + dx, y + dy) < reference) shadow += kernel.weight(dx, dy);
+        const double depth = map.at(x + dx, y + dy), w = kernel.weight(dx, dy);
+        if (depth < ztest) oracle += w;
+        // REFERENCE.md §3: the ideal filtered hard shadow tests each tap against the plane. The
+        // plane, extrapolated past a steep receiver's edge, can pass the far plane, where empty
+        // texels hold depth 1: nothing lies beyond it, so the test depth stops there.
+        if (depth < std::min(zf + dx * gx + dy * gy - bias.constant, 1.0)) plane += w;
       }
     f.zf[k] = zf;
-    f.pcf[k] = std::min(shadow, 1.0);
+    f.ztest[k] = ztest;
+    f.oracle[k] = std::min(oracle, 1.0);
+    f.pcf[k] = bias.reference == Reference::Biased ? f.oracle[k] : std::min(plane, 1.0);
   }
   return f;
 }

@@ -1,9 +1,10 @@
 #pragma once
 // The receivers of one light view and their PCF reference (REFERENCE.md §3): every fragment of
-// every layer that faces the light, each with its depth z_f and PCF over layer 0 with
-// receiver-plane depth bias.
+// every layer that faces the light, each with its depth z_f, its own depth bias delta_f from its
+// triangle plane, and the reference shadow intensity over layer 0.
 #include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "raster/layer_stack.h"
@@ -11,13 +12,29 @@
 
 namespace mb {
 
-struct PcfParams {
-  // Compare each tap against z_f + o . grad z_f from the fragment's own triangle plane (Bavoil,
-  // seed 001), so planar receivers do not shadow themselves.
-  bool receiver_plane = true;
-  // Subtracted from the reference depth as well: absorbs curvature and rasterisation rounding.
-  double constant_bias = 1e-4;
+// What the techniques are compared against (REFERENCE.md §3).
+enum class Reference {
+  // PCF = F_Z(z_f - delta_f), the paper's protocol: the same test every technique bounds, so an
+  // exact technique's error is pure light leaking (what the moments do not know).
+  Biased,
+  // Each tap against the fragment's own plane, z_f + o . grad z_f - c (Bavoil, seed 001): the
+  // ideal filtered hard shadow. Never lighter than F_Z(z_f - delta_f) when s >= 1.
+  ReceiverPlane,
 };
+const char* reference_name(Reference reference);
+// "biased" or "receiver_plane"; InputError naming `key` otherwise.
+Reference parse_reference(const std::string& text, const std::string& key);
+
+// One depth bias for the reference and every technique (REFERENCE.md §3):
+// delta_f = c + s * r * (|dz/dx| + |dz/dy|), r the kernel radius in texels. With s >= 1 the
+// receiver's own plane lies behind z_f - delta_f at every tap, so it never shadows itself. s = 0
+// with a constant c is the old constant bias (which lets sloped receivers shadow themselves).
+struct BiasParams {
+  Reference reference = Reference::Biased;
+  double slope = 1;        // s
+  double constant = 1e-4;  // c: absorbs curvature and rasterisation rounding
+};
+double fragment_bias(const BiasParams& bias, int kernel_radius, double dz_dx, double dz_dy);
 
 // The ordinary shadow map: layer-0 depth per texel, 1 (the far plane) where the texel is empty.
 struct ShadowMap {
@@ -35,12 +52,15 @@ struct Fragments {
   std::vector<uint32_t> texel;  // row * width + column
   std::vector<uint16_t> layer;  // 0 = the shadow map's own surface
   std::vector<double> zf;       // fragment depth
-  std::vector<double> pcf;      // the reference shadow intensity in [0, 1]
+  std::vector<double> ztest;    // z_f - delta_f: the depth every technique is evaluated at
+  std::vector<double> oracle;   // F_Z(z_f - delta_f); 0 means G = 0 exactly (REFERENCE.md §2)
+  std::vector<double> pcf;      // the reference shadow intensity in [0, 1] (= oracle if Biased)
+  Reference reference = Reference::Biased;
   size_t size() const { return zf.size(); }
 };
 
 // Receivers in texel order, then layer order; identical for every thread count.
-Fragments collect_receivers(const LayerStack& stack, const GaussianKernel& kernel, const PcfParams& pcf,
+Fragments collect_receivers(const LayerStack& stack, const GaussianKernel& kernel, const BiasParams& bias,
                             int threads);
 
 // The depth distribution Z the kernel sees around texel (x, y): size^2 layer-0 depths and their

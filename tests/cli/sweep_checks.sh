@@ -3,6 +3,8 @@
 #   threads  same results with 1 and 2 threads
 #   resume   killed with SIGKILL mid-way, resumed: same results as an uninterrupted run
 #   shards   3 shards merged: same results as one run; overlapping or mismatched shards refused
+#   series   sweeps of 2 and 4 functions in one report (the seed paper's Figure 3); sweeps measured
+#            against another reference refused; CSV numbers at full precision
 # Results are compared through `report`'s candidates.csv and references.csv (everything but time).
 set -eu
 mb=$1 work=$2 check=$3
@@ -39,8 +41,11 @@ resume)
   echo "killed after $n of 24 candidates"
   [ "$n" -ge 1 ] && [ "$n" -lt 24 ] || { echo "sweep_checks: the kill did not land mid-way ($n)"; exit 1; }
   # A resume with a different config is refused, and changes nothing.
-  if "$mb" sweep -q "${common[@]}" --set depth_bias=0.002 --resume -o "$work/killed" 2>"$work/err"; then exit 1; fi
-  grep -q "run with another config" "$work/err"
+  # The reference and both bias options are part of the config's hash (REFERENCE.md §3).
+  for other in bias.constant=0.002 bias.slope=2 reference=receiver_plane; do
+    if "$mb" sweep -q "${common[@]}" --set $other --resume -o "$work/killed" 2>"$work/err"; then exit 1; fi
+    grep -q "run with another config" "$work/err"
+  done
   "$mb" sweep -q "${common[@]}" --set threads=2 --resume -o "$work/killed"
   [ "$(count "$work/killed")" -eq 24 ]
   results "$work/killed"
@@ -56,10 +61,31 @@ shards)
   grep -q "overlapping shards" "$work/err"
   [ ! -e "$work/overlap" ]
   # Shards of different configs are refused too.
-  "$mb" sweep -q "${common[@]}" --set depth_bias=0.002 --shard 2/3 -o "$work/other2"
+  "$mb" sweep -q "${common[@]}" --set bias.constant=0.002 --shard 2/3 -o "$work/other2"
   if "$mb" merge "$work/shard1" "$work/other2" -o "$work/mismatch" 2>"$work/err"; then exit 1; fi
   grep -q "not shards of one sweep" "$work/err"
   [ ! -e "$work/mismatch" ]
+  ;;
+series)
+  "$mb" sweep -q "${common[@]}" --set combination_size=2 -o "$work/two"
+  "$mb" report -q --no-plot "$work/two" "$work/reference" -o "$work/series" >/dev/null
+  grep -q "^| 2 functions | 24 | " "$work/series/report.md"
+  grep -q "^| 4 functions | 24 | " "$work/series/report.md"
+  grep -q "with every added function — agrees" "$work/series/report.md"
+  [ "$(grep -c '^"2 functions",' "$work/series/candidates.csv")" -eq 24 ]
+  # Full precision: the means read back bit for bit from the database.
+  /usr/bin/python3 - "$work/reference/results.sqlite" "$work/series/candidates.csv" <<'PY'
+import csv, sqlite3, sys
+db = dict(sqlite3.connect(sys.argv[1]).execute("select id, mean from candidates"))
+rows = [r for r in csv.DictReader(open(sys.argv[2])) if r["series"] == "4 functions"]
+assert len(rows) == 24 and all(float(r["mean_error"]) == db[int(r["id"])] for r in rows), "means lost precision"
+PY
+  # A sweep against the receiver-plane reference measures other errors: refused, no output.
+  "$mb" sweep -q "${common[@]}" --set reference=receiver_plane -o "$work/plane"
+  grep -q "oracle" <("$mb" report -q --no-plot "$work/plane" -o "$work/plane.report")
+  if "$mb" report -q --no-plot "$work/two" "$work/plane" -o "$work/mixed" 2>"$work/err"; then exit 1; fi
+  grep -q "cannot share a report" "$work/err"
+  [ ! -e "$work/mixed" ]
   ;;
 esac
 echo "sweep_checks $check: ok"

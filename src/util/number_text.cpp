@@ -1,0 +1,16 @@
+#include "util/number_text.h"
+
+#include <charconv>
+#include <cmath>
+
+namespace mb {
+
+std::string round_trip(double value) {
+  if (std::isnan(value)) return "nan";
+  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+  char buffer[32];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+  return std::string(buffer, result.ptr);
+}
+
+}  // namespace mb
