@@ -11,6 +11,7 @@
 #include "eval/evaluation.h"
 #include "scene/dataset.h"
 #include "util/error.h"
+#include "util/number_text.h"
 #include "util/output_dir.h"
 #include "util/run_metadata.h"
 
@@ -113,13 +114,13 @@ int run_bounds(const CommonOptions& options) {
   for (const auto& s : curves.series) csv << ",\"" << s.basis << " m=" << s.m << "\"";
   csv << "\n";
   for (size_t i = 0; i < curves.zf.size(); ++i) {
-    csv << format_number(curves.zf[i], "%.17g") << "," << format_number(curves.cdf[i], "%.17g");
-    for (const auto& s : curves.series) csv << "," << (std::isnan(s.lower[i]) ? std::string() : format_number(s.lower[i], "%.17g"));
+    csv << round_trip(curves.zf[i]) << "," << round_trip(curves.cdf[i]);
+    for (const auto& s : curves.series) csv << "," << (std::isnan(s.lower[i]) ? std::string() : round_trip(s.lower[i]));
     csv << "\n";
   }
   dist << "depth,weight\n";
   for (size_t t = 0; t < request.depths.size(); ++t)
-    if (request.weights[t] > 0) dist << format_number(request.depths[t], "%.17g") << "," << format_number(request.weights[t], "%.17g") << "\n";
+    if (request.weights[t] > 0) dist << round_trip(request.depths[t]) << "," << round_trip(request.weights[t]) << "\n";
 
   RunMetadata meta = collect_run_metadata(request.threads, process_arguments());
   md << "# Sharp lower bounds of Problem 1 for one kernel (seed 000, Figure 3)\n\n"

@@ -9,6 +9,7 @@
 #include "raster/previews.h"
 #include "raster/render_view.h"
 #include "scene/dataset.h"
+#include "util/number_text.h"
 #include "util/output_dir.h"
 #include "util/run_metadata.h"
 
@@ -66,8 +67,8 @@ int run_render(const RenderOptions& options) {
       char mean[32];
       std::snprintf(mean, sizeof mean, "%.3f", s.mean_layers);
       csv << scene.name << "," << view.name << "," << view.resolution << "," << s.triangles << "," << s.fragments
-          << "," << s.receivers << "," << s.covered_texels << "," << s.max_layers << "," << mean << "," << seconds
-          << "\n";
+          << "," << s.receivers << "," << s.covered_texels << "," << s.max_layers << "," << round_trip(s.mean_layers)
+          << "," << round_trip(seconds) << "\n";
       table << "| " << scene.name << " | " << view.name << " | " << view.resolution << " | " << s.triangles << " | "
             << s.fragments << " | " << s.receivers << " | " << s.max_layers << " | " << mean << " | " << seconds
             << " |\n";

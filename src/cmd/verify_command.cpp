@@ -13,6 +13,7 @@
 #include "scene/dataset.h"
 #include "scene/procedural.h"
 #include "util/error.h"
+#include "util/number_text.h"
 #include "util/output_dir.h"
 #include "util/progress.h"
 #include "util/run_metadata.h"
@@ -40,7 +41,7 @@ std::vector<OptionSpec> verify_specs() {
 }
 
 std::string num(double v) { return format_number(v, "%.3g"); }
-std::string full(double v) { return format_number(v, "%.17g"); }
+std::string full(double v) { return round_trip(v); }
 
 std::string joined(const std::vector<double>& v, const char* separator) {
   std::string s;

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "util/error.h"
+#include "util/number_text.h"
 
 namespace mb {
 
@@ -21,12 +22,8 @@ const char* type_name(OptionType type) {
   return "";
 }
 
-std::string number_text(double v) {
-  std::ostringstream s;
-  s.precision(17);
-  s << v;
-  return s.str();
-}
+// The shortest text that reads back as the same double: 2.4, not 2.3999999999999999.
+std::string number_text(double v) { return round_trip(v); }
 
 std::string emit(const YAML::Node& node) {
   YAML::Emitter out;
