@@ -68,6 +68,20 @@ std::string config_hash(const Config& config) {
   return buffer;
 }
 
+// Only what a sweep writes before its database exists: config.yaml, run_*.yaml, and the
+// temporaries of atomic writes.
+bool is_sweep_directory(const std::filesystem::path& dir) {
+  if (!std::filesystem::is_directory(dir)) return false;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    const bool ours = name == "config.yaml" || (name.rfind("run_", 0) == 0 && name.find(".yaml") != std::string::npos) ||
+                      name.find(".tmp-") != std::string::npos || name.rfind("results.sqlite", 0) == 0 ||
+                      name.rfind(".results.sqlite.new-", 0) == 0;
+    if (!ours) return false;
+  }
+  return true;
+}
+
 std::vector<std::pair<std::string, double>> view_errors(const std::vector<ViewData>& views,
                                                         const std::vector<ErrorStats>& per_view) {
   std::vector<std::pair<std::string, double>> out;
@@ -107,7 +121,7 @@ int run_sweep(const SweepOptions& options) {
   const fs::path out = options.common.out, db_path = out / "results.sqlite";
   const std::string hash = config_hash(config), shard_text = std::to_string(shard) + "/" + std::to_string(shards);
   std::optional<ResultsStore> store;
-  if (options.resume) {
+  if (options.resume && fs::exists(db_path)) {
     store.emplace(ResultsStore::open(db_path.string()));
     auto meta = store->meta();
     if (meta["config_hash"] != hash)
@@ -116,9 +130,18 @@ int run_sweep(const SweepOptions& options) {
     if (meta["shard"] != shard_text)
       throw InputError(db_path.string() + ": that sweep is shard " + meta["shard"] + ", not " + shard_text);
   } else {
-    if (fs::exists(out) && !options.common.force)
-      throw InputError(out.string() + ": output directory exists (use --resume to continue its sweep, --force to replace it)");
-    if (fs::exists(out)) fs::remove_all(out);
+    // A sweep killed before its database existed left at most its own files: --resume starts it
+    // afresh there, so a sweep resumes from every instant (ResultsStore::create is atomic).
+    if (fs::exists(out)) {
+      if (options.resume) {
+        if (!is_sweep_directory(out))
+          throw InputError(out.string() + ": holds no results.sqlite and files that are not a sweep's; not resuming here");
+      } else if (!options.common.force) {
+        throw InputError(out.string() + ": output directory exists (use --resume to continue its sweep, --force to replace it)");
+      } else {
+        fs::remove_all(out);
+      }
+    }
     std::error_code ec;
     fs::create_directories(out, ec);
     if (ec) throw InputError(out.string() + ": cannot create the output directory: " + ec.message());

@@ -163,7 +163,7 @@ int run_verify(const CommonOptions& options) {
     md << " " << r.beyond_tolerance << " | " << r.above_lp << " | "
        << (r.target.exact ? (r.passed() ? "pass" : "**FAIL**") : "reported (bias)") << " |\n";
     for (const auto& g : r.grids)
-      csv << r.target.technique << ",\"" << basis << "\"," << r.target.lo << "," << r.target.hi << "," << g.grid << ","
+      csv << r.target.technique << ",\"" << basis << "\"," << full(r.target.lo) << "," << full(r.target.hi) << "," << g.grid << ","
           << r.instances << "," << r.undefined << "," << g.compared << "," << g.lp_failures << "," << full(g.max_difference)
           << "," << full(g.mean_difference) << "," << r.beyond_tolerance << "," << r.above_lp << ","
           << (r.target.exact ? 1 : 0) << "," << (r.passed() ? 1 : 0) << "\n";

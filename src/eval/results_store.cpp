@@ -1,5 +1,7 @@
 #include "eval/results_store.h"
 
+#include <unistd.h>
+
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -20,6 +22,10 @@ const char* kSchema =
     " infeasible INTEGER, unstable INTEGER, mean REAL, leak REAL, dark REAL, max REAL, share_over_tenth REAL,"
     " max_dark REAL, darkening_bound REAL, darkening_reason TEXT, view_errors TEXT, histogram TEXT, seconds REAL);";
 
+// Raised whenever the tables change (2: max_dark, darkening_bound, darkening_reason, the reference
+// and per-fragment bias of REFERENCE.md §3): an older database is refused, not misread.
+constexpr const char* kSchemaVersion = "2";
+
 struct Statement {
   sqlite3_stmt* s = nullptr;
   Statement(sqlite3* db, const std::string& sql, const std::string& path) {
@@ -32,26 +38,39 @@ struct Statement {
 }  // namespace
 
 ResultsStore ResultsStore::create(const std::string& path, const std::map<std::string, std::string>& meta) {
-  if (std::filesystem::exists(path)) throw InputError(path + ": results database exists");
-  sqlite3* db = nullptr;
-  if (sqlite3_open_v2(path.c_str(), &db, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr) != SQLITE_OK) {
-    std::string message = db ? sqlite3_errmsg(db) : "out of memory";
-    sqlite3_close(db);
-    throw InputError(path + ": cannot create results database: " + message);
+  namespace fs = std::filesystem;
+  if (fs::exists(path)) throw InputError(path + ": results database exists");
+  // Schema and metadata are committed under a temporary name, then renamed into place: a kill at
+  // any instant leaves either no database or a complete empty one, never one without its schema.
+  const fs::path final_path(path), dir = final_path.parent_path().empty() ? fs::path(".") : final_path.parent_path();
+  const std::string prefix = "." + final_path.filename().string() + ".new-";
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(dir, ec))
+    if (entry.path().filename().string().rfind(prefix, 0) == 0) fs::remove(entry.path(), ec);
+  const std::string temporary = (dir / (prefix + std::to_string(getpid()))).string();
+  {
+    sqlite3* db = nullptr;
+    if (sqlite3_open_v2(temporary.c_str(), &db, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr) != SQLITE_OK) {
+      std::string message = db ? sqlite3_errmsg(db) : "out of memory";
+      sqlite3_close(db);
+      throw InputError(path + ": cannot create results database: " + message);
+    }
+    ResultsStore store(db, path);
+    store.exec("BEGIN");
+    store.exec(kSchema);
+    auto rows = meta;
+    rows["schema_version"] = kSchemaVersion;
+    for (const auto& [key, value] : rows) {
+      Statement st(db, "INSERT INTO meta VALUES (?, ?)", path);
+      sqlite3_bind_text(st.s, 1, key.c_str(), -1, SQLITE_TRANSIENT);
+      sqlite3_bind_text(st.s, 2, value.c_str(), -1, SQLITE_TRANSIENT);
+      if (sqlite3_step(st.s) != SQLITE_DONE) throw InputError(path + ": " + sqlite3_errmsg(db));
+    }
+    store.exec("COMMIT");
   }
-  // A reader (report, a monitoring script) may hold the lock briefly: wait, do not fail a sweep.
-  sqlite3_busy_timeout(db, 60000);
-  ResultsStore store(db, path);
-  store.exec("BEGIN");
-  store.exec(kSchema);
-  for (const auto& [key, value] : meta) {
-    Statement st(db, "INSERT INTO meta VALUES (?, ?)", path);
-    sqlite3_bind_text(st.s, 1, key.c_str(), -1, SQLITE_TRANSIENT);
-    sqlite3_bind_text(st.s, 2, value.c_str(), -1, SQLITE_TRANSIENT);
-    if (sqlite3_step(st.s) != SQLITE_DONE) throw InputError(path + ": " + sqlite3_errmsg(db));
-  }
-  store.exec("COMMIT");
-  return store;
+  fs::rename(temporary, final_path, ec);
+  if (ec) throw InputError(path + ": cannot create results database: " + ec.message());
+  return open(path);
 }
 
 ResultsStore ResultsStore::open(const std::string& path) {
@@ -64,7 +83,19 @@ ResultsStore ResultsStore::open(const std::string& path) {
   }
   sqlite3_busy_timeout(db, 60000);
   ResultsStore store(db, path);
-  store.exec("SELECT count(*) FROM meta");  // fails clearly on a file that is not ours
+  // A file that is not a momentbench results database (another SQLite file, or none at all).
+  char* error = nullptr;
+  if (sqlite3_exec(db, "SELECT count(*) FROM meta; SELECT count(*) FROM candidates; SELECT count(*) FROM references_",
+                   nullptr, nullptr, &error) != SQLITE_OK) {
+    sqlite3_free(error);
+    throw InputError(path + ": not a momentbench results database (expected the tables meta, candidates and "
+                            "references_ that `sweep` writes)");
+  }
+  const std::string version = store.meta()["schema_version"];
+  if (version != kSchemaVersion)
+    throw InputError(path + ": written by another momentbench version (results schema " +
+                     (version.empty() ? std::string("1") : version) + ", this one reads " + kSchemaVersion +
+                     "); re-run its sweep");
   return store;
 }
 

@@ -1,7 +1,9 @@
 #include "util/output_dir.h"
 
+#include <signal.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <fstream>
 
 #include "util/error.h"
@@ -9,6 +11,25 @@
 namespace mb {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+// Staging directories of `name` whose process is gone (killed, crashed, powered off) are never
+// committed: remove them, so they do not pile up beside the outputs. A live process's is kept.
+void remove_dead_stagings(const fs::path& parent, const std::string& name) {
+  const std::string prefix = "." + name + ".staging-";
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(parent, ec)) {
+    const std::string file = entry.path().filename().string();
+    if (file.rfind(prefix, 0) != 0) continue;
+    const std::string digits = file.substr(prefix.size());
+    if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos) continue;
+    const long pid = std::stol(digits);
+    if (pid > 0 && kill(pid_t(pid), 0) == -1 && errno == ESRCH) fs::remove_all(entry.path(), ec);
+  }
+}
+
+}  // namespace
 
 StagedOutputDir::StagedOutputDir(fs::path target, bool force) : target_(std::move(target)), force_(force) {
   if (target_.empty()) throw InputError("--out: an output directory is required");
@@ -18,11 +39,15 @@ StagedOutputDir::StagedOutputDir(fs::path target, bool force) : target_(std::mov
   std::error_code ec;
   fs::create_directories(parent, ec);
   if (ec || access(parent.c_str(), W_OK) != 0)
-    throw InputError(parent.string() + ": cannot write the output directory here");
+    throw InputError(target_.string() + ": cannot create the output directory: " + parent.string() +
+                     (ec ? " cannot be created (" + ec.message() + ")" : " is not writable"));
+  if (fs::exists(target_) && !fs::is_directory(target_))
+    throw InputError(target_.string() + ": exists and is not a directory; --out needs a directory");
+  remove_dead_stagings(parent, target_.filename().string());
   staging_ = parent / ("." + target_.filename().string() + ".staging-" + std::to_string(getpid()));
   fs::remove_all(staging_, ec);
   fs::create_directory(staging_, ec);
-  if (ec) throw InputError(staging_.string() + ": cannot create: " + ec.message());
+  if (ec) throw InputError(target_.string() + ": cannot create the output directory: " + ec.message());
 }
 
 StagedOutputDir::~StagedOutputDir() {

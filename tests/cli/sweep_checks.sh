@@ -3,6 +3,8 @@
 #   threads  same results with 1 and 2 threads
 #   resume   killed with SIGKILL mid-way, resumed: same results as an uninterrupted run
 #   shards   3 shards merged: same results as one run; overlapping or mismatched shards refused
+#   killloop kill -9 at 20 random instants (from the first milliseconds on), then --resume: the
+#            same results every time
 #   series   sweeps of 2 and 4 functions in one report (the seed paper's Figure 3); sweeps measured
 #            against another reference refused; CSV numbers at full precision
 # Results are compared through `report`'s candidates.csv and references.csv (everything but time).
@@ -65,6 +67,39 @@ shards)
   if "$mb" merge "$work/shard1" "$work/other2" -o "$work/mismatch" 2>"$work/err"; then exit 1; fi
   grep -q "not shards of one sweep" "$work/err"
   [ ! -e "$work/mismatch" ]
+  ;;
+killloop)
+  small=(--set dataset=tiny --set sample=6 --set sample_seed=5 --set "references=[vsm]" --set lp.grid=32 --set threads=2)
+  "$mb" sweep -q "${small[@]}" -o "$work/small"
+  results "$work/small"
+  for i in $(seq 1 20); do
+    rm -rf "$work/k$i"
+    # Delays from 0 to ~1.5 s: before the directory exists, while the database is being created,
+    # among the references and among the candidates.
+    delay=$(/usr/bin/python3 -c "import random; random.seed($i); print(round(random.random() ** 2 * 1.5, 3))")
+    "$mb" sweep -q "${small[@]}" -o "$work/k$i" 2>/dev/null &
+    pid=$!
+    sleep "$delay"
+    kill -9 $pid 2>/dev/null || true
+    wait $pid 2>/dev/null || true
+    "$mb" sweep -q "${small[@]}" --resume -o "$work/k$i"
+    results "$work/k$i"
+    same "$work/small" "$work/k$i" || { echo "kill after ${delay}s: results differ"; exit 1; }
+  done
+  # The two windows that once could not resume, made by hand: the directory alone, and the
+  # directory with its config.yaml and a half-created database under its temporary name.
+  mkdir -p "$work/window1" "$work/window2"
+  cp "$work/small/config.yaml" "$work/window2/" && echo partial > "$work/window2/.results.sqlite.new-999999"
+  for w in window1 window2; do
+    "$mb" sweep -q "${small[@]}" --resume -o "$work/$w"
+    results "$work/$w"
+    same "$work/small" "$work/$w"
+  done
+  [ ! -e "$work/window2/.results.sqlite.new-999999" ]
+  # A directory that is not a sweep's is not taken over.
+  mkdir -p "$work/foreign" && echo keep > "$work/foreign/notes.txt"
+  if "$mb" sweep -q "${small[@]}" --resume -o "$work/foreign" 2>"$work/err"; then exit 1; fi
+  grep -q "not a sweep's" "$work/err" && [ "$(ls "$work/foreign")" = notes.txt ]
   ;;
 series)
   "$mb" sweep -q "${common[@]}" --set combination_size=2 -o "$work/two"
