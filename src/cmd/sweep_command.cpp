@@ -20,6 +20,7 @@
 #include "eval/results_store.h"
 #include "eval/sweep_plan.h"
 #include "eval/technique.h"
+#include "lp/solution.h"
 #include "util/error.h"
 #include "util/output_dir.h"
 #include "util/run_metadata.h"
@@ -101,6 +102,14 @@ int run_sweep(const SweepOptions& options) {
   SweepPlan plan = make_sweep_plan(config.strings("catalog"), int(config.integer("combination_size")),
                                    config.strings("candidates"), uint64_t(config.integer("sample")),
                                    uint64_t(config.integer("sample_seed")));
+  // Every catalog function on the admissible interval, and the candidates' size against the
+  // backend, before any work: a function with a pole would fail every candidate it is in.
+  {
+    std::vector<BasisFunction> functions;
+    for (const auto& name : plan.catalog) functions.push_back(BasisFunction::parse(name));
+    Basis(functions).check_admissible(settings.technique.lp.lo, settings.technique.lp.hi);
+    lp::check_backend_rows(settings.technique.lp_backend, plan.size, "combination_size");
+  }
   auto references = config.strings("references");
   // REFERENCE.md §3: under the receiver-plane reference every table shows the oracle floor.
   if (settings.bias.reference == Reference::ReceiverPlane &&

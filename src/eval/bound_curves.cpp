@@ -7,6 +7,7 @@
 #include "eval/lp_technique.h"
 #include "lp/solution.h"
 #include "util/error.h"
+#include "util/parallel_errors.h"
 
 namespace mb {
 
@@ -64,11 +65,12 @@ BoundCurves compute_bound_curves(const BoundCurveRequest& r) {
       series.m = m;
       series.lower.assign(out.zf.size(), std::numeric_limits<double>::quiet_NaN());
       size_t failures = 0;
+      ParallelErrors errors;
 #pragma omp parallel num_threads(r.threads) reduction(+ : failures)
       {
         auto backend = lp::make_backend(r.backend);
 #pragma omp for schedule(dynamic, 4)
-        for (size_t i = 0; i < out.zf.size(); ++i) {
+        for (size_t i = 0; i < out.zf.size(); ++i) errors.capture([&] {
           // The distribution's depths join I and fix the moments: feasible by construction (§2).
           const lp::Problem problem = factory.from_distribution(r.depths, r.weights, out.zf[i]);
           const lp::Solution s = backend->solve(problem);
@@ -76,8 +78,9 @@ BoundCurves compute_bound_curves(const BoundCurveRequest& r) {
             series.lower[i] = std::clamp(s.G, 0.0, 1.0);
           else
             ++failures;
-        }
+        });
       }
+      errors.rethrow();
       series.failures = failures;
       size_t solved = 0;
       double gap_sum = 0;

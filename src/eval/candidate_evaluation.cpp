@@ -4,6 +4,7 @@
 
 #include "lp/problem.h"
 #include "lp/solution.h"
+#include "util/parallel_errors.h"
 
 namespace mb {
 
@@ -59,6 +60,7 @@ CandidateResult CandidateEvaluator::evaluate(const Basis& basis, std::vector<std
         lp::warm_run_begins(list.size(), map.width, [&](size_t i) { return view.fragments.texel[list[i]]; });
     const size_t runs = run_begin.size() - 1;
     std::vector<double> g(view.fragments.size(), 0.0);  // skipped fragments: G = 0 exactly
+    ParallelErrors errors;  // each run captured: a throw must not leave the worksharing loop
 #pragma omp parallel num_threads(settings_.threads) reduction(+ : solved, infeasible, unstable)
     {
       auto backend = lp::make_backend(settings_.technique.lp_backend);
@@ -68,7 +70,7 @@ CandidateResult CandidateEvaluator::evaluate(const Basis& basis, std::vector<std
       std::vector<size_t> tap_texel(taps);
       lp::Solution s;  // reused: no allocation per LP
 #pragma omp for schedule(dynamic, 1)
-      for (size_t run = 0; run < runs; ++run)
+      for (size_t run = 0; run < runs; ++run) errors.capture([&] {
         for (size_t i = run_begin[run]; i < run_begin[run + 1]; ++i) {
           const size_t f = list[i], t = view.fragments.texel[f];
           const int x = int(t % map.width), y = int(t / map.width);
@@ -97,7 +99,9 @@ CandidateResult CandidateEvaluator::evaluate(const Basis& basis, std::vector<std
             ++unstable;
           }
         }
+      });
     }
+    errors.rethrow();
     ErrorStats stats;
     stats.add_all(view.fragments.pcf, g);
     result.overall.merge(stats);

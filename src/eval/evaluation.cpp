@@ -5,6 +5,7 @@
 #include "lp/solution.h"
 #include "raster/render_view.h"
 #include "shadow/moment_map.h"
+#include "util/parallel_errors.h"
 
 namespace mb {
 
@@ -46,13 +47,14 @@ TechniqueResult evaluate_technique(const ViewData& view, const std::string& tech
   const std::vector<size_t> run_begin = lp::warm_run_begins(f.size(), f.width, [&](size_t k) { return f.texel[k]; });
   const size_t runs = run_begin.size() - 1;
   size_t failures = 0;
+  ParallelErrors errors;  // each run's body captured: a throw must not leave the worksharing loop
 #pragma omp parallel num_threads(settings.threads) reduction(+ : failures)
   {
     auto technique = make_technique(technique_name, settings.technique);
     const bool needs_distribution = technique->needs_distribution();
     std::vector<double> depths(taps), weights(taps);
 #pragma omp for schedule(dynamic, 1)
-    for (size_t run = 0; run < runs; ++run) {
+    for (size_t run = 0; run < runs; ++run) errors.capture([&] {
       const size_t begin = run_begin[run], end = run_begin[run + 1];
       for (size_t k = begin; k < end; ++k) {
         const size_t texel = f.texel[k];
@@ -74,9 +76,10 @@ TechniqueResult evaluate_technique(const ViewData& view, const std::string& tech
         result.shadow[k] = technique->shadow(in);
       }
       if (progress) progress->advance(end - begin);
-    }
+    });
     failures += technique->failures();
   }
+  errors.rethrow();
   result.failures = failures;
   return result;
 }

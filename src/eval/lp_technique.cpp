@@ -12,7 +12,9 @@ class LpTechnique : public Technique {
   LpTechnique(const std::string& name, Basis basis, const lp::Discretization& disc,
               const std::string& backend)
       : Technique(name, std::move(basis), double_storage()),
-        factory_((this->basis().check_independent(disc.lo, disc.hi), this->basis()), disc),
+        factory_((lp::check_backend_rows(backend, int(this->basis().size()), "technique '" + name + "'"),
+                  this->basis().check_independent(disc.lo, disc.hi), this->basis()),
+                 disc),
         backend_(lp::make_backend(backend)) {}
   bool needs_distribution() const override { return true; }
   double darkening_bound() const override { return kLpDarkeningBound; }
@@ -60,7 +62,10 @@ std::vector<std::string> lp_technique_basis(const std::string& name) {
   size_t start = 0;
   for (size_t i = 0; i <= spec.size(); ++i)
     if (i == spec.size() || spec[i] == ';' || spec[i] == ',') {
-      if (i > start) items.push_back(spec.substr(start, i - start));
+      std::string item = spec.substr(start, i - start);
+      item.erase(0, item.find_first_not_of(' '));
+      item.erase(item.find_last_not_of(' ') + 1);
+      if (!item.empty()) items.push_back(item);
       start = i + 1;
     }
   if (items.empty())

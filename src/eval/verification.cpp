@@ -10,6 +10,7 @@
 #include "lp/solution.h"
 #include "scene/procedural.h"
 #include "util/error.h"
+#include "util/parallel_errors.h"
 
 namespace mb {
 
@@ -123,12 +124,13 @@ VerifySolverResult verify_solver(const VerifyTarget& target, const TechniqueMake
   std::vector<std::unique_ptr<lp::ProblemFactory>> factories;
   for (int g : grids) factories.push_back(std::make_unique<lp::ProblemFactory>(lp_basis, lp::Discretization{target.lo, target.hi, g, false}));
   // The LP sees the exact distribution (its depths join I), so it is feasible and G_LP <= F_Z.
+  ParallelErrors errors;
 #pragma omp parallel num_threads(threads)
   {
     auto technique = make();
     auto fast = lp::make_backend("fast"), glpk = lp::make_backend("glpk");
 #pragma omp for schedule(dynamic, 16)
-    for (size_t i = 0; i < instances.size(); ++i) {
+    for (size_t i = 0; i < instances.size(); ++i) errors.capture([&] {
       FragmentInput in;
       in.moments = cases[i].moments;
       in.zf = instances[i].zf;
@@ -152,8 +154,9 @@ VerifySolverResult verify_solver(const VerifyTarget& target, const TechniqueMake
         }
         for (double& weight : w.weights) weight /= total;
       }
-    }
+    });
   }
+  errors.rethrow();
   // The witness test (serial: the technique's basis). An LP solution is a distribution whose
   // moments miss the instance's by the LP's tolerance; near the boundary of the moment space
   // (Hankel determinants ~1e-17) that moves the optimum by far more than the tolerance, so G_LP

@@ -2155,6 +2155,7 @@ class FastSimplex {
 class FastBackend : public Backend {
  public:
   std::string name() const override { return "fast"; }
+  int max_functions() const override { return kMaxRows - 1; }
   Solution solve(const Problem& p) override {
     Solution s;
     solve_into(p, nullptr, s);
@@ -2227,6 +2228,14 @@ std::unique_ptr<Backend> make_backend(const std::string& name) {
   if (name == "fast") return make_fast_backend();
   if (name == "glpk") return make_glpk_backend();
   throw InputError("unknown LP backend '" + name + "'; valid: fast, glpk");
+}
+
+void check_backend_rows(const std::string& name, int functions, const std::string& what) {
+  const int limit = make_backend(name)->max_functions();
+  if (functions > limit)
+    throw InputError(what + ": " + std::to_string(functions) + " basis functions, but LP backend '" + name +
+                     "' solves at most " + std::to_string(limit) + (name == "fast" ? " (lp.backend glpk takes up to " +
+                     std::to_string(make_backend("glpk")->max_functions()) + ")" : ""));
 }
 
 }  // namespace mb::lp

@@ -27,6 +27,7 @@ class GlpkBackend : public Backend {
   }
   ~GlpkBackend() override { glp_delete_prob(lp_); }
   std::string name() const override { return "glpk"; }
+  int max_functions() const override { return kMaxColumnRows - 1; }
 
   Solution solve(const Problem& p) override {
     // The problem object is reused: erased, then filled with this LP.

@@ -55,6 +55,8 @@ class Backend {
  public:
   virtual ~Backend() = default;
   virtual std::string name() const = 0;
+  // The most basis functions (rows - 1) this backend solves; callers check it before any work.
+  virtual int max_functions() const = 0;
   virtual Solution solve(const Problem& problem) = 0;
   // The same answer to within the certified 1e-9, possibly faster: `problem` continues a run of
   // neighbouring fragments in raster order, and the backend may start from the optimal bases of
@@ -95,6 +97,8 @@ std::vector<size_t> warm_run_begins(size_t count, int width, TexelOf texel_of) {
 
 // "fast" (our exact dense simplex) or "glpk" (the reference).
 std::unique_ptr<Backend> make_backend(const std::string& name);
+// InputError naming `what` when a basis of `functions` is beyond backend `name`'s row limit.
+void check_backend_rows(const std::string& name, int functions, const std::string& what);
 std::vector<std::string> backend_names();
 
 }  // namespace mb::lp

@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "util/error.h"
+#include "util/number_text.h"
 
 namespace mb {
 
@@ -161,7 +162,58 @@ std::vector<std::string> Basis::names() const {
   return out;
 }
 
+void Basis::check_admissible(double lo, double hi) const {
+  const int samples = 4097;
+  // A pole: narrowing towards it multiplies |f| by far more than smooth growth between samples
+  // can (exp(40z), the steepest function a user is likely to give, grows by 1.01 per sample).
+  const double kPoleFactor = 1e3;
+  std::vector<double> z(samples), values(samples);
+  for (int i = 0; i < samples; ++i) z[i] = lo + (hi - lo) * i / (samples - 1);
+  z.back() = hi;
+  auto interval = "[" + round_trip(lo) + ", " + round_trip(hi) + "]";
+  for (const auto& f : functions_) {
+    f.evaluate(z, values);
+    double peak = 0;
+    for (int i = 0; i < samples; ++i) {
+      if (!std::isfinite(values[i]))
+        throw InputError("basis function '" + f.name() + "' is not finite at z = " + round_trip(z[i]) + " on " +
+                         interval + " (the admissible interval, lp.lo and lp.hi)");
+      peak = std::max(peak, std::abs(values[i]));
+    }
+    const double limit = kPoleFactor * std::max(peak, 1.0);
+    auto pole = [&](double at, double value) {
+      if (!std::isfinite(value) || std::abs(value) > limit)
+        throw InputError("basis function '" + f.name() + "' has a pole near z = " + round_trip(at) + " on " +
+                         interval + " (|f| reaches " + round_trip(std::abs(value)) + "): not admissible there");
+    };
+    for (int i = 0; i + 1 < samples; ++i) {
+      // A sign change: bisect it. A zero leaves |f| small, a pole makes it grow without bound.
+      if ((values[i] < 0) != (values[i + 1] < 0) && values[i] != 0 && values[i + 1] != 0) {
+        double a = z[i], b = z[i + 1], fa = values[i];
+        for (int step = 0; step < 80 && b - a > 0; ++step) {
+          const double m = 0.5 * (a + b), fm = f(m);
+          pole(m, fm);
+          if ((fm < 0) == (fa < 0)) a = m, fa = fm;
+          else b = m;
+        }
+      }
+      // A local peak of |f| (an even pole keeps its sign): narrow it by ternary search.
+      if (i > 0 && std::abs(values[i]) > std::abs(values[i - 1]) && std::abs(values[i]) > std::abs(values[i + 1])) {
+        double a = z[i - 1], b = z[i + 1];
+        for (int step = 0; step < 80; ++step) {
+          const double m1 = a + (b - a) / 3, m2 = b - (b - a) / 3, f1 = f(m1), f2 = f(m2);
+          pole(m1, f1);
+          pole(m2, f2);
+          if (std::abs(f1) < std::abs(f2)) a = m1;
+          else b = m2;
+        }
+      }
+    }
+  }
+}
+
 void Basis::check_independent(double lo, double hi) const {
+  check_admissible(lo, hi);
   // Columns 1, b_1..b_m sampled densely on [lo, hi] and scaled to unit norm; a relative
   // singular value below 1e-10 means the LP rows are numerically dependent (z^5, z^6 next to the
   // lower powers sit near 1e-6 on [0, 1] and pass).
@@ -175,8 +227,7 @@ void Basis::check_independent(double lo, double hi) const {
     functions_[j].evaluate(z, values);
     for (int i = 0; i < samples; ++i) {
       if (!std::isfinite(values[i]))
-        throw InputError("basis function '" + functions_[j].name() + "' is not finite at z = " +
-                         std::to_string(z[i]) + " on [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+        throw InputError("basis function '" + functions_[j].name() + "' is not finite at z = " + round_trip(z[i]));
       A(i, j + 1) = values[i];
     }
   }
@@ -200,8 +251,8 @@ void Basis::check_independent(double lo, double hi) const {
   }
   std::string all;
   for (const auto& f : functions_) all += (all.empty() ? "" : ", ") + f.name();
-  throw InputError("basis {" + all + "} is linearly dependent together with the constant on [" + std::to_string(lo) +
-                   ", " + std::to_string(hi) + "]" + (culprits.empty() ? "" : "; remove one of: " + culprits));
+  throw InputError("basis {" + all + "} is linearly dependent together with the constant on [" + round_trip(lo) +
+                   ", " + round_trip(hi) + "]" + (culprits.empty() ? "" : "; remove one of: " + culprits));
 }
 
 }  // namespace mb

@@ -33,8 +33,13 @@ class Basis {
   size_t size() const { return functions_.size(); }
   const BasisFunction& operator[](size_t j) const { return functions_[j]; }
   std::vector<std::string> names() const;
-  // Rejects (InputError naming the functions) a basis that is numerically linearly dependent
-  // together with the constant on [lo, hi].
+  // Rejects (InputError naming the function and a point) a function that is not finite or has a
+  // pole on [lo, hi]: sampled densely, each sign change bisected and each local peak of |f|
+  // narrowed; a value there far beyond every sampled one is a pole. Every command calls this
+  // (through check_independent) before any work, so no solver meets such a function.
+  void check_admissible(double lo, double hi) const;
+  // check_admissible, then rejects (InputError naming the functions) a basis that is numerically
+  // linearly dependent together with the constant on [lo, hi].
   void check_independent(double lo, double hi) const;
 
  private:
