@@ -1,6 +1,8 @@
 // momentbench: one binary, one subcommand per pipeline stage (DESIGN.md §Command line).
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <filesystem>
+#include <new>
 #include <functional>
 
 #include "cmd/command_common.h"
@@ -24,12 +26,20 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help and --version exit 0; every command-line mistake exits 1, as bad input does.
+    return app.exit(e) == 0 ? 0 : 1;
   }
   try {
     return action ? action() : 0;
   } catch (const mb::InputError& e) {
     std::fprintf(stderr, "momentbench: error: %s\n", e.what());
+    return 1;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "momentbench: error: out of memory; lower the resolution or the number of threads\n");
+    return 1;
+  } catch (const std::filesystem::filesystem_error& e) {
+    // A path that exists but cannot be used (a directory for a file, no permission, disk full).
+    std::fprintf(stderr, "momentbench: error: %s: %s\n", e.path1().c_str(), e.code().message().c_str());
     return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "momentbench: internal error: %s\n", e.what());

@@ -8,6 +8,7 @@
 #include "cmd/command_common.h"
 #include "cmd/commands.h"
 #include "eval/results_store.h"
+#include "eval/sweep_plan.h"
 #include "util/error.h"
 #include "util/output_dir.h"
 
@@ -18,7 +19,7 @@ namespace {
 struct MergeOptions {
   std::vector<std::string> shards;
   std::string out;
-  bool force = false;
+  bool force = false, partial = false;
 };
 
 std::string database_of(const std::string& dir) {
@@ -45,12 +46,27 @@ int run_merge(const MergeOptions& o) {
                          ": overlapping shards");
     }
   }
+  // Every shard of K/N must be there, or the merged sweep silently lacks candidates.
+  const auto [first_k, total_shards] = parse_shard(first["shard"]);
+  (void)first_k;
+  std::string missing;
+  for (int k = 1; k <= total_shards; ++k) {
+    const std::string name = std::to_string(k) + "/" + std::to_string(total_shards);
+    if (!shard_names.count(name)) missing += (missing.empty() ? "" : ", ") + name;
+  }
+  for (const auto& name : shard_names)
+    if (parse_shard(name).second != total_shards)
+      throw InputError("shard " + name + " and shard " + first["shard"] + " split the sweep differently");
+  if (!missing.empty() && !o.partial)
+    throw InputError("shards " + missing + " of this sweep are missing; give every shard, or --partial to merge "
+                     "these alone");
   StagedOutputDir out(o.out, o.force);
   auto meta = first;
   meta["shard"] = "1/1";
   std::string merged;
   for (const auto& s : shard_names) merged += (merged.empty() ? "" : ", ") + s;
   meta["merged_from"] = merged;
+  if (!missing.empty()) meta["missing_shards"] = missing;
   {
     ResultsStore target = ResultsStore::create((out / "results.sqlite").string(), meta);
     for (const auto& r : inputs[0].references()) target.put_reference(r);
@@ -59,8 +75,8 @@ int run_merge(const MergeOptions& o) {
   }
   write_file_atomically(out / "config.yaml", first["config"]);
   out.commit();
-  std::printf("merged %zu shards (%s): %zu candidates -> %s\n", inputs.size(), merged.c_str(), owner.size(),
-              o.out.c_str());
+  std::printf("merged %zu shards (%s): %zu candidates -> %s%s\n", inputs.size(), merged.c_str(), owner.size(),
+              o.out.c_str(), missing.empty() ? "" : ("; missing shards " + missing).c_str());
   return 0;
 }
 
@@ -72,6 +88,7 @@ void register_merge_command(CLI::App& app, std::function<int()>& action) {
   command->add_option("shards", options->shards, "Shard output directories (or results.sqlite files)")->required();
   command->add_option("-o,--out", options->out, "Output directory (must not exist, unless --force)")->required();
   command->add_flag("-f,--force", options->force, "Replace an existing output directory");
+  command->add_flag("--partial", options->partial, "Merge even when some shards of the sweep are missing");
   command->callback([options, &action] { action = [options] { return run_merge(*options); }; });
 }
 

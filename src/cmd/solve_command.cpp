@@ -1,6 +1,9 @@
 // `momentbench solve`: Problem 1 instances (REFERENCE.md §1-2) with a chosen LP backend, one from
 // flags or a JSON Lines batch; `--check` runs the independent KKT checker on every answer.
 #include <cstdio>
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -75,6 +78,10 @@ json solve_one(lp::Backend& backend, FactoryCache& factories, const std::vector<
     for (size_t k = 0; k < s.support.size(); ++k) support.push_back({problem.point(s.support[k]), s.weights[k]});
     out["support"] = support;
   }
+  // Defined answers outside I (REFERENCE.md §1): every distribution on [lo, hi] lies below a z_f
+  // above hi (G = 1) and none strictly below a z_f at or under lo (G = 0).
+  if (zf > disc.hi) out["note"] = "zf lies above the interval: every distribution on it is below zf, so G = 1";
+  if (zf <= disc.lo) out["note"] = "zf lies at or below the interval's start: no mass is below it, so G = 0";
   out["iterations"] = s.iterations;
   out["backend"] = backend.name();
   if (check && s.status == lp::ProblemStatus::Optimal) out["kkt"] = lp::check_kkt(problem, s).describe();
@@ -107,6 +114,84 @@ json solve_closed_form(const std::string& name, double alpha, const std::vector<
   return out;
 }
 
+// A JSON Lines query, read strictly: every key known, every value of its type (REFERENCE.md §2
+// names; errors name the key and what was expected).
+struct Query {
+  const json& q;
+  bool has(const char* key) const { return q.contains(key); }
+  const json& at(const char* key) const {
+    if (!q.contains(key)) throw InputError(std::string("key '") + key + "': missing");
+    return q.at(key);
+  }
+  double number(const char* key) const {
+    const json& v = at(key);
+    if (!v.is_number() || !std::isfinite(v.get<double>()))
+      throw InputError(std::string("key '") + key + "': expected a finite number, got " + v.dump());
+    return v.get<double>();
+  }
+  int integer(const char* key, int lo, int hi) const {
+    const json& v = at(key);
+    if (!v.is_number_integer() || v.get<double>() < lo || v.get<double>() > hi)
+      throw InputError(std::string("key '") + key + "': expected an integer in [" + std::to_string(lo) + ", " +
+                       std::to_string(hi) + "], got " + v.dump());
+    return v.get<int>();
+  }
+  std::vector<double> numbers(const char* key) const {
+    const json& v = at(key);
+    if (!v.is_array()) throw InputError(std::string("key '") + key + "': expected a list of numbers, got " + v.dump());
+    std::vector<double> out;
+    for (const auto& item : v) {
+      if (!item.is_number() || !std::isfinite(item.get<double>()))
+        throw InputError(std::string("key '") + key + "': expected finite numbers, got " + item.dump());
+      out.push_back(item.get<double>());
+    }
+    return out;
+  }
+  std::vector<std::string> strings(const char* key) const {
+    const json& v = at(key);
+    if (v.is_string()) return {v.get<std::string>()};
+    if (!v.is_array()) throw InputError(std::string("key '") + key + "': expected a list of strings, got " + v.dump());
+    std::vector<std::string> out;
+    for (const auto& item : v) {
+      if (!item.is_string()) throw InputError(std::string("key '") + key + "': expected strings, got " + item.dump());
+      out.push_back(item.get<std::string>());
+    }
+    return out;
+  }
+  std::string string(const char* key) const {
+    const json& v = at(key);
+    if (!v.is_string()) throw InputError(std::string("key '") + key + "': expected a string, got " + v.dump());
+    return v.get<std::string>();
+  }
+};
+
+const std::vector<std::string> kQueryKeys = {"id", "basis", "interval", "grid", "moments", "points", "zf", "technique", "alpha"};
+
+json solve_line(const std::string& line, int number, const SolveOptions& o, lp::Backend& backend, FactoryCache& factories) {
+  const json q = json::parse(line);
+  if (!q.is_object()) throw InputError("expected a JSON object per line");
+  for (const auto& item : q.items())
+    if (std::find(kQueryKeys.begin(), kQueryKeys.end(), item.key()) == kQueryKeys.end()) {
+      const std::string guess = closest_match(item.key(), kQueryKeys);
+      throw InputError("unknown key '" + item.key() + "'" + (guess.empty() ? "" : " (did you mean '" + guess + "'?)"));
+    }
+  Query query{q};
+  json out;
+  out["id"] = q.value("id", json(number));
+  if (query.has("technique")) {
+    out.update(solve_closed_form(query.string("technique"), query.has("alpha") ? query.number("alpha") : -1.0,
+                                 query.numbers("moments"), query.number("zf")));
+    return out;
+  }
+  std::vector<double> interval = query.has("interval") ? query.numbers("interval") : std::vector<double>{0, 1};
+  if (interval.size() != 2) throw InputError("key 'interval': expected [lo, hi]");
+  lp::Discretization d{interval[0], interval[1], query.has("grid") ? query.integer("grid", 2, 1 << 24) : o.grid,
+                       o.quantize};
+  out.update(solve_one(backend, factories, query.strings("basis"), d, query.numbers("moments"), query.number("zf"),
+                       query.has("points") ? query.numbers("points") : std::vector<double>{}, o.check));
+  return out;
+}
+
 int run_solve(const SolveOptions& o) {
   auto backend = lp::make_backend(o.backend);
   if (o.interval.size() != 2) throw InputError("--interval: expected lo,hi");
@@ -118,6 +203,7 @@ int run_solve(const SolveOptions& o) {
     std::printf("%s\n", r.dump(2).c_str());
     return r["status"] == "optimal" ? 0 : 3;
   }
+  if (std::filesystem::is_directory(o.input)) throw InputError(o.input + ": is a directory; --input needs a JSON Lines file");
   std::ifstream in(o.input);
   if (!in) throw InputError(o.input + ": cannot open");
   std::ostringstream results;
@@ -129,19 +215,10 @@ int run_solve(const SolveOptions& o) {
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
     json out;
     try {
-      json q = json::parse(line);
-      out["id"] = q.value("id", json(number));
-      if (q.contains("technique")) {
-        out.update(solve_closed_form(q.at("technique").get<std::string>(), q.value("alpha", -1.0),
-                                     q.at("moments").get<std::vector<double>>(), q.at("zf").get<double>()));
-      } else {
-        std::vector<std::string> basis = q.at("basis").get<std::vector<std::string>>();
-        std::vector<double> interval = q.value("interval", std::vector<double>{0, 1});
-        if (interval.size() != 2) throw InputError("interval: expected [lo, hi]");
-        lp::Discretization d{interval[0], interval[1], q.value("grid", o.grid), o.quantize};
-        out.update(solve_one(*backend, factories, basis, d, q.at("moments").get<std::vector<double>>(),
-                             q.at("zf").get<double>(), q.value("points", std::vector<double>{}), o.check));
-      }
+      out = solve_line(line, number, o, *backend, factories);
+      // Every answer that is not a number (infeasible, unstable, a failed call) makes the batch's
+      // exit code 3, as for a single instance.
+      if (out.value("status", "") != "optimal") ++failures;
     } catch (const std::exception& e) {
       // A malformed line is reported with its number and does not stop the others.
       ++failures;
@@ -176,10 +253,13 @@ void register_solve_command(CLI::App& app, std::function<int()>& action) {
                  "A closed form instead of the LP (hamburger4, hausdorff4, tmsm, vsm, esm, ...); --basis is ignored");
   c->add_option("--alpha", o->alpha, "Moment bias for --technique (default: the technique's own)")
       ->check(CLI::Range(0.0, 0.999999));
-  c->add_option("--input", o->input, "JSON Lines file of instances");
+  CLI::Option* input = c->add_option("--input", o->input, "JSON Lines file of instances");
   c->add_option("--output", o->output, "JSON Lines results (written atomically; stdout if absent)");
   c->add_flag("--check", o->check, "Run the independent KKT checker on every optimal answer");
   c->add_flag("--quantize", o->quantize, "Round extra points to the grid (REFERENCE.md §2)");
+  // An instance comes from flags or from --input, never both (flags beside a batch were ignored).
+  for (const char* flag : {"--basis", "--interval", "--moments", "--points", "--zf", "--technique", "--alpha"})
+    input->excludes(c->get_option(flag));
   c->callback([o, &action] { action = [o] { return run_solve(*o); }; });
 }
 

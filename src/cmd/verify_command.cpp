@@ -105,6 +105,9 @@ int run_verify(const CommonOptions& options) {
   if (grids.empty()) throw InputError("verify.grids: expected at least one grid size");
   const double tolerance = config.number("verify.tolerance");
   const uint64_t seed = uint64_t(config.integer("verify.seed"));
+  // A pass over no instances would prove nothing.
+  if (config.integer("verify.random") == 0 && config.integer("verify.fragments") == 0)
+    throw InputError("verify.random, verify.fragments: both 0, nothing to verify; give at least one instance");
   StagedOutputDir out(options.out, options.force);
 
   std::vector<VerifyInstance> instances = random_verify_instances(int(config.integer("verify.random")), seed);

@@ -8,6 +8,7 @@
 #include "lp/solution.h"
 #include "util/error.h"
 #include "util/parallel_errors.h"
+#include "util/number_text.h"
 
 namespace mb {
 
@@ -25,7 +26,7 @@ double checked_total_weight(const BoundCurveRequest& r) {
     if (!(r.weights[t] >= 0) || !std::isfinite(r.weights[t]))
       throw InputError("bounds.weights: weight " + std::to_string(t + 1) + " is not a finite non-negative number");
     if (r.depths[t] < r.lp.lo || r.depths[t] > r.lp.hi)
-      throw InputError("bounds.depths: depth " + std::to_string(r.depths[t]) + " lies outside the LP interval [lo, hi]");
+      throw InputError("bounds.depths: depth " + round_trip(r.depths[t]) + " lies outside the LP interval [lo, hi]");
     total += r.weights[t];
   }
   if (!(total > 0)) throw InputError("bounds.weights: expected a positive total weight");

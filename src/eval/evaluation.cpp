@@ -5,6 +5,7 @@
 #include "lp/solution.h"
 #include "raster/render_view.h"
 #include "shadow/moment_map.h"
+#include "util/error.h"
 #include "util/parallel_errors.h"
 
 namespace mb {
@@ -18,7 +19,13 @@ ViewData prepare_view(const Scene& scene, const LightViewDesc& view, const EvalS
 std::vector<ViewData> prepare_views(const DatasetDesc& dataset, int resolution, const EvalSettings& settings,
                                     bool quiet) {
   std::vector<Scene> scenes;
-  for (const auto& file : dataset.scene_files) scenes.push_back(build_scene(parse_scene(file)));
+  for (const auto& file : dataset.scene_files) {
+    scenes.push_back(build_scene(parse_scene(file)));
+    for (size_t i = 0; i + 1 < scenes.size(); ++i)
+      if (scenes[i].name == scenes.back().name)
+        throw InputError(file + ": scene name '" + scenes.back().name + "' is already used in dataset " + dataset.name +
+                         " (outputs are named scene_view)");
+  }
   if (resolution == 0) resolution = dataset.resolution;
   std::vector<ViewData> views;
   size_t total = 0;
@@ -30,6 +37,13 @@ std::vector<ViewData> prepare_views(const DatasetDesc& dataset, int resolution, 
       views.push_back(prepare_view(scene, view, settings));
       bar.advance();
     }
+  // A mean over no receivers would print 0 % for every technique (REFERENCE.md §3: receivers are
+  // the light-facing fragments).
+  size_t receivers = 0;
+  for (const auto& v : views) receivers += v.fragments.size();
+  if (receivers == 0)
+    throw InputError(dataset.file + ": dataset " + dataset.name +
+                     " has no receiver fragments (no surface faces the light in any view); nothing to evaluate");
   return views;
 }
 

@@ -60,6 +60,10 @@ SweepPlan make_sweep_plan(const std::vector<std::string>& catalog, int size,
         throw InputError("candidates: '" + text + "' must name " + std::to_string(size) + " distinct functions");
       plan.ids.push_back(combination_rank(indices, int(plan.catalog.size())));
     }
+  } else if (sample > total) {
+    throw InputError("sample: " + std::to_string(sample) + " candidates asked for, but there are only " +
+                     std::to_string(total) + " combinations of " + std::to_string(size) + " from " +
+                     std::to_string(plan.catalog.size()) + " functions (sample: 0 evaluates them all)");
   } else if (sample > 0 && sample < total) {
     // Floyd's algorithm: `sample` distinct ranks, deterministic for a seed.
     SeededRandom random(seed);

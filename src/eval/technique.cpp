@@ -10,6 +10,7 @@
 #include "moments/hausdorff.h"
 #include "moments/tmsm.h"
 #include "util/error.h"
+#include "util/number_text.h"
 
 namespace mb {
 
@@ -42,7 +43,7 @@ class VsmTechnique : public Technique {
 class EsmTechnique : public Technique {
  public:
   explicit EsmTechnique(double c)
-      : Technique("esm", Basis::parse({"exp(" + std::to_string(c) + "*z)"}), double_storage()), c_(c) {}
+      : Technique("esm", Basis::parse({"exp(" + round_trip(c) + "*z)"}), double_storage()), c_(c) {}
   double shadow(const FragmentInput& in) override { return esm_bound(in.moments[0], in.zf, c_); }
 
  private:
@@ -145,7 +146,7 @@ class TmsmTechnique : public ClosedFormTechnique {
 };
 
 void check_alpha(const char* key, double alpha) {
-  if (!(alpha >= 0 && alpha < 1)) throw InputError(std::string(key) + ": expected alpha in [0, 1), got " + std::to_string(alpha));
+  if (!(alpha >= 0 && alpha < 1)) throw InputError(std::string(key) + ": expected alpha in [0, 1), got " + round_trip(alpha));
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "scene/procedural.h"
 #include "util/error.h"
 #include "util/parallel_errors.h"
+#include "util/number_text.h"
 
 namespace mb {
 
@@ -31,7 +32,7 @@ std::vector<VerifyTarget> verify_targets(const std::vector<std::string>& techniq
   // hence its wider interval). ESM's e^{cz} needs points far enough below 0 that e^{cz} ~ 0; the LP uses
   // e^{c(z-1)}, the same span scaled by e^{-c}, whose values stay <= 1 (the LP recomputes the
   // moments from the distribution, so the scale of the closed form's moment does not matter).
-  const std::string esm_basis = "exp(" + std::to_string(params.esm_c) + "*(z-1))";
+  const std::string esm_basis = "exp(" + round_trip(params.esm_c) + "*(z-1))";
   std::vector<VerifyTarget> all = {
       {"hamburger4", {"power4"}, -4, 5, true},   {"hausdorff4", {"power4"}, 0, 1, true},
       {"tmsm", {"trig4"}, 0, 1, true},           {"vsm", {"power2"}, -20, 21, true},

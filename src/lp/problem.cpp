@@ -6,6 +6,7 @@
 
 #include "lp/row_count.h"
 #include "util/error.h"
+#include "util/number_text.h"
 
 namespace mb::lp {
 
@@ -59,7 +60,7 @@ ProblemFactory::ProblemFactory(const Basis& basis, const Discretization& disc) :
     basis[j].evaluate(grid->points, values);
     for (int i = 0; i < n; ++i) {
       if (!std::isfinite(values[i]))
-        throw InputError("basis function '" + basis[j].name() + "' is not finite at z = " + std::to_string(grid->points[i]));
+        throw InputError("basis function '" + basis[j].name() + "' is not finite at z = " + round_trip(grid->points[i]));
       at(i, j + 1) = values[i];
     }
   }
@@ -100,7 +101,7 @@ void ProblemFactory::column(double z, double* out) const {
   for (size_t j = 0; j < basis_.size(); ++j) {
     raw[j + 1] = basis_[j](z);
     if (!std::isfinite(raw[j + 1]))
-      throw InputError("basis function '" + basis_[j].name() + "' is not finite at z = " + std::to_string(z));
+      throw InputError("basis function '" + basis_[j].name() + "' is not finite at z = " + round_trip(z));
   }
   transform(raw, out);
 }

@@ -1,12 +1,56 @@
 #include "raster/render_view.h"
 
+#include <sys/resource.h>
+
 #include <Eigen/Geometry>
+#include <cstdint>
+#include <fstream>
+#include <limits>
 
 #include "raster/rasterizer.h"
+#include "util/error.h"
 
 namespace mb {
 
+namespace {
+
+// A lower bound of the bytes a layer stack needs per texel: its offset (8), one fragment's depth,
+// facing and gradient (25), the rasterizer's fragment record and sort scratch (~24) and the
+// layer-0 shadow map the evaluation keeps (8). Real scenes hold 1-3 fragments a texel.
+constexpr double kBytesPerTexel = 64;
+
+double available_bytes() {
+  double available = std::numeric_limits<double>::infinity();
+  std::ifstream meminfo("/proc/meminfo");
+  for (std::string key; meminfo >> key;) {
+    double kib = 0;
+    meminfo >> kib;
+    if (key == "MemAvailable:") available = std::min(available, kib * 1024);
+    meminfo.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+  }
+  std::ifstream max_file("/sys/fs/cgroup/memory.max"), current_file("/sys/fs/cgroup/memory.current");
+  std::string max_text;
+  double current = 0;
+  if (max_file >> max_text && max_text != "max" && current_file >> current)
+    available = std::min(available, std::stod(max_text) - current);
+  rlimit limit{};
+  if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
+    available = std::min(available, double(limit.rlim_cur));
+  return available;
+}
+
+}  // namespace
+
+void check_render_memory(int resolution, const std::string& where) {
+  const double needed = double(resolution) * double(resolution) * kBytesPerTexel, available = available_bytes();
+  if (needed > available)
+    throw InputError(where + ": a " + std::to_string(resolution) + "x" + std::to_string(resolution) +
+                     " layer stack needs at least " + std::to_string(int64_t(needed / (1 << 20))) + " MiB, but only " +
+                     std::to_string(int64_t(available / (1 << 20))) + " MiB are available; lower the resolution");
+}
+
 LayerStack render_view(const Scene& scene, const LightViewDesc& view, int threads) {
+  check_render_memory(view.resolution, "view " + scene.name + "/" + view.name);
   LightFrame frame(view, scene.mesh.vertices);
   RasterInput input;
   input.width = input.height = view.resolution;

@@ -26,7 +26,7 @@ std::string resolve_dataset_path(const std::string& name_or_path) {
 DatasetDesc load_dataset(const std::string& name_or_path) {
   DatasetDesc desc;
   desc.file = resolve_dataset_path(name_or_path);
-  YamlMap root = YamlMap::load_file(desc.file);
+  YamlMap root = YamlMap::load_file(desc.file, "dataset file");
   desc.name = root.string("name").value_or(fs::path(desc.file).stem().string());
   desc.resolution = int(root.integer("resolution", 0, 0, 16384));
   fs::path base = fs::path(desc.file).parent_path();

@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "util/error.h"
+#include "util/number_text.h"
 
 namespace mb {
 
@@ -29,8 +30,8 @@ TriangleMesh load_mesh(const std::string& file) {
       const aiVector3D& p = part->mVertices[v];
       if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
         throw InputError(file + ": vertex " + std::to_string(v + 1) + " of mesh " + std::to_string(m) +
-                         " is not finite (" + std::to_string(p.x) + ", " + std::to_string(p.y) + ", " +
-                         std::to_string(p.z) + ")");
+                         " is not finite (" + round_trip(p.x) + ", " + round_trip(p.y) + ", " +
+                         round_trip(p.z) + ")");
       mesh.vertices.emplace_back(p.x, p.y, p.z);
     }
     for (unsigned f = 0; f < part->mNumFaces; ++f) {

@@ -176,7 +176,7 @@ std::vector<std::string> generator_names() {
 }
 
 SceneDesc parse_scene(const std::string& file) {
-  YamlMap root = YamlMap::load_file(file);
+  YamlMap root = YamlMap::load_file(file, "scene file");
   SceneDesc desc;
   desc.file = file;
   desc.name = root.string("name").value_or(std::filesystem::path(file).stem().string());
@@ -190,6 +190,9 @@ SceneDesc parse_scene(const std::string& file) {
     v.elevation_deg = view.number("elevation", 45, 1, 90);
     v.resolution = int(view.integer("resolution", 512, 1, 16384));
     v.margin = view.number("margin", 0.02, 0, 1);
+    // Outputs are named scene_view: two views of one name would overwrite each other's files.
+    for (const auto& other : desc.views)
+      if (other.name == v.name) view.fail("name", "view name '" + v.name + "' is used twice in this scene");
     view.finish();
     desc.views.push_back(v);
   }

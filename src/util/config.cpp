@@ -6,6 +6,7 @@
 
 #include "util/error.h"
 #include "util/number_text.h"
+#include "util/yaml_reader.h"
 
 namespace mb {
 
@@ -164,13 +165,7 @@ void Config::flatten(const YAML::Node& node, const std::string& prefix, const st
 }
 
 void Config::load_file(const std::string& file) {
-  if (!std::filesystem::exists(file)) throw InputError(file + ": config file not found");
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(file);
-  } catch (const YAML::Exception& e) {
-    throw InputError(located(file, e.mark.line + 1, e.mark.column + 1, "YAML syntax: " + e.msg));
-  }
+  YAML::Node root = load_yaml_file(file, "config file");
   if (root.IsNull()) return;  // an empty file changes nothing
   if (!root.IsMap()) throw InputError(file + ": expected a YAML map of options at the top level");
   flatten(root, "", file);

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 
 #include "util/error.h"
@@ -25,14 +26,43 @@ std::string range_text(double min, double max) {
 }
 }  // namespace
 
-YamlMap YamlMap::load_file(const std::string& file) {
-  if (!std::filesystem::exists(file)) throw InputError(file + ": file not found");
+namespace {
+void check_duplicate_keys(const YAML::Node& node, const std::string& file) {
+  if (node.IsMap()) {
+    std::set<std::string> seen;
+    for (const auto& item : node) {
+      if (item.first.IsScalar() && !seen.insert(item.first.Scalar()).second)
+        throw InputError(located(file, item.first.Mark().line + 1, item.first.Mark().column + 1,
+                                 "key '" + item.first.Scalar() + "' is given twice in one map"));
+      check_duplicate_keys(item.second, file);
+    }
+  } else if (node.IsSequence()) {
+    for (const auto& item : node) check_duplicate_keys(item, file);
+  }
+}
+}  // namespace
+
+YAML::Node load_yaml_file(const std::string& file, const std::string& what) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::exists(file, ec)) throw InputError(file + ": " + what + " not found");
+  if (fs::is_directory(file, ec)) throw InputError(file + ": is a directory, expected a " + what + " (YAML)");
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in.good() && !in.eof()) throw InputError(file + ": cannot read the " + what);
   YAML::Node root;
   try {
-    root = YAML::LoadFile(file);
+    root = YAML::Load(text.str());
   } catch (const YAML::Exception& e) {
     throw InputError(located(file, e.mark.line + 1, e.mark.column + 1, "YAML syntax: " + e.msg));
   }
+  check_duplicate_keys(root, file);
+  return root;
+}
+
+YamlMap YamlMap::load_file(const std::string& file, const std::string& what) {
+  YAML::Node root = load_yaml_file(file, what);
   if (!root.IsMap()) throw InputError(file + ": expected a YAML map at the top level");
   return YamlMap(root, file, "");
 }

@@ -12,10 +12,15 @@
 
 namespace mb {
 
+// The YAML document of `file` (`what` names it in errors: "config file", "scene file"), refusing
+// what yaml-cpp would accept silently or report vaguely: a missing file, a directory, an
+// unreadable file, and a key given twice in one map (yaml-cpp keeps one of them).
+YAML::Node load_yaml_file(const std::string& file, const std::string& what);
+
 class YamlMap {
  public:
   // Loads a YAML file whose top level must be a map.
-  static YamlMap load_file(const std::string& file);
+  static YamlMap load_file(const std::string& file, const std::string& what = "YAML file");
   YamlMap(YAML::Node node, std::string file, std::string path);
 
   const std::string& file() const { return file_; }

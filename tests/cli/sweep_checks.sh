@@ -58,6 +58,11 @@ shards)
   "$mb" merge "$work/shard1" "$work/shard2" "$work/shard3" -o "$work/merged"
   results "$work/merged"
   same "$work/reference" "$work/merged"
+  # A missing shard is named; --partial merges the rest and the report says so.
+  if "$mb" merge "$work/shard1" "$work/shard3" -o "$work/partial" 2>"$work/err"; then exit 1; fi
+  grep -q "shards 2/3 of this sweep are missing" "$work/err" && [ ! -e "$work/partial" ]
+  "$mb" merge --partial "$work/shard1" "$work/shard3" -o "$work/partial" >/dev/null
+  "$mb" report -q --no-plot "$work/partial" -o "$work/partial.report" | grep -q "merged without shards 2/3"
   # Overlapping shards (a full run contains shard 1's candidates) are refused, with no output.
   if "$mb" merge "$work/shard1" "$work/reference" -o "$work/overlap" 2>"$work/err"; then exit 1; fi
   grep -q "overlapping shards" "$work/err"
