@@ -15,6 +15,7 @@
 #include "eval/evaluation.h"
 #include "eval/shadow_images.h"
 #include "eval/technique.h"
+#include "util/error.h"
 #include "util/number_text.h"
 #include "util/output_dir.h"
 #include "util/run_metadata.h"
@@ -72,6 +73,7 @@ int run_eval(const EvalOptions& options) {
   const int threads = resolve_thread_count(int(config.integer("threads")));
   EvalSettings settings = shadow_settings_from(config, threads);
   auto techniques = config.strings("techniques");
+  if (techniques.empty()) throw InputError("techniques: expected at least one technique");
   // REFERENCE.md §3: under the receiver-plane reference every table shows the oracle floor.
   if (settings.bias.reference == Reference::ReceiverPlane &&
       std::find(techniques.begin(), techniques.end(), "oracle") == techniques.end())

@@ -14,6 +14,7 @@ namespace mb {
 
 TriangleMesh load_mesh(const std::string& file) {
   if (!std::filesystem::exists(file)) throw InputError(file + ": mesh file not found");
+  if (std::filesystem::is_directory(file)) throw InputError(file + ": is a directory, expected a mesh file");
   Assimp::Importer importer;
   // Points and lines are dropped: only surfaces cast and receive shadows. PreTransformVertices
   // flattens the node hierarchy into world coordinates.

@@ -132,7 +132,11 @@ std::vector<TriangleMesh> build_part(const PartDesc& part) {
   pieces.reserve(2);  // `mesh` must stay valid when the leaves are added
   TriangleMesh& mesh = pieces[0];
   if (part.kind == "mesh") {
-    mesh = load_mesh(part.mesh_file);
+    try {
+      mesh = load_mesh(part.mesh_file);
+    } catch (const InputError& e) {
+      throw InputError(part.where + ": " + e.what());  // which scene's part asked for it
+    }
   } else if (part.kind == "ground_plane") {
     mesh = make_ground_plane(p("size"), n("cells"));
   } else if (part.kind == "box") {

@@ -78,7 +78,10 @@ void Config::assign(const std::string& name, const YAML::Node& node, const std::
       for (std::string item; std::getline(in, item, ',');) items.push_back(item);
     } else if (node.IsSequence()) {
       for (const auto& item : node) {
-        if (!item.IsScalar()) bad(type_name(s.type));
+        if (!item.IsScalar())
+          throw InputError(origin + ": key '" + name + "': expected " + type_name(s.type) + ", but item " +
+                           std::to_string(items.size() + 1) + " is a YAML " + (item.IsMap() ? "map" : "list") +
+                           " (quote items that hold ': ' or brackets, e.g. \"lp:z;z^2\")");
         items.push_back(item.Scalar());
       }
     } else if (!(node.IsNull() || (node.IsScalar() && node.Scalar().empty()))) {
