@@ -168,7 +168,16 @@ struct Query {
 const std::vector<std::string> kQueryKeys = {"id", "basis", "interval", "grid", "moments", "points", "zf", "technique", "alpha"};
 
 json solve_line(const std::string& line, int number, const SolveOptions& o, lp::Backend& backend, FactoryCache& factories) {
-  const json q = json::parse(line);
+  json q;
+  try {
+    q = json::parse(line);
+  } catch (const json::exception& e) {
+    // nlohmann's "[json.exception.parse_error.101] parse error at line 1, column 5: ..." without
+    // its internal tag: the batch line is named by the caller.
+    std::string what = e.what();
+    const size_t tag = what.find("] ");
+    throw InputError("JSON syntax: " + (tag == std::string::npos ? what : what.substr(tag + 2)));
+  }
   if (!q.is_object()) throw InputError("expected a JSON object per line");
   for (const auto& item : q.items())
     if (std::find(kQueryKeys.begin(), kQueryKeys.end(), item.key()) == kQueryKeys.end()) {
