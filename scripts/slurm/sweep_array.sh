@@ -18,7 +18,8 @@ repo=${MOMENTBENCH_REPO:-$(cd "$(dirname "$0")/../.." && pwd)}
 mb=${MOMENTBENCH:-$repo/build/release/momentbench}
 threads=${SLURM_CPUS_PER_TASK:-0}
 out=$outroot/shard$k
-resume=()
-[ -e "$out/results.sqlite" ] && resume=(--resume)
+# --resume continues the shard's database, or starts the shard when it has none yet (a task
+# killed before its database existed included).
+resume=(--resume)
 mkdir -p "$outroot"
 exec "$mb" sweep --config "$config" --set threads="$threads" --shard "$k/$n" "${resume[@]}" -o "$out"
