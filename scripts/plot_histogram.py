@@ -16,22 +16,8 @@ import matplotlib.ticker  # noqa: E402
 SHOWN_REFERENCES = ("vsm", "esm", "hamburger4", "hamburger6", "lp:power4", "lp:trig4", "oracle")
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__)
-    parser.add_argument("--histogram", required=True)
-    parser.add_argument("--series", required=True)
-    parser.add_argument("--references", required=True)
-    parser.add_argument("--out", required=True, help="output path without extension")
-    args = parser.parse_args()
-
-    with open(args.histogram) as f:
-        rows = list(csv.DictReader(f))
-    with open(args.series) as f:
-        series = list(csv.DictReader(f))
-    with open(args.references) as f:
-        references = [(r["technique"], 100 * float(r["mean_error"])) for r in csv.DictReader(f)]
-
-    fig, ax = plt.subplots(figsize=(7.5, 4.0))
+def draw(ax, rows, series, references):
+    """Every series over its whole range, binned as report wrote histogram.csv."""
     colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
     several = len(series) > 1
     top = 1
@@ -65,7 +51,72 @@ def main():
     ax.set_ylabel("candidates")
     ax.set_title("Sweep candidates by mean error" + (" and functions per candidate" if several else ""))
     ax.set_ylim(0, top * 1.35)
-    ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.16), ncol=2, frameon=False)
+    ax.legend(fontsize=7, loc="upper right", ncol=1, frameon=False)
+
+
+def draw_zoom(ax, series, references, candidates, lo, hi, bins=60):
+    """The same series between the best candidate and the 95th percentile of the largest series."""
+    colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    width = (hi - lo) / bins
+    edges = [lo + width * b for b in range(bins + 1)]
+    top = 1
+    for i, s in enumerate(series):
+        counts = [0] * bins
+        for name, error in candidates:
+            if name == s["series"] and lo <= error <= hi:
+                counts[min(bins - 1, int((error - lo) / width))] += 1
+        top = max([top] + counts)
+        colour = colours[i % len(colours)] if len(series) > 1 else "#2f4f6f"
+        ax.stairs(counts, edges, color=colour, linewidth=1.2, fill=False, label=s["series"])
+        ax.stairs(counts, edges, color=colour, alpha=0.15, fill=True)
+        for value, style in ((float(s["best"]), "-"), (float(s["median"]), ":")):
+            if lo <= 100 * value <= hi:
+                ax.axvline(100 * value, color=colour, linestyle=style, linewidth=1.2)
+    shown = sorted((r for r in references if r[0] in SHOWN_REFERENCES and lo <= r[1] <= hi), key=lambda r: r[1])
+    for i, (name, error) in enumerate(shown):
+        ax.axvline(error, color="#555555", linestyle="--", linewidth=0.8)
+        ax.text(error, top * 1.02, name, color="#333333", fontsize=6.5, va="bottom", rotation=90,
+                ha="right" if i % 2 else "left")
+    ax.set_ylim(0, top * 1.35)
+    ax.set_xlim(lo, hi)
+    ax.yaxis.set_major_locator(matplotlib.ticker.MaxNLocator(integer=True))
+    ax.set_xlabel("mean |PCF - G| (%), zoomed on the bulk of the candidates with the most functions")
+    ax.set_ylabel("candidates")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__)
+    parser.add_argument("--histogram", required=True)
+    parser.add_argument("--series", required=True)
+    parser.add_argument("--references", required=True)
+    parser.add_argument("--candidates", help="candidates.csv: adds a panel zoomed on the largest candidates' bulk")
+    parser.add_argument("--out", required=True, help="output path without extension")
+    args = parser.parse_args()
+
+    with open(args.histogram) as f:
+        rows = list(csv.DictReader(f))
+    with open(args.series) as f:
+        series = list(csv.DictReader(f))
+    with open(args.references) as f:
+        references = [(r["technique"], 100 * float(r["mean_error"])) for r in csv.DictReader(f)]
+
+    zoom = None
+    if args.candidates:
+        with open(args.candidates) as f:
+            candidates = [(r["series"], 100 * float(r["mean_error"])) for r in csv.DictReader(f)]
+        # The zoom: from the best candidate of any series to the 95th percentile of the series with
+        # the most functions (its bulk, where the seed paper's Figure 4 looks).
+        main = max(series, key=lambda s: int(s["size"]))["series"]
+        errors = sorted(e for name, e in candidates if name == main)
+        if errors:
+            lo = min(100 * float(s["best"]) for s in series)
+            hi = errors[min(len(errors) - 1, int(0.95 * len(errors)))]
+            if hi > lo:
+                zoom = (candidates, lo, hi)
+    fig, axes = plt.subplots(2 if zoom else 1, 1, figsize=(7.5, 7.2 if zoom else 4.0), squeeze=False)
+    draw(axes[0][0], rows, series, references)
+    if zoom:
+        draw_zoom(axes[1][0], series, references, *zoom)
     save_png_and_pdf(fig, args.out, "plot_histogram.py")
 
 

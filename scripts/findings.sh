@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Reproduces results/FINDINGS.md: the sweeps of configs/sweeps/findings-{2,3,4}.yaml on the default
+# dataset (every two-function candidate, 300 of three and 600 of four; about 45 minutes on two
+# cores, each resumable), their joint report, and eval of every classic technique under both
+# references. Writes into OUTROOT (default out/findings).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=${1:-out/findings}
+mkdir -p "$root"
+cmake --preset release >/dev/null
+cmake --build --preset release -j "$(nproc)" --target momentbench
+mb=./build/release/momentbench
+for k in 2 3 4; do
+  $mb sweep -q --config "configs/sweeps/findings-$k.yaml" --resume --out "$root/sweep-$k"
+done
+$mb report -q "$root/sweep-2" "$root/sweep-3" "$root/sweep-4" --out "$root/report" --force >/dev/null
+techniques='[pcf, vsm, esm, hamburger4, hamburger4_float, hamburger4_16bit, hausdorff4, hamburger6, tmsm, tmsm_float, lp:power4, lp:trig4]'
+for reference in biased receiver_plane; do
+  $mb eval -q --set dataset=default --set reference=$reference --set "techniques=$techniques" --set images=false \
+    --out "$root/eval-$reference" --force >/dev/null
+done
+echo "findings: $root/report/report.md, $root/eval-biased/report.md, $root/eval-receiver_plane/report.md"
