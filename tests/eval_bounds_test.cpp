@@ -35,8 +35,10 @@ TEST(BoundCurves, NestedBasesGiveOrderedBoundsBelowTheCdf) {
   int gaps = 0;
   for (size_t b = 0; b < 3; ++b)
     for (size_t i = 0; i < c.zf.size(); ++i) {
-      const double g2 = c.series[3 * b].lower[i], g3 = c.series[3 * b + 1].lower[i], g4 = c.series[3 * b + 2].lower[i];
-      ASSERT_FALSE(std::isnan(g2) || std::isnan(g3) || std::isnan(g4)) << c.series[3 * b].basis << " at " << c.zf[i];
+      const double g2 = c.series[3 * b].lower[i], g3 = c.series[3 * b + 1].lower[i],
+                   g4 = c.series[3 * b + 2].lower[i];
+      ASSERT_FALSE(std::isnan(g2) || std::isnan(g3) || std::isnan(g4))
+          << c.series[3 * b].basis << " at " << c.zf[i];
       EXPECT_GE(g2, 0);
       EXPECT_LE(g2, g3 + 1e-9) << c.series[3 * b].basis << " z_f " << c.zf[i];
       EXPECT_LE(g3, g4 + 1e-9) << c.series[3 * b].basis << " z_f " << c.zf[i];
@@ -59,12 +61,14 @@ TEST(BoundCurves, FewDepthsAreReproducedExactly) {
   r.sizes = {4};
   r.samples = 61;
   const BoundCurves two = compute_bound_curves(r);
-  for (size_t i = 0; i < two.zf.size(); ++i) EXPECT_NEAR(two.series[0].lower[i], two.cdf[i], 1e-7) << two.zf[i];
+  for (size_t i = 0; i < two.zf.size(); ++i)
+    EXPECT_NEAR(two.series[0].lower[i], two.cdf[i], 1e-7) << two.zf[i];
   r.depths = {0.45};
   r.weights = {1};
   r.sizes = {2};
   const BoundCurves one = compute_bound_curves(r);
-  for (size_t i = 0; i < one.zf.size(); ++i) EXPECT_NEAR(one.series[0].lower[i], one.cdf[i], 1e-7) << one.zf[i];
+  for (size_t i = 0; i < one.zf.size(); ++i)
+    EXPECT_NEAR(one.series[0].lower[i], one.cdf[i], 1e-7) << one.zf[i];
 }
 
 // The trigonometric m = 4 series against the closed form of Problem 1 for that basis (TMSM on the
@@ -97,27 +101,33 @@ TEST(BoundCurves, SameCurvesForAnyThreadCount) {
   const BoundCurves one = compute_bound_curves(r);
   r.threads = 2;
   const BoundCurves two = compute_bound_curves(r);
-  for (size_t s = 0; s < one.series.size(); ++s) EXPECT_EQ(one.series[s].lower, two.series[s].lower);
+  for (size_t s = 0; s < one.series.size(); ++s)
+    EXPECT_EQ(one.series[s].lower, two.series[s].lower);
 }
 
 TEST(BoundCurves, BadRequestsNameWhatIsWrong) {
   BoundCurveRequest r = six_atoms();
   r.bases = {"power4"};
   r.sizes = {5};
-  EXPECT_NE(input_error_of([&] { compute_bound_curves(r); }).find("m = 5 needs 5 functions, but basis 'power4' has 4"),
+  EXPECT_NE(input_error_of([&] {
+              compute_bound_curves(r);
+            }).find("m = 5 needs 5 functions, but basis 'power4' has 4"),
             std::string::npos);
   r = six_atoms();
   r.bases = {"power4"};
   r.weights.pop_back();
-  EXPECT_NE(input_error_of([&] { compute_bound_curves(r); }).find("one weight per depth"), std::string::npos);
+  EXPECT_NE(input_error_of([&] { compute_bound_curves(r); }).find("one weight per depth"),
+            std::string::npos);
   r = six_atoms();
   r.bases = {"power4"};
   r.depths[2] = 1.5;
-  EXPECT_NE(input_error_of([&] { compute_bound_curves(r); }).find("outside the LP interval"), std::string::npos);
+  EXPECT_NE(input_error_of([&] { compute_bound_curves(r); }).find("outside the LP interval"),
+            std::string::npos);
   r = six_atoms();
   r.bases = {"z; 2*z"};
   r.sizes = {2};
-  EXPECT_NE(input_error_of([&] { compute_bound_curves(r); }).find("linearly dependent"), std::string::npos);
+  EXPECT_NE(input_error_of([&] { compute_bound_curves(r); }).find("linearly dependent"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -24,7 +24,8 @@ void expect_round_trip(int n, int k) {
     for (int i = 0; i < k; ++i) ASSERT_TRUE(c[i] >= 0 && c[i] < n && (i == 0 || c[i - 1] < c[i]));
     ASSERT_EQ(combination_rank(c, n), rank);
     if (rank > 0) {
-      ASSERT_TRUE(std::lexicographical_compare(previous.begin(), previous.end(), c.begin(), c.end()));
+      ASSERT_TRUE(
+          std::lexicographical_compare(previous.begin(), previous.end(), c.begin(), c.end()));
     }
     previous = c;
   }
@@ -51,7 +52,9 @@ TEST(Candidates, PlanSamplesShardsAndRejectsBadCatalogs) {
   SweepPlan power = make_sweep_plan({}, 4, {"z^4; z; z^3; z^2"}, 0, 0);
   ASSERT_EQ(power.ids.size(), 1u);
   EXPECT_EQ(power.name(power.ids[0]), "z; z^2; z^3; z^4");
-  std::string m = testing_support::input_error_of([] { make_sweep_plan({"z", "z^2", "z^3"}, 4, {}, 0, 0); });
+  std::string m = testing_support::input_error_of([] {
+    make_sweep_plan({"z", "z^2", "z^3"}, 4, {}, 0, 0);
+  });
   EXPECT_NE(m.find("4 functions cannot be drawn from a catalog of 3"), std::string::npos) << m;
   m = testing_support::input_error_of([] { make_sweep_plan({}, 4, {"z; z^2; z^3; z^9"}, 0, 0); });
   EXPECT_NE(m.find("not in the catalog"), std::string::npos) << m;
@@ -98,7 +101,7 @@ TEST(Sweep, DefaultDatasetLeavesAtMostTwoLpsUnstable) {
   for (const char* basis : {"power4", "trig4"}) {
     const CandidateResult r = evaluator.evaluate(Basis::parse({basis}));
     EXPECT_GT(r.solved, 1200000u) << basis;  // 1.24 M LPs with delta_f (REFERENCE.md §3)
-    EXPECT_EQ(r.infeasible, 0u) << basis;  // the kernel distribution is always feasible
+    EXPECT_EQ(r.infeasible, 0u) << basis;    // the kernel distribution is always feasible
     EXPECT_LE(r.unstable, 2u) << basis;
   }
 }

@@ -15,8 +15,12 @@ namespace {
 class WrongTechnique : public Technique {
  public:
   WrongTechnique(std::unique_ptr<Technique> inner, double shift)
-      : Technique("wrong", inner->basis(), inner->storage()), inner_(std::move(inner)), shift_(shift) {}
-  double shadow(const FragmentInput& in) override { return std::clamp(inner_->shadow(in) + shift_, 0.0, 1.0); }
+      : Technique("wrong", inner->basis(), inner->storage()),
+        inner_(std::move(inner)),
+        shift_(shift) {}
+  double shadow(const FragmentInput& in) override {
+    return std::clamp(inner_->shadow(in) + shift_, 0.0, 1.0);
+  }
 
  private:
   std::unique_ptr<Technique> inner_;
@@ -25,7 +29,8 @@ class WrongTechnique : public Technique {
 
 class Verify : public ::testing::Test {
  protected:
-  Verify() : params_(verify_params(TechniqueParams{})), instances_(random_verify_instances(400, 77)) {
+  Verify()
+      : params_(verify_params(TechniqueParams{})), instances_(random_verify_instances(400, 77)) {
     params_.esm_c = 10;
   }
   VerifySolverResult run(const std::string& target_name, const TechniqueMaker& make) {
@@ -39,7 +44,8 @@ class Verify : public ::testing::Test {
 TEST_F(Verify, ExactClosedFormsMatchTheLpAndConvergeAsTheGridRefines) {
   for (const char* name : {"hausdorff4", "tmsm", "hamburger4", "esm"}) {
     VerifySolverResult r = run(name, [&] { return make_technique(name, params_); });
-    EXPECT_TRUE(r.passed()) << name << ": " << r.beyond_tolerance << " beyond, " << r.above_lp << " above";
+    EXPECT_TRUE(r.passed()) << name << ": " << r.beyond_tolerance << " beyond, " << r.above_lp
+                            << " above";
     // Undefined only where the Hankel matrix is exactly singular: a one-atom instance without bias
     // gives b2 - b1^2 = 0 in plain double arithmetic (release builds' FMA leaves its rounding
     // error instead, and the answer is defined).
@@ -73,11 +79,15 @@ TEST_F(Verify, AWrongSolverIsCaughtTooLowAndTooHigh) {
   EXPECT_FALSE(low.passed());
   EXPECT_GT(low.beyond_tolerance, 0u);
   // TMSM shifted up by 0.01: above the LP on every instance with G < 0.99.
-  VerifySolverResult high = run("tmsm", [&] { return std::make_unique<WrongTechnique>(make_technique("tmsm", params_), 0.01); });
+  VerifySolverResult high = run("tmsm", [&] {
+    return std::make_unique<WrongTechnique>(make_technique("tmsm", params_), 0.01);
+  });
   EXPECT_FALSE(high.passed());
   EXPECT_GT(high.above_lp, 100u);
   // A shift well inside the tolerance is still caught by the above-LP rule.
-  VerifySolverResult subtle = run("tmsm", [&] { return std::make_unique<WrongTechnique>(make_technique("tmsm", params_), 1e-4); });
+  VerifySolverResult subtle = run("tmsm", [&] {
+    return std::make_unique<WrongTechnique>(make_technique("tmsm", params_), 1e-4);
+  });
   EXPECT_FALSE(subtle.passed());
   EXPECT_EQ(subtle.beyond_tolerance, 0u);
   EXPECT_GT(subtle.above_lp, 100u);
@@ -94,7 +104,8 @@ TEST_F(Verify, ResultsDoNotDependOnTheThreadCount) {
     EXPECT_EQ(one.grids[k].mean_difference, two.grids[k].mean_difference);
   }
   ASSERT_EQ(one.worst.size(), two.worst.size());
-  for (size_t k = 0; k < one.worst.size(); ++k) EXPECT_EQ(one.worst[k].instance, two.worst[k].instance);
+  for (size_t k = 0; k < one.worst.size(); ++k)
+    EXPECT_EQ(one.worst[k].instance, two.worst[k].instance);
 }
 
 TEST_F(Verify, TechniquesWithoutAnLpCounterpartAreRejected) {

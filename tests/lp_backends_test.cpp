@@ -22,7 +22,9 @@ double cdf(const std::vector<double>& depths, const std::vector<double>& weights
   return f;
 }
 
-Solution solve_with(const std::string& backend, const Problem& p) { return make_backend(backend)->solve(p); }
+Solution solve_with(const std::string& backend, const Problem& p) {
+  return make_backend(backend)->solve(p);
+}
 
 class BothBackends : public ::testing::TestWithParam<std::string> {};
 
@@ -31,7 +33,8 @@ TEST_P(BothBackends, OnePointDistributionIsDeterminate) {
   Basis basis = Basis::parse({"z", "z^2"});
   Discretization disc{0, 1, 11, false};
   for (auto [zf, expected] : {std::pair{0.5, 1.0}, {0.3, 0.0}, {0.2, 0.0}, {0.31, 1.0}}) {
-    Problem p = make_problem_from_distribution(basis, disc, std::vector<double>{0.3}, std::vector<double>{1.0}, zf);
+    Problem p = make_problem_from_distribution(basis, disc, std::vector<double>{0.3},
+                                               std::vector<double>{1.0}, zf);
     Solution s = solve_with(GetParam(), p);
     ASSERT_EQ(s.status, ProblemStatus::Optimal);
     EXPECT_NEAR(s.G, expected, 1e-9) << "zf " << zf;
@@ -57,20 +60,24 @@ TEST_P(BothBackends, FragmentBehindOrInFrontOfAllMass) {
   Basis basis = Basis::parse({"power4"});
   std::vector<double> depths = {0.3, 0.5, 0.6}, weights = {0.2, 0.3, 0.5};
   Discretization disc{0, 1, 64, false};
-  Solution front = solve_with(GetParam(), make_problem_from_distribution(basis, disc, depths, weights, 0.0));
+  Solution front =
+      solve_with(GetParam(), make_problem_from_distribution(basis, disc, depths, weights, 0.0));
   EXPECT_NEAR(front.G, 0.0, 1e-12);
   // z_f beyond the interval: every admissible point is in front of it.
-  Solution behind = solve_with(GetParam(), make_problem_from_distribution(basis, disc, depths, weights, 1.5));
+  Solution behind =
+      solve_with(GetParam(), make_problem_from_distribution(basis, disc, depths, weights, 1.5));
   EXPECT_NEAR(behind.G, 1.0, 1e-9);
 }
 
 TEST_P(BothBackends, MomentsOutsideTheMomentSpaceAreInfeasible) {
   // E[z^2] < E[z]^2: a negative variance.
   Basis basis = Basis::parse({"z", "z^2"});
-  Problem p = make_problem(basis, Discretization{0, 1, 128, false}, std::vector<double>{0.5, 0.2}, 0.6);
+  Problem p =
+      make_problem(basis, Discretization{0, 1, 128, false}, std::vector<double>{0.5, 0.2}, 0.6);
   EXPECT_EQ(solve_with(GetParam(), p).status, ProblemStatus::Infeasible);
   // E[z] outside [0, 1].
-  Problem q = make_problem(basis, Discretization{0, 1, 128, false}, std::vector<double>{1.2, 1.5}, 0.6);
+  Problem q =
+      make_problem(basis, Discretization{0, 1, 128, false}, std::vector<double>{1.2, 1.5}, 0.6);
   EXPECT_EQ(solve_with(GetParam(), q).status, ProblemStatus::Infeasible);
 }
 
@@ -85,40 +92,40 @@ TEST(LpFastBackend, NarrowKernelThatExtrasFirstPricingLeftUnstableIsSolved) {
   // (depth, weight) of each tap, in the kernel's order.
   const std::pair<double, double> taps[] = {
       {0.36358201594611927, 0.0019399121838833851}, {0.36347269023427264, 0.0035618554214704502},
-      {0.3633838500579073, 0.0054975875716454107}, {0.36341660355658828, 0.0071329581725575759},
+      {0.3633838500579073, 0.0054975875716454107},  {0.36341660355658828, 0.0071329581725575759},
       {0.36353097285418445, 0.0077798074995837612}, {0.36354346371444735, 0.0071329581725575759},
       {0.36351887823217616, 0.0054975875716454107}, {0.36369605286905643, 0.0035618554214704502},
-      {0.3639219734689581, 0.0019399121838833851}, {0.36433086201862619, 0.0035618554214704502},
-      {0.3641875147930011, 0.0065398909027219593}, {0.36409310408815282, 0.010094071401662423},
-      {0.36407091773966876, 0.013096760744698449}, {0.36405120854477208, 0.014284435012370986},
-      {0.36405722458425482, 0.013096760744698449}, {0.36413920971602287, 0.010094071401662423},
+      {0.3639219734689581, 0.0019399121838833851},  {0.36433086201862619, 0.0035618554214704502},
+      {0.3641875147930011, 0.0065398909027219593},  {0.36409310408815282, 0.010094071401662423},
+      {0.36407091773966876, 0.013096760744698449},  {0.36405120854477208, 0.014284435012370986},
+      {0.36405722458425482, 0.013096760744698449},  {0.36413920971602287, 0.010094071401662423},
       {0.36435442049043654, 0.0065398909027219593}, {0.36467426157926713, 0.0035618554214704502},
       {0.36468755702592187, 0.0054975875716454107}, {0.36454466231986254, 0.010094071401662423},
-      {0.36444362794580959, 0.015579813024014143}, {0.36428529072370158, 0.020214349146474759},
-      {0.36426669805213879, 0.022047478939941804}, {0.36429724050941453, 0.020214349146474759},
-      {0.36443233546570097, 0.015579813024014143}, {0.36472694253574101, 0.010094071401662423},
+      {0.36444362794580959, 0.015579813024014143},  {0.36428529072370158, 0.020214349146474759},
+      {0.36426669805213879, 0.022047478939941804},  {0.36429724050941453, 0.020214349146474759},
+      {0.36443233546570097, 0.015579813024014143},  {0.36472694253574101, 0.010094071401662423},
       {0.36503284166493627, 0.0054975875716454107}, {0.36478702005528107, 0.0071329581725575759},
-      {0.36470284645236251, 0.013096760744698449}, {0.36456022855491033, 0.020214349146474759},
-      {0.36444110662101054, 0.026227523448821451}, {0.36438120708385158, 0.028605955437628509},
-      {0.3644183330347176, 0.026227523448821451}, {0.36460611898936196, 0.020214349146474759},
-      {0.36493289520344108, 0.013096760744698449}, {0.36525493786847402, 0.0071329581725575759},
+      {0.36470284645236251, 0.013096760744698449},  {0.36456022855491033, 0.020214349146474759},
+      {0.36444110662101054, 0.026227523448821451},  {0.36438120708385158, 0.028605955437628509},
+      {0.3644183330347176, 0.026227523448821451},   {0.36460611898936196, 0.020214349146474759},
+      {0.36493289520344108, 0.013096760744698449},  {0.36525493786847402, 0.0071329581725575759},
       {0.36477361869146191, 0.0077798074995837612}, {0.36469880759401385, 0.014284435012370986},
-      {0.36459108484146835, 0.022047478939941804}, {0.36450763201681963, 0.028605955437628509},
-      {0.36445804232604445, 0.031200074536063709}, {0.36452634004446643, 0.028605955437628509},
-      {0.36480950009766921, 0.022047478939941804}, {0.36518905645415661, 0.014284435012370986},
+      {0.36459108484146835, 0.022047478939941804},  {0.36450763201681963, 0.028605955437628509},
+      {0.36445804232604445, 0.031200074536063709},  {0.36452634004446643, 0.028605955437628509},
+      {0.36480950009766921, 0.022047478939941804},  {0.36518905645415661, 0.014284435012370986},
       {0.36546483226142118, 0.0077798074995837612}, {0.3645246161711731, 0.0071329581725575759},
-      {0.364486265429523, 0.013096760744698449}, {0.36443007493478757, 0.020214349146474759},
-      {0.3644397591961796, 0.026227523448821451}, {0.36450312108200694, 0.028605955437628509},
-      {0.3646346111859442, 0.026227523448821451}, {0.36489845341075167, 0.020214349146474759},
-      {0.36516812587016817, 0.013096760744698449}, {0.36553785623459634, 0.0071329581725575759},
+      {0.364486265429523, 0.013096760744698449},    {0.36443007493478757, 0.020214349146474759},
+      {0.3644397591961796, 0.026227523448821451},   {0.36450312108200694, 0.028605955437628509},
+      {0.3646346111859442, 0.026227523448821451},   {0.36489845341075167, 0.020214349146474759},
+      {0.36516812587016817, 0.013096760744698449},  {0.36553785623459634, 0.0071329581725575759},
       {0.36407960832390429, 0.0054975875716454107}, {0.36408480478334843, 0.010094071401662423},
-      {0.36407313253065204, 0.015579813024014143}, {0.36414376113952757, 0.020214349146474759},
-      {0.3642522554089766, 0.022047478939941804}, {0.36434982087856621, 0.020214349146474759},
-      {0.36448472335427545, 0.015579813024014143}, {0.36478072570989611, 0.010094071401662423},
+      {0.36407313253065204, 0.015579813024014143},  {0.36414376113952757, 0.020214349146474759},
+      {0.3642522554089766, 0.022047478939941804},   {0.36434982087856621, 0.020214349146474759},
+      {0.36448472335427545, 0.015579813024014143},  {0.36478072570989611, 0.010094071401662423},
       {0.36519120665054849, 0.0054975875716454107}, {0.36326477877900715, 0.0035618554214704502},
-      {0.3634118132341263, 0.0065398909027219593}, {0.36345609475922913, 0.010094071401662423},
-      {0.36353921370449521, 0.013096760744698449}, {0.36362454925491383, 0.014284435012370986},
-      {0.36371195647857568, 0.013096760744698449}, {0.36390038178346207, 0.010094071401662423},
+      {0.3634118132341263, 0.0065398909027219593},  {0.36345609475922913, 0.010094071401662423},
+      {0.36353921370449521, 0.013096760744698449},  {0.36362454925491383, 0.014284435012370986},
+      {0.36371195647857568, 0.013096760744698449},  {0.36390038178346207, 0.010094071401662423},
       {0.36419553483890915, 0.0065398909027219593}, {0.36472894615055079, 0.0035618554214704502},
       {0.36213769834234466, 0.0019399121838833851}, {0.36235018879172332, 0.0035618554214704502},
       {0.36255216103188853, 0.0054975875716454107}, {0.36261872524792255, 0.0071329581725575759},
@@ -131,8 +138,8 @@ TEST(LpFastBackend, NarrowKernelThatExtrasFirstPricingLeftUnstableIsSolved) {
     weights.push_back(weight);
   }
   const double zf = 0.36345804232604445;
-  Problem p = make_problem_from_distribution(Basis::parse({"power4"}), Discretization{0, 1, 256, false},
-                                             depths, weights, zf);
+  Problem p = make_problem_from_distribution(Basis::parse({"power4"}),
+                                             Discretization{0, 1, 256, false}, depths, weights, zf);
   const Solution s = solve_with("fast", p);
   ASSERT_EQ(s.status, ProblemStatus::Optimal);
   const KktReport kkt = check_kkt(p, s);
@@ -154,7 +161,8 @@ bool difference_is_explained(const Problem& p, const Solution& ours, const Solut
   long double moved = 0;
   std::vector<long double> residual(p.rhs.begin(), p.rhs.end());
   for (size_t t = 0; t < glpk.support.size(); ++t)
-    for (int r = 0; r < p.rows; ++r) residual[r] -= (long double)p.at(r, glpk.support[t]) * glpk.weights[t];
+    for (int r = 0; r < p.rows; ++r)
+      residual[r] -= (long double)p.at(r, glpk.support[t]) * glpk.weights[t];
   for (int r = 0; r < p.rows; ++r) moved += std::abs(ours.duals[r] * residual[r]);
   return ours.G - glpk.G <= double(moved) + 1e-9;
 }
@@ -178,7 +186,8 @@ TEST(LpBackends, AgreeOnOneHundredThousandRandomInstancesAcrossTheCatalog) {
     Problem p = make_problem_from_distribution(basis, disc, inst.depths, inst.weights, inst.zf);
     Solution a = fast->solve(p), b = glpk->solve(p);
     boundary += inst.boundary;
-    ASSERT_NE(a.status, ProblemStatus::Infeasible) << "instance " << n << ": the kernel distribution is feasible";
+    ASSERT_NE(a.status, ProblemStatus::Infeasible)
+        << "instance " << n << ": the kernel distribution is feasible";
     if (a.status == ProblemStatus::Unstable) {
       ++unstable;
       continue;
@@ -187,7 +196,9 @@ TEST(LpBackends, AgreeOnOneHundredThousandRandomInstancesAcrossTheCatalog) {
     ASSERT_TRUE(ka.ok) << "instance " << n << ": " << ka.describe();
     double fz = 0;
     for (size_t i = 0; i < inst.depths.size(); ++i)
-      fz += (disc.quantize ? quantize_to_grid(disc, inst.depths[i]) : inst.depths[i]) < inst.zf ? inst.weights[i] : 0;
+      fz += (disc.quantize ? quantize_to_grid(disc, inst.depths[i]) : inst.depths[i]) < inst.zf
+                ? inst.weights[i]
+                : 0;
     ASSERT_LE(a.G, fz + 1e-9) << "instance " << n;
     ASSERT_GE(a.G, -1e-12);
     if (b.status == ProblemStatus::Optimal && std::abs(a.G - b.G) <= 1e-9) {
@@ -200,9 +211,11 @@ TEST(LpBackends, AgreeOnOneHundredThousandRandomInstancesAcrossTheCatalog) {
         << to_string(b.status) << ")";
     ++glpk_inconsistent;
   }
-  std::printf("random instances: %d (%d on the boundary); ours unstable %d; agreeing to 1e-9: %d (max |dG| %.2e); "
-              "GLPK wrong by our certificate: %d\n",
-              kInstances, boundary, unstable, close, max_difference, glpk_inconsistent);
+  std::printf(
+      "random instances: %d (%d on the boundary); ours unstable %d; agreeing to 1e-9: %d (max |dG| "
+      "%.2e); "
+      "GLPK wrong by our certificate: %d\n",
+      kInstances, boundary, unstable, close, max_difference, glpk_inconsistent);
   EXPECT_GT(boundary, kInstances / 4);
   EXPECT_LE(unstable, kInstances / 1000);
   // GLPK's own error rate, not ours (each case is checked above): ~0.1 %; it counts a few more
@@ -220,18 +233,22 @@ TEST(LpProperties, ZeroCdfGivesZeroAndRefiningNeverRaisesTheBound) {
     // F_Z(z_f) = 0 when z_f is at or below every depth.
     double lowest = *std::min_element(inst.depths.begin(), inst.depths.end());
     Discretization disc{0, 1, inst.grid, false};
-    Solution zero = fast->solve(make_problem_from_distribution(basis, disc, inst.depths, inst.weights, lowest));
+    Solution zero =
+        fast->solve(make_problem_from_distribution(basis, disc, inst.depths, inst.weights, lowest));
     if (zero.status == ProblemStatus::Optimal) {
       EXPECT_LE(zero.G, 1e-9);
     }
     // A grid of 2n - 1 points contains the grid of n points: the admissible set only grows.
     Discretization fine{0, 1, 2 * inst.grid - 1, false};
-    Solution coarse_s = fast->solve(make_problem_from_distribution(basis, disc, inst.depths, inst.weights, inst.zf));
-    Solution fine_s = fast->solve(make_problem_from_distribution(basis, fine, inst.depths, inst.weights, inst.zf));
-    if (coarse_s.status != ProblemStatus::Optimal || fine_s.status != ProblemStatus::Optimal) continue;
+    Solution coarse_s = fast->solve(
+        make_problem_from_distribution(basis, disc, inst.depths, inst.weights, inst.zf));
+    Solution fine_s = fast->solve(
+        make_problem_from_distribution(basis, fine, inst.depths, inst.weights, inst.zf));
+    if (coarse_s.status != ProblemStatus::Optimal || fine_s.status != ProblemStatus::Optimal)
+      continue;
     ++compared;
-    EXPECT_LE(fine_s.G, coarse_s.G + 1e-9) << "instance " << n << std::setprecision(17) << " fine " << fine_s.G
-                                           << " coarse " << coarse_s.G;
+    EXPECT_LE(fine_s.G, coarse_s.G + 1e-9) << "instance " << n << std::setprecision(17) << " fine "
+                                           << fine_s.G << " coarse " << coarse_s.G;
   }
   EXPECT_GT(compared, 1990);
 }
@@ -249,14 +266,20 @@ TEST(Basis, CatalogHas37DistinctIndependentFunctions) {
 }
 
 TEST(Basis, DependentSetsAreRejectedNamingTheFunctions) {
-  std::string m = testing_support::input_error_of([] { Basis::parse({"z", "z^2", "3*z"}).check_independent(0, 1); });
+  std::string m = testing_support::input_error_of([] {
+    Basis::parse({"z", "z^2", "3*z"}).check_independent(0, 1);
+  });
   EXPECT_NE(m.find("linearly dependent"), std::string::npos) << m;
   EXPECT_NE(m.find("3*z"), std::string::npos) << m;
   m = testing_support::input_error_of([] { Basis::parse({"1+z", "z"}).check_independent(0, 1); });
   EXPECT_NE(m.find("linearly dependent"), std::string::npos) << m;
-  m = testing_support::input_error_of([] { Basis::parse({"z", "cos(pi*z)^2", "cos(2 pi z)"}).check_independent(0, 1); });
+  m = testing_support::input_error_of([] {
+    Basis::parse({"z", "cos(pi*z)^2", "cos(2 pi z)"}).check_independent(0, 1);
+  });
   EXPECT_NE(m.find("linearly dependent"), std::string::npos) << m;
-  EXPECT_NE(testing_support::input_error_of([] { BasisFunction::parse("sin(z"); }).find("not a valid expression"),
+  EXPECT_NE(testing_support::input_error_of([] {
+              BasisFunction::parse("sin(z");
+            }).find("not a valid expression"),
             std::string::npos);
 }
 
@@ -276,10 +299,15 @@ TEST(LpWarmStart, RunsOfNeighbouringFragmentsGiveTheColdAnswers) {
   settings.threads = 2;
   const auto views = prepare_views(load_dataset("tiny"), 0, settings, true);
   std::vector<double> depths(81), weights(81);
-  const std::pair<const char*, int> cases[] = {{"power4", 128}, {"trig4", 128}, {"exp(-4z); z; sin(pi z); 1/(1+z)", 128},
-                                               {"z^5; z^6; log(1+z); exp(8z)", 128}, {"power4", 1024}, {"trig4", 1024}};
+  const std::pair<const char*, int> cases[] = {{"power4", 128},
+                                               {"trig4", 128},
+                                               {"exp(-4z); z; sin(pi z); 1/(1+z)", 128},
+                                               {"z^5; z^6; log(1+z); exp(8z)", 128},
+                                               {"power4", 1024},
+                                               {"trig4", 1024}};
   for (const auto& [basis_text, grid] : cases) {
-    ProblemFactory factory(Basis::parse(mb::lp_technique_basis(std::string("lp:") + basis_text)), Discretization{0, 1, grid, false});
+    ProblemFactory factory(Basis::parse(mb::lp_technique_basis(std::string("lp:") + basis_text)),
+                           Discretization{0, 1, grid, false});
     auto cold = make_backend("fast"), warm = make_backend("fast");
     int cold_pivots = 0, warm_pivots = 0, compared = 0, not_optimal = 0;
     for (const auto& v : views) {
@@ -294,7 +322,8 @@ TEST(LpWarmStart, RunsOfNeighbouringFragmentsGiveTheColdAnswers) {
         kernel_distribution(v.map, settings.kernel, x, y, depths, weights);
         const Problem p = factory.from_distribution(depths, weights, zf);
         const Solution a = cold->solve(p);
-        const Solution b = first ? warm->solve(p) : warm->solve_next(p, {v.fragments.layer[k], x, y});
+        const Solution b =
+            first ? warm->solve(p) : warm->solve_next(p, {v.fragments.layer[k], x, y});
         run = warm_run_of(t, v.map.width);
         cold_pivots += a.iterations;
         warm_pivots += b.iterations;
@@ -309,13 +338,15 @@ TEST(LpWarmStart, RunsOfNeighbouringFragmentsGiveTheColdAnswers) {
         ASSERT_TRUE(kkt.ok) << basis_text << " fragment " << k << ": " << kkt.describe();
         // The certificate's own promise: the support reproduces the moments to 1e-12 (a clamped
         // negative weight once passed with 5e-7 where every basic point was behind z_f).
-        ASSERT_LE(kkt.primal_residual, 1e-12) << basis_text << " fragment " << k << ": " << kkt.describe();
+        ASSERT_LE(kkt.primal_residual, 1e-12)
+            << basis_text << " fragment " << k << ": " << kkt.describe();
       }
     }
     std::printf("%s, grid %d: %d LPs, %.1f pivots cold, %.1f warm\n", basis_text, grid, compared,
                 double(cold_pivots) / compared, double(warm_pivots) / compared);
     EXPECT_GT(compared, 300);
-    EXPECT_EQ(not_optimal, 0) << basis_text << ", grid " << grid;  // every tiny-dataset LP is certified
+    EXPECT_EQ(not_optimal, 0) << basis_text << ", grid "
+                              << grid;  // every tiny-dataset LP is certified
     EXPECT_LT(warm_pivots, cold_pivots / 2) << basis_text;
   }
 }
@@ -367,21 +398,24 @@ TEST(LpWarmStart, TheSameTexelGivesTheSameBasisBack) {
 // dataset: 1.86 against 2.46 an LP).
 TEST(LpWarmStart, MappingByTexelNeedsFewerPivotsThanBySameOffset) {
   auto depth = [](int x, int y) {
-    const double receiver = 0.55 + 0.002 * x + 0.0013 * y + 0.01 * std::sin(0.37 * x) * std::cos(0.23 * y);
+    const double receiver =
+        0.55 + 0.002 * x + 0.0013 * y + 0.01 * std::sin(0.37 * x) * std::cos(0.23 * y);
     const double occluder = 0.30 + 0.001 * x - 0.0008 * y;
     return x + 0.6 * y < 30 ? occluder : receiver;  // an occluder edge crossing the rows
   };
   const GaussianKernel kernel = make_gaussian_kernel(9, 2.4);
   const int r = kernel.radius();
   ProblemFactory factory(Basis::parse({"power4"}), Discretization{0, 1, 256, false});
-  auto cold = make_backend("fast"), by_texel = make_backend("fast"), by_offset = make_backend("fast");
+  auto cold = make_backend("fast"), by_texel = make_backend("fast"),
+       by_offset = make_backend("fast");
   std::vector<double> depths, weights;
   int texel_pivots = 0, offset_pivots = 0, solved = 0;
   for (int y = 0; y < 8; ++y)
     for (int x = 0; x < 48; ++x) {
       depths.clear(), weights.clear();
       for (int dy = -r; dy <= r; ++dy)
-        for (int dx = -r; dx <= r; ++dx) depths.push_back(depth(x + dx, y + dy)), weights.push_back(kernel.weight(dx, dy));
+        for (int dx = -r; dx <= r; ++dx)
+          depths.push_back(depth(x + dx, y + dy)), weights.push_back(kernel.weight(dx, dy));
       const double zf = depth(x, y) - 1e-3;
       const Problem p = factory.from_distribution(depths, weights, zf);
       const Solution reference = cold->solve(p);
@@ -395,8 +429,8 @@ TEST(LpWarmStart, MappingByTexelNeedsFewerPivotsThanBySameOffset) {
       ASSERT_NEAR(b.G, reference.G, 1e-9) << x << ", " << y;
       texel_pivots += a.iterations, offset_pivots += b.iterations, ++solved;
     }
-  std::printf("%d LPs: %.2f pivots an LP by texel, %.2f by the same offset\n", solved, double(texel_pivots) / solved,
-              double(offset_pivots) / solved);
+  std::printf("%d LPs: %.2f pivots an LP by texel, %.2f by the same offset\n", solved,
+              double(texel_pivots) / solved, double(offset_pivots) / solved);
   EXPECT_LT(texel_pivots, offset_pivots);
 }
 

@@ -68,7 +68,8 @@ TEST(DoubleDouble, ReducedCostsWithLargeDualsMatchQuadPrecision) {
       naive -= y[r].hi * a[r];
       reference -= ((__float128)y[r].hi + y[r].lo) * a[r];
     }
-    const __float128 pair_error = ((__float128)d.hi + d.lo) - reference, double_error = naive - reference;
+    const __float128 pair_error = ((__float128)d.hi + d.lo) - reference,
+                     double_error = naive - reference;
     worst_pair = std::max(worst_pair, std::abs(double(pair_error)));
     worst_double = std::max(worst_double, std::abs(double(double_error)));
   }

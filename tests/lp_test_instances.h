@@ -1,11 +1,10 @@
 #pragma once
 // Seeded random Problem 1 instances across every catalog function family, for tests and benches.
+#include <algorithm>
 #include <string>
 #include <vector>
 
 #include "lp/problem.h"
-#include <algorithm>
-
 #include "moments/basis.h"
 #include "scene/procedural.h"
 
@@ -19,7 +18,8 @@ struct RandomInstance {
   bool boundary;  // at most two atoms: on the boundary of the moment space
 };
 
-inline RandomInstance random_instance(SeededRandom& random, int functions, int min_grid, int max_grid) {
+inline RandomInstance random_instance(SeededRandom& random, int functions, int min_grid,
+                                      int max_grid) {
   const auto& catalog = catalog_names();
   RandomInstance inst;
   // Families by catalog position: powers 0-5, exponentials 6-13, trigonometric 14-22, rational
@@ -36,7 +36,8 @@ inline RandomInstance random_instance(SeededRandom& random, int functions, int m
   }
   std::sort(chosen.begin(), chosen.end());
   for (int f : chosen) inst.basis.push_back(catalog[f]);
-  int atoms = random.uniform() < 0.4 ? 1 + int(random.uniform() * 2) : 1 + int(random.uniform() * 8);
+  int atoms =
+      random.uniform() < 0.4 ? 1 + int(random.uniform() * 2) : 1 + int(random.uniform() * 8);
   inst.boundary = atoms <= 2;
   double total = 0;
   for (int a = 0; a < atoms; ++a) {
@@ -46,8 +47,11 @@ inline RandomInstance random_instance(SeededRandom& random, int functions, int m
   }
   for (double& w : inst.weights) w /= total;
   // z_f near the atoms (the interesting case), or anywhere.
-  inst.zf = random.uniform() < 0.6 ? std::clamp(inst.depths[int(random.uniform() * atoms)] + random.uniform(-0.05, 0.05), 0.0, 1.0)
-                                   : random.uniform();
+  inst.zf =
+      random.uniform() < 0.6
+          ? std::clamp(inst.depths[int(random.uniform() * atoms)] + random.uniform(-0.05, 0.05),
+                       0.0, 1.0)
+          : random.uniform();
   inst.grid = min_grid + int(random.uniform() * (max_grid - min_grid + 1));
   return inst;
 }

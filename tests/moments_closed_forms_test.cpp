@@ -42,7 +42,8 @@ TEST(ClosedForms, VsmEqualsCantelliFromTheDistribution) {
     for (size_t i = 0; i < d.z.size(); ++i) mean += d.w[i] * d.z[i];
     for (size_t i = 0; i < d.z.size(); ++i) variance += d.w[i] * (d.z[i] - mean) * (d.z[i] - mean);
     const double zf = rng.uniform(0, 1);
-    const double cantelli = zf <= mean ? 0 : (zf - mean) * (zf - mean) / (variance + (zf - mean) * (zf - mean));
+    const double cantelli =
+        zf <= mean ? 0 : (zf - mean) * (zf - mean) / (variance + (zf - mean) * (zf - mean));
     const double g = vsm_bound(b.data(), zf, 0);
     EXPECT_NEAR(g, cantelli, 1e-9);
     EXPECT_LE(g, d.cdf(zf) + 1e-12);
@@ -73,7 +74,8 @@ TEST(ClosedForms, HamburgerIsAtMostHausdorffAndBothAtMostTheTrueCdf) {
     Distribution d = random_distribution(rng, 3 + trial % 6);
     auto b = d.power_moments(4);
     const double zf = rng.uniform(0, 1);
-    const double hamburger = hamburger4(b.data(), zf).lower, hausdorff = hausdorff4(b.data(), zf).lower;
+    const double hamburger = hamburger4(b.data(), zf).lower,
+                 hausdorff = hausdorff4(b.data(), zf).lower;
     ASSERT_LE(hamburger, hausdorff + 1e-9) << "trial " << trial;
     ASSERT_LE(hausdorff, d.cdf(zf) + 1e-9) << "trial " << trial;
     ASSERT_GE(hamburger, 0);
@@ -97,13 +99,17 @@ TEST(ClosedForms, CanonicalThreePointDistributionReproducesAllFiveMoments) {
     Eigen::JacobiSVD<Eigen::Matrix3d> svd(hankel);
     // A far node with a tiny weight (z = 43, w = 2e-9 happens) amplifies both by z^power.
     double magnitude = 0;
-    for (int i = 0; i < 3; ++i) magnitude += std::abs(r.weights[i]) * std::pow(std::max(1.0, std::abs(r.nodes[i])), 4);
+    for (int i = 0; i < 3; ++i)
+      magnitude += std::abs(r.weights[i]) * std::pow(std::max(1.0, std::abs(r.nodes[i])), 4);
     const double tolerance =
         std::max(1e-12, 1e-13 * magnitude * svd.singularValues()(0) / svd.singularValues()(2));
     for (int power = 0; power <= 4; ++power) {
       double moment = 0;
       for (int i = 0; i < 3; ++i) moment += r.weights[i] * std::pow(r.nodes[i], power);
-      ASSERT_NEAR(moment, power == 0 ? 1.0 : b[power - 1], tolerance) << "trial " << trial << " power " << power << " nodes " << r.nodes[0] << " " << r.nodes[1] << " " << r.nodes[2] << " w " << r.weights[0] << " " << r.weights[1] << " " << r.weights[2];
+      ASSERT_NEAR(moment, power == 0 ? 1.0 : b[power - 1], tolerance)
+          << "trial " << trial << " power " << power << " nodes " << r.nodes[0] << " " << r.nodes[1]
+          << " " << r.nodes[2] << " w " << r.weights[0] << " " << r.weights[1] << " "
+          << r.weights[2];
     }
   }
 }
@@ -119,7 +125,8 @@ TEST(ClosedForms, SixMomentsReproduceSevenMomentsAndAreSharperThanFour) {
     for (int power = 0; power <= 6; ++power) {
       double moment = 0;
       for (int i = 0; i < 4; ++i) moment += r6.weights[i] * std::pow(r6.nodes[i], power);
-      ASSERT_NEAR(moment, power == 0 ? 1.0 : b[power - 1], 1e-6) << "trial " << trial << " power " << power;
+      ASSERT_NEAR(moment, power == 0 ? 1.0 : b[power - 1], 1e-6)
+          << "trial " << trial << " power " << power;
     }
     ASSERT_GE(r6.lower, hamburger4(b.data(), zf).lower - 1e-7) << "trial " << trial;
     ASSERT_LE(r6.lower, d.cdf(zf) + 1e-7) << "trial " << trial;
@@ -186,8 +193,10 @@ TEST(ClosedForms, Float32AgreesWithDoubleToAFewDigits) {
   }
   std::sort(digits.begin(), digits.end());
   const double median = digits[digits.size() / 2], worst_percent = digits[digits.size() / 100];
-  std::printf("float32 vs double, Hamburger 4MSM, alpha %g: median %.1f digits, 1st percentile %.1f, worst %.1f\n",
-              alpha, median, worst_percent, digits.front());
+  std::printf(
+      "float32 vs double, Hamburger 4MSM, alpha %g: median %.1f digits, 1st percentile %.1f, worst "
+      "%.1f\n",
+      alpha, median, worst_percent, digits.front());
   EXPECT_GT(median, 4.0);
   EXPECT_GT(worst_percent, 1.5);
 }
@@ -207,7 +216,8 @@ TEST(ClosedForms, Unorm16RoundTripStaysWithinTheTransformBound) {
       store_moments(storage, q);
       for (double v : q) ASSERT_TRUE(v >= 0 && v <= 1);  // the transform maps [0,1] into [0,1]^m
       load_moments(storage, q);
-      for (int j = 0; j < m; ++j) ASSERT_LE(std::abs(q[j] - b[j]), bound) << "z " << z << " channel " << j;
+      for (int j = 0; j < m; ++j)
+        ASSERT_LE(std::abs(q[j] - b[j]), bound) << "z " << z << " channel " << j;
     }
   }
 }

@@ -28,7 +28,8 @@ Distribution random_distribution(SeededRandom& rng, int atoms, int flavour) {
   double total = 0;
   for (int i = 0; i < atoms; ++i) {
     double z = rng.uniform();
-    if (flavour == 1) z = rng.uniform() < 0.5 ? rng.uniform(0, 0.02) : rng.uniform(0.98, 1.0);  // near the cut
+    if (flavour == 1)
+      z = rng.uniform() < 0.5 ? rng.uniform(0, 0.02) : rng.uniform(0.98, 1.0);  // near the cut
     d.z.push_back(z);
     d.w.push_back(rng.uniform(0.05, 1.0));
     total += d.w.back();
@@ -36,7 +37,8 @@ Distribution random_distribution(SeededRandom& rng, int atoms, int flavour) {
   if (flavour == 2) {  // a mixture of two bumps, 64 atoms each
     d.z.clear(), d.w.clear(), total = 0;
     for (int bump = 0; bump < 2; ++bump) {
-      const double centre = rng.uniform(0.1, 0.9), width = rng.uniform(0.005, 0.1), mass = rng.uniform(0.2, 1);
+      const double centre = rng.uniform(0.1, 0.9), width = rng.uniform(0.005, 0.1),
+                   mass = rng.uniform(0.2, 1);
       for (int i = 0; i < 64; ++i) {
         d.z.push_back(std::clamp(centre + width * (i - 31.5) / 32, 0.0, 1.0));
         d.w.push_back(mass * std::exp(-0.5 * std::pow((i - 31.5) / 16, 2)));
@@ -50,19 +52,26 @@ Distribution random_distribution(SeededRandom& rng, int atoms, int flavour) {
 
 double random_zf(SeededRandom& rng, int trial) {
   switch (trial % 5) {
-    case 0: return rng.uniform(1e-6, 1e-2);      // near 0
-    case 1: return 1 - rng.uniform(1e-6, 1e-2);  // near 1
-    default: return rng.uniform(0.001, 0.999);
+    case 0:
+      return rng.uniform(1e-6, 1e-2);  // near 0
+    case 1:
+      return 1 - rng.uniform(1e-6, 1e-2);  // near 1
+    default:
+      return rng.uniform(0.001, 0.999);
   }
 }
 
 class TmsmAgainstLp : public ::testing::Test {
  protected:
-  TmsmAgainstLp() : basis_(Basis::parse({"trig4"})), backend_(lp::make_backend("fast")), glpk_(lp::make_backend("glpk")) {}
+  TmsmAgainstLp()
+      : basis_(Basis::parse({"trig4"})),
+        backend_(lp::make_backend("fast")),
+        glpk_(lp::make_backend("glpk")) {}
 
   // The LP on a uniform grid of [0, 1] united with `points`; the certified fast backend, GLPK when
   // it reports numerical trouble.
-  lp::Solution solve(const std::vector<double>& b, double zf, const std::vector<double>& points, int grid) {
+  lp::Solution solve(const std::vector<double>& b, double zf, const std::vector<double>& points,
+                     int grid) {
     lp::Discretization disc{0, 1, grid, false};
     lp::Problem problem = lp::make_problem(basis_, disc, b, zf, points);
     lp::Solution s = backend_->solve(problem);
@@ -85,7 +94,8 @@ class TmsmAgainstLp : public ::testing::Test {
     }
     ++compared_;
     worst_ = std::max(worst_, std::abs(with_support.G - r.lower));
-    EXPECT_NEAR(with_support.G, r.lower, tolerance) << what << " zf=" << zf << " b=" << b[0] << "," << b[1] << "," << b[2] << "," << b[3];
+    EXPECT_NEAR(with_support.G, r.lower, tolerance)
+        << what << " zf=" << zf << " b=" << b[0] << "," << b[1] << "," << b[2] << "," << b[3];
   }
 
   Basis basis_;
@@ -99,12 +109,15 @@ TEST_F(TmsmAgainstLp, RandomDistributionsIncludingMassAtTheCutAndDepthsNearZeroA
   for (int trial = 0; trial < 3000; ++trial) {
     const int flavour = trial % 3;
     Distribution d = random_distribution(rng, 3 + trial % 6, flavour);
-    check(d.trig_moments(), random_zf(rng, trial / 3), 0, 1e-8, flavour == 1 ? "near cut" : flavour == 2 ? "mixture" : "atoms");
+    check(d.trig_moments(), random_zf(rng, trial / 3), 0, 1e-8,
+          flavour == 1   ? "near cut"
+          : flavour == 2 ? "mixture"
+                         : "atoms");
   }
   // The LP itself fails (unstable in both backends) on about 2 % of these near-boundary instances.
   EXPECT_GE(compared_, 2900) << lp_failures_ << " LP failures";
-  std::printf("TMSM vs LP(grid + support): %d instances, max |dG| %.3g, %d LP failures\n", compared_, worst_,
-              lp_failures_);
+  std::printf("TMSM vs LP(grid + support): %d instances, max |dG| %.3g, %d LP failures\n",
+              compared_, worst_, lp_failures_);
 }
 
 TEST_F(TmsmAgainstLp, KernelsOfOneAndTwoDepthsWithATinyBias) {
@@ -113,7 +126,8 @@ TEST_F(TmsmAgainstLp, KernelsOfOneAndTwoDepthsWithATinyBias) {
   SeededRandom rng(4);
   for (int trial = 0; trial < 1000; ++trial) {
     Distribution d = random_distribution(rng, 1 + trial % 2, trial % 4 == 0 ? 1 : 0);
-    check(d.trig_moments(), random_zf(rng, trial), 1e-6, 1e-7, trial % 2 ? "two depths" : "one depth");
+    check(d.trig_moments(), random_zf(rng, trial), 1e-6, 1e-7,
+          trial % 2 ? "two depths" : "one depth");
   }
   EXPECT_GE(compared_, 990) << lp_failures_ << " LP failures";
 }
@@ -129,7 +143,8 @@ TEST(Tmsm, NeverAboveTheLpOnAPlainGridNorAboveTheTrueCdf) {
     const std::vector<double> b = d.trig_moments();
     const double zf = random_zf(rng, trial);
     const double g = tmsm(b.data(), zf).lower;
-    lp::Solution s = backend->solve(lp::make_problem(basis, lp::Discretization{0, 1, 64, false}, b, zf, d.z));
+    lp::Solution s =
+        backend->solve(lp::make_problem(basis, lp::Discretization{0, 1, 64, false}, b, zf, d.z));
     if (s.status == lp::ProblemStatus::Optimal) {
       EXPECT_LE(g, s.G + 1e-9);
       ++checked;
@@ -139,15 +154,16 @@ TEST(Tmsm, NeverAboveTheLpOnAPlainGridNorAboveTheTrueCdf) {
     EXPECT_GE(g, 0.0);
   }
   // Raw moments of few-point distributions, rounded to double, are often just outside the moment
-  // space: 5 of these are infeasible, and 8 the LP reports unstable rather than answer with an error
-  // bound above 1e-9 (session 14: GLPK's fallback answers are judged by that bound too).
+  // space: 5 of these are infeasible, and 8 the LP reports unstable rather than answer with an
+  // error bound above 1e-9 (session 14: GLPK's fallback answers are judged by that bound too).
   EXPECT_GE(checked, 480);
 }
 
 TEST(Tmsm, DepthsZeroAndOneAreTheSamePointAndZfOutsideTheInterval) {
   // Half the mass at 0.3, half at the cut: the cut mass never shadows, whichever end it is at.
-  const double at_zero[4] = {0.5 * std::sin(0.6 * std::numbers::pi), 0.5 * std::cos(0.6 * std::numbers::pi) + 0.5,
-                             0.5 * std::sin(1.2 * std::numbers::pi), 0.5 * std::cos(1.2 * std::numbers::pi) + 0.5};
+  const double at_zero[4] = {
+      0.5 * std::sin(0.6 * std::numbers::pi), 0.5 * std::cos(0.6 * std::numbers::pi) + 0.5,
+      0.5 * std::sin(1.2 * std::numbers::pi), 0.5 * std::cos(1.2 * std::numbers::pi) + 0.5};
   double b[4];
   std::copy(at_zero, at_zero + 4, b);
   bias_trigonometric_moments(b, 1e-9);
@@ -177,7 +193,8 @@ TEST(Tmsm, FloatAgreesWithDoubleWithItsBias) {
   }
   std::sort(digits.begin(), digits.end());
   const double median = digits[digits.size() / 2], first_percentile = digits[digits.size() / 100];
-  std::printf("TMSM float vs double: median %.1f digits, 1st percentile %.1f\n", median, first_percentile);
+  std::printf("TMSM float vs double: median %.1f digits, 1st percentile %.1f\n", median,
+              first_percentile);
   EXPECT_GE(median, 4.0);
   EXPECT_GE(first_percentile, 2.5);
 }
@@ -191,8 +208,10 @@ TEST(Canonical, QuarticRootsOfKnownFactorisations) {
     const double k = rng.uniform(0.1, 10) * (trial % 2 ? 1 : -1);
     // k (z - r0)(z - r1)(z - r2)(z - r3)
     const double e1 = r[0] + r[1] + r[2] + r[3];
-    const double e2 = r[0] * r[1] + r[0] * r[2] + r[0] * r[3] + r[1] * r[2] + r[1] * r[3] + r[2] * r[3];
-    const double e3 = r[0] * r[1] * r[2] + r[0] * r[1] * r[3] + r[0] * r[2] * r[3] + r[1] * r[2] * r[3];
+    const double e2 =
+        r[0] * r[1] + r[0] * r[2] + r[0] * r[3] + r[1] * r[2] + r[1] * r[3] + r[2] * r[3];
+    const double e3 =
+        r[0] * r[1] * r[2] + r[0] * r[1] * r[3] + r[0] * r[2] * r[3] + r[1] * r[2] * r[3];
     const double e4 = r[0] * r[1] * r[2] * r[3];
     double roots[4];
     ASSERT_EQ(quartic_roots(k, -k * e1, k * e2, -k * e3, k * e4, roots), 4);

@@ -12,14 +12,17 @@ namespace {
 using Eigen::Vector3d;
 
 // z = 0.2 + 0.0031 x + 0.0017 y, a sloped plane in raster space.
-double plane_depth(double x, double y) { return 0.2 + 0.0031 * x + 0.0017 * y; }
+double plane_depth(double x, double y) {
+  return 0.2 + 0.0031 * x + 0.0017 * y;
+}
 
 TEST(Rasterizer, PlaneGivesOneFragmentPerCoveredTexelWithAnalyticDepthAndGradient) {
   RasterInput in;
   in.width = 96;
   in.height = 80;
   // A convex quad whose corners lie off the texel-centre lattice, so no centre is on its boundary.
-  Vector3d corners[4] = {{5.137, 7.291, 0}, {88.613, 3.377, 0}, {91.251, 70.719, 0}, {2.903, 76.433, 0}};
+  Vector3d corners[4] = {
+      {5.137, 7.291, 0}, {88.613, 3.377, 0}, {91.251, 70.719, 0}, {2.903, 76.433, 0}};
   for (auto& c : corners) c.z() = plane_depth(c.x(), c.y());
   in.vertices.assign(corners, corners + 4);
   in.triangles = {{0, 1, 2}, {0, 2, 3}};
@@ -101,7 +104,8 @@ TEST(Rasterizer, FanAroundAVertexOnATexelCentreCoversItOnce) {
     double angle = 2 * M_PI * s / spokes + 0.3;
     in.vertices.emplace_back(8.5 + 6 * std::cos(angle), 8.5 + 6 * std::sin(angle), 0.5);
   }
-  for (int s = 0; s < spokes; ++s) in.triangles.push_back({0, uint32_t(1 + s), uint32_t(1 + (s + 1) % spokes)});
+  for (int s = 0; s < spokes; ++s)
+    in.triangles.push_back({0, uint32_t(1 + s), uint32_t(1 + (s + 1) % spokes)});
   in.facing.assign(spokes, 1);
   LayerStack stack = rasterize(in, 1);
   EXPECT_EQ(stack.layers(8 * 16 + 8), 1);

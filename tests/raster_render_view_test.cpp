@@ -44,7 +44,8 @@ TEST(RenderView, SphereSeenFromAboveHasTwoLayersAtAnalyticDepths) {
         EXPECT_EQ(stack.facing[f], 1);
         EXPECT_EQ(stack.facing[f + 1], 0);
         double h = std::sqrt(radius * radius - d * d);
-        double top = frame.to_raster(Vector3d(0, h, 0)).z(), bottom = frame.to_raster(Vector3d(0, -h, 0)).z();
+        double top = frame.to_raster(Vector3d(0, h, 0)).z(),
+               bottom = frame.to_raster(Vector3d(0, -h, 0)).z();
         // Near the rim the surface is steep: allow the sagitta stretched by the slope.
         double slack = (sagitta + 2 * texel * d / h) / frame.world_per_depth();
         EXPECT_NEAR(stack.depth[f], top, slack);
@@ -63,7 +64,8 @@ TEST(RenderView, BoxHasTwoLayersInsideItsSilhouetteFromEveryDirection) {
   // Straight down: the exact depths of the top and bottom faces.
   LayerStack stack = render_view(scene, scene.views[0], 1);
   LightFrame frame(scene.views[0], scene.mesh.vertices);
-  double top = frame.to_raster(Vector3d(0, 0.2 + 0.35, 0)).z(), bottom = frame.to_raster(Vector3d(0, 0.2 - 0.35, 0)).z();
+  double top = frame.to_raster(Vector3d(0, 0.2 + 0.35, 0)).z(),
+         bottom = frame.to_raster(Vector3d(0, 0.2 - 0.35, 0)).z();
   size_t two_layer_texels = 0;
   for (size_t t = 0; t < stack.texel_count(); ++t) {
     int n = stack.layers(t);

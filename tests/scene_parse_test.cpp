@@ -7,8 +7,8 @@
 #include "scene/dataset.h"
 #include "scene/procedural.h"
 #include "scene/scene.h"
-#include "util/error.h"
 #include "test_support.h"
+#include "util/error.h"
 
 namespace mb {
 namespace {
@@ -33,7 +33,8 @@ TEST(SceneParse, BuiltInDatasetsParse) {
 }
 
 TEST(SceneParse, MisspelledKeysAreReportedWithLineAndSuggestion) {
-  std::string m = parse_error("parts:\n  - box: {size: [1, 1, 1]}\nviews:\n  - {azimuth: 10, elevaton: 30}\n");
+  std::string m =
+      parse_error("parts:\n  - box: {size: [1, 1, 1]}\nviews:\n  - {azimuth: 10, elevaton: 30}\n");
   EXPECT_NE(m.find(":4:"), std::string::npos) << m;
   EXPECT_NE(m.find("did you mean 'elevation'"), std::string::npos) << m;
   m = parse_error("parts:\n  - spher: {radius: 1}\nviews:\n  - {azimuth: 10}\n");
@@ -43,13 +44,19 @@ TEST(SceneParse, MisspelledKeysAreReportedWithLineAndSuggestion) {
 }
 
 TEST(SceneParse, BadValuesAreErrors) {
-  EXPECT_NE(parse_error("parts: []\nviews:\n  - {azimuth: 10}\n").find("at least one part"), std::string::npos);
-  EXPECT_NE(parse_error("parts:\n  - box: {}\nviews: []\n").find("at least one light view"), std::string::npos);
-  EXPECT_NE(parse_error("parts:\n  - box: {}\nviews:\n  - {resolution: 0}\n").find("[1, 16384]"), std::string::npos);
-  EXPECT_NE(parse_error("parts:\n  - box: {size: [1, 0, 1]}\nviews:\n  - {}\n").find("size"), std::string::npos);
-  EXPECT_NE(parse_error("parts:\n  - box: {}\n    transform: {scale: 0}\nviews:\n  - {}\n").find("scale"),
+  EXPECT_NE(parse_error("parts: []\nviews:\n  - {azimuth: 10}\n").find("at least one part"),
             std::string::npos);
-  EXPECT_NE(parse_error("parts:\n  - mesh: nowhere.obj\nviews:\n  - {}\n").find("not found"), std::string::npos);
+  EXPECT_NE(parse_error("parts:\n  - box: {}\nviews: []\n").find("at least one light view"),
+            std::string::npos);
+  EXPECT_NE(parse_error("parts:\n  - box: {}\nviews:\n  - {resolution: 0}\n").find("[1, 16384]"),
+            std::string::npos);
+  EXPECT_NE(parse_error("parts:\n  - box: {size: [1, 0, 1]}\nviews:\n  - {}\n").find("size"),
+            std::string::npos);
+  EXPECT_NE(
+      parse_error("parts:\n  - box: {}\n    transform: {scale: 0}\nviews:\n  - {}\n").find("scale"),
+      std::string::npos);
+  EXPECT_NE(parse_error("parts:\n  - mesh: nowhere.obj\nviews:\n  - {}\n").find("not found"),
+            std::string::npos);
 }
 
 TEST(SceneParse, ProceduralSolidsAreClosedAndOutwardOriented) {

@@ -30,7 +30,8 @@ TEST(Pcf, PenumbraOfASquareOccluderEqualsTheSumOfGaussianWeights) {
   for (double sx : {-1.15, 1.15})
     for (double sz : {-1.15, 1.15}) {
       Eigen::Vector3d r = frame.to_raster({sx, 1.0, sz});
-      x0 = std::min(x0, r.x()), x1 = std::max(x1, r.x()), y0 = std::min(y0, r.y()), y1 = std::max(y1, r.y());
+      x0 = std::min(x0, r.x()), x1 = std::max(x1, r.x()), y0 = std::min(y0, r.y()),
+      y1 = std::max(y1, r.y());
     }
   const int size = 9;
   const double sigma = 2.4;
@@ -41,13 +42,16 @@ TEST(Pcf, PenumbraOfASquareOccluderEqualsTheSumOfGaussianWeights) {
   int checked = 0, penumbra = 0;
   for (size_t k = 0; k < f.size(); ++k) {
     const int x = int(f.texel[k] % f.width), y = int(f.texel[k] / f.width);
-    if (f.zf[k] < 0.5 || x < 4 || y < 4 || x >= f.width - 4 || y >= f.height - 4) continue;  // ground, inside
+    if (f.zf[k] < 0.5 || x < 4 || y < 4 || x >= f.width - 4 || y >= f.height - 4)
+      continue;  // ground, inside
     double expected = 0;
     bool ambiguous = false;
     for (int dy = -4; dy <= 4; ++dy)
       for (int dx = -4; dx <= 4; ++dx) {
         double cx = x + dx + 0.5, cy = y + dy + 0.5;
-        if (std::min({std::abs(cx - x0), std::abs(cx - x1), std::abs(cy - y0), std::abs(cy - y1)}) < 1e-6) ambiguous = true;
+        if (std::min({std::abs(cx - x0), std::abs(cx - x1), std::abs(cy - y0), std::abs(cy - y1)}) <
+            1e-6)
+          ambiguous = true;
         if (cx > x0 && cx < x1 && cy > y0 && cy < y1)
           expected += std::exp(-(dx * dx + dy * dy) / (2 * sigma * sigma)) / (norm * norm);
       }

@@ -4,9 +4,9 @@
 #include <filesystem>
 #include <fstream>
 
+#include "test_support.h"
 #include "util/config.h"
 #include "util/error.h"
-#include "test_support.h"
 
 namespace mb {
 namespace {
@@ -16,14 +16,21 @@ std::vector<OptionSpec> specs() {
           {"raster.resolution", OptionType::Integer, "512", "Resolution.", 1, 16384},
           {"shadow.sigma", OptionType::Number, "2.4", "Sigma.", 1e-6, 100},
           {"previews", OptionType::Boolean, "true", "Previews."},
-          {"techniques", OptionType::StringList, "[vsm, esm]", "Techniques.", -1, 1, {"vsm", "esm", "pcf"}},
+          {"techniques",
+           OptionType::StringList,
+           "[vsm, esm]",
+           "Techniques.",
+           -1,
+           1,
+           {"vsm", "esm", "pcf"}},
           {"depths", OptionType::NumberList, "[0.25, 0.5]", "Depths.", 0, 1}};
 }
 
 TEST(Config, DefaultsFileAndSetApplyInOrder) {
   Config config(specs());
   EXPECT_EQ(config.integer("raster.resolution"), 512);
-  config.load_file(testing_support::write_temp_file("mb_cfg1.yaml", "raster:\n  resolution: 64\nshadow.sigma: 1.5\n"));
+  config.load_file(testing_support::write_temp_file(
+      "mb_cfg1.yaml", "raster:\n  resolution: 64\nshadow.sigma: 1.5\n"));
   EXPECT_EQ(config.integer("raster.resolution"), 64);
   EXPECT_DOUBLE_EQ(config.number("shadow.sigma"), 1.5);
   config.set("raster.resolution=32");
@@ -39,28 +46,52 @@ TEST(Config, DefaultsFileAndSetApplyInOrder) {
 
 TEST(Config, UnknownKeyNamesFileLineAndSuggestion) {
   Config config(specs());
-  std::string file = testing_support::write_temp_file("mb_cfg2.yaml", "dataset: tiny\nraster:\n  resolutoin: 64\n");
+  std::string file = testing_support::write_temp_file("mb_cfg2.yaml",
+                                                      "dataset: tiny\nraster:\n  resolutoin: 64\n");
   std::string message = testing_support::input_error_of([&] { config.load_file(file); });
   EXPECT_NE(message.find(file + ":3:"), std::string::npos) << message;
   EXPECT_NE(message.find("did you mean 'raster.resolution'"), std::string::npos) << message;
-  EXPECT_NE(testing_support::input_error_of([&] { config.set("previewz=false"); }).find("did you mean 'previews'"), std::string::npos);
+  EXPECT_NE(testing_support::input_error_of([&] {
+              config.set("previewz=false");
+            }).find("did you mean 'previews'"),
+            std::string::npos);
 }
 
 TEST(Config, WrongTypeRangeAndChoiceAreErrors) {
   Config config(specs());
-  EXPECT_NE(testing_support::input_error_of([&] { config.set("raster.resolution=abc"); }).find("expected an integer"), std::string::npos);
-  EXPECT_NE(testing_support::input_error_of([&] { config.set("raster.resolution=0"); }).find("[1, 16384]"), std::string::npos);
-  EXPECT_NE(testing_support::input_error_of([&] { config.set("shadow.sigma=-1"); }).find("shadow.sigma"), std::string::npos);
-  EXPECT_NE(testing_support::input_error_of([&] { config.set("previews=maybe"); }).find("true or false"), std::string::npos);
-  EXPECT_NE(testing_support::input_error_of([&] { config.set("techniques=vsn"); }).find("did you mean 'vsm'"), std::string::npos);
-  EXPECT_NE(testing_support::input_error_of([&] { config.set("depths=[0.5, nan]"); }).find("item 2 'nan': expected a finite number"),
+  EXPECT_NE(testing_support::input_error_of([&] {
+              config.set("raster.resolution=abc");
+            }).find("expected an integer"),
             std::string::npos);
-  EXPECT_NE(testing_support::input_error_of([&] { config.set("depths=0.5,2"); }).find("item 2 '2': expected a number in [0, 1]"),
+  EXPECT_NE(testing_support::input_error_of([&] {
+              config.set("raster.resolution=0");
+            }).find("[1, 16384]"),
             std::string::npos);
-  EXPECT_NE(testing_support::input_error_of([&] { config.set("depths=[0.1, [0.2]]"); }).find("list of finite numbers"),
+  EXPECT_NE(
+      testing_support::input_error_of([&] { config.set("shadow.sigma=-1"); }).find("shadow.sigma"),
+      std::string::npos);
+  EXPECT_NE(
+      testing_support::input_error_of([&] { config.set("previews=maybe"); }).find("true or false"),
+      std::string::npos);
+  EXPECT_NE(testing_support::input_error_of([&] {
+              config.set("techniques=vsn");
+            }).find("did you mean 'vsm'"),
+            std::string::npos);
+  EXPECT_NE(testing_support::input_error_of([&] {
+              config.set("depths=[0.5, nan]");
+            }).find("item 2 'nan': expected a finite number"),
+            std::string::npos);
+  EXPECT_NE(testing_support::input_error_of([&] {
+              config.set("depths=0.5,2");
+            }).find("item 2 '2': expected a number in [0, 1]"),
+            std::string::npos);
+  EXPECT_NE(testing_support::input_error_of([&] {
+              config.set("depths=[0.1, [0.2]]");
+            }).find("list of finite numbers"),
             std::string::npos);
   std::string file = testing_support::write_temp_file("mb_cfg3.yaml", "previews: 3\n");
-  EXPECT_NE(testing_support::input_error_of([&] { config.load_file(file); }).find(file + ":1:"), std::string::npos);
+  EXPECT_NE(testing_support::input_error_of([&] { config.load_file(file); }).find(file + ":1:"),
+            std::string::npos);
 }
 
 TEST(Config, PrintedConfigReadsBackToTheSameValues) {

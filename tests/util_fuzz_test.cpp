@@ -36,26 +36,40 @@ std::vector<std::string> lines_of(const std::string& text) {
 }
 
 std::string mutate(const std::string& text, SeededRandom& rng) {
-  static const char* kTokens[] = {"1e308", "-1e308", "nan", ".inf", "-0", "0", "1e-320", "99999999999999999999",
-                                  "[", "]", "{", "}", ":", ",", "- ", "\"", "'", "#", "&a", "*a", "!!str",
-                                  "~", "null", "true", "[1, 2]", "{a: 1}", "\t", "\\", "%", "|"};
+  static const char* kTokens[] = {
+      "1e308",  "-1e308", "nan", ".inf", "-0",    "0", "1e-320", "99999999999999999999",
+      "[",      "]",      "{",   "}",    ":",     ",", "- ",     "\"",
+      "'",      "#",      "&a",  "*a",   "!!str", "~", "null",   "true",
+      "[1, 2]", "{a: 1}", "\t",  "\\",   "%",     "|"};
   std::string s = text;
   const int edits = 1 + int(rng.uniform() * 3);
   for (int e = 0; e < edits && !s.empty(); ++e) {
     const size_t at = size_t(rng.uniform() * double(s.size()));
     const std::string token = kTokens[size_t(rng.uniform() * (sizeof kTokens / sizeof *kTokens))];
     switch (int(rng.uniform() * 7)) {
-      case 0: s.erase(at, 1 + size_t(rng.uniform() * 4)); break;
-      case 1: s.insert(at, 1, char(32 + int(rng.uniform() * 95))); break;
-      case 2: s.insert(at, token); break;
-      case 3: s[at] = char(32 + int(rng.uniform() * 95)); break;
+      case 0:
+        s.erase(at, 1 + size_t(rng.uniform() * 4));
+        break;
+      case 1:
+        s.insert(at, 1, char(32 + int(rng.uniform() * 95)));
+        break;
+      case 2:
+        s.insert(at, token);
+        break;
+      case 3:
+        s[at] = char(32 + int(rng.uniform() * 95));
+        break;
       case 4: {  // duplicate, cut or swap lines
         auto lines = lines_of(s);
-        const size_t i = size_t(rng.uniform() * double(lines.size())), j = size_t(rng.uniform() * double(lines.size()));
+        const size_t i = size_t(rng.uniform() * double(lines.size())),
+                     j = size_t(rng.uniform() * double(lines.size()));
         const int how = int(rng.uniform() * 3);
-        if (how == 0) lines.insert(lines.begin() + long(i), lines[i]);
-        else if (how == 1) lines.erase(lines.begin() + long(i));
-        else std::swap(lines[i], lines[j]);
+        if (how == 0)
+          lines.insert(lines.begin() + long(i), lines[i]);
+        else if (how == 1)
+          lines.erase(lines.begin() + long(i));
+        else
+          std::swap(lines[i], lines[j]);
         s.clear();
         for (const auto& l : lines) s += l + "\n";
         break;
@@ -72,7 +86,8 @@ std::string mutate(const std::string& text, SeededRandom& rng) {
 }
 
 // Runs `read` on `kMutations` mutations of `valid`; counts accepted and refused files.
-void fuzz(const std::string& label, const std::string& valid, const std::function<void(const std::string&)>& read) {
+void fuzz(const std::string& label, const std::string& valid,
+          const std::function<void(const std::string&)>& read) {
   SeededRandom rng(20261203);
   const std::string file = testing_support::write_temp_file(label + ".yaml", valid);
   ASSERT_NO_THROW(read(file)) << "the unmutated " << label << " must be valid";
@@ -87,13 +102,16 @@ void fuzz(const std::string& label, const std::string& valid, const std::functio
     } catch (const InputError&) {
       ++refused;
     } catch (const std::exception& e) {
-      FAIL() << label << " mutation " << k << ": internal error (" << typeid(e).name() << "): " << e.what()
-             << "\n--- file ---\n"
+      FAIL() << label << " mutation " << k << ": internal error (" << typeid(e).name()
+             << "): " << e.what() << "\n--- file ---\n"
              << text;
     }
-    if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > kSecondsPerReader) break;
+    if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >
+        kSecondsPerReader)
+      break;
   }
-  std::printf("%s: %d mutations accepted, %d refused with a message\n", label.c_str(), accepted, refused);
+  std::printf("%s: %d mutations accepted, %d refused with a message\n", label.c_str(), accepted,
+              refused);
   EXPECT_GT(refused, 100);  // the mutations do reach the checks
 }
 
@@ -110,7 +128,8 @@ TEST(Fuzz, ConfigReaderOnlyEverRefusesWithAMessage) {
 }
 
 TEST(Fuzz, SceneReaderOnlyEverRefusesWithAMessage) {
-  const std::string valid = read_file(std::string(MOMENTBENCH_SOURCE_DIR) + "/configs/scenes/blocks.yaml");
+  const std::string valid =
+      read_file(std::string(MOMENTBENCH_SOURCE_DIR) + "/configs/scenes/blocks.yaml");
   fuzz("scene", valid, [&](const std::string& file) {
     const SceneDesc desc = parse_scene(file);
     // Building is bounded too: a mutated size or count stays within the generators' ranges.

@@ -29,20 +29,25 @@ std::vector<OptionSpec> bounds_specs() {
                    "The kernel's depths (used when bounds.view is empty)."});
   specs.push_back({"bounds.weights", OptionType::NumberList, "[0.3, 0.2, 0.35, 0.15]",
                    "Their weights (normalised; one per depth)."});
-  specs.push_back({"bounds.view", OptionType::String, "''",
-                   "Take the kernel from this view of the dataset instead ('scene/view' or 'view')."});
-  specs.push_back({"bounds.texel", OptionType::NumberList, "[0, 0]", "With bounds.view: the texel x, y.", 0, 16384});
-  specs.push_back({"bounds.bases", OptionType::StringList, "[power4, trig4]",
-                   "Bases, each a named set or 'f1; f2; f3; f4'; the first m functions give the m-series."});
-  specs.push_back({"bounds.sizes", OptionType::NumberList, "[2, 3, 4]", "m values (numbers of functions).", 1, 7});
-  specs.push_back({"bounds.samples", OptionType::Integer, "401", "z_f values, uniform on bounds.zf_range.", 2, 1e6});
+  specs.push_back(
+      {"bounds.view", OptionType::String, "''",
+       "Take the kernel from this view of the dataset instead ('scene/view' or 'view')."});
+  specs.push_back({"bounds.texel", OptionType::NumberList, "[0, 0]",
+                   "With bounds.view: the texel x, y.", 0, 16384});
+  specs.push_back(
+      {"bounds.bases", OptionType::StringList, "[power4, trig4]",
+       "Bases, each a named set or 'f1; f2; f3; f4'; the first m functions give the m-series."});
+  specs.push_back({"bounds.sizes", OptionType::NumberList, "[2, 3, 4]",
+                   "m values (numbers of functions).", 1, 7});
+  specs.push_back({"bounds.samples", OptionType::Integer, "401",
+                   "z_f values, uniform on bounds.zf_range.", 2, 1e6});
   specs.push_back({"bounds.zf_range", OptionType::NumberList, "[0, 1]", "z_f from, to."});
   return specs;
 }
 
 // The kernel distribution at a dataset texel: the same taps as PCF and the moment maps see.
-std::string texel_distribution(const Config& config, BoundCurveRequest& request, const GaussianKernel& kernel,
-                               bool quiet) {
+std::string texel_distribution(const Config& config, BoundCurveRequest& request,
+                               const GaussianKernel& kernel, bool quiet) {
   const std::string wanted = config.string("bounds.view");
   const auto texel = config.numbers("bounds.texel");
   if (texel.size() != 2 || texel[0] != int(texel[0]) || texel[1] != int(texel[1]))
@@ -59,22 +64,27 @@ std::string texel_distribution(const Config& config, BoundCurveRequest& request,
     names += (names.empty() ? "" : ", ") + full;
     if (wanted != full && wanted != v.view) continue;
     matches += (matches.empty() ? "" : ", ") + full;
-    if (found) throw InputError("bounds.view: '" + wanted + "' names several views (" + matches + "); write scene/view");
+    if (found)
+      throw InputError("bounds.view: '" + wanted + "' names several views (" + matches +
+                       "); write scene/view");
     found = &v;
   }
-  if (!found) throw InputError("bounds.view: no view '" + wanted + "' in dataset " + dataset.name + "; views: " + names);
+  if (!found)
+    throw InputError("bounds.view: no view '" + wanted + "' in dataset " + dataset.name +
+                     "; views: " + names);
   const ViewData& v = *found;
   const int x = int(texel[0]), y = int(texel[1]);
   if (x >= v.map.width || y >= v.map.height)
-    throw InputError("bounds.texel: (" + std::to_string(x) + ", " + std::to_string(y) + ") lies outside view " + v.scene +
-                     "/" + v.view + " (" + std::to_string(v.map.width) + "x" + std::to_string(v.map.height) + ")");
+    throw InputError("bounds.texel: (" + std::to_string(x) + ", " + std::to_string(y) +
+                     ") lies outside view " + v.scene + "/" + v.view + " (" +
+                     std::to_string(v.map.width) + "x" + std::to_string(v.map.height) + ")");
   const size_t taps = size_t(kernel.size) * kernel.size;
   request.depths.assign(taps, 0);
   request.weights.assign(taps, 0);
   kernel_distribution(v.map, kernel, x, y, request.depths, request.weights);
-  return "dataset " + dataset.name + ", view " + v.scene + "/" + v.view + ", texel (" + std::to_string(x) + ", " +
-         std::to_string(y) + "), " + std::to_string(kernel.size) + "x" + std::to_string(kernel.size) +
-         " Gaussian kernel";
+  return "dataset " + dataset.name + ", view " + v.scene + "/" + v.view + ", texel (" +
+         std::to_string(x) + ", " + std::to_string(y) + "), " + std::to_string(kernel.size) + "x" +
+         std::to_string(kernel.size) + " Gaussian kernel";
 }
 
 int run_bounds(const CommonOptions& options) {
@@ -90,7 +100,8 @@ int run_bounds(const CommonOptions& options) {
   request.bases = config.strings("bounds.bases");
   request.sizes.clear();
   for (double m : config.numbers("bounds.sizes")) {
-    if (m != int(m)) throw InputError("bounds.sizes: expected whole numbers, got " + format_number(m, "%g"));
+    if (m != int(m))
+      throw InputError("bounds.sizes: expected whole numbers, got " + format_number(m, "%g"));
     request.sizes.push_back(int(m));
   }
   request.samples = int(config.integer("bounds.samples"));
@@ -115,36 +126,43 @@ int run_bounds(const CommonOptions& options) {
   csv << "\n";
   for (size_t i = 0; i < curves.zf.size(); ++i) {
     csv << round_trip(curves.zf[i]) << "," << round_trip(curves.cdf[i]);
-    for (const auto& s : curves.series) csv << "," << (std::isnan(s.lower[i]) ? std::string() : round_trip(s.lower[i]));
+    for (const auto& s : curves.series)
+      csv << "," << (std::isnan(s.lower[i]) ? std::string() : round_trip(s.lower[i]));
     csv << "\n";
   }
   dist << "depth,weight\n";
   for (size_t t = 0; t < request.depths.size(); ++t)
-    if (request.weights[t] > 0) dist << round_trip(request.depths[t]) << "," << round_trip(request.weights[t]) << "\n";
+    if (request.weights[t] > 0)
+      dist << round_trip(request.depths[t]) << "," << round_trip(request.weights[t]) << "\n";
 
   RunMetadata meta = collect_run_metadata(request.threads, process_arguments());
   md << "# Sharp lower bounds of Problem 1 for one kernel (seed 000, Figure 3)\n\n"
-     << "Made by momentbench " << meta.version << " (git " << meta.git_sha << "), " << request.threads << " threads, "
-     << meta.started_utc << ".\n\n"
+     << "Made by momentbench " << meta.version << " (git " << meta.git_sha << "), "
+     << request.threads << " threads, " << meta.started_utc << ".\n\n"
      << "- Distribution: " << source << "\n"
-     << "- LP: I = " << request.lp.grid << "-point grid on [" << format_number(request.lp.lo, "%g") << ", "
-     << format_number(request.lp.hi, "%g") << "] ∪ the distribution's depths ∪ {z_f} (REFERENCE.md §2), backend "
-     << request.backend << "; " << request.samples << " values of z_f on [" << format_number(request.zf_lo, "%g") << ", "
-     << format_number(request.zf_hi, "%g") << "]\n"
-     << "- Gap = F_Z(z_f) − G(b, z_f) ≥ 0; its mean over z_f is the area between the CDF and the bound.\n\n"
-     << "| basis | m | functions | mean gap | max gap | LPs not optimal |\n|---|---|---|---|---|---|\n";
+     << "- LP: I = " << request.lp.grid << "-point grid on [" << format_number(request.lp.lo, "%g")
+     << ", " << format_number(request.lp.hi, "%g")
+     << "] ∪ the distribution's depths ∪ {z_f} (REFERENCE.md §2), backend " << request.backend
+     << "; " << request.samples << " values of z_f on [" << format_number(request.zf_lo, "%g")
+     << ", " << format_number(request.zf_hi, "%g") << "]\n"
+     << "- Gap = F_Z(z_f) − G(b, z_f) ≥ 0; its mean over z_f is the area between the CDF and the "
+        "bound.\n\n"
+     << "| basis | m | functions | mean gap | max gap | LPs not optimal "
+        "|\n|---|---|---|---|---|---|\n";
   for (const auto& s : curves.series) {
     std::string functions;
     for (const auto& f : s.functions) functions += (functions.empty() ? "" : ", ") + f;
-    md << "| " << s.basis << " | " << s.m << " | " << functions << " | " << format_number(s.mean_gap, "%.5f") << " | "
-       << format_number(s.max_gap, "%.5f") << " | " << s.failures << " |\n";
+    md << "| " << s.basis << " | " << s.m << " | " << functions << " | "
+       << format_number(s.mean_gap, "%.5f") << " | " << format_number(s.max_gap, "%.5f") << " | "
+       << s.failures << " |\n";
   }
   write_file_atomically(out / "bounds.csv", csv.str());
   write_file_atomically(out / "distribution.csv", dist.str());
-  const std::string plot = run_plot_script(
-      "plot_bounds.py",
-      "--bounds '" + (out / "bounds.csv").string() + "' --distribution '" + (out / "distribution.csv").string() + "'",
-      (out / "bounds").string(), "CDF and sharp lower bounds", options.quiet);
+  const std::string plot =
+      run_plot_script("plot_bounds.py",
+                      "--bounds '" + (out / "bounds.csv").string() + "' --distribution '" +
+                          (out / "distribution.csv").string() + "'",
+                      (out / "bounds").string(), "CDF and sharp lower bounds", options.quiet);
   md << "\n" << plot;
   write_file_atomically(out / "bounds.md", md.str());
   write_file_atomically(out / "config.yaml", config.to_yaml());
@@ -160,8 +178,8 @@ int run_bounds(const CommonOptions& options) {
 
 void register_bounds_command(CLI::App& app, std::function<int()>& action) {
   auto options = std::make_shared<CommonOptions>();
-  CLI::App* command =
-      app.add_subcommand("bounds", "CDF and sharp lower bounds for m = 2, 3, 4 of one kernel (Figure 3)");
+  CLI::App* command = app.add_subcommand(
+      "bounds", "CDF and sharp lower bounds for m = 2, 3, 4 of one kernel (Figure 3)");
   add_common_options(*command, *options);
   command->callback([options, &action] { action = [options] { return run_bounds(*options); }; });
 }

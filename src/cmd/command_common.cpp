@@ -12,15 +12,23 @@ namespace {
 std::vector<std::string> g_arguments;
 }
 
-void set_process_arguments(int argc, char** argv) { g_arguments.assign(argv, argv + argc); }
-const std::vector<std::string>& process_arguments() { return g_arguments; }
+void set_process_arguments(int argc, char** argv) {
+  g_arguments.assign(argv, argv + argc);
+}
+const std::vector<std::string>& process_arguments() {
+  return g_arguments;
+}
 
 void add_common_options(CLI::App& command, CommonOptions& options, bool has_output) {
-  command.add_option("-c,--config", options.config_file, "YAML config file (keys as printed by --print-config)");
-  command.add_option("-s,--set", options.sets, "Override one option: key=value (repeatable)")->take_all();
-  command.add_flag("--print-config", options.print_config, "Print the effective config as YAML and exit");
+  command.add_option("-c,--config", options.config_file,
+                     "YAML config file (keys as printed by --print-config)");
+  command.add_option("-s,--set", options.sets, "Override one option: key=value (repeatable)")
+      ->take_all();
+  command.add_flag("--print-config", options.print_config,
+                   "Print the effective config as YAML and exit");
   if (has_output) {
-    command.add_option("-o,--out", options.out, "Output directory (must not exist, unless --force)");
+    command.add_option("-o,--out", options.out,
+                       "Output directory (must not exist, unless --force)");
     command.add_flag("-f,--force", options.force, "Replace an existing output directory");
   }
   command.add_flag("-q,--quiet", options.quiet, "No progress output on stderr");
@@ -37,8 +45,8 @@ std::vector<OptionSpec> dataset_option_specs() {
   return {
       {"dataset", OptionType::String, "default",
        "Dataset: a YAML file, or the name of one in configs/datasets/ (tiny, default, paper)."},
-      {"resolution", OptionType::Integer, "0", "Shadow-map resolution for every view; 0 keeps the dataset's.", 0,
-       16384},
+      {"resolution", OptionType::Integer, "0",
+       "Shadow-map resolution for every view; 0 keeps the dataset's.", 0, 16384},
       {"threads", OptionType::Integer, "0", "OpenMP threads; 0 uses every core.", 0, 4096},
   };
 }
@@ -49,16 +57,18 @@ std::string format_number(double v, const char* format) {
   return buffer;
 }
 
-std::string run_plot_script(const std::string& script, const std::string& arguments, const std::string& out_stem,
-                            const std::string& caption, bool quiet) {
+std::string run_plot_script(const std::string& script, const std::string& arguments,
+                            const std::string& out_stem, const std::string& caption, bool quiet) {
   if (std::system("/usr/bin/python3 -c 'import matplotlib' >/dev/null 2>&1") != 0) {
-    std::string note = "No plot: /usr/bin/python3 with matplotlib is not available (apt install python3-matplotlib).\n\n";
+    std::string note =
+        "No plot: /usr/bin/python3 with matplotlib is not available (apt install "
+        "python3-matplotlib).\n\n";
     if (!quiet) std::fprintf(stderr, "%s", note.c_str());
     return note;
   }
   const std::string path = std::string(MOMENTBENCH_SOURCE_DIR) + "/scripts/" + script;
-  const std::string command =
-      "/usr/bin/python3 '" + path + "' " + arguments + " --out '" + out_stem + "'" + (quiet ? " >/dev/null" : "");
+  const std::string command = "/usr/bin/python3 '" + path + "' " + arguments + " --out '" +
+                              out_stem + "'" + (quiet ? " >/dev/null" : "");
   if (std::system(command.c_str()) != 0) throw InputError("plot failed: " + command);
   const std::string name = std::filesystem::path(out_stem).filename().string();
   return "![" + caption + "](" + name + ".png) (also " + name + ".pdf)\n\n";

@@ -34,7 +34,7 @@ std::string format_number(double v, const char* format);
 // Runs scripts/<script> with Debian's /usr/bin/python3 when matplotlib is there (DESIGN.md: plots
 // stay in Python). Returns the Markdown line for the report: the image `<out_stem>.png` (and
 // .pdf), or a note saying why there is no plot. InputError when the script itself fails.
-std::string run_plot_script(const std::string& script, const std::string& arguments, const std::string& out_stem,
-                            const std::string& caption, bool quiet);
+std::string run_plot_script(const std::string& script, const std::string& arguments,
+                            const std::string& out_stem, const std::string& caption, bool quiet);
 
 }  // namespace mb

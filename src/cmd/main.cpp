@@ -2,8 +2,8 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
-#include <new>
 #include <functional>
+#include <new>
 
 #include "cmd/command_common.h"
 #include "cmd/commands.h"
@@ -11,7 +11,8 @@
 
 int main(int argc, char** argv) {
   mb::set_process_arguments(argc, argv);
-  CLI::App app{"momentbench: moment shadow mapping benchmarks, from depth-layer stacks to LP ground truth"};
+  CLI::App app{
+      "momentbench: moment shadow mapping benchmarks, from depth-layer stacks to LP ground truth"};
   app.require_subcommand(1);
   app.set_version_flag("--version", MOMENTBENCH_VERSION);
   std::function<int()> action;
@@ -35,11 +36,14 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "momentbench: error: %s\n", e.what());
     return 1;
   } catch (const std::bad_alloc&) {
-    std::fprintf(stderr, "momentbench: error: out of memory; lower the resolution or the number of threads\n");
+    std::fprintf(
+        stderr,
+        "momentbench: error: out of memory; lower the resolution or the number of threads\n");
     return 1;
   } catch (const std::filesystem::filesystem_error& e) {
     // A path that exists but cannot be used (a directory for a file, no permission, disk full).
-    std::fprintf(stderr, "momentbench: error: %s: %s\n", e.path1().c_str(), e.code().message().c_str());
+    std::fprintf(stderr, "momentbench: error: %s: %s\n", e.path1().c_str(),
+                 e.code().message().c_str());
     return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "momentbench: internal error: %s\n", e.what());

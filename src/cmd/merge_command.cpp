@@ -23,7 +23,9 @@ struct MergeOptions {
 };
 
 std::string database_of(const std::string& dir) {
-  return std::filesystem::is_directory(dir) ? (std::filesystem::path(dir) / "results.sqlite").string() : dir;
+  return std::filesystem::is_directory(dir)
+             ? (std::filesystem::path(dir) / "results.sqlite").string()
+             : dir;
 }
 
 int run_merge(const MergeOptions& o) {
@@ -35,15 +37,15 @@ int run_merge(const MergeOptions& o) {
   for (size_t i = 0; i < inputs.size(); ++i) {
     auto meta = inputs[i].meta();
     if (meta["config_hash"] != first["config_hash"])
-      throw InputError(o.shards[i] + ": config hash " + meta["config_hash"] + " differs from " + o.shards[0] + "'s " +
-                       first["config_hash"] + ": not shards of one sweep");
+      throw InputError(o.shards[i] + ": config hash " + meta["config_hash"] + " differs from " +
+                       o.shards[0] + "'s " + first["config_hash"] + ": not shards of one sweep");
     if (!shard_names.insert(meta["shard"]).second)
       throw InputError(o.shards[i] + ": shard " + meta["shard"] + " is given twice");
     for (uint64_t id : inputs[i].candidate_ids()) {
       auto [it, fresh] = owner.emplace(id, o.shards[i]);
       if (!fresh)
-        throw InputError("candidate " + std::to_string(id) + " is in both " + it->second + " and " + o.shards[i] +
-                         ": overlapping shards");
+        throw InputError("candidate " + std::to_string(id) + " is in both " + it->second + " and " +
+                         o.shards[i] + ": overlapping shards");
     }
   }
   // Every shard of K/N must be there, or the merged sweep silently lacks candidates.
@@ -56,9 +58,11 @@ int run_merge(const MergeOptions& o) {
   }
   for (const auto& name : shard_names)
     if (parse_shard(name).second != total_shards)
-      throw InputError("shard " + name + " and shard " + first["shard"] + " split the sweep differently");
+      throw InputError("shard " + name + " and shard " + first["shard"] +
+                       " split the sweep differently");
   if (!missing.empty() && !o.partial)
-    throw InputError("shards " + missing + " of this sweep are missing; give every shard, or --partial to merge "
+    throw InputError("shards " + missing +
+                     " of this sweep are missing; give every shard, or --partial to merge "
                      "these alone");
   StagedOutputDir out(o.out, o.force);
   auto meta = first;
@@ -75,8 +79,9 @@ int run_merge(const MergeOptions& o) {
   }
   write_file_atomically(out / "config.yaml", first["config"]);
   out.commit();
-  std::printf("merged %zu shards (%s): %zu candidates -> %s%s\n", inputs.size(), merged.c_str(), owner.size(),
-              o.out.c_str(), missing.empty() ? "" : ("; missing shards " + missing).c_str());
+  std::printf("merged %zu shards (%s): %zu candidates -> %s%s\n", inputs.size(), merged.c_str(),
+              owner.size(), o.out.c_str(),
+              missing.empty() ? "" : ("; missing shards " + missing).c_str());
   return 0;
 }
 
@@ -85,10 +90,14 @@ int run_merge(const MergeOptions& o) {
 void register_merge_command(CLI::App& app, std::function<int()>& action) {
   auto options = std::make_shared<MergeOptions>();
   CLI::App* command = app.add_subcommand("merge", "Combine the shard databases of one sweep");
-  command->add_option("shards", options->shards, "Shard output directories (or results.sqlite files)")->required();
-  command->add_option("-o,--out", options->out, "Output directory (must not exist, unless --force)")->required();
+  command
+      ->add_option("shards", options->shards, "Shard output directories (or results.sqlite files)")
+      ->required();
+  command->add_option("-o,--out", options->out, "Output directory (must not exist, unless --force)")
+      ->required();
   command->add_flag("-f,--force", options->force, "Replace an existing output directory");
-  command->add_flag("--partial", options->partial, "Merge even when some shards of the sweep are missing");
+  command->add_flag("--partial", options->partial,
+                    "Merge even when some shards of the sweep are missing");
   command->callback([options, &action] { action = [options] { return run_merge(*options); }; });
 }
 

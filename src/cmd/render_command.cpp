@@ -19,7 +19,8 @@ namespace {
 
 std::vector<OptionSpec> render_specs() {
   auto specs = dataset_option_specs();
-  specs.push_back({"previews", OptionType::Boolean, "true", "Write PNG previews (layer-0 depth, layer counts)."});
+  specs.push_back({"previews", OptionType::Boolean, "true",
+                   "Write PNG previews (layer-0 depth, layer counts)."});
   return specs;
 }
 
@@ -48,15 +49,18 @@ int run_render(const RenderOptions& options) {
   StagedOutputDir out(options.common.out, options.common.force);
 
   std::ostringstream csv, table;
-  csv << "scene,view,resolution,triangles,fragments,receivers,covered_texels,max_layers,mean_layers,seconds\n";
-  table << "| scene | view | resolution | triangles | fragments | receivers | max layers | mean layers | seconds |\n"
+  csv << "scene,view,resolution,triangles,fragments,receivers,covered_texels,max_layers,mean_"
+         "layers,seconds\n";
+  table << "| scene | view | resolution | triangles | fragments | receivers | max layers | mean "
+           "layers | seconds |\n"
         << "|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& scene : scenes) {
     std::filesystem::create_directories(out.staging() / scene.name);
     for (const auto& view : scene.views) {
       auto start = std::chrono::steady_clock::now();
       LayerStack stack = render_view(scene, view, threads);
-      double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      double seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       std::string base = (out.staging() / scene.name / view.name).string();
       write_deep_exr(stack, base + ".exr");
       if (config.boolean("previews")) {
@@ -66,20 +70,23 @@ int run_render(const RenderOptions& options) {
       LayerStackStats s = compute_stats(stack, scene.mesh.triangles.size());
       char mean[32];
       std::snprintf(mean, sizeof mean, "%.3f", s.mean_layers);
-      csv << scene.name << "," << view.name << "," << view.resolution << "," << s.triangles << "," << s.fragments
-          << "," << s.receivers << "," << s.covered_texels << "," << s.max_layers << "," << round_trip(s.mean_layers)
-          << "," << round_trip(seconds) << "\n";
-      table << "| " << scene.name << " | " << view.name << " | " << view.resolution << " | " << s.triangles << " | "
-            << s.fragments << " | " << s.receivers << " | " << s.max_layers << " | " << mean << " | " << seconds
-            << " |\n";
+      csv << scene.name << "," << view.name << "," << view.resolution << "," << s.triangles << ","
+          << s.fragments << "," << s.receivers << "," << s.covered_texels << "," << s.max_layers
+          << "," << round_trip(s.mean_layers) << "," << round_trip(seconds) << "\n";
+      table << "| " << scene.name << " | " << view.name << " | " << view.resolution << " | "
+            << s.triangles << " | " << s.fragments << " | " << s.receivers << " | " << s.max_layers
+            << " | " << mean << " | " << seconds << " |\n";
       if (!options.common.quiet)
-        std::fprintf(stderr, "%s/%s: %zu fragments, %zu receivers, max %d layers, mean %s (%.2f s)\n",
-                     scene.name.c_str(), view.name.c_str(), s.fragments, s.receivers, s.max_layers, mean, seconds);
+        std::fprintf(stderr,
+                     "%s/%s: %zu fragments, %zu receivers, max %d layers, mean %s (%.2f s)\n",
+                     scene.name.c_str(), view.name.c_str(), s.fragments, s.receivers, s.max_layers,
+                     mean, seconds);
     }
   }
   RunMetadata meta = collect_run_metadata(threads, process_arguments());
   write_file_atomically(out / "stats.csv", csv.str());
-  write_file_atomically(out / "stats.md", "# Layer stacks of dataset " + dataset.name + "\n\n" + table.str());
+  write_file_atomically(out / "stats.md",
+                        "# Layer stacks of dataset " + dataset.name + "\n\n" + table.str());
   write_file_atomically(out / "config.yaml", config.to_yaml());
   write_file_atomically(out / "run.yaml", to_yaml(meta));
   out.commit();
@@ -91,7 +98,8 @@ int run_render(const RenderOptions& options) {
 
 void register_render_command(CLI::App& app, std::function<int()>& action) {
   auto options = std::make_shared<RenderOptions>();
-  CLI::App* command = app.add_subcommand("render", "Rasterize a dataset's views into depth-layer stacks (deep EXR)");
+  CLI::App* command = app.add_subcommand(
+      "render", "Rasterize a dataset's views into depth-layer stacks (deep EXR)");
   add_common_options(*command, options->common);
   command->callback([options, &action] { action = [options] { return run_render(*options); }; });
 }

@@ -34,8 +34,8 @@ int run_report(const ReportOptions& o) {
         run_plot_script("plot_histogram.py",
                         "--histogram '" + (out.staging() / "histogram.csv").string() +
                             "' --series '" + (out.staging() / "series.csv").string() +
-                            "' --references '" + (out.staging() / "references.csv").string() + "' --candidates '" +
-                                (out.staging() / "candidates.csv").string() + "'",
+                            "' --references '" + (out.staging() / "references.csv").string() +
+                            "' --candidates '" + (out.staging() / "candidates.csv").string() + "'",
                         (out.staging() / "histogram").string(), "candidate histogram", o.quiet);
   const std::string text = sweep_report_markdown(series, plot_note);
   write_file_atomically(out / "report.md", text);

@@ -1,8 +1,8 @@
 // `momentbench solve`: Problem 1 instances (REFERENCE.md §1-2) with a chosen LP backend, one from
 // flags or a JSON Lines batch; `--check` runs the independent KKT checker on every answer.
-#include <cstdio>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -42,7 +42,8 @@ using nlohmann::json;
 // 256 points, ~1.7 ms at 1024 with eight functions) costs more than solving the LP.
 class FactoryCache {
  public:
-  const lp::ProblemFactory& get(const std::vector<std::string>& basis_names, const lp::Discretization& disc) {
+  const lp::ProblemFactory& get(const std::vector<std::string>& basis_names,
+                                const lp::Discretization& disc) {
     if (!factory_ || basis_names != names_ || disc != disc_) {
       factory_.reset();  // a line that fails here must not leave the previous one's factory behind
       Basis basis = Basis::parse(basis_names);
@@ -60,9 +61,10 @@ class FactoryCache {
   std::unique_ptr<lp::ProblemFactory> factory_;
 };
 
-json solve_one(lp::Backend& backend, FactoryCache& factories, const std::vector<std::string>& basis_names,
-               const lp::Discretization& disc, const std::vector<double>& moments, double zf,
-               const std::vector<double>& points, bool check) {
+json solve_one(lp::Backend& backend, FactoryCache& factories,
+               const std::vector<std::string>& basis_names, const lp::Discretization& disc,
+               const std::vector<double>& moments, double zf, const std::vector<double>& points,
+               bool check) {
   lp::Problem problem = factories.get(basis_names, disc).from_moments(moments, zf, points);
   lp::Solution s = backend.solve(problem);
   json out;
@@ -75,33 +77,41 @@ json solve_one(lp::Backend& backend, FactoryCache& factories, const std::vector<
   if (s.status == lp::ProblemStatus::Optimal) {
     out["G"] = s.G;
     json support = json::array();
-    for (size_t k = 0; k < s.support.size(); ++k) support.push_back({problem.point(s.support[k]), s.weights[k]});
+    for (size_t k = 0; k < s.support.size(); ++k)
+      support.push_back({problem.point(s.support[k]), s.weights[k]});
     out["support"] = support;
   }
   // Defined answers outside I (REFERENCE.md §1): every distribution on [lo, hi] lies below a z_f
   // above hi (G = 1) and none strictly below a z_f at or under lo (G = 0).
-  if (zf > disc.hi) out["note"] = "zf lies above the interval: every distribution on it is below zf, so G = 1";
-  if (zf <= disc.lo) out["note"] = "zf lies at or below the interval's start: no mass is below it, so G = 0";
+  if (zf > disc.hi)
+    out["note"] = "zf lies above the interval: every distribution on it is below zf, so G = 1";
+  if (zf <= disc.lo)
+    out["note"] = "zf lies at or below the interval's start: no mass is below it, so G = 0";
   out["iterations"] = s.iterations;
   out["backend"] = backend.name();
-  if (check && s.status == lp::ProblemStatus::Optimal) out["kkt"] = lp::check_kkt(problem, s).describe();
+  if (check && s.status == lp::ProblemStatus::Optimal)
+    out["kkt"] = lp::check_kkt(problem, s).describe();
   return out;
 }
 
 // A closed-form technique (REFERENCE.md §4) on the given moments, e.g. to re-run a worst case of
 // `verify`; alpha >= 0 replaces every solver's default moment bias.
-json solve_closed_form(const std::string& name, double alpha, const std::vector<double>& moments, double zf) {
+json solve_closed_form(const std::string& name, double alpha, const std::vector<double>& moments,
+                       double zf) {
   if (name == "pcf" || name.rfind("lp:", 0) == 0)
-    throw InputError("technique: '" + name + "' is not a closed form of the moments (use basis for an LP)");
+    throw InputError("technique: '" + name +
+                     "' is not a closed form of the moments (use basis for an LP)");
   TechniqueParams params;
   if (alpha >= 0)
-    for (double* a : {&params.hamburger4_alpha, &params.hamburger4_float_alpha, &params.hamburger4_16bit_alpha,
-                      &params.hausdorff4_alpha, &params.hamburger6_alpha, &params.tmsm_alpha, &params.tmsm_float_alpha})
+    for (double* a : {&params.hamburger4_alpha, &params.hamburger4_float_alpha,
+                      &params.hamburger4_16bit_alpha, &params.hausdorff4_alpha,
+                      &params.hamburger6_alpha, &params.tmsm_alpha, &params.tmsm_float_alpha})
       *a = alpha;
   auto technique = make_technique(name, params);
   if (moments.size() != technique->basis().size())
-    throw InputError("moments: technique '" + name + "' reads " + std::to_string(technique->basis().size()) +
-                     " moments, got " + std::to_string(moments.size()));
+    throw InputError("moments: technique '" + name + "' reads " +
+                     std::to_string(technique->basis().size()) + " moments, got " +
+                     std::to_string(moments.size()));
   FragmentInput in;
   in.moments = moments;
   in.zf = zf;
@@ -132,17 +142,20 @@ struct Query {
   int integer(const char* key, int lo, int hi) const {
     const json& v = at(key);
     if (!v.is_number_integer() || v.get<double>() < lo || v.get<double>() > hi)
-      throw InputError(std::string("key '") + key + "': expected an integer in [" + std::to_string(lo) + ", " +
-                       std::to_string(hi) + "], got " + v.dump());
+      throw InputError(std::string("key '") + key + "': expected an integer in [" +
+                       std::to_string(lo) + ", " + std::to_string(hi) + "], got " + v.dump());
     return v.get<int>();
   }
   std::vector<double> numbers(const char* key) const {
     const json& v = at(key);
-    if (!v.is_array()) throw InputError(std::string("key '") + key + "': expected a list of numbers, got " + v.dump());
+    if (!v.is_array())
+      throw InputError(std::string("key '") + key + "': expected a list of numbers, got " +
+                       v.dump());
     std::vector<double> out;
     for (const auto& item : v) {
       if (!item.is_number() || !std::isfinite(item.get<double>()))
-        throw InputError(std::string("key '") + key + "': expected finite numbers, got " + item.dump());
+        throw InputError(std::string("key '") + key + "': expected finite numbers, got " +
+                         item.dump());
       out.push_back(item.get<double>());
     }
     return out;
@@ -150,24 +163,30 @@ struct Query {
   std::vector<std::string> strings(const char* key) const {
     const json& v = at(key);
     if (v.is_string()) return {v.get<std::string>()};
-    if (!v.is_array()) throw InputError(std::string("key '") + key + "': expected a list of strings, got " + v.dump());
+    if (!v.is_array())
+      throw InputError(std::string("key '") + key + "': expected a list of strings, got " +
+                       v.dump());
     std::vector<std::string> out;
     for (const auto& item : v) {
-      if (!item.is_string()) throw InputError(std::string("key '") + key + "': expected strings, got " + item.dump());
+      if (!item.is_string())
+        throw InputError(std::string("key '") + key + "': expected strings, got " + item.dump());
       out.push_back(item.get<std::string>());
     }
     return out;
   }
   std::string string(const char* key) const {
     const json& v = at(key);
-    if (!v.is_string()) throw InputError(std::string("key '") + key + "': expected a string, got " + v.dump());
+    if (!v.is_string())
+      throw InputError(std::string("key '") + key + "': expected a string, got " + v.dump());
     return v.get<std::string>();
   }
 };
 
-const std::vector<std::string> kQueryKeys = {"id", "basis", "interval", "grid", "moments", "points", "zf", "technique", "alpha"};
+const std::vector<std::string> kQueryKeys = {"id",     "basis", "interval",  "grid", "moments",
+                                             "points", "zf",    "technique", "alpha"};
 
-json solve_line(const std::string& line, int number, const SolveOptions& o, lp::Backend& backend, FactoryCache& factories) {
+json solve_line(const std::string& line, int number, const SolveOptions& o, lp::Backend& backend,
+                FactoryCache& factories) {
   json q;
   try {
     q = json::parse(line);
@@ -182,22 +201,26 @@ json solve_line(const std::string& line, int number, const SolveOptions& o, lp::
   for (const auto& item : q.items())
     if (std::find(kQueryKeys.begin(), kQueryKeys.end(), item.key()) == kQueryKeys.end()) {
       const std::string guess = closest_match(item.key(), kQueryKeys);
-      throw InputError("unknown key '" + item.key() + "'" + (guess.empty() ? "" : " (did you mean '" + guess + "'?)"));
+      throw InputError("unknown key '" + item.key() + "'" +
+                       (guess.empty() ? "" : " (did you mean '" + guess + "'?)"));
     }
   Query query{q};
   json out;
   out["id"] = q.value("id", json(number));
   if (query.has("technique")) {
-    out.update(solve_closed_form(query.string("technique"), query.has("alpha") ? query.number("alpha") : -1.0,
+    out.update(solve_closed_form(query.string("technique"),
+                                 query.has("alpha") ? query.number("alpha") : -1.0,
                                  query.numbers("moments"), query.number("zf")));
     return out;
   }
-  std::vector<double> interval = query.has("interval") ? query.numbers("interval") : std::vector<double>{0, 1};
+  std::vector<double> interval =
+      query.has("interval") ? query.numbers("interval") : std::vector<double>{0, 1};
   if (interval.size() != 2) throw InputError("key 'interval': expected [lo, hi]");
-  lp::Discretization d{interval[0], interval[1], query.has("grid") ? query.integer("grid", 2, 1 << 24) : o.grid,
-                       o.quantize};
-  out.update(solve_one(backend, factories, query.strings("basis"), d, query.numbers("moments"), query.number("zf"),
-                       query.has("points") ? query.numbers("points") : std::vector<double>{}, o.check));
+  lp::Discretization d{interval[0], interval[1],
+                       query.has("grid") ? query.integer("grid", 2, 1 << 24) : o.grid, o.quantize};
+  out.update(solve_one(
+      backend, factories, query.strings("basis"), d, query.numbers("moments"), query.number("zf"),
+      query.has("points") ? query.numbers("points") : std::vector<double>{}, o.check));
   return out;
 }
 
@@ -208,11 +231,13 @@ int run_solve(const SolveOptions& o) {
   if (o.input.empty()) {
     FactoryCache factories;
     json r = !o.technique.empty() ? solve_closed_form(o.technique, o.alpha, o.moments, o.zf)
-                                  : solve_one(*backend, factories, o.basis, disc, o.moments, o.zf, o.points, o.check);
+                                  : solve_one(*backend, factories, o.basis, disc, o.moments, o.zf,
+                                              o.points, o.check);
     std::printf("%s\n", r.dump(2).c_str());
     return r["status"] == "optimal" ? 0 : 3;
   }
-  if (std::filesystem::is_directory(o.input)) throw InputError(o.input + ": is a directory; --input needs a JSON Lines file");
+  if (std::filesystem::is_directory(o.input))
+    throw InputError(o.input + ": is a directory; --input needs a JSON Lines file");
   std::ifstream in(o.input);
   if (!in) throw InputError(o.input + ": cannot open");
   std::ostringstream results;
@@ -249,17 +274,22 @@ int run_solve(const SolveOptions& o) {
 
 void register_solve_command(CLI::App& app, std::function<int()>& action) {
   auto o = std::make_shared<SolveOptions>();
-  CLI::App* c = app.add_subcommand("solve", "Solve Problem 1 instances as LPs (one from flags, or JSON Lines)");
-  c->add_option("--basis", o->basis, "Basis functions: catalog names, expressions in z, or a set (power4, trig4)")
+  CLI::App* c = app.add_subcommand(
+      "solve", "Solve Problem 1 instances as LPs (one from flags, or JSON Lines)");
+  c->add_option("--basis", o->basis,
+                "Basis functions: catalog names, expressions in z, or a set (power4, trig4)")
       ->delimiter(',');
   c->add_option("--interval", o->interval, "Admissible interval lo,hi")->delimiter(',');
-  c->add_option("--grid", o->grid, "Uniform grid points on the interval")->check(CLI::Range(2, 1 << 24));
+  c->add_option("--grid", o->grid, "Uniform grid points on the interval")
+      ->check(CLI::Range(2, 1 << 24));
   c->add_option("--moments", o->moments, "Moment vector b_1..b_m")->delimiter(',');
-  c->add_option("--points", o->points, "Extra points of I (e.g. the kernel's depths)")->delimiter(',');
+  c->add_option("--points", o->points, "Extra points of I (e.g. the kernel's depths)")
+      ->delimiter(',');
   c->add_option("--zf", o->zf, "Fragment depth z_f");
   c->add_option("--backend", o->backend, "LP backend")->check(CLI::IsMember({"fast", "glpk"}));
   c->add_option("--technique", o->technique,
-                 "A closed form instead of the LP (hamburger4, hausdorff4, tmsm, vsm, esm, ...); --basis is ignored");
+                "A closed form instead of the LP (hamburger4, hausdorff4, tmsm, vsm, esm, ...); "
+                "--basis is ignored");
   c->add_option("--alpha", o->alpha, "Moment bias for --technique (default: the technique's own)")
       ->check(CLI::Range(0.0, 0.999999));
   CLI::Option* input = c->add_option("--input", o->input, "JSON Lines file of instances");
@@ -267,7 +297,8 @@ void register_solve_command(CLI::App& app, std::function<int()>& action) {
   c->add_flag("--check", o->check, "Run the independent KKT checker on every optimal answer");
   c->add_flag("--quantize", o->quantize, "Round extra points to the grid (REFERENCE.md §2)");
   // An instance comes from flags or from --input, never both (flags beside a batch were ignored).
-  for (const char* flag : {"--basis", "--interval", "--moments", "--points", "--zf", "--technique", "--alpha"})
+  for (const char* flag :
+       {"--basis", "--interval", "--moments", "--points", "--zf", "--technique", "--alpha"})
     input->excludes(c->get_option(flag));
   c->callback([o, &action] { action = [o] { return run_solve(*o); }; });
 }

@@ -1,15 +1,15 @@
 // `momentbench sweep`: every candidate basis of a catalog by its mean L1 error against PCF, with
 // the LP (issue 5). Results go to <out>/results.sqlite one committed candidate at a time, so a
 // killed sweep resumes with --resume, losing and repeating nothing.
-#include <chrono>
-#include <ctime>
-#include <optional>
 #include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
 #include <map>
+#include <optional>
 #include <set>
 #include <tuple>
-#include <cstdio>
-#include <filesystem>
 
 #include "cmd/command_common.h"
 #include "cmd/commands.h"
@@ -33,13 +33,16 @@ std::vector<OptionSpec> sweep_specs() {
   auto specs = dataset_option_specs();
   for (auto& s : shadow_option_specs()) specs.push_back(s);
   specs.push_back({"catalog", OptionType::StringList, "[]",
-                   "Functions to combine (names or expressions); empty = the 37-function catalog of REFERENCE.md §5."});
+                   "Functions to combine (names or expressions); empty = the 37-function catalog "
+                   "of REFERENCE.md §5."});
   specs.push_back({"combination_size", OptionType::Integer, "4", "Functions per candidate.", 1, 7});
   specs.push_back({"candidates", OptionType::StringList, "[]",
                    "Explicit candidates, each 'f1; f2; ...'; empty = all (or a sample)."});
-  specs.push_back({"sample", OptionType::Integer, "0", "Evaluate a seeded random sample of this many; 0 = all.", 0, 1e12});
+  specs.push_back({"sample", OptionType::Integer, "0",
+                   "Evaluate a seeded random sample of this many; 0 = all.", 0, 1e12});
   specs.push_back({"sample_seed", OptionType::Integer, "1", "Seed of the sample.", 0, 1e18});
-  specs.push_back({"references", OptionType::StringList, "[pcf, vsm, esm, hamburger4, hausdorff4, hamburger6, tmsm, lp:power4, lp:trig4]",
+  specs.push_back({"references", OptionType::StringList,
+                   "[pcf, vsm, esm, hamburger4, hausdorff4, hamburger6, tmsm, lp:power4, lp:trig4]",
                    "Techniques evaluated once on the same dataset, for the report."});
   return specs;
 }
@@ -75,8 +78,10 @@ bool is_sweep_directory(const std::filesystem::path& dir) {
   if (!std::filesystem::is_directory(dir)) return false;
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
     const std::string name = entry.path().filename().string();
-    const bool ours = name == "config.yaml" || (name.rfind("run_", 0) == 0 && name.find(".yaml") != std::string::npos) ||
-                      name.find(".tmp-") != std::string::npos || name.rfind("results.sqlite", 0) == 0 ||
+    const bool ours = name == "config.yaml" ||
+                      (name.rfind("run_", 0) == 0 && name.find(".yaml") != std::string::npos) ||
+                      name.find(".tmp-") != std::string::npos ||
+                      name.rfind("results.sqlite", 0) == 0 ||
                       name.rfind(".results.sqlite.new-", 0) == 0;
     if (!ours) return false;
   }
@@ -86,7 +91,8 @@ bool is_sweep_directory(const std::filesystem::path& dir) {
 std::vector<std::pair<std::string, double>> view_errors(const std::vector<ViewData>& views,
                                                         const std::vector<ErrorStats>& per_view) {
   std::vector<std::pair<std::string, double>> out;
-  for (size_t v = 0; v < views.size(); ++v) out.push_back({views[v].scene + "/" + views[v].view, per_view[v].mean()});
+  for (size_t v = 0; v < views.size(); ++v)
+    out.push_back({views[v].scene + "/" + views[v].view, per_view[v].mean()});
   return out;
 }
 
@@ -99,9 +105,10 @@ int run_sweep(const SweepOptions& options) {
   const auto [shard, shards] = parse_shard(options.shard);
   const int threads = resolve_thread_count(int(config.integer("threads")));
   EvalSettings settings = shadow_settings_from(config, threads);
-  SweepPlan plan = make_sweep_plan(config.strings("catalog"), int(config.integer("combination_size")),
-                                   config.strings("candidates"), uint64_t(config.integer("sample")),
-                                   uint64_t(config.integer("sample_seed")));
+  SweepPlan plan =
+      make_sweep_plan(config.strings("catalog"), int(config.integer("combination_size")),
+                      config.strings("candidates"), uint64_t(config.integer("sample")),
+                      uint64_t(config.integer("sample_seed")));
   // Every catalog function on the admissible interval, and the candidates' size against the
   // backend, before any work: a function with a pole would fail every candidate it is in.
   {
@@ -115,7 +122,8 @@ int run_sweep(const SweepOptions& options) {
   if (settings.bias.reference == Reference::ReceiverPlane &&
       std::find(references.begin(), references.end(), "oracle") == references.end())
     references.push_back("oracle");
-  std::map<std::string, std::pair<double, std::string>> darkening;  // Technique::darkening_bound, _reason
+  std::map<std::string, std::pair<double, std::string>>
+      darkening;  // Technique::darkening_bound, _reason
   for (const auto& name : references) {
     auto technique = make_technique(name, settings.technique);
     darkening[name] = {technique->darkening_bound(), technique->darkening_reason()};
@@ -124,44 +132,57 @@ int run_sweep(const SweepOptions& options) {
   if (options.common.out.empty()) throw InputError("--out: a sweep needs an output directory");
 
   // Scenes are read and rendered before anything is written: bad input leaves no output.
-  auto views = prepare_views(dataset, int(config.integer("resolution")), settings, options.common.quiet);
+  auto views =
+      prepare_views(dataset, int(config.integer("resolution")), settings, options.common.quiet);
   // The output directory is the sweep's state: new unless resuming, then it must match.
   namespace fs = std::filesystem;
   const fs::path out = options.common.out, db_path = out / "results.sqlite";
-  const std::string hash = config_hash(config), shard_text = std::to_string(shard) + "/" + std::to_string(shards);
+  const std::string hash = config_hash(config),
+                    shard_text = std::to_string(shard) + "/" + std::to_string(shards);
   std::optional<ResultsStore> store;
   if (options.resume && fs::exists(db_path)) {
     store.emplace(ResultsStore::open(db_path.string()));
     auto meta = store->meta();
     if (meta["config_hash"] != hash)
-      throw InputError(db_path.string() + ": the sweep there was run with another config (hash " + meta["config_hash"] +
-                       ", now " + hash + "); compare its config.yaml, or start a new sweep elsewhere");
+      throw InputError(db_path.string() + ": the sweep there was run with another config (hash " +
+                       meta["config_hash"] + ", now " + hash +
+                       "); compare its config.yaml, or start a new sweep elsewhere");
     if (meta["shard"] != shard_text)
-      throw InputError(db_path.string() + ": that sweep is shard " + meta["shard"] + ", not " + shard_text);
+      throw InputError(db_path.string() + ": that sweep is shard " + meta["shard"] + ", not " +
+                       shard_text);
   } else {
     // A sweep killed before its database existed left at most its own files: --resume starts it
     // afresh there, so a sweep resumes from every instant (ResultsStore::create is atomic).
     if (fs::exists(out)) {
       if (options.resume) {
         if (!is_sweep_directory(out))
-          throw InputError(out.string() + ": holds no results.sqlite and files that are not a sweep's; not resuming here");
+          throw InputError(
+              out.string() +
+              ": holds no results.sqlite and files that are not a sweep's; not resuming here");
       } else if (!options.common.force) {
-        throw InputError(out.string() + ": output directory exists (use --resume to continue its sweep, --force to replace it)");
+        throw InputError(out.string() +
+                         ": output directory exists (use --resume to continue its sweep, --force "
+                         "to replace it)");
       } else {
         fs::remove_all(out);
       }
     }
     std::error_code ec;
     fs::create_directories(out, ec);
-    if (ec) throw InputError(out.string() + ": cannot create the output directory: " + ec.message());
+    if (ec)
+      throw InputError(out.string() + ": cannot create the output directory: " + ec.message());
     write_file_atomically(out / "config.yaml", config.to_yaml());
-    store.emplace(ResultsStore::create(
-        db_path.string(), {{"config_hash", hash}, {"shard", shard_text}, {"dataset", dataset.name},
-                           {"reference", reference_name(settings.bias.reference)},
-                           {"git_sha", collect_run_metadata(threads, {}).git_sha},
-                           {"catalog_size", std::to_string(plan.catalog.size())},
-                           {"combination_size", std::to_string(plan.size)}, {"planned", std::to_string(plan.ids.size())},
-                           {"settings", describe_settings(settings)}, {"config", config.to_yaml()}}));
+    store.emplace(ResultsStore::create(db_path.string(),
+                                       {{"config_hash", hash},
+                                        {"shard", shard_text},
+                                        {"dataset", dataset.name},
+                                        {"reference", reference_name(settings.bias.reference)},
+                                        {"git_sha", collect_run_metadata(threads, {}).git_sha},
+                                        {"catalog_size", std::to_string(plan.catalog.size())},
+                                        {"combination_size", std::to_string(plan.size)},
+                                        {"planned", std::to_string(plan.ids.size())},
+                                        {"settings", describe_settings(settings)},
+                                        {"config", config.to_yaml()}}));
   }
   write_file_atomically(out / ("run_" + std::to_string(std::time(nullptr)) + ".yaml"),
                         to_yaml(collect_run_metadata(threads, process_arguments())));
@@ -195,8 +216,11 @@ int run_sweep(const SweepOptions& options) {
   for (uint64_t id : shard_ids(plan, shard, shards))
     if (!done.count(id)) todo.push_back(id);
   if (!options.common.quiet)
-    std::fprintf(stderr, "sweep: %zu candidates in this shard, %zu done, %zu to go; %llu LPs per candidate\n",
-                 todo.size() + done.size(), done.size(), todo.size(), (unsigned long long)evaluator.lp_fragments());
+    std::fprintf(
+        stderr,
+        "sweep: %zu candidates in this shard, %zu done, %zu to go; %llu LPs per candidate\n",
+        todo.size() + done.size(), done.size(), todo.size(),
+        (unsigned long long)evaluator.lp_fragments());
   ProgressBar bar("sweep", todo.size(), options.common.quiet);
   const auto sweep_start = std::chrono::steady_clock::now();
   uint64_t lps = 0;
@@ -209,7 +233,8 @@ int run_sweep(const SweepOptions& options) {
     } catch (const InputError& e) {
       // A numerically dependent combination cannot be solved: recorded with every LP fragment
       // failed (shown lit), flagged in the report, and the sweep goes on.
-      if (!options.common.quiet) std::fprintf(stderr, "\ncandidate %llu: %s\n", (unsigned long long)id, e.what());
+      if (!options.common.quiet)
+        std::fprintf(stderr, "\ncandidate %llu: %s\n", (unsigned long long)id, e.what());
       result.unstable = evaluator.lp_fragments();
       for (const auto& view : views) {
         ErrorStats s;
@@ -218,7 +243,8 @@ int run_sweep(const SweepOptions& options) {
         result.per_view.push_back(s);
       }
     }
-    ResultRow row = make_result_row(id, plan.name(id), result.overall, view_errors(views, result.per_view));
+    ResultRow row =
+        make_result_row(id, plan.name(id), result.overall, view_errors(views, result.per_view));
     row.solved = result.solved;
     row.skipped = result.skipped;
     row.infeasible = result.infeasible;
@@ -227,7 +253,8 @@ int run_sweep(const SweepOptions& options) {
     row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     store->put_candidate(row);
     lps += result.solved + result.infeasible + result.unstable;
-    double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - sweep_start).count();
+    double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - sweep_start).count();
     char note[64];
     std::snprintf(note, sizeof note, "%.3g LP/s", lps / std::max(elapsed, 1e-9));
     bar.set_note(note);
@@ -242,9 +269,11 @@ int run_sweep(const SweepOptions& options) {
 
 void register_sweep_command(CLI::App& app, std::function<int()>& action) {
   auto options = std::make_shared<SweepOptions>();
-  CLI::App* command = app.add_subcommand("sweep", "Evaluate every candidate basis of a catalog with the LP (resumable)");
+  CLI::App* command = app.add_subcommand(
+      "sweep", "Evaluate every candidate basis of a catalog with the LP (resumable)");
   add_common_options(*command, options->common);
-  command->add_flag("--resume", options->resume, "Continue the sweep in --out (same config required)");
+  command->add_flag("--resume", options->resume,
+                    "Continue the sweep in --out (same config required)");
   command->add_option("--shard", options->shard, "Run shard K of N (K/N): every N-th candidate");
   command->callback([options, &action] { action = [options] { return run_sweep(*options); }; });
 }

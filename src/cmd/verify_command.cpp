@@ -26,22 +26,34 @@ std::vector<OptionSpec> verify_specs() {
   auto specs = dataset_option_specs();
   for (auto& s : shadow_option_specs()) specs.push_back(s);
   specs.push_back({"verify.techniques", OptionType::StringList,
-                   "[hamburger4, hausdorff4, tmsm, vsm, esm, hamburger6, hamburger4_float, hamburger4_16bit, tmsm_float]",
+                   "[hamburger4, hausdorff4, tmsm, vsm, esm, hamburger6, hamburger4_float, "
+                   "hamburger4_16bit, tmsm_float]",
                    "Closed forms to check (REFERENCE.md §6)."});
-  specs.push_back({"verify.random", OptionType::Integer, "2000", "Seeded random distributions (1-8 atoms, mixtures).", 0, 1e8});
-  specs.push_back({"verify.fragments", OptionType::Integer, "2000", "Real receiver kernels sampled from the dataset (0: none).", 0, 1e8});
-  specs.push_back({"verify.seed", OptionType::Integer, "2015", "Seed of the random instances and the fragment sample.", 0, 1e18});
-  specs.push_back({"verify.grids", OptionType::StringList, "[256, 1024, 4096]", "LP grid sizes, ascending; the last decides."});
-  specs.push_back({"verify.tolerance", OptionType::Number, "5e-3", "Largest |G_closed_form - G_LP| on the finest grid.", 0, 1});
+  specs.push_back({"verify.random", OptionType::Integer, "2000",
+                   "Seeded random distributions (1-8 atoms, mixtures).", 0, 1e8});
+  specs.push_back({"verify.fragments", OptionType::Integer, "2000",
+                   "Real receiver kernels sampled from the dataset (0: none).", 0, 1e8});
+  specs.push_back({"verify.seed", OptionType::Integer, "2015",
+                   "Seed of the random instances and the fragment sample.", 0, 1e18});
+  specs.push_back({"verify.grids", OptionType::StringList, "[256, 1024, 4096]",
+                   "LP grid sizes, ascending; the last decides."});
+  specs.push_back({"verify.tolerance", OptionType::Number, "5e-3",
+                   "Largest |G_closed_form - G_LP| on the finest grid.", 0, 1});
   specs.push_back({"verify.esm_c", OptionType::Number, "10",
-                   "ESM exponent for verify: with c = 80 the LP cannot resolve E[e^{c(z-1)}] below its 1e-9 tolerance.",
+                   "ESM exponent for verify: with c = 80 the LP cannot resolve E[e^{c(z-1)}] below "
+                   "its 1e-9 tolerance.",
                    1e-6, 700});
-  specs.push_back({"verify.worst", OptionType::Integer, "5", "Worst cases listed per solver.", 0, 1000});
+  specs.push_back(
+      {"verify.worst", OptionType::Integer, "5", "Worst cases listed per solver.", 0, 1000});
   return specs;
 }
 
-std::string num(double v) { return format_number(v, "%.3g"); }
-std::string full(double v) { return round_trip(v); }
+std::string num(double v) {
+  return format_number(v, "%.3g");
+}
+std::string full(double v) {
+  return round_trip(v);
+}
 
 std::string joined(const std::vector<double>& v, const char* separator) {
   std::string s;
@@ -50,8 +62,9 @@ std::string joined(const std::vector<double>& v, const char* separator) {
 }
 
 // Every receiver is equally likely; the sample is drawn with a seeded generator, in a fixed order.
-std::vector<VerifyInstance> dataset_instances(const std::vector<ViewData>& views, const EvalSettings& settings,
-                                              int count, uint64_t seed) {
+std::vector<VerifyInstance> dataset_instances(const std::vector<ViewData>& views,
+                                              const EvalSettings& settings, int count,
+                                              uint64_t seed) {
   std::vector<VerifyInstance> out;
   size_t total = 0;
   for (const auto& v : views) total += v.fragments.size();
@@ -65,14 +78,15 @@ std::vector<VerifyInstance> dataset_instances(const std::vector<ViewData>& views
         index -= v.fragments.size();
         continue;
       }
-      const int x = int(v.fragments.texel[index] % v.fragments.width), y = int(v.fragments.texel[index] / v.fragments.width);
+      const int x = int(v.fragments.texel[index] % v.fragments.width),
+                y = int(v.fragments.texel[index] / v.fragments.width);
       VerifyInstance inst;
       inst.depths.resize(taps);
       inst.weights.resize(taps);
       kernel_distribution(v.map, settings.kernel, x, y, inst.depths, inst.weights);
       inst.zf = v.fragments.ztest[index];
-      inst.source = "dataset:" + v.scene + "/" + v.view + " texel (" + std::to_string(x) + "," + std::to_string(y) +
-                    ") layer " + std::to_string(v.fragments.layer[index]);
+      inst.source = "dataset:" + v.scene + "/" + v.view + " texel (" + std::to_string(x) + "," +
+                    std::to_string(y) + ") layer " + std::to_string(v.fragments.layer[index]);
       out.push_back(std::move(inst));
       break;
     }
@@ -107,25 +121,29 @@ int run_verify(const CommonOptions& options) {
   const uint64_t seed = uint64_t(config.integer("verify.seed"));
   // A pass over no instances would prove nothing.
   if (config.integer("verify.random") == 0 && config.integer("verify.fragments") == 0)
-    throw InputError("verify.random, verify.fragments: both 0, nothing to verify; give at least one instance");
+    throw InputError(
+        "verify.random, verify.fragments: both 0, nothing to verify; give at least one instance");
   StagedOutputDir out(options.out, options.force);
 
-  std::vector<VerifyInstance> instances = random_verify_instances(int(config.integer("verify.random")), seed);
+  std::vector<VerifyInstance> instances =
+      random_verify_instances(int(config.integer("verify.random")), seed);
   const size_t random_count = instances.size();
   std::string dataset_name = "none";
   if (config.integer("verify.fragments") > 0) {
     DatasetDesc dataset = load_dataset(config.string("dataset"));
     dataset_name = dataset.name;
     auto views = prepare_views(dataset, int(config.integer("resolution")), settings, options.quiet);
-    for (auto& inst : dataset_instances(views, settings, int(config.integer("verify.fragments")), seed))
+    for (auto& inst :
+         dataset_instances(views, settings, int(config.integer("verify.fragments")), seed))
       instances.push_back(std::move(inst));
   }
 
   std::vector<VerifySolverResult> results;
   for (const auto& target : targets) {
     ProgressBar bar("verify " + target.technique, 1, options.quiet);
-    results.push_back(verify_solver(target, [&] { return make_technique(target.technique, params); }, instances, grids,
-                                    tolerance, int(config.integer("verify.worst")), threads));
+    results.push_back(verify_solver(
+        target, [&] { return make_technique(target.technique, params); }, instances, grids,
+        tolerance, int(config.integer("verify.worst")), threads));
     bar.advance(1);
     bar.finish();
   }
@@ -133,25 +151,32 @@ int run_verify(const CommonOptions& options) {
   RunMetadata meta = collect_run_metadata(threads, process_arguments());
   std::ostringstream md, csv, worst;
   md << "# Closed forms against the LP (REFERENCE.md §6)\n\n"
-     << "Made by momentbench " << meta.version << " (git " << meta.git_sha << "), " << threads << " threads, "
-     << meta.started_utc << ".\n\n"
-     << "- " << random_count << " seeded random distributions (seed " << seed << "; 1-8 atoms, two-bump mixtures), "
-     << instances.size() - random_count << " real receiver kernels of dataset " << dataset_name
-     << " (at z_f - delta_f, delta_f = " << num(settings.bias.constant) << " + " << num(settings.bias.slope) << " * "
-     << settings.kernel.radius() << " * (|dz/dx| + |dz/dy|))\n"
-     << "- The LP sees the exact distribution (its depths join the grid); the closed form sees its moments as its "
-        "map stores them. Exact solvers run with alpha = 0; float/16-bit ones with their own bias.\n"
+     << "Made by momentbench " << meta.version << " (git " << meta.git_sha << "), " << threads
+     << " threads, " << meta.started_utc << ".\n\n"
+     << "- " << random_count << " seeded random distributions (seed " << seed
+     << "; 1-8 atoms, two-bump mixtures), " << instances.size() - random_count
+     << " real receiver kernels of dataset " << dataset_name
+     << " (at z_f - delta_f, delta_f = " << num(settings.bias.constant) << " + "
+     << num(settings.bias.slope) << " * " << settings.kernel.radius() << " * (|dz/dx| + |dz/dy|))\n"
+     << "- The LP sees the exact distribution (its depths join the grid); the closed form sees its "
+        "moments as its "
+        "map stores them. Exact solvers run with alpha = 0; float/16-bit ones with their own "
+        "bias.\n"
      << "- Pass: on the finest grid |dG| <= " << num(tolerance)
-     << " for every instance, and never above an LP witness: each LP optimum is a distribution on I (its moments "
-        "miss the instance's by the LP tolerance, which near singular moments moves G by more than 1e-6), so the "
-        "closed form evaluated on that distribution's own moments must not exceed its mass below z_f by more than "
+     << " for every instance, and never above an LP witness: each LP optimum is a distribution on "
+        "I (its moments "
+        "miss the instance's by the LP tolerance, which near singular moments moves G by more than "
+        "1e-6), so the "
+        "closed form evaluated on that distribution's own moments must not exceed its mass below "
+        "z_f by more than "
         "1e-6. Undefined: the closed form gave no number (singular moments at alpha = 0).\n\n"
      << "| technique | LP basis | interval | instances | undefined |";
   for (int g : grids) md << " grid " << g << ": max / mean abs dG |";
   md << " beyond tol. | above witness | verdict |\n|---|---|---|---|---|";
   for (size_t k = 0; k < grids.size(); ++k) md << "---|";
   md << "---|---|---|\n";
-  csv << "technique,lp_basis,lo,hi,grid,instances,undefined,compared,lp_failures,max_abs_dG,mean_abs_dG,beyond_tolerance,"
+  csv << "technique,lp_basis,lo,hi,grid,instances,undefined,compared,lp_failures,max_abs_dG,mean_"
+         "abs_dG,beyond_tolerance,"
          "above_lp,exact,passed\n";
   worst << "technique,kind,rank,source,zf,moments,depths,weights,G_closed_form";
   for (int g : grids) worst << ",G_lp_" << g;
@@ -160,26 +185,31 @@ int run_verify(const CommonOptions& options) {
   for (const auto& r : results) {
     std::string basis;
     for (const auto& b : r.target.lp_basis) basis += (basis.empty() ? "" : ",") + b;
-    md << "| " << r.target.technique << " | " << basis << " | [" << num(r.target.lo) << ", " << num(r.target.hi) << "] | "
-       << r.instances << " | " << r.undefined << " |";
-    for (const auto& g : r.grids) md << " " << num(g.max_difference) << " / " << num(g.mean_difference) << " |";
+    md << "| " << r.target.technique << " | " << basis << " | [" << num(r.target.lo) << ", "
+       << num(r.target.hi) << "] | " << r.instances << " | " << r.undefined << " |";
+    for (const auto& g : r.grids)
+      md << " " << num(g.max_difference) << " / " << num(g.mean_difference) << " |";
     md << " " << r.beyond_tolerance << " | " << r.above_lp << " | "
        << (r.target.exact ? (r.passed() ? "pass" : "**FAIL**") : "reported (bias)") << " |\n";
     for (const auto& g : r.grids)
-      csv << r.target.technique << ",\"" << basis << "\"," << full(r.target.lo) << "," << full(r.target.hi) << "," << g.grid << ","
-          << r.instances << "," << r.undefined << "," << g.compared << "," << g.lp_failures << "," << full(g.max_difference)
-          << "," << full(g.mean_difference) << "," << r.beyond_tolerance << "," << r.above_lp << ","
+      csv << r.target.technique << ",\"" << basis << "\"," << full(r.target.lo) << ","
+          << full(r.target.hi) << "," << g.grid << "," << r.instances << "," << r.undefined << ","
+          << g.compared << "," << g.lp_failures << "," << full(g.max_difference) << ","
+          << full(g.mean_difference) << "," << r.beyond_tolerance << "," << r.above_lp << ","
           << (r.target.exact ? 1 : 0) << "," << (r.passed() ? 1 : 0) << "\n";
     all_passed = all_passed && r.passed();
   }
-  md << "\n## Worst cases\n\nPer solver: the largest |dG| on the finest grid, then (if any) the cases furthest above an "
-        "LP. Re-run one with the printed `solve` commands (closed form, then the LP with the distribution's depths "
+  md << "\n## Worst cases\n\nPer solver: the largest |dG| on the finest grid, then (if any) the "
+        "cases furthest above an "
+        "LP. Re-run one with the printed `solve` commands (closed form, then the LP with the "
+        "distribution's depths "
         "as extra points).\n";
   // One table (and its worst.csv rows) per list of cases; `kind` names the ordering.
-  const auto write_cases = [&](const VerifySolverResult& r, const std::vector<VerifyCase>& cases, const char* kind,
-                               const char* heading) {
+  const auto write_cases = [&](const VerifySolverResult& r, const std::vector<VerifyCase>& cases,
+                               const char* kind, const char* heading) {
     if (cases.empty()) return;
-    md << "\n### " << r.target.technique << ": " << heading << "\n\n| rank | source | z_f | G closed form |";
+    md << "\n### " << r.target.technique << ": " << heading
+       << "\n\n| rank | source | z_f | G closed form |";
     for (int g : grids) md << " G LP " << g << " |";
     md << "\n|---|---|---|---|";
     for (size_t k = 0; k < grids.size(); ++k) md << "---|";
@@ -187,12 +217,14 @@ int run_verify(const CommonOptions& options) {
     for (size_t k = 0; k < cases.size(); ++k) {
       const VerifyCase& c = cases[k];
       const VerifyInstance& inst = instances[c.instance];
-      md << "| " << k + 1 << " | " << inst.source << " | " << full(inst.zf) << " | " << full(c.closed_form) << " |";
+      md << "| " << k + 1 << " | " << inst.source << " | " << full(inst.zf) << " | "
+         << full(c.closed_form) << " |";
       for (double g : c.lp) md << " " << full(g) << " |";
       md << "\n";
-      worst << r.target.technique << "," << kind << "," << k + 1 << ",\"" << inst.source << "\"," << full(inst.zf)
-            << ",\"" << joined(c.moments, " ") << "\",\"" << joined(inst.depths, " ") << "\",\""
-            << joined(inst.weights, " ") << "\"," << full(c.closed_form);
+      worst << r.target.technique << "," << kind << "," << k + 1 << ",\"" << inst.source << "\","
+            << full(inst.zf) << ",\"" << joined(c.moments, " ") << "\",\""
+            << joined(inst.depths, " ") << "\",\"" << joined(inst.weights, " ") << "\","
+            << full(c.closed_form);
       for (double g : c.lp) worst << "," << full(g);
       worst << "\n";
     }
@@ -200,10 +232,12 @@ int run_verify(const CommonOptions& options) {
     for (const auto& b : r.target.lp_basis) basis += (basis.empty() ? "" : ",") + b;
     const VerifyCase& c = cases.front();
     const VerifyInstance& inst = instances[c.instance];
-    md << "\n```\nmomentbench solve --technique " << r.target.technique << (r.target.exact ? " --alpha 0" : "")
-       << " --moments " << joined(c.moments, ",") << " --zf " << full(inst.zf) << "\nmomentbench solve --basis '"
-       << basis << "' --interval " << num(r.target.lo) << "," << num(r.target.hi) << " --grid " << grids.back()
-       << " --zf " << full(inst.zf) << " --points " << joined(inst.depths, ",") << " --moments <E[b] of those points>\n```\n";
+    md << "\n```\nmomentbench solve --technique " << r.target.technique
+       << (r.target.exact ? " --alpha 0" : "") << " --moments " << joined(c.moments, ",")
+       << " --zf " << full(inst.zf) << "\nmomentbench solve --basis '" << basis << "' --interval "
+       << num(r.target.lo) << "," << num(r.target.hi) << " --grid " << grids.back() << " --zf "
+       << full(inst.zf) << " --points " << joined(inst.depths, ",")
+       << " --moments <E[b] of those points>\n```\n";
   };
   for (const auto& r : results) {
     write_cases(r, r.worst, "largest_dG", "largest |dG| on the finest grid");
@@ -222,7 +256,9 @@ int run_verify(const CommonOptions& options) {
   if (!all_passed) {
     for (const auto& r : results)
       if (!r.passed())
-        std::fprintf(stderr, "momentbench: verify: %s disagrees with the LP (%zu beyond tolerance, %zu above an LP witness)\n",
+        std::fprintf(stderr,
+                     "momentbench: verify: %s disagrees with the LP (%zu beyond tolerance, %zu "
+                     "above an LP witness)\n",
                      r.target.technique.c_str(), r.beyond_tolerance, r.above_lp);
     return 5;
   }
@@ -233,7 +269,8 @@ int run_verify(const CommonOptions& options) {
 
 void register_verify_command(CLI::App& app, std::function<int()>& action) {
   auto options = std::make_shared<CommonOptions>();
-  CLI::App* command = app.add_subcommand("verify", "Check every closed-form solver against the LP ground truth");
+  CLI::App* command =
+      app.add_subcommand("verify", "Check every closed-form solver against the LP ground truth");
   add_common_options(*command, *options);
   command->callback([options, &action] { action = [options] { return run_verify(*options); }; });
 }

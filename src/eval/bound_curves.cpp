@@ -7,8 +7,8 @@
 #include "eval/lp_technique.h"
 #include "lp/solution.h"
 #include "util/error.h"
-#include "util/parallel_errors.h"
 #include "util/number_text.h"
+#include "util/parallel_errors.h"
 
 namespace mb {
 
@@ -18,15 +18,19 @@ namespace {
 double checked_total_weight(const BoundCurveRequest& r) {
   if (r.depths.empty()) throw InputError("bounds.depths: expected at least one depth");
   if (r.depths.size() != r.weights.size())
-    throw InputError("bounds.weights: expected one weight per depth (" + std::to_string(r.depths.size()) + "), got " +
+    throw InputError("bounds.weights: expected one weight per depth (" +
+                     std::to_string(r.depths.size()) + "), got " +
                      std::to_string(r.weights.size()));
   double total = 0;
   for (size_t t = 0; t < r.depths.size(); ++t) {
-    if (!std::isfinite(r.depths[t])) throw InputError("bounds.depths: depth " + std::to_string(t + 1) + " is not finite");
+    if (!std::isfinite(r.depths[t]))
+      throw InputError("bounds.depths: depth " + std::to_string(t + 1) + " is not finite");
     if (!(r.weights[t] >= 0) || !std::isfinite(r.weights[t]))
-      throw InputError("bounds.weights: weight " + std::to_string(t + 1) + " is not a finite non-negative number");
+      throw InputError("bounds.weights: weight " + std::to_string(t + 1) +
+                       " is not a finite non-negative number");
     if (r.depths[t] < r.lp.lo || r.depths[t] > r.lp.hi)
-      throw InputError("bounds.depths: depth " + round_trip(r.depths[t]) + " lies outside the LP interval [lo, hi]");
+      throw InputError("bounds.depths: depth " + round_trip(r.depths[t]) +
+                       " lies outside the LP interval [lo, hi]");
     total += r.weights[t];
   }
   if (!(total > 0)) throw InputError("bounds.weights: expected a positive total weight");
@@ -71,15 +75,16 @@ BoundCurves compute_bound_curves(const BoundCurveRequest& r) {
       {
         auto backend = lp::make_backend(r.backend);
 #pragma omp for schedule(dynamic, 4)
-        for (size_t i = 0; i < out.zf.size(); ++i) errors.capture([&] {
-          // The distribution's depths join I and fix the moments: feasible by construction (§2).
-          const lp::Problem problem = factory.from_distribution(r.depths, r.weights, out.zf[i]);
-          const lp::Solution s = backend->solve(problem);
-          if (s.call == lp::CallStatus::Ok && s.status == lp::ProblemStatus::Optimal)
-            series.lower[i] = std::clamp(s.G, 0.0, 1.0);
-          else
-            ++failures;
-        });
+        for (size_t i = 0; i < out.zf.size(); ++i)
+          errors.capture([&] {
+            // The distribution's depths join I and fix the moments: feasible by construction (§2).
+            const lp::Problem problem = factory.from_distribution(r.depths, r.weights, out.zf[i]);
+            const lp::Solution s = backend->solve(problem);
+            if (s.call == lp::CallStatus::Ok && s.status == lp::ProblemStatus::Optimal)
+              series.lower[i] = std::clamp(s.G, 0.0, 1.0);
+            else
+              ++failures;
+          });
       }
       errors.rethrow();
       series.failures = failures;
@@ -92,7 +97,8 @@ BoundCurves compute_bound_curves(const BoundCurveRequest& r) {
         series.max_gap = std::max(series.max_gap, gap);
         ++solved;
       }
-      series.mean_gap = solved ? gap_sum / double(solved) : std::numeric_limits<double>::quiet_NaN();
+      series.mean_gap =
+          solved ? gap_sum / double(solved) : std::numeric_limits<double>::quiet_NaN();
       out.series.push_back(std::move(series));
     }
   }

@@ -16,7 +16,7 @@ struct BoundCurveRequest {
   std::vector<int> sizes = {2, 3, 4};   // m: the first m functions of each basis
   int samples = 401;                    // z_f values, uniform on [zf_lo, zf_hi]
   double zf_lo = 0, zf_hi = 1;
-  lp::Discretization lp;                // I = grid ∪ the distribution's depths ∪ {z_f}
+  lp::Discretization lp;  // I = grid ∪ the distribution's depths ∪ {z_f}
   std::string backend = "fast";
   int threads = 1;
 };

@@ -25,7 +25,8 @@ uint64_t CandidateEvaluator::lp_fragments() const {
   return n;
 }
 
-CandidateResult CandidateEvaluator::evaluate(const Basis& basis, std::vector<std::vector<double>>* shadow) const {
+CandidateResult CandidateEvaluator::evaluate(const Basis& basis,
+                                             std::vector<std::vector<double>>* shadow) const {
   const lp::Discretization& disc = settings_.technique.lp;
   lp::ProblemFactory factory(basis, disc);
   const int k = factory.rows(), m = int(basis.size());
@@ -56,8 +57,8 @@ CandidateResult CandidateEvaluator::evaluate(const Basis& basis, std::vector<std
     // Warm-start runs (bands of lp::kWarmRunRows texel rows; fragments are in texel order): each
     // run is solved in order by one thread, first from scratch, so the answers do not depend on
     // the schedule and equal eval's lp: technique, which cuts its runs the same way.
-    const std::vector<size_t> run_begin =
-        lp::warm_run_begins(list.size(), map.width, [&](size_t i) { return view.fragments.texel[list[i]]; });
+    const std::vector<size_t> run_begin = lp::warm_run_begins(
+        list.size(), map.width, [&](size_t i) { return view.fragments.texel[list[i]]; });
     const size_t runs = run_begin.size() - 1;
     std::vector<double> g(view.fragments.size(), 0.0);  // skipped fragments: G = 0 exactly
     ParallelErrors errors;  // each run captured: a throw must not leave the worksharing loop
@@ -70,36 +71,37 @@ CandidateResult CandidateEvaluator::evaluate(const Basis& basis, std::vector<std
       std::vector<size_t> tap_texel(taps);
       lp::Solution s;  // reused: no allocation per LP
 #pragma omp for schedule(dynamic, 1)
-      for (size_t run = 0; run < runs; ++run) errors.capture([&] {
-        for (size_t i = run_begin[run]; i < run_begin[run + 1]; ++i) {
-          const size_t f = list[i], t = view.fragments.texel[f];
-          const int x = int(t % map.width), y = int(t / map.width);
-          const double zf = view.fragments.ztest[f];  // z_f - delta_f (REFERENCE.md §3)
-          // The fragments of one texel share its kernel (41 % of them follow one of their texel's):
-          // then only z_f's column changes, and the problem is the same as built anew.
-          const bool same_kernel = i > run_begin[run] && view.fragments.texel[list[i - 1]] == t;
-          if (!same_kernel || !factory.move_zf(zf, problem)) {
-            // The same taps, in the same order, as eval's lp: technique; the extra texel index
-            // picks the column (the far plane's, one past the map, for taps outside it).
-            kernel_distribution(map, kernel, x, y, tap_depth, tap_weight, tap_texel);
-            for (int n = 0; n < taps; ++n) {
-              tap_depth[n] = depth[tap_texel[n]];  // quantized in quantize mode
-              tap_column[n] = &columns[tap_texel[n] * k];
+      for (size_t run = 0; run < runs; ++run)
+        errors.capture([&] {
+          for (size_t i = run_begin[run]; i < run_begin[run + 1]; ++i) {
+            const size_t f = list[i], t = view.fragments.texel[f];
+            const int x = int(t % map.width), y = int(t / map.width);
+            const double zf = view.fragments.ztest[f];  // z_f - delta_f (REFERENCE.md §3)
+            // The fragments of one texel share its kernel (41 % of them follow one of their
+            // texel's): then only z_f's column changes, and the problem is the same as built anew.
+            const bool same_kernel = i > run_begin[run] && view.fragments.texel[list[i - 1]] == t;
+            if (!same_kernel || !factory.move_zf(zf, problem)) {
+              // The same taps, in the same order, as eval's lp: technique; the extra texel index
+              // picks the column (the far plane's, one past the map, for taps outside it).
+              kernel_distribution(map, kernel, x, y, tap_depth, tap_weight, tap_texel);
+              for (int n = 0; n < taps; ++n) {
+                tap_depth[n] = depth[tap_texel[n]];  // quantized in quantize mode
+                tap_column[n] = &columns[tap_texel[n] * k];
+              }
+              factory.from_distribution(tap_depth, tap_weight, tap_column, zf, problem);
             }
-            factory.from_distribution(tap_depth, tap_weight, tap_column, zf, problem);
+            const lp::WarmPosition at{view.fragments.layer[f], x, y};
+            backend->solve_into(problem, i == run_begin[run] ? nullptr : &at, s);
+            if (s.call == lp::CallStatus::Ok && s.status == lp::ProblemStatus::Optimal) {
+              g[f] = std::clamp(s.G, 0.0, 1.0);
+              ++solved;
+            } else if (s.status == lp::ProblemStatus::Infeasible) {
+              ++infeasible;  // shown lit (G = 0), counted
+            } else {
+              ++unstable;
+            }
           }
-          const lp::WarmPosition at{view.fragments.layer[f], x, y};
-          backend->solve_into(problem, i == run_begin[run] ? nullptr : &at, s);
-          if (s.call == lp::CallStatus::Ok && s.status == lp::ProblemStatus::Optimal) {
-            g[f] = std::clamp(s.G, 0.0, 1.0);
-            ++solved;
-          } else if (s.status == lp::ProblemStatus::Infeasible) {
-            ++infeasible;  // shown lit (G = 0), counted
-          } else {
-            ++unstable;
-          }
-        }
-      });
+        });
     }
     errors.rethrow();
     ErrorStats stats;

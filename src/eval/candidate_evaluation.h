@@ -23,7 +23,8 @@ class CandidateEvaluator {
   // Keeps a reference to `views`; finds the fragments that need an LP (candidate-independent).
   CandidateEvaluator(const std::vector<ViewData>& views, const EvalSettings& settings);
   // With `shadow`, also G per fragment of every view (in fragment order), for tests and images.
-  CandidateResult evaluate(const Basis& basis, std::vector<std::vector<double>>* shadow = nullptr) const;
+  CandidateResult evaluate(const Basis& basis,
+                           std::vector<std::vector<double>>* shadow = nullptr) const;
   uint64_t lp_fragments() const;  // LPs per candidate
 
  private:

@@ -25,7 +25,8 @@ uint64_t combination_rank(const std::vector<int>& c, int n) {
 }
 
 std::vector<int> combination_unrank(uint64_t rank, int n, int k) {
-  if (rank >= binomial(n, k)) throw InputError("candidate id " + std::to_string(rank) + " out of range");
+  if (rank >= binomial(n, k))
+    throw InputError("candidate id " + std::to_string(rank) + " out of range");
   std::vector<int> c;
   int v = 0;
   for (int i = 0; i < k; ++i) {

@@ -10,7 +10,8 @@ void ErrorStats::add(double pcf, double g) {
   const double e = std::abs(pcf - g);
   ++count;
   sum_abs += e;
-  if (pcf > g) sum_leak += pcf - g;
+  if (pcf > g)
+    sum_leak += pcf - g;
   else {
     sum_dark += g - pcf;
     max_dark = std::max(max_dark, g - pcf);

@@ -12,7 +12,8 @@ namespace mb {
 struct ErrorStats {
   static constexpr int kHistogramBins = 100;  // |PCF - G| in bins of 0.01 over [0, 1]
   uint64_t count = 0, over_tenth = 0, failures = 0;
-  double sum_abs = 0, sum_leak = 0, sum_dark = 0, max = 0, max_dark = 0;  // max_dark: largest G - PCF
+  double sum_abs = 0, sum_leak = 0, sum_dark = 0, max = 0,
+         max_dark = 0;  // max_dark: largest G - PCF
   std::vector<uint64_t> histogram = std::vector<uint64_t>(kHistogramBins, 0);
 
   void add(double pcf, double g);

@@ -10,30 +10,46 @@ namespace mb {
 std::vector<OptionSpec> shadow_option_specs() {
   constexpr double kInf = std::numeric_limits<double>::infinity();
   return {
-      {"kernel.size", OptionType::Integer, "9", "Filter taps per axis (odd), for PCF and moment maps."},
+      {"kernel.size", OptionType::Integer, "9",
+       "Filter taps per axis (odd), for PCF and moment maps."},
       {"kernel.sigma", OptionType::Number, "2.4", "Gaussian standard deviation in texels."},
-      {"reference", OptionType::String, "biased",
-       "What G is compared against: biased = PCF at z_f - delta_f (the paper's protocol, errors are light leaking), "
-       "receiver_plane = each tap against the fragment's plane (the ideal hard shadow; tables add the oracle floor).",
-       -kInf, kInf, {"biased", "receiver_plane"}},
+      {"reference",
+       OptionType::String,
+       "biased",
+       "What G is compared against: biased = PCF at z_f - delta_f (the paper's protocol, errors "
+       "are light leaking), "
+       "receiver_plane = each tap against the fragment's plane (the ideal hard shadow; tables add "
+       "the oracle floor).",
+       -kInf,
+       kInf,
+       {"biased", "receiver_plane"}},
       {"bias.slope", OptionType::Number, "1",
-       "s in delta_f = c + s r (|dz/dx| + |dz/dy|) (REFERENCE.md §3); 0 with bias.constant 1e-3 is the old constant bias.",
+       "s in delta_f = c + s r (|dz/dx| + |dz/dy|) (REFERENCE.md §3); 0 with bias.constant 1e-3 is "
+       "the old constant bias.",
        0, 1e6},
-      {"bias.constant", OptionType::Number, "1e-4", "c in delta_f: absorbs curvature and rasterisation rounding.", 0, 1},
+      {"bias.constant", OptionType::Number, "1e-4",
+       "c in delta_f: absorbs curvature and rasterisation rounding.", 0, 1},
       {"hamburger4.alpha", OptionType::Number, "1e-10", "Moment bias of Hamburger 4MSM in double."},
-      {"hamburger4_float.alpha", OptionType::Number, "5e-6", "Moment bias of Hamburger 4MSM in float32."},
-      {"hamburger4_16bit.alpha", OptionType::Number, "3e-5", "Moment bias of Hamburger 4MSM from 16-bit maps."},
+      {"hamburger4_float.alpha", OptionType::Number, "5e-6",
+       "Moment bias of Hamburger 4MSM in float32."},
+      {"hamburger4_16bit.alpha", OptionType::Number, "3e-5",
+       "Moment bias of Hamburger 4MSM from 16-bit maps."},
       {"hausdorff4.alpha", OptionType::Number, "1e-10", "Moment bias of Hausdorff 4MSM."},
       {"hamburger6.alpha", OptionType::Number, "1e-10", "Moment bias of six-moment Hamburger MSM."},
-      {"tmsm.alpha", OptionType::Number, "1e-10", "Moment bias of trigonometric MSM in double (towards 0)."},
-      {"tmsm_float.alpha", OptionType::Number, "5e-5", "Moment bias of trigonometric MSM in float32 (measured: tmsm.md §6)."},
-      {"hamburger.beta", OptionType::Number, "0", "G + beta * (weight at z_f): 0 lower bound, 1 upper (seed 004).", 0, 1},
+      {"tmsm.alpha", OptionType::Number, "1e-10",
+       "Moment bias of trigonometric MSM in double (towards 0)."},
+      {"tmsm_float.alpha", OptionType::Number, "5e-5",
+       "Moment bias of trigonometric MSM in float32 (measured: tmsm.md §6)."},
+      {"hamburger.beta", OptionType::Number, "0",
+       "G + beta * (weight at z_f): 0 lower bound, 1 upper (seed 004).", 0, 1},
       {"esm.c", OptionType::Number, "80", "ESM exponent c.", 1e-6, 700},
       {"vsm.min_variance", OptionType::Number, "0", "VSM variance clamp.", 0, 1},
-      {"lp.grid", OptionType::Integer, "256", "LP techniques: uniform grid points on the interval.", 2, 1e7},
+      {"lp.grid", OptionType::Integer, "256", "LP techniques: uniform grid points on the interval.",
+       2, 1e7},
       {"lp.lo", OptionType::Number, "0", "LP techniques: admissible interval, lower end."},
       {"lp.hi", OptionType::Number, "1", "LP techniques: admissible interval, upper end."},
-      {"lp.quantize", OptionType::Boolean, "false", "LP techniques: round depths to the grid instead of adding them."},
+      {"lp.quantize", OptionType::Boolean, "false",
+       "LP techniques: round depths to the grid instead of adding them."},
       {"lp.backend", OptionType::String, "fast", "LP backend.", -kInf, kInf, {"fast", "glpk"}},
   };
 }
@@ -77,14 +93,18 @@ EvalSettings shadow_settings_from(const Config& config, int threads) {
 
 std::string describe_settings(const EvalSettings& s) {
   char buffer[512];
-  std::snprintf(buffer, sizeof buffer,
-                "kernel %dx%d Gaussian, sigma %g texels; reference %s; depth bias delta_f = %g + %g * %d * "
-                "(|dz/dx| + |dz/dy|) for the reference and every technique; LP grid %d on [%g, %g]%s, backend %s",
-                s.kernel.size, s.kernel.size, s.kernel.sigma,
-                s.bias.reference == Reference::Biased ? "biased (PCF = F_Z(z_f - delta_f))"
-                                                      : "receiver_plane (each tap against the fragment's plane)",
-                s.bias.constant, s.bias.slope, s.kernel.radius(), s.technique.lp.grid, s.technique.lp.lo, s.technique.lp.hi,
-                s.technique.lp.quantize ? " (quantized depths)" : "", s.technique.lp_backend.c_str());
+  std::snprintf(
+      buffer, sizeof buffer,
+      "kernel %dx%d Gaussian, sigma %g texels; reference %s; depth bias delta_f = %g + %g * %d * "
+      "(|dz/dx| + |dz/dy|) for the reference and every technique; LP grid %d on [%g, %g]%s, "
+      "backend %s",
+      s.kernel.size, s.kernel.size, s.kernel.sigma,
+      s.bias.reference == Reference::Biased
+          ? "biased (PCF = F_Z(z_f - delta_f))"
+          : "receiver_plane (each tap against the fragment's plane)",
+      s.bias.constant, s.bias.slope, s.kernel.radius(), s.technique.lp.grid, s.technique.lp.lo,
+      s.technique.lp.hi, s.technique.lp.quantize ? " (quantized depths)" : "",
+      s.technique.lp_backend.c_str());
   return buffer;
 }
 

@@ -30,8 +30,8 @@ struct EvalSettings {
 ViewData prepare_view(const Scene& scene, const LightViewDesc& view, const EvalSettings& settings);
 // Renders every view of the dataset (resolution > 0 overrides the dataset's, which overrides the
 // scene's) and collects its receivers.
-std::vector<ViewData> prepare_views(const DatasetDesc& dataset, int resolution, const EvalSettings& settings,
-                                    bool quiet);
+std::vector<ViewData> prepare_views(const DatasetDesc& dataset, int resolution,
+                                    const EvalSettings& settings, bool quiet);
 
 struct TechniqueResult {
   std::vector<double> shadow;  // G per fragment, in fragment order

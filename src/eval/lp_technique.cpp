@@ -12,9 +12,10 @@ class LpTechnique : public Technique {
   LpTechnique(const std::string& name, Basis basis, const lp::Discretization& disc,
               const std::string& backend)
       : Technique(name, std::move(basis), double_storage()),
-        factory_((lp::check_backend_rows(backend, int(this->basis().size()), "technique '" + name + "'"),
-                  this->basis().check_independent(disc.lo, disc.hi), this->basis()),
-                 disc),
+        factory_(
+            (lp::check_backend_rows(backend, int(this->basis().size()), "technique '" + name + "'"),
+             this->basis().check_independent(disc.lo, disc.hi), this->basis()),
+            disc),
         backend_(lp::make_backend(backend)) {}
   bool needs_distribution() const override { return true; }
   double darkening_bound() const override { return kLpDarkeningBound; }

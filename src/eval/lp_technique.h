@@ -13,7 +13,8 @@ namespace mb {
 constexpr double kLpDarkeningBound = 1e-9;
 
 // `name` = "lp:" + a named set (power4, trig4, ...) or functions separated by ';' or ','.
-std::unique_ptr<Technique> make_lp_technique(const std::string& name, const lp::Discretization& disc,
+std::unique_ptr<Technique> make_lp_technique(const std::string& name,
+                                             const lp::Discretization& disc,
                                              const std::string& backend);
 // The functions of an `lp:` name.
 std::vector<std::string> lp_technique_basis(const std::string& name);

@@ -14,13 +14,19 @@ namespace {
 
 const char* kSchema =
     "CREATE TABLE meta (key TEXT PRIMARY KEY, value TEXT NOT NULL);"
-    "CREATE TABLE candidates (id INTEGER PRIMARY KEY, name TEXT NOT NULL, fragments INTEGER, solved INTEGER,"
-    " skipped INTEGER, infeasible INTEGER, unstable INTEGER, mean REAL, leak REAL, dark REAL, max REAL,"
-    " share_over_tenth REAL, max_dark REAL, darkening_bound REAL, darkening_reason TEXT, view_errors TEXT, histogram TEXT,"
+    "CREATE TABLE candidates (id INTEGER PRIMARY KEY, name TEXT NOT NULL, fragments INTEGER, "
+    "solved INTEGER,"
+    " skipped INTEGER, infeasible INTEGER, unstable INTEGER, mean REAL, leak REAL, dark REAL, max "
+    "REAL,"
+    " share_over_tenth REAL, max_dark REAL, darkening_bound REAL, darkening_reason TEXT, "
+    "view_errors TEXT, histogram TEXT,"
     " seconds REAL);"
-    "CREATE TABLE references_ (name TEXT PRIMARY KEY, fragments INTEGER, solved INTEGER, skipped INTEGER,"
-    " infeasible INTEGER, unstable INTEGER, mean REAL, leak REAL, dark REAL, max REAL, share_over_tenth REAL,"
-    " max_dark REAL, darkening_bound REAL, darkening_reason TEXT, view_errors TEXT, histogram TEXT, seconds REAL);";
+    "CREATE TABLE references_ (name TEXT PRIMARY KEY, fragments INTEGER, solved INTEGER, skipped "
+    "INTEGER,"
+    " infeasible INTEGER, unstable INTEGER, mean REAL, leak REAL, dark REAL, max REAL, "
+    "share_over_tenth REAL,"
+    " max_dark REAL, darkening_bound REAL, darkening_reason TEXT, view_errors TEXT, histogram "
+    "TEXT, seconds REAL);";
 
 // Raised whenever the tables change (2: max_dark, darkening_bound, darkening_reason, the reference
 // and per-fragment bias of REFERENCE.md §3): an older database is refused, not misread.
@@ -37,12 +43,14 @@ struct Statement {
 
 }  // namespace
 
-ResultsStore ResultsStore::create(const std::string& path, const std::map<std::string, std::string>& meta) {
+ResultsStore ResultsStore::create(const std::string& path,
+                                  const std::map<std::string, std::string>& meta) {
   namespace fs = std::filesystem;
   if (fs::exists(path)) throw InputError(path + ": results database exists");
   // Schema and metadata are committed under a temporary name, then renamed into place: a kill at
   // any instant leaves either no database or a complete empty one, never one without its schema.
-  const fs::path final_path(path), dir = final_path.parent_path().empty() ? fs::path(".") : final_path.parent_path();
+  const fs::path final_path(path),
+      dir = final_path.parent_path().empty() ? fs::path(".") : final_path.parent_path();
   const std::string prefix = "." + final_path.filename().string() + ".new-";
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(dir, ec))
@@ -50,7 +58,8 @@ ResultsStore ResultsStore::create(const std::string& path, const std::map<std::s
   const std::string temporary = (dir / (prefix + std::to_string(getpid()))).string();
   {
     sqlite3* db = nullptr;
-    if (sqlite3_open_v2(temporary.c_str(), &db, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr) != SQLITE_OK) {
+    if (sqlite3_open_v2(temporary.c_str(), &db, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE,
+                        nullptr) != SQLITE_OK) {
       std::string message = db ? sqlite3_errmsg(db) : "out of memory";
       sqlite3_close(db);
       throw InputError(path + ": cannot create results database: " + message);
@@ -85,21 +94,27 @@ ResultsStore ResultsStore::open(const std::string& path) {
   ResultsStore store(db, path);
   // A file that is not a momentbench results database (another SQLite file, or none at all).
   char* error = nullptr;
-  if (sqlite3_exec(db, "SELECT count(*) FROM meta; SELECT count(*) FROM candidates; SELECT count(*) FROM references_",
+  if (sqlite3_exec(db,
+                   "SELECT count(*) FROM meta; SELECT count(*) FROM candidates; SELECT count(*) "
+                   "FROM references_",
                    nullptr, nullptr, &error) != SQLITE_OK) {
     sqlite3_free(error);
-    throw InputError(path + ": not a momentbench results database (expected the tables meta, candidates and "
-                            "references_ that `sweep` writes)");
+    throw InputError(
+        path +
+        ": not a momentbench results database (expected the tables meta, candidates and "
+        "references_ that `sweep` writes)");
   }
   const std::string version = store.meta()["schema_version"];
   if (version != kSchemaVersion)
     throw InputError(path + ": written by another momentbench version (results schema " +
-                     (version.empty() ? std::string("1") : version) + ", this one reads " + kSchemaVersion +
-                     "); re-run its sweep");
+                     (version.empty() ? std::string("1") : version) + ", this one reads " +
+                     kSchemaVersion + "); re-run its sweep");
   return store;
 }
 
-ResultsStore::ResultsStore(ResultsStore&& o) noexcept : db_(o.db_), path_(std::move(o.path_)) { o.db_ = nullptr; }
+ResultsStore::ResultsStore(ResultsStore&& o) noexcept : db_(o.db_), path_(std::move(o.path_)) {
+  o.db_ = nullptr;
+}
 ResultsStore::~ResultsStore() {
   if (db_) sqlite3_close(db_);
 }
@@ -139,7 +154,8 @@ void ResultsStore::put(const char* table, const ResultRow& row) {
   sqlite3_bind_text(st.s, c++, row.name.c_str(), -1, SQLITE_TRANSIENT);
   for (uint64_t v : {row.fragments, row.solved, row.skipped, row.infeasible, row.unstable})
     sqlite3_bind_int64(st.s, c++, int64_t(v));
-  for (double v : {row.mean, row.leak, row.dark, row.max, row.share_over_tenth, row.max_dark, row.darkening_bound})
+  for (double v : {row.mean, row.leak, row.dark, row.max, row.share_over_tenth, row.max_dark,
+                   row.darkening_bound})
     sqlite3_bind_double(st.s, c++, v);
   sqlite3_bind_text(st.s, c++, row.darkening_reason.c_str(), -1, SQLITE_TRANSIENT);
   sqlite3_bind_text(st.s, c++, row.view_errors.c_str(), -1, SQLITE_TRANSIENT);
@@ -149,8 +165,12 @@ void ResultsStore::put(const char* table, const ResultRow& row) {
     throw InputError(path_ + ": cannot store '" + row.name + "': " + sqlite3_errmsg(db_));
 }
 
-void ResultsStore::put_candidate(const ResultRow& row) { put("candidates", row); }
-void ResultsStore::put_reference(const ResultRow& row) { put("references_", row); }
+void ResultsStore::put_candidate(const ResultRow& row) {
+  put("candidates", row);
+}
+void ResultsStore::put_reference(const ResultRow& row) {
+  put("references_", row);
+}
 
 std::vector<ResultRow> ResultsStore::rows(const char* table, const char* order) const {
   const bool candidate = std::string(table) == "candidates";
@@ -163,7 +183,8 @@ std::vector<ResultRow> ResultsStore::rows(const char* table, const char* order) 
     r.name = reinterpret_cast<const char*>(sqlite3_column_text(st.s, c++));
     for (uint64_t* v : {&r.fragments, &r.solved, &r.skipped, &r.infeasible, &r.unstable})
       *v = uint64_t(sqlite3_column_int64(st.s, c++));
-    for (double* v : {&r.mean, &r.leak, &r.dark, &r.max, &r.share_over_tenth, &r.max_dark, &r.darkening_bound})
+    for (double* v :
+         {&r.mean, &r.leak, &r.dark, &r.max, &r.share_over_tenth, &r.max_dark, &r.darkening_bound})
       *v = sqlite3_column_double(st.s, c++);
     r.darkening_reason = reinterpret_cast<const char*>(sqlite3_column_text(st.s, c++));
     r.view_errors = reinterpret_cast<const char*>(sqlite3_column_text(st.s, c++));
@@ -174,8 +195,12 @@ std::vector<ResultRow> ResultsStore::rows(const char* table, const char* order) 
   return out;
 }
 
-std::vector<ResultRow> ResultsStore::candidates() const { return rows("candidates", "id"); }
-std::vector<ResultRow> ResultsStore::references() const { return rows("references_", "name"); }
+std::vector<ResultRow> ResultsStore::candidates() const {
+  return rows("candidates", "id");
+}
+std::vector<ResultRow> ResultsStore::references() const {
+  return rows("references_", "name");
+}
 
 ResultRow make_result_row(uint64_t id, const std::string& name, const ErrorStats& s,
                           const std::vector<std::pair<std::string, double>>& view_errors) {

@@ -16,22 +16,23 @@
 namespace mb {
 
 struct ResultRow {
-  uint64_t id = 0;         // candidate rank (references: 0, ordered by name)
-  std::string name;        // the functions, "z; z^2; z^3; z^4", or the technique name
+  uint64_t id = 0;   // candidate rank (references: 0, ordered by name)
+  std::string name;  // the functions, "z; z^2; z^3; z^4", or the technique name
   uint64_t fragments = 0, solved = 0, skipped = 0, infeasible = 0, unstable = 0;
   double mean = 0, leak = 0, dark = 0, max = 0, share_over_tenth = 0;
-  double max_dark = 0;         // the largest G - PCF at one fragment
-  double darkening_bound = 0;  // Technique::darkening_bound (candidates: the LP's 1e-9)
+  double max_dark = 0;           // the largest G - PCF at one fragment
+  double darkening_bound = 0;    // Technique::darkening_bound (candidates: the LP's 1e-9)
   std::string darkening_reason;  // Technique::darkening_reason
-  std::string view_errors;  // JSON object: "scene/view" -> mean error
-  std::string histogram;    // comma-separated counts of ErrorStats::kHistogramBins bins
-  double seconds = 0;       // wall time (not part of the results' identity)
+  std::string view_errors;       // JSON object: "scene/view" -> mean error
+  std::string histogram;         // comma-separated counts of ErrorStats::kHistogramBins bins
+  double seconds = 0;            // wall time (not part of the results' identity)
 };
 
 class ResultsStore {
  public:
   // Creates a new database (the file must not exist) with these metadata.
-  static ResultsStore create(const std::string& path, const std::map<std::string, std::string>& meta);
+  static ResultsStore create(const std::string& path,
+                             const std::map<std::string, std::string>& meta);
   static ResultsStore open(const std::string& path);
   ResultsStore(ResultsStore&& other) noexcept;
   ~ResultsStore();

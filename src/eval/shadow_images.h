@@ -10,7 +10,7 @@ namespace mb {
 
 // Writes `<base>_shadow.exr`, `<base>_shadow.png`; with `error_scale` > 0 also
 // `<base>_error.png`, colours spanning |PCF - G| in [0, error_scale].
-void write_shadow_images(const ViewData& view, std::span<const double> shadow, const std::string& base,
-                         double error_scale);
+void write_shadow_images(const ViewData& view, std::span<const double> shadow,
+                         const std::string& base, double error_scale);
 
 }  // namespace mb

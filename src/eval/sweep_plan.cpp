@@ -10,7 +10,9 @@
 
 namespace mb {
 
-uint64_t SweepPlan::total() const { return binomial(int(catalog.size()), size); }
+uint64_t SweepPlan::total() const {
+  return binomial(int(catalog.size()), size);
+}
 
 std::vector<std::string> SweepPlan::functions(uint64_t id) const {
   std::vector<std::string> out;
@@ -25,17 +27,20 @@ std::string SweepPlan::name(uint64_t id) const {
 }
 
 SweepPlan make_sweep_plan(const std::vector<std::string>& catalog, int size,
-                          const std::vector<std::string>& explicit_candidates, uint64_t sample, uint64_t seed) {
+                          const std::vector<std::string>& explicit_candidates, uint64_t sample,
+                          uint64_t seed) {
   SweepPlan plan;
   plan.catalog = catalog.empty() ? catalog_names() : catalog;
   plan.size = size;
   std::set<std::string> seen;
   for (auto& name : plan.catalog) {
     name = BasisFunction::parse(name).name();  // validates, and canonical catalog spelling
-    if (!seen.insert(name).second) throw InputError("catalog: function '" + name + "' appears twice");
+    if (!seen.insert(name).second)
+      throw InputError("catalog: function '" + name + "' appears twice");
   }
   if (size < 1 || size > int(plan.catalog.size()))
-    throw InputError("combination_size: " + std::to_string(size) + " functions cannot be drawn from a catalog of " +
+    throw InputError("combination_size: " + std::to_string(size) +
+                     " functions cannot be drawn from a catalog of " +
                      std::to_string(plan.catalog.size()));
   const uint64_t total = plan.total();
   if (!explicit_candidates.empty()) {
@@ -56,14 +61,17 @@ SweepPlan make_sweep_plan(const std::vector<std::string>& catalog, int size,
           indices.push_back(int(it - plan.catalog.begin()));
         }
       std::sort(indices.begin(), indices.end());
-      if (int(indices.size()) != size || std::adjacent_find(indices.begin(), indices.end()) != indices.end())
-        throw InputError("candidates: '" + text + "' must name " + std::to_string(size) + " distinct functions");
+      if (int(indices.size()) != size ||
+          std::adjacent_find(indices.begin(), indices.end()) != indices.end())
+        throw InputError("candidates: '" + text + "' must name " + std::to_string(size) +
+                         " distinct functions");
       plan.ids.push_back(combination_rank(indices, int(plan.catalog.size())));
     }
   } else if (sample > total) {
-    throw InputError("sample: " + std::to_string(sample) + " candidates asked for, but there are only " +
-                     std::to_string(total) + " combinations of " + std::to_string(size) + " from " +
-                     std::to_string(plan.catalog.size()) + " functions (sample: 0 evaluates them all)");
+    throw InputError(
+        "sample: " + std::to_string(sample) + " candidates asked for, but there are only " +
+        std::to_string(total) + " combinations of " + std::to_string(size) + " from " +
+        std::to_string(plan.catalog.size()) + " functions (sample: 0 evaluates them all)");
   } else if (sample > 0 && sample < total) {
     // Floyd's algorithm: `sample` distinct ranks, deterministic for a seed.
     SeededRandom random(seed);
@@ -91,7 +99,8 @@ std::vector<uint64_t> shard_ids(const SweepPlan& plan, int k, int n) {
 std::pair<int, int> parse_shard(const std::string& text) {
   int k = 0, n = 0;
   char slash = 0, extra = 0;
-  if (std::sscanf(text.c_str(), "%d%c%d%c", &k, &slash, &n, &extra) != 3 || slash != '/' || n < 1 || k < 1 || k > n)
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &k, &slash, &n, &extra) != 3 || slash != '/' || n < 1 ||
+      k < 1 || k > n)
     throw InputError("--shard: expected K/N with 1 <= K <= N, got '" + text + "'");
   return {k, n};
 }

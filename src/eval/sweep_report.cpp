@@ -335,7 +335,10 @@ std::string sweep_report_markdown(const std::vector<SweepSeries>& series,
        << meta["catalog_size"] << " functions: " << planned_total(s) << "), config hash "
        << meta["config_hash"] << ", shard " << meta["shard"]
        << (meta.count("git_sha") ? ", momentbench git " + meta["git_sha"] : "")
-       << (meta.count("missing_shards") ? "; **merged without shards " + meta["missing_shards"] + "**" : "") << "\n";
+       << (meta.count("missing_shards")
+               ? "; **merged without shards " + meta["missing_shards"] + "**"
+               : "")
+       << "\n";
   }
   auto meta = main.meta;
   md << "- dataset " << meta["dataset"] << "; " << meta["settings"] << "\n";

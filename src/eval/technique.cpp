@@ -34,7 +34,9 @@ class VsmTechnique : public Technique {
  public:
   explicit VsmTechnique(double min_variance)
       : Technique("vsm", Basis::parse({"power2"}), double_storage()), min_variance_(min_variance) {}
-  double shadow(const FragmentInput& in) override { return vsm_bound(in.moments.data(), in.zf, min_variance_); }
+  double shadow(const FragmentInput& in) override {
+    return vsm_bound(in.moments.data(), in.zf, min_variance_);
+  }
 
  private:
   double min_variance_;
@@ -61,8 +63,8 @@ class ClosedFormTechnique : public Technique {
 
  protected:
   using Technique::Technique;
-  // Moments biased by alpha towards those of a distribution on I are a mixture's; the sharp bound of
-  // the mixture lies below (1 - alpha) F_Z + alpha, so G exceeds F_Z by at most alpha. Float and
+  // Moments biased by alpha towards those of a distribution on I are a mixture's; the sharp bound
+  // of the mixture lies below (1 - alpha) F_Z + alpha, so G exceeds F_Z by at most alpha. Float and
   // 16-bit storage round the moments off the kernel's moment set, and beta > 0 blends towards the
   // upper bound: neither is a lower bound any more.
   double closed_form_bound(double alpha, double beta) const {
@@ -72,7 +74,8 @@ class ClosedFormTechnique : public Technique {
   std::string closed_form_reason(double beta) const {
     if (beta > 0) return "beta > 0 blends the lower bound towards the upper bound (seed 004)";
     return "moments stored in " + storage().name() +
-           " are rounded off the kernel's moment set, and the bias alpha does not always pull them back";
+           " are rounded off the kernel's moment set, and the bias alpha does not always pull them "
+           "back";
   }
   double finish(double g) {
     if (std::isfinite(g)) return std::clamp(g, 0.0, 1.0);
@@ -88,10 +91,14 @@ enum class PowerSolver { Hamburger4, Hamburger4Float, Hausdorff4, Hamburger6 };
 
 class PowerMomentTechnique : public ClosedFormTechnique {
  public:
-  PowerMomentTechnique(std::string name, PowerSolver solver, MomentStorage storage, double alpha, double beta)
-      : ClosedFormTechnique(std::move(name), Basis::parse({solver == PowerSolver::Hamburger6 ? "power6" : "power4"}),
-                  std::move(storage)),
-        solver_(solver), alpha_(alpha), beta_(beta) {}
+  PowerMomentTechnique(std::string name, PowerSolver solver, MomentStorage storage, double alpha,
+                       double beta)
+      : ClosedFormTechnique(std::move(name),
+                            Basis::parse({solver == PowerSolver::Hamburger6 ? "power6" : "power4"}),
+                            std::move(storage)),
+        solver_(solver),
+        alpha_(alpha),
+        beta_(beta) {}
 
   double shadow(const FragmentInput& in) override {
     const int m = int(in.moments.size());
@@ -105,7 +112,7 @@ class PowerMomentTechnique : public ClosedFormTechnique {
     double b[6], star[6] = {0.5, 0.5, 0.5, 0.5, 0.5, 0.5};
     std::copy(in.moments.begin(), in.moments.end(), b);
     bias_moments(b, m, alpha_, star);
-    MsmBound<double> r = solver_ == PowerSolver::Hausdorff4 ? hausdorff4(b, in.zf)
+    MsmBound<double> r = solver_ == PowerSolver::Hausdorff4   ? hausdorff4(b, in.zf)
                          : solver_ == PowerSolver::Hamburger6 ? hamburger6(b, in.zf)
                                                               : hamburger4(b, in.zf);
     return finish(r.lower + beta_ * r.at_zf);
@@ -122,8 +129,11 @@ class PowerMomentTechnique : public ClosedFormTechnique {
 class TmsmTechnique : public ClosedFormTechnique {
  public:
   TmsmTechnique(std::string name, bool in_float, double alpha, double beta)
-      : ClosedFormTechnique(std::move(name), Basis::parse({"trig4"}), in_float ? float32_storage() : double_storage()),
-        in_float_(in_float), alpha_(alpha), beta_(beta) {}
+      : ClosedFormTechnique(std::move(name), Basis::parse({"trig4"}),
+                            in_float ? float32_storage() : double_storage()),
+        in_float_(in_float),
+        alpha_(alpha),
+        beta_(beta) {}
   double shadow(const FragmentInput& in) override {
     if (in_float_) return finish(solve<float>(in));
     return finish(solve<double>(in));
@@ -146,14 +156,24 @@ class TmsmTechnique : public ClosedFormTechnique {
 };
 
 void check_alpha(const char* key, double alpha) {
-  if (!(alpha >= 0 && alpha < 1)) throw InputError(std::string(key) + ": expected alpha in [0, 1), got " + round_trip(alpha));
+  if (!(alpha >= 0 && alpha < 1))
+    throw InputError(std::string(key) + ": expected alpha in [0, 1), got " + round_trip(alpha));
 }
 
 }  // namespace
 
 std::vector<std::string> closed_form_technique_names() {
-  return {"pcf", "oracle", "vsm", "esm", "hamburger4", "hamburger4_float", "hamburger4_16bit", "hausdorff4", "hamburger6",
-          "tmsm", "tmsm_float"};
+  return {"pcf",
+          "oracle",
+          "vsm",
+          "esm",
+          "hamburger4",
+          "hamburger4_float",
+          "hamburger4_16bit",
+          "hausdorff4",
+          "hamburger6",
+          "tmsm",
+          "tmsm_float"};
 }
 
 std::unique_ptr<Technique> make_technique(const std::string& name, const TechniqueParams& p) {
@@ -169,25 +189,30 @@ std::unique_ptr<Technique> make_technique(const std::string& name, const Techniq
   if (name == "vsm") return std::make_unique<VsmTechnique>(p.vsm_min_variance);
   if (name == "esm") return std::make_unique<EsmTechnique>(p.esm_c);
   if (name == "hamburger4")
-    return std::make_unique<PowerMomentTechnique>(name, PowerSolver::Hamburger4, double_storage(), p.hamburger4_alpha, p.beta);
+    return std::make_unique<PowerMomentTechnique>(name, PowerSolver::Hamburger4, double_storage(),
+                                                  p.hamburger4_alpha, p.beta);
   if (name == "hamburger4_float")
-    return std::make_unique<PowerMomentTechnique>(name, PowerSolver::Hamburger4Float, float32_storage(),
-                                                  p.hamburger4_float_alpha, p.beta);
+    return std::make_unique<PowerMomentTechnique>(
+        name, PowerSolver::Hamburger4Float, float32_storage(), p.hamburger4_float_alpha, p.beta);
   if (name == "hamburger4_16bit")
-    return std::make_unique<PowerMomentTechnique>(name, PowerSolver::Hamburger4, unorm16_power4_storage(),
-                                                  p.hamburger4_16bit_alpha, p.beta);
+    return std::make_unique<PowerMomentTechnique>(
+        name, PowerSolver::Hamburger4, unorm16_power4_storage(), p.hamburger4_16bit_alpha, p.beta);
   if (name == "hausdorff4")
-    return std::make_unique<PowerMomentTechnique>(name, PowerSolver::Hausdorff4, double_storage(), p.hausdorff4_alpha, p.beta);
+    return std::make_unique<PowerMomentTechnique>(name, PowerSolver::Hausdorff4, double_storage(),
+                                                  p.hausdorff4_alpha, p.beta);
   if (name == "hamburger6")
-    return std::make_unique<PowerMomentTechnique>(name, PowerSolver::Hamburger6, double_storage(), p.hamburger6_alpha, p.beta);
+    return std::make_unique<PowerMomentTechnique>(name, PowerSolver::Hamburger6, double_storage(),
+                                                  p.hamburger6_alpha, p.beta);
   if (name == "tmsm") return std::make_unique<TmsmTechnique>(name, false, p.tmsm_alpha, p.beta);
-  if (name == "tmsm_float") return std::make_unique<TmsmTechnique>(name, true, p.tmsm_float_alpha, p.beta);
+  if (name == "tmsm_float")
+    return std::make_unique<TmsmTechnique>(name, true, p.tmsm_float_alpha, p.beta);
   if (name.rfind("lp:", 0) == 0) return make_lp_technique(name, p.lp, p.lp_backend);
   std::string valid;
   for (const auto& n : closed_form_technique_names()) valid += n + ", ";
   std::string guess = closest_match(name, closed_form_technique_names());
-  throw InputError("unknown technique '" + name + "'" + (guess.empty() ? "" : " (did you mean '" + guess + "'?)") +
-                   "; valid: " + valid + "lp:<basis> (e.g. lp:power4, lp:trig4, lp:z;exp(-z);sin(pi z);z^3)");
+  throw InputError("unknown technique '" + name + "'" +
+                   (guess.empty() ? "" : " (did you mean '" + guess + "'?)") + "; valid: " + valid +
+                   "lp:<basis> (e.g. lp:power4, lp:trig4, lp:z;exp(-z);sin(pi z);z^3)");
 }
 
 }  // namespace mb

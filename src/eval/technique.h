@@ -2,9 +2,9 @@
 // A shadow technique (DESIGN.md §Types): a name, the basis whose filtered moment map it reads,
 // how that map is stored, and shadow(b, z_f) -> G. Closed forms (moments/) and LPs (lp/) both
 // implement it, so they appear in the same error tables.
+#include <limits>
 #include <memory>
 #include <span>
-#include <limits>
 #include <string>
 #include <vector>
 
@@ -67,9 +67,10 @@ class Technique {
   MomentStorage storage_;
 };
 
-// "pcf", "oracle" (F_Z(z_f - delta_f), the bias's own error under the receiver-plane reference), "vsm", "esm", "hamburger4", "hamburger4_float", "hamburger4_16bit", "hausdorff4",
-// "hamburger6", "tmsm", "tmsm_float", or "lp:<basis>" (a named set such as power4, or functions separated by ';').
-// Unknown names are an InputError listing the valid ones.
+// "pcf", "oracle" (F_Z(z_f - delta_f), the bias's own error under the receiver-plane reference),
+// "vsm", "esm", "hamburger4", "hamburger4_float", "hamburger4_16bit", "hausdorff4", "hamburger6",
+// "tmsm", "tmsm_float", or "lp:<basis>" (a named set such as power4, or functions separated by
+// ';'). Unknown names are an InputError listing the valid ones.
 std::unique_ptr<Technique> make_technique(const std::string& name, const TechniqueParams& params);
 std::vector<std::string> closed_form_technique_names();
 

@@ -10,8 +10,8 @@
 #include "lp/solution.h"
 #include "scene/procedural.h"
 #include "util/error.h"
-#include "util/parallel_errors.h"
 #include "util/number_text.h"
+#include "util/parallel_errors.h"
 
 namespace mb {
 
@@ -25,28 +25,35 @@ struct Witness {
 };
 }  // namespace
 
-std::vector<VerifyTarget> verify_targets(const std::vector<std::string>& techniques, const TechniqueParams& params) {
+std::vector<VerifyTarget> verify_targets(const std::vector<std::string>& techniques,
+                                         const TechniqueParams& params) {
   // REFERENCE.md §6. I = R is represented by a wide interval that contains the extremal nodes of
   // nearly every instance; where it does not, the difference is "grid-limited" and shows up in the
   // worst cases (VSM: Cantelli's second point mu - sigma^2 / (z_f - mu) runs far out when z_f ~ mu,
-  // hence its wider interval). ESM's e^{cz} needs points far enough below 0 that e^{cz} ~ 0; the LP uses
-  // e^{c(z-1)}, the same span scaled by e^{-c}, whose values stay <= 1 (the LP recomputes the
+  // hence its wider interval). ESM's e^{cz} needs points far enough below 0 that e^{cz} ~ 0; the LP
+  // uses e^{c(z-1)}, the same span scaled by e^{-c}, whose values stay <= 1 (the LP recomputes the
   // moments from the distribution, so the scale of the closed form's moment does not matter).
   const std::string esm_basis = "exp(" + round_trip(params.esm_c) + "*(z-1))";
   std::vector<VerifyTarget> all = {
-      {"hamburger4", {"power4"}, -4, 5, true},   {"hausdorff4", {"power4"}, 0, 1, true},
-      {"tmsm", {"trig4"}, 0, 1, true},           {"vsm", {"power2"}, -20, 21, true},
-      {"esm", {esm_basis}, -1, 1, true},         {"hamburger6", {"power6"}, -2, 3, true},
-      {"hamburger4_float", {"power4"}, -4, 5, false}, {"hamburger4_16bit", {"power4"}, -4, 5, false},
+      {"hamburger4", {"power4"}, -4, 5, true},
+      {"hausdorff4", {"power4"}, 0, 1, true},
+      {"tmsm", {"trig4"}, 0, 1, true},
+      {"vsm", {"power2"}, -20, 21, true},
+      {"esm", {esm_basis}, -1, 1, true},
+      {"hamburger6", {"power6"}, -2, 3, true},
+      {"hamburger4_float", {"power4"}, -4, 5, false},
+      {"hamburger4_16bit", {"power4"}, -4, 5, false},
       {"tmsm_float", {"trig4"}, 0, 1, false},
   };
   std::vector<VerifyTarget> out;
   for (const auto& name : techniques) {
-    auto it = std::find_if(all.begin(), all.end(), [&](const VerifyTarget& t) { return t.technique == name; });
+    auto it = std::find_if(all.begin(), all.end(),
+                           [&](const VerifyTarget& t) { return t.technique == name; });
     if (it == all.end()) {
       std::string valid;
       for (const auto& t : all) valid += (valid.empty() ? "" : ", ") + t.technique;
-      throw InputError("verify.techniques: '" + name + "' has no LP ground truth in REFERENCE.md §6; valid: " + valid);
+      throw InputError("verify.techniques: '" + name +
+                       "' has no LP ground truth in REFERENCE.md §6; valid: " + valid);
     }
     out.push_back(*it);
   }
@@ -75,7 +82,8 @@ std::vector<VerifyInstance> random_verify_instances(int count, uint64_t seed) {
       v.source = "random:" + std::to_string(atoms) + " atoms";
     } else {  // a continuous mixture of two bumps, 32 atoms each
       for (int bump = 0; bump < 2; ++bump) {
-        const double centre = rng.uniform(0.1, 0.9), width = rng.uniform(0.01, 0.1), mass = rng.uniform(0.2, 1);
+        const double centre = rng.uniform(0.1, 0.9), width = rng.uniform(0.01, 0.1),
+                     mass = rng.uniform(0.2, 1);
         for (int k = 0; k < 32; ++k) {
           v.depths.push_back(std::clamp(centre + width * (k - 15.5) / 16, 0.001, 0.999));
           v.weights.push_back(mass * std::exp(-0.5 * std::pow((k - 15.5) / 8, 2)));
@@ -91,8 +99,9 @@ std::vector<VerifyInstance> random_verify_instances(int count, uint64_t seed) {
 }
 
 VerifySolverResult verify_solver(const VerifyTarget& target, const TechniqueMaker& make,
-                                 std::span<const VerifyInstance> instances, const std::vector<int>& grids,
-                                 double tolerance, int worst_count, int threads) {
+                                 std::span<const VerifyInstance> instances,
+                                 const std::vector<int>& grids, double tolerance, int worst_count,
+                                 int threads) {
   VerifySolverResult result;
   result.target = target;
   result.instances = instances.size();
@@ -123,7 +132,9 @@ VerifySolverResult verify_solver(const VerifyTarget& target, const TechniqueMake
   std::vector<std::vector<Witness>> witnesses(instances.size(), std::vector<Witness>(grids.size()));
   // One factory per grid, shared read-only (columns are computed up front).
   std::vector<std::unique_ptr<lp::ProblemFactory>> factories;
-  for (int g : grids) factories.push_back(std::make_unique<lp::ProblemFactory>(lp_basis, lp::Discretization{target.lo, target.hi, g, false}));
+  for (int g : grids)
+    factories.push_back(std::make_unique<lp::ProblemFactory>(
+        lp_basis, lp::Discretization{target.lo, target.hi, g, false}));
   // The LP sees the exact distribution (its depths join I), so it is feasible and G_LP <= F_Z.
   ParallelErrors errors;
 #pragma omp parallel num_threads(threads)
@@ -131,31 +142,34 @@ VerifySolverResult verify_solver(const VerifyTarget& target, const TechniqueMake
     auto technique = make();
     auto fast = lp::make_backend("fast"), glpk = lp::make_backend("glpk");
 #pragma omp for schedule(dynamic, 16)
-    for (size_t i = 0; i < instances.size(); ++i) errors.capture([&] {
-      FragmentInput in;
-      in.moments = cases[i].moments;
-      in.zf = instances[i].zf;
-      in.kernel_depths = instances[i].depths;
-      in.kernel_weights = instances[i].weights;
-      const size_t before = technique->failures();
-      const double g = technique->shadow(in);
-      cases[i].closed_form = technique->failures() > before ? std::numeric_limits<double>::quiet_NaN() : g;
-      for (size_t k = 0; k < grids.size(); ++k) {
-        lp::Problem problem = factories[k]->from_distribution(instances[i].depths, instances[i].weights, instances[i].zf);
-        lp::Solution s = fast->solve(problem);
-        if (s.status != lp::ProblemStatus::Optimal) s = glpk->solve(problem);
-        if (s.call != lp::CallStatus::Ok || s.status != lp::ProblemStatus::Optimal) continue;
-        cases[i].lp[k] = s.G;
-        Witness& w = witnesses[i][k];
-        double total = 0;
-        for (size_t j = 0; j < s.support.size(); ++j) {
-          w.points.push_back(problem.point(s.support[j]));
-          w.weights.push_back(std::max(0.0, s.weights[j]));
-          total += w.weights.back();
+    for (size_t i = 0; i < instances.size(); ++i)
+      errors.capture([&] {
+        FragmentInput in;
+        in.moments = cases[i].moments;
+        in.zf = instances[i].zf;
+        in.kernel_depths = instances[i].depths;
+        in.kernel_weights = instances[i].weights;
+        const size_t before = technique->failures();
+        const double g = technique->shadow(in);
+        cases[i].closed_form =
+            technique->failures() > before ? std::numeric_limits<double>::quiet_NaN() : g;
+        for (size_t k = 0; k < grids.size(); ++k) {
+          lp::Problem problem = factories[k]->from_distribution(
+              instances[i].depths, instances[i].weights, instances[i].zf);
+          lp::Solution s = fast->solve(problem);
+          if (s.status != lp::ProblemStatus::Optimal) s = glpk->solve(problem);
+          if (s.call != lp::CallStatus::Ok || s.status != lp::ProblemStatus::Optimal) continue;
+          cases[i].lp[k] = s.G;
+          Witness& w = witnesses[i][k];
+          double total = 0;
+          for (size_t j = 0; j < s.support.size(); ++j) {
+            w.points.push_back(problem.point(s.support[j]));
+            w.weights.push_back(std::max(0.0, s.weights[j]));
+            total += w.weights.back();
+          }
+          for (double& weight : w.weights) weight /= total;
         }
-        for (double& weight : w.weights) weight /= total;
-      }
-    });
+      });
   }
   errors.rethrow();
   // The witness test (serial: the technique's basis). An LP solution is a distribution whose
@@ -179,7 +193,8 @@ VerifySolverResult verify_solver(const VerifyTarget& target, const TechniqueMake
         if (w.points[j] < in.zf) below += w.weights[j];
       const size_t before = probe->failures();
       const double g = probe->shadow(in);
-      if (probe->failures() == before) cases[i].above_witness = std::max(cases[i].above_witness, g - below);
+      if (probe->failures() == before)
+        cases[i].above_witness = std::max(cases[i].above_witness, g - below);
     }
   }
   // Fixed-order reduction.
@@ -218,8 +233,10 @@ VerifySolverResult verify_solver(const VerifyTarget& target, const TechniqueMake
   const auto largest_first = [](const auto& a, const auto& b) { return a.first > b.first; };
   std::stable_sort(finest.begin(), finest.end(), largest_first);
   std::stable_sort(excess.begin(), excess.end(), largest_first);
-  for (size_t k = 0; k < finest.size() && int(k) < worst_count; ++k) result.worst.push_back(cases[finest[k].second]);
-  for (size_t k = 0; k < excess.size() && int(k) < worst_count; ++k) result.worst_above.push_back(cases[excess[k].second]);
+  for (size_t k = 0; k < finest.size() && int(k) < worst_count; ++k)
+    result.worst.push_back(cases[finest[k].second]);
+  for (size_t k = 0; k < excess.size() && int(k) < worst_count; ++k)
+    result.worst_above.push_back(cases[excess[k].second]);
   return result;
 }
 

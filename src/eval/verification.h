@@ -22,7 +22,8 @@ struct VerifyTarget {
 };
 
 // The §6 table for the given technique names (InputError for names without an LP counterpart).
-std::vector<VerifyTarget> verify_targets(const std::vector<std::string>& techniques, const TechniqueParams& params);
+std::vector<VerifyTarget> verify_targets(const std::vector<std::string>& techniques,
+                                         const TechniqueParams& params);
 // The technique parameters verify uses: exact solvers without bias, the others with their own.
 TechniqueParams verify_params(TechniqueParams params);
 
@@ -40,7 +41,7 @@ struct VerifyCase {
   size_t instance = 0;
   std::vector<double> moments;  // what the closed form read (after storage emulation)
   double closed_form = 0;
-  std::vector<double> lp;       // per grid; NaN where the LP failed
+  std::vector<double> lp;  // per grid; NaN where the LP failed
   // max over grids of G_cf(moments of the LP's distribution) - (its mass below z_f): > 0 is
   // impossible for a correct infimum (see verification.cpp).
   double above_witness = -std::numeric_limits<double>::infinity();
@@ -56,8 +57,8 @@ struct VerifySolverResult {
   VerifyTarget target;
   size_t instances = 0, undefined = 0;  // undefined: the closed form returned no number
   std::vector<VerifyGridStats> grids;
-  size_t beyond_tolerance = 0;  // |dG| > tolerance on the finest grid
-  size_t above_lp = 0;          // above_witness > 1e-6: impossible for a correct infimum
+  size_t beyond_tolerance = 0;          // |dG| > tolerance on the finest grid
+  size_t above_lp = 0;                  // above_witness > 1e-6: impossible for a correct infimum
   std::vector<VerifyCase> worst;        // by |dG| on the finest grid, largest first
   std::vector<VerifyCase> worst_above;  // above an LP witness, by how far (largest first)
   bool passed() const { return !target.exact || (beyond_tolerance == 0 && above_lp == 0); }
@@ -68,7 +69,8 @@ using TechniqueMaker = std::function<std::unique_ptr<Technique>()>;
 // Compares `make()`'s technique with the LP on every instance and grid (grids ascending).
 // Deterministic for any thread count.
 VerifySolverResult verify_solver(const VerifyTarget& target, const TechniqueMaker& make,
-                                 std::span<const VerifyInstance> instances, const std::vector<int>& grids,
-                                 double tolerance, int worst_count, int threads);
+                                 std::span<const VerifyInstance> instances,
+                                 const std::vector<int>& grids, double tolerance, int worst_count,
+                                 int threads);
 
 }  // namespace mb

@@ -43,7 +43,9 @@ inline void add_product(DoubleDouble& acc, DoubleDouble b, double c) {
   const DoubleDouble s = two_sum(acc.hi, p);
   acc = {s.hi, s.lo + acc.lo + e};
 }
-inline void add_product(DoubleDouble& acc, double b, double c) { add_product(acc, DoubleDouble{b, 0}, c); }
+inline void add_product(DoubleDouble& acc, double b, double c) {
+  add_product(acc, DoubleDouble{b, 0}, c);
+}
 
 // acc += v.
 inline void add(DoubleDouble& acc, double v) {
@@ -56,8 +58,12 @@ inline DoubleDouble to_double_double(long double v) {
   const double hi = double(v);
   return {hi, double(v - hi)};
 }
-inline long double to_long_double(DoubleDouble v) { return (long double)v.hi + v.lo; }
-inline long double to_long_double(double v) { return v; }
+inline long double to_long_double(DoubleDouble v) {
+  return (long double)v.hi + v.lo;
+}
+inline long double to_long_double(double v) {
+  return v;
+}
 
 #ifdef __AVX512F__
 // Eight double-doubles side by side, one a lane: the certificate's k <= 8 sums (rows of B x, or
@@ -81,7 +87,9 @@ inline void add_product(DoubleDouble8& acc, DoubleDouble b, __m512d c) {
   const DoubleDouble8 s = two_sum(acc.hi, p);
   acc = {s.hi, _mm512_add_pd(_mm512_add_pd(s.lo, acc.lo), e)};
 }
-inline __m512d value(const DoubleDouble8& v) { return _mm512_add_pd(v.hi, v.lo); }
+inline __m512d value(const DoubleDouble8& v) {
+  return _mm512_add_pd(v.hi, v.lo);
+}
 #endif
 
 }  // namespace mb::lp

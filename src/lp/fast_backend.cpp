@@ -55,17 +55,17 @@ constexpr double kFallbackResidual = 1e-14;
 // (LpFastBackend.NarrowKernelThatExtrasFirstPricingLeftUnstableIsSolved).
 constexpr int kRefactorInterval = 32;
 constexpr int kCarefulRefactorInterval = 16;
-constexpr int kDegenerateBeforeBland = 24;       // degenerate pivots in a row before Bland's rule
+constexpr int kDegenerateBeforeBland = 24;  // degenerate pivots in a row before Bland's rule
 // Bracket-shift rounds per warm basis: the closest z_f's gets 4k, the others, which succeed less
 // often, 6: on the default dataset that saved 3.1M of 17.6M exchanges for 0.15M more pivots (power4
 // sweep, ~4 % faster). 8k for the first cut repairs 102k -> 91k but cost the failing starts more.
 constexpr int kLaterTryRounds = 6;
-constexpr int kGuidedSteps = 8;                  // certificate-guided steps per LP (solve_phase2)
-constexpr int kWarmTries = 5;                    // warm bases tried before the composite repair
+constexpr int kGuidedSteps = 8;  // certificate-guided steps per LP (solve_phase2)
+constexpr int kWarmTries = 5;    // warm bases tried before the composite repair
 // update_factors: product-form updates instead of a factorisation for up to this many changed
 // columns (see kRefactorInterval).
 constexpr int kChangedColumns = 3;
-constexpr double kHopelessWeight = 10;          // a warm try with a weight below -10 is given up
+constexpr double kHopelessWeight = 10;  // a warm try with a weight below -10 is given up
 
 // In-place LU with partial pivoting and inverse for k <= 8, in long double for the certificate's
 // last resort: when the double inverse cannot refine x_B and y (cond(B) of boundary instances
@@ -122,7 +122,9 @@ int grid_bound(const std::vector<double>& grid, double z, bool strict, double sc
   const int n = int(grid.size());
   double guess = (z - grid[0]) * scale;
   int i = guess >= 0 ? (guess < n ? int(guess) : n) : 0;  // also maps NaN to 0
-  auto before = [&](int j) { return strict ? grid[j] <= z : grid[j] < z; };  // j is left of the bound
+  auto before = [&](int j) {
+    return strict ? grid[j] <= z : grid[j] < z;
+  };  // j is left of the bound
   while (i > 0 && !before(i - 1)) --i;
   while (i < n && before(i)) ++i;
   return i;
@@ -131,7 +133,9 @@ int grid_bound(const std::vector<double>& grid, double z, bool strict, double sc
 #ifdef __AVX512F__
 // The lanes of the block of eight starting at index j that lie below n: all eight but in the last
 // block (the AVX-512 loops load, compare and store with it, so they need no scalar tail).
-__mmask8 lanes_below(int n, int j) { return n - j >= 8 ? __mmask8(0xff) : __mmask8((1u << (n - j)) - 1); }
+__mmask8 lanes_below(int n, int j) {
+  return n - j >= 8 ? __mmask8(0xff) : __mmask8((1u << (n - j)) - 1);
+}
 // min(start, the smallest lane of low).
 double smallest_lane(__m512d low, double start = 0) {
   // Three shuffle-and-minimum steps, not a store and eight dependent scalar ones. (The masked
@@ -170,7 +174,7 @@ struct WarmOffers {
   static_assert(kWarmLanes == 8, "a block is one vector of eight doubles");
   double distance[kCount];
   const WarmBasis* first[kBlocks] = {};  // the block's bases, kWarmLanes in a row
-  int usable = 0;  // offers with a basis, not yet taken
+  int usable = 0;                        // offers with a basis, not yet taken
   // Block b: bases[l] with z_f zf[l] (NaN: no basis), or none when bases is null.
   void offer(int b, const WarmBasis* bases, const double* zf, double to) {
     first[b] = bases;
@@ -256,10 +260,12 @@ class FastSimplex {
     // surfaces change from left to right (a silhouette along the column) the texel above often
     // still sees the same ones: with it, a third fewer LPs need the composite repair. The texel
     // above and to the right (the row above has passed it, this row not yet) adds what a silhouette
-    // running down to the left hides from both: 12 % fewer pivots, 20 % fewer repairs (power4, 256).
+    // running down to the left hides from both: 12 % fewer pivots, 20 % fewer repairs (power4,
+    // 256).
     WarmOffers offers;
     if (at) {
-      const bool above = column >= 0, right = above && size_t(column + 2) * kWarmLanes <= above_.size();
+      const bool above = column >= 0,
+                 right = above && size_t(column + 2) * kWarmLanes <= above_.size();
       const size_t slot = above ? size_t(column) * kWarmLanes : 0;
       offers.offer(0, lanes_, lane_zf_, p.zf);
       offers.offer(1, above ? &above_[slot] : nullptr, above ? &above_zf_[slot] : nullptr, p.zf);
@@ -324,7 +330,8 @@ class FastSimplex {
       // Each tap's column and row in the kernel: texel_tap needs them for every kernel column of
       // every warm try, and a division each was ~1 % of an LP.
       tap_column_.resize(taps), tap_row_.resize(taps);
-      for (int t = 0; t < taps && kernel_side_ > 0; ++t) tap_column_[t] = t % kernel_side_, tap_row_[t] = t / kernel_side_;
+      for (int t = 0; t < taps && kernel_side_ > 0; ++t)
+        tap_column_[t] = t % kernel_side_, tap_row_[t] = t / kernel_side_;
     }
     // Along a run the grid stays and z_f moves by a few cells, so only the cells between the last
     // problem's prefix and this one's are rewritten (the whole fill was ~2 % of a warm LP).
@@ -417,11 +424,14 @@ class FastSimplex {
     return solve_phase2(s);
   }
 
-  bool is_artificial(int j) const { return j >= n_ && j < n_ + k_; }
+  bool is_artificial(int j) const {
+    return j >= n_ && j < n_ + k_;
+  }
 
   // Into `warm`; its z_f for run's selection, NaN when the basis cannot be carried over.
   double remember_basis(const Solution& s, WarmBasis& warm) {
-    if (!(s.status == ProblemStatus::Optimal && s.call == CallStatus::Ok && phase_ == 2)) return kNoBasis;
+    if (!(s.status == ProblemStatus::Optimal && s.call == CallStatus::Ok && phase_ == 2))
+      return kNoBasis;
     warm.rows = k_;
     warm.grid = g_;
     warm.column = at_ ? at_->column : -1;
@@ -575,7 +585,8 @@ class FastSimplex {
     // The point beyond the partner, and the two around the node, in one pass over the extra points
     // (most shifts move both: three passes were ~8 % of a warm LP).
     int beyond[3];
-    points_beyond<3>({from, node, node}, {direction, direction, -direction}, {basis_[partner], -1, -1}, beyond);
+    points_beyond<3>({from, node, node}, {direction, direction, -direction},
+                     {basis_[partner], -1, -1}, beyond);
     const int next = beyond[0], far = beyond[1], near = beyond[2];
     if (next < 0) return false;
     if ((node - point(next)) * direction > 0) {
@@ -788,17 +799,20 @@ class FastSimplex {
         const __m512d p = _mm512_maskz_loadu_pd(live, points + e);
         for (int q = 0; q < Q; ++q) {
           const __m512d d = _mm512_mul_pd(_mm512_sub_pd(p, origin[q]), sign[q]);
-          const __mmask8 nearer = _mm512_mask_cmp_pd_mask(_mm512_mask_cmp_pd_mask(live, d, zero, _CMP_GT_OQ), d, low[q], _CMP_LT_OQ);
+          const __mmask8 nearer = _mm512_mask_cmp_pd_mask(
+              _mm512_mask_cmp_pd_mask(live, d, zero, _CMP_GT_OQ), d, low[q], _CMP_LT_OQ);
           low[q] = _mm512_mask_mov_pd(low[q], nearer, d);
           where[q] = _mm512_mask_mov_epi64(where[q], nearer, index);
         }
       }
       for (int q = 0; q < Q; ++q) {
         const double least = smallest_lane(low[q], kNone);
-        if (!(least < distance[q])) continue;  // the grid point is as near (or no extra point beyond)
+        if (!(least < distance[q]))
+          continue;  // the grid point is as near (or no extra point beyond)
         const __mmask8 holding = _mm512_cmp_pd_mask(low[q], _mm512_set1_pd(least), _CMP_EQ_OQ);
         int64_t index_of[8];
-        _mm512_storeu_si512(index_of, _mm512_mask_mov_epi64(_mm512_set1_epi64(e_), holding, where[q]));
+        _mm512_storeu_si512(index_of,
+                            _mm512_mask_mov_epi64(_mm512_set1_epi64(e_), holding, where[q]));
         int64_t first = e_;
         for (int64_t v : index_of) first = v < first ? v : first;
         out[q] = g_ + int(first);
@@ -814,12 +828,14 @@ class FastSimplex {
       // Per query, the smallest positive (p - from) * direction in four lanes (independent chains).
       __m256d origin[Q], sign[Q], low[Q];
       const __m256d none = _mm256_set1_pd(kNone), zero = _mm256_setzero_pd();
-      for (int q = 0; q < Q; ++q) origin[q] = _mm256_set1_pd(from[q]), sign[q] = _mm256_set1_pd(direction[q]), low[q] = none;
+      for (int q = 0; q < Q; ++q)
+        origin[q] = _mm256_set1_pd(from[q]), sign[q] = _mm256_set1_pd(direction[q]), low[q] = none;
       for (; e + 4 <= e_; e += 4) {
         const __m256d p = _mm256_loadu_pd(points + e);
         for (int q = 0; q < Q; ++q) {
           const __m256d d = _mm256_mul_pd(_mm256_sub_pd(p, origin[q]), sign[q]);
-          low[q] = _mm256_min_pd(_mm256_blendv_pd(none, d, _mm256_cmp_pd(d, zero, _CMP_GT_OQ)), low[q]);
+          low[q] =
+              _mm256_min_pd(_mm256_blendv_pd(none, d, _mm256_cmp_pd(d, zero, _CMP_GT_OQ)), low[q]);
         }
       }
       for (int q = 0; q < Q; ++q) {
@@ -845,15 +861,18 @@ class FastSimplex {
       const __m256d p = _mm256_loadu_pd(points + e);
       for (int q = 0; q < Q; ++q) {
         if (!wanted[q]) continue;
-        const __m256d d = _mm256_mul_pd(_mm256_sub_pd(p, _mm256_set1_pd(from[q])), _mm256_set1_pd(direction[q]));
-        const int mask = _mm256_movemask_pd(_mm256_cmp_pd(d, _mm256_set1_pd(nearest[q]), _CMP_EQ_OQ));
+        const __m256d d =
+            _mm256_mul_pd(_mm256_sub_pd(p, _mm256_set1_pd(from[q])), _mm256_set1_pd(direction[q]));
+        const int mask =
+            _mm256_movemask_pd(_mm256_cmp_pd(d, _mm256_set1_pd(nearest[q]), _CMP_EQ_OQ));
         if (mask) out[q] = g_ + e + __builtin_ctz(mask), wanted[q] = false, --open;
       }
     }
 #endif
     for (; open > 0 && e < e_; ++e)
       for (int q = 0; q < Q; ++q)
-        if (wanted[q] && (points[e] - from[q]) * direction[q] == nearest[q]) out[q] = g_ + e, wanted[q] = false, --open;
+        if (wanted[q] && (points[e] - from[q]) * direction[q] == nearest[q])
+          out[q] = g_ + e, wanted[q] = false, --open;
 #endif
   }
 
@@ -889,7 +908,8 @@ class FastSimplex {
     for (int c = 0; c < tries; ++c) {
       const WarmBasis* w = warm.take();
       const bool left = w >= lanes_ && w < lanes_ + kWarmLanes;
-      const bool started = start_from_previous_basis(*w, shift_rounds(c), left ? &lane_factors_[w - lanes_] : nullptr);
+      const bool started = start_from_previous_basis(*w, shift_rounds(c),
+                                                     left ? &lane_factors_[w - lanes_] : nullptr);
       if (!started) {
         usable_is_current = false;
         continue;
@@ -973,9 +993,13 @@ class FastSimplex {
     updates_ = from.updates;
     duals_fresh_ = false;
   }
-  int shift_rounds(int try_index) const { return try_index == 0 ? 4 * k_ : kLaterTryRounds; }
+  int shift_rounds(int try_index) const {
+    return try_index == 0 ? 4 * k_ : kLaterTryRounds;
+  }
 
-  static void unstable(Solution& s) { s.status = ProblemStatus::Unstable; }
+  static void unstable(Solution& s) {
+    s.status = ProblemStatus::Unstable;
+  }
 
   double column_entry(int j, int r) const {
     if (j < n_) return p_->at(r, j);
@@ -1052,8 +1076,7 @@ class FastSimplex {
     // Where the mass and z_f are, on the grid: the optimal support lies around them, so the start
     // columns do too (spread over all of I, narrow kernels took ~100 pivots instead of ~10).
     double lo = p_->zf, hi = p_->zf;
-    for (int j : p_->start_support)
-      lo = std::min(lo, point(j)), hi = std::max(hi, point(j));
+    for (int j : p_->start_support) lo = std::min(lo, point(j)), hi = std::max(hi, point(j));
     const auto& grid = p_->grid->points;
     int first = grid_bound(grid, lo, false, cell_scale_) - 1;
     int last = grid_bound(grid, hi, false, cell_scale_) + 1;
@@ -1118,7 +1141,8 @@ class FastSimplex {
     }
   }
   void reduced_costs() {
-    priced_smallest_ = subtract_row_combination(y_, phase_ == 1 ? nullptr : cost_.data(), reduced_.data());
+    priced_smallest_ =
+        subtract_row_combination(y_, phase_ == 1 ? nullptr : cost_.data(), reduced_.data());
     priced_phase_ = phase_;
     for (int r = 0; r < k_; ++r) priced_y_[r] = y_[r];
   }
@@ -1140,13 +1164,15 @@ class FastSimplex {
     __m512d weight[K], low = _mm512_setzero_pd();
     for (int r = 0; r < K; ++r) weight[r] = _mm512_set1_pd(w[r]);
     combine_masked(weight, p_->grid->values.data(), g_, base, out, g_, low, grid_first_row_);
-    combine_masked(weight, p_->extra.values.data(), e_, base ? base + g_ : nullptr, out + g_, e_, low);
+    combine_masked(weight, p_->extra.values.data(), e_, base ? base + g_ : nullptr, out + g_, e_,
+                   low);
     return smallest_lane(low);
 #endif
     const double* rows[K];
     for (int r = 0; r < K; ++r) rows[r] = p_->grid->values.data() + size_t(r) * g_;
     const double grid_smallest = combine_block(w, rows, base, out, g_);
-    for (int r = 0; r < K; ++r) rows[r] = p_->extra.values.data() + size_t(r) * e_;  // data(): the block may be empty
+    for (int r = 0; r < K; ++r)
+      rows[r] = p_->extra.values.data() + size_t(r) * e_;  // data(): the block may be empty
     const double extra_smallest = combine_block(w, rows, base ? base + g_ : nullptr, out + g_, e_);
     return extra_smallest < grid_smallest ? extra_smallest : grid_smallest;
   }
@@ -1189,8 +1215,10 @@ class FastSimplex {
     // warns likewise); a store and a scalar minimum of eight were ~2 % of the solver's samples.
     const __m512i none = _mm512_set1_epi64(std::numeric_limits<int64_t>::max());
     __m512i low = _mm512_mask_mov_epi64(none, holding, index);
-    low = _mm512_mask_min_epi64(low, 0xff, low, _mm512_mask_shuffle_i64x2(low, 0xff, low, low, 0x4e));
-    low = _mm512_mask_min_epi64(low, 0xff, low, _mm512_mask_shuffle_i64x2(low, 0xff, low, low, 0xb1));
+    low =
+        _mm512_mask_min_epi64(low, 0xff, low, _mm512_mask_shuffle_i64x2(low, 0xff, low, low, 0x4e));
+    low =
+        _mm512_mask_min_epi64(low, 0xff, low, _mm512_mask_shuffle_i64x2(low, 0xff, low, low, 0xb1));
     low = _mm512_mask_min_epi64(low, 0xff, low, _mm512_mask_permutex_epi64(low, 0xff, low, 0xb1));
     return _mm512_cvtsi512_si32(low);  // a column index: its low half
   }
@@ -1210,7 +1238,8 @@ class FastSimplex {
       __m256d low = _mm256_setzero_pd();
       for (; j + 4 <= n; j += 4) {
         __m256d v = base ? _mm256_loadu_pd(base + j) : _mm256_setzero_pd();
-        for (int r = 0; r < K; ++r) v = _mm256_fnmadd_pd(weights[r], _mm256_loadu_pd(rows[r] + j), v);
+        for (int r = 0; r < K; ++r)
+          v = _mm256_fnmadd_pd(weights[r], _mm256_loadu_pd(rows[r] + j), v);
         _mm256_storeu_pd(out + j, v);
         low = _mm256_min_pd(v, low);  // NaN keeps the minimum so far, as in smallest_of
       }
@@ -1436,18 +1465,22 @@ class FastSimplex {
     {
       __m512d weight[K], low = _mm512_setzero_pd();
       for (int r = 0; r < K; ++r) weight[r] = _mm512_set1_pd(y_[r]);
-      combine_masked(weight, p_->extra.values.data(), e_, cost_.data() + g_, reduced_.data() + g_, e_, low);
+      combine_masked(weight, p_->extra.values.data(), e_, cost_.data() + g_, reduced_.data() + g_,
+                     e_, low);
       return extra_holding(smallest_lane(low));
     }
 #endif
     const double* rows[K];
-    for (int r = 0; r < K; ++r) rows[r] = p_->extra.values.data() + size_t(r) * e_;  // data(): the block may be empty
+    for (int r = 0; r < K; ++r)
+      rows[r] = p_->extra.values.data() + size_t(r) * e_;  // data(): the block may be empty
     return extra_holding(combine_block(y_, rows, cost_.data() + g_, reduced_.data() + g_, e_));
   }
   // The same choice from reduced_ fresh from a full pass (no arithmetic, the same bits): the first
   // iteration after a start prices every column first, since most warm starts are optimal already
   // (84 % of lp_bench's LPs need no pivot) and then a pass over the extras alone was wasted.
-  int enter_among_extras() const { return extra_holding(smallest_of(reduced_.data() + g_, e_)); }
+  int enter_among_extras() const {
+    return extra_holding(smallest_of(reduced_.data() + g_, e_));
+  }
   // Dantzig's choice among the extra columns (reduced_ fresh on them), `smallest` their least
   // reduced cost or 0: the first extra column holding it, or -1 when it is not below the entering
   // tolerance, or when that column is basic (rounding: the full pass then decides).
@@ -1466,7 +1499,8 @@ class FastSimplex {
     const __m512d target = _mm512_set1_pd(value);
     for (; j < n; j += 8) {
       const __mmask8 live = lanes_below(n, j);
-      const unsigned hit = _mm512_mask_cmp_pd_mask(live, _mm512_maskz_loadu_pd(live, d + j), target, _CMP_EQ_OQ);
+      const unsigned hit =
+          _mm512_mask_cmp_pd_mask(live, _mm512_maskz_loadu_pd(live, d + j), target, _CMP_EQ_OQ);
       if (hit) return j + __builtin_ctz(hit);
     }
     return -1;
@@ -1488,7 +1522,9 @@ class FastSimplex {
       if (d[j] == value) return j;
     return -1;
   }
-  bool is_basic(int j) const { return basic_position(j) >= 0; }
+  bool is_basic(int j) const {
+    return basic_position(j) >= 0;
+  }
   // The position of column j among basis_[0..among), or -1. Selects, no early exit: k is fixed,
   // and std::find was a call (~1 % of an LP).
   int basic_position(int j, int among = K) const {
@@ -1547,11 +1583,13 @@ class FastSimplex {
         // double-double before the full pass, so that the precise certificate finds the reduced
         // costs of its duals in place; it used to refine them itself and price again (~8 % of a
         // warm LP: 44 % of the LPs need it, and most of them end after this pass).
-        if (phase_ == 2 && pricing_rounding(y_) > 0.1 * kCertifyBound) refine_duals_for_certificate();
+        if (phase_ == 2 && pricing_rounding(y_) > 0.1 * kCertifyBound)
+          refine_duals_for_certificate();
         reduced_costs();
         // (Only when some column may enter at all: most warm LPs are optimal, and their smallest
         // reduced cost is rounding, below zero but inside the tolerance.)
-        if (partial && guard == 0 && priced_smallest_ < -entering_tolerance()) entering = enter_among_extras();
+        if (partial && guard == 0 && priced_smallest_ < -entering_tolerance())
+          entering = enter_among_extras();
         if (entering < 0 && sliding && partial) entering = slide_entering();  // (not run's retry)
         if (entering < 0) entering = choose_entering(bland);
       }
@@ -1713,7 +1751,9 @@ class FastSimplex {
   }
 
   // |a_rj| <= column_bound() for every column.
-  double column_bound() const { return std::max(p_->grid->max_abs, p_->extra.max_abs); }
+  double column_bound() const {
+    return std::max(p_->grid->max_abs, p_->extra.max_abs);
+  }
   // A bound on the rounding error of any reduced cost the double pass computes with duals y:
   // gamma (1 + |y|_1 max |a_rj|), gamma = (k + 2) eps.
   double pricing_rounding(const double* y) const {
@@ -1908,7 +1948,8 @@ class FastSimplex {
     using Real = std::remove_cvref_t<decltype(inverse[0][0])>;
     for (int i = 0; i < k_; ++i) {
       Real correction = 0;
-      for (int r = 0; r < k_; ++r) correction += misfit[r] * (Transposed ? inverse[r][i] : inverse[i][r]);
+      for (int r = 0; r < k_; ++r)
+        correction += misfit[r] * (Transposed ? inverse[r][i] : inverse[i][r]);
       add(v[i], double(correction));
     }
   }
@@ -1927,7 +1968,8 @@ class FastSimplex {
       basic_rows(row);
       for (int r = 0; r < K; ++r) add_product(sum, v[r], negated(row[r]));
     } else {
-      for (int i = 0; i < K; ++i) add_product(sum, v[i], negated(_mm512_maskz_loadu_pd(kLanes, basic_[i])));
+      for (int i = 0; i < K; ++i)
+        add_product(sum, v[i], negated(_mm512_maskz_loadu_pd(kLanes, basic_[i])));
     }
     _mm512_mask_storeu_pd(misfit, kLanes, value(sum));
 #else
@@ -1954,7 +1996,8 @@ class FastSimplex {
   }
   // -v exactly (the sign bit flipped, as the scalar unary minus).
   static __m512d negated(__m512d v) {
-    return _mm512_castsi512_pd(_mm512_xor_si512(_mm512_castpd_si512(v), _mm512_set1_epi64(int64_t(1) << 63)));
+    return _mm512_castsi512_pd(
+        _mm512_xor_si512(_mm512_castpd_si512(v), _mm512_set1_epi64(int64_t(1) << 63)));
   }
 #endif
   // y_ (dual_values' of the current basis) refined by one double-double step into precise_y_, and
@@ -2016,7 +2059,8 @@ class FastSimplex {
       if (basis_[i] < n_) bound += w * std::abs(basic_reduced[i]);
       if (basis_[i] == composite_)  // reported as its atoms, so their reduced costs count
         for (size_t t = 0; t < p_->start_support.size(); ++t)
-          bound += w * p_->start_weights[t] * std::abs(precise_reduced_cost(p_->start_support[t], y));
+          bound +=
+              w * p_->start_weights[t] * std::abs(precise_reduced_cost(p_->start_support[t], y));
     }
     if (!(bound <= kCertifyBound)) return false;
     // Double pricing with the rounded duals finds the suspects, double-double judges them: a
@@ -2053,14 +2097,16 @@ class FastSimplex {
     const __m512d threshold = _mm512_set1_pd(suspect_below);
     for (; j < n_; j += 8) {
       const __mmask8 live = lanes_below(n_, j);
-      unsigned mask = _mm512_mask_cmp_pd_mask(live, _mm512_maskz_loadu_pd(live, reduced + j), threshold, _CMP_NGE_UQ);
+      unsigned mask = _mm512_mask_cmp_pd_mask(live, _mm512_maskz_loadu_pd(live, reduced + j),
+                                              threshold, _CMP_NGE_UQ);
       for (; mask; mask &= mask - 1) judge_precisely(j + __builtin_ctz(mask));
     }
 #elif defined(__AVX__)
     // Four at a time, skipping blocks without a suspect (a branch per column was ~20 % of this).
     const __m256d below = _mm256_set1_pd(suspect_below);
     for (; j + 4 <= n_; j += 4) {
-      int mask = _mm256_movemask_pd(_mm256_cmp_pd(_mm256_loadu_pd(reduced + j), below, _CMP_NGE_UQ));
+      int mask =
+          _mm256_movemask_pd(_mm256_cmp_pd(_mm256_loadu_pd(reduced + j), below, _CMP_NGE_UQ));
       for (; mask; mask &= mask - 1) judge_precisely(j + __builtin_ctz(mask));
     }
 #endif
@@ -2068,7 +2114,8 @@ class FastSimplex {
       if (!(reduced[j] >= suspect_below)) judge_precisely(j);
     if (!(bound + infeasibility <= kCertifyBound)) {
       // Dual infeasible beyond the budget: the most negative column, unless basic (rounding).
-      if (infeasibility > 0 && !is_basic(most_negative_column)) certificate_entering_ = most_negative_column;
+      if (infeasibility > 0 && !is_basic(most_negative_column))
+        certificate_entering_ = most_negative_column;
       return false;
     }
     // G and the weights from double-double sums, rounded once (x87 long double here was ~100
@@ -2099,8 +2146,8 @@ class FastSimplex {
   static constexpr int k_ = K;
   int n_ = 0, g_ = 0, e_ = 0, composite_ = 0;
   int certificate_entering_ = -1;  // set by a failed precise certificate (solve_phase2)
-  bool duals_fresh_ = false;  // y_ is dual_values' of the current basis and inverse
-  bool precise_duals_ = false;  // and refined into precise_y_ (refine_duals_for_certificate)
+  bool duals_fresh_ = false;       // y_ is dual_values' of the current basis and inverse
+  bool precise_duals_ = false;     // and refined into precise_y_ (refine_duals_for_certificate)
   DoubleDouble precise_y_[kMaxRows];
   int phase_ = 1;
   int basis_[kMaxRows] = {};
@@ -2113,7 +2160,8 @@ class FastSimplex {
   double composite_cost() const {
     if (composite_cost_ != composite_cost_) {
       double sum = 0;
-      for (size_t t = 0; t < p_->start_support.size(); ++t) sum += p_->start_weights[t] * cost_[p_->start_support[t]];
+      for (size_t t = 0; t < p_->start_support.size(); ++t)
+        sum += p_->start_weights[t] * cost_[p_->start_support[t]];
       composite_cost_ = sum;
     }
     return composite_cost_;
@@ -2125,14 +2173,14 @@ class FastSimplex {
   int refactor_interval() const {
     return retrying_ ? kCarefulRefactorInterval : kRefactorInterval;
   }
-  int kernel_side_ = 0;     // taps a side of the problem's square kernel, 0: not square (texel_tap)
-  int kernel_taps_ = -1;    // the taps kernel_side_, tap_column_ and tap_row_ are for
+  int kernel_side_ = 0;   // taps a side of the problem's square kernel, 0: not square (texel_tap)
+  int kernel_taps_ = -1;  // the taps kernel_side_, tap_column_ and tap_row_ are for
   std::vector<int> tap_column_, tap_row_;
-  const double* grid_points_ = nullptr;    // the problem's grid and extra points (point)
+  const double* grid_points_ = nullptr;  // the problem's grid and extra points (point)
   const double* extra_points_ = nullptr;
 
-  double cell_scale_ = 0;   // grid cells per unit of z
-  BasisState usable_basis_;  // solve_from_previous_basis: the first usable warm try
+  double cell_scale_ = 0;           // grid cells per unit of z
+  BasisState usable_basis_;         // solve_from_previous_basis: the first usable warm try
   double priced_y_[kMaxRows] = {};  // the duals reduced_ was computed with, in priced_phase_
   int priced_phase_ = -1;
   double priced_smallest_ = 0;  // min(0, min_j reduced_[j]), set with reduced_
@@ -2149,7 +2197,8 @@ class FastSimplex {
   // ~80 bytes, and the 16 of a selection were ~8 % of a warm LP's time).
   double lane_zf_[kWarmLanes];
   std::vector<double> above_zf_;
-  static constexpr double kNoBasis = std::numeric_limits<double>::quiet_NaN();  // a z_f slot without one
+  static constexpr double kNoBasis =
+      std::numeric_limits<double>::quiet_NaN();  // a z_f slot without one
 };
 
 class FastBackend : public Backend {
@@ -2174,7 +2223,8 @@ class FastBackend : public Backend {
           "the fast backend handles at most " + std::to_string(kMaxRows - 1) + " basis functions";
       return;
     }
-    with_row_count<kMaxRows>(p.rows, [&](auto rows) { std::get<rows() - 1>(simplices_).run(p, at, s); });
+    with_row_count<kMaxRows>(p.rows,
+                             [&](auto rows) { std::get<rows() - 1>(simplices_).run(p, at, s); });
     if (s.status != ProblemStatus::Unstable) return;
     // The rare instance our simplex cannot certify goes to GLPK, and its answer is accepted only
     // if the independent KKT checker certifies it, with its first-order error bound, and its
@@ -2185,19 +2235,20 @@ class FastBackend : public Backend {
     if (!glpk_) glpk_ = make_glpk_backend();
     Solution reference = glpk_->solve(p);
     const KktReport check = check_kkt(p, reference, kCertifyBound);
-    if (reference.status == ProblemStatus::Optimal && check.ok && check.error_bound <= kCertifyBound &&
-        check.primal_residual <= kFallbackResidual) {
+    if (reference.status == ProblemStatus::Optimal && check.ok &&
+        check.error_bound <= kCertifyBound && check.primal_residual <= kFallbackResidual) {
       reference.iterations += s.iterations;
       s = std::move(reference);
       return;
     }
     // GLPK's "infeasible" is wrong by construction when a feasible distribution is known.
-    if (reference.status == ProblemStatus::Infeasible && p.start_support.empty()) s = std::move(reference);
+    if (reference.status == ProblemStatus::Infeasible && p.start_support.empty())
+      s = std::move(reference);
   }
 
   // One simplex per row count (each keeps the warm bases of its own problems).
-  std::tuple<FastSimplex<1>, FastSimplex<2>, FastSimplex<3>, FastSimplex<4>, FastSimplex<5>, FastSimplex<6>,
-             FastSimplex<7>, FastSimplex<8>>
+  std::tuple<FastSimplex<1>, FastSimplex<2>, FastSimplex<3>, FastSimplex<4>, FastSimplex<5>,
+             FastSimplex<6>, FastSimplex<7>, FastSimplex<8>>
       simplices_;
   std::unique_ptr<Backend> glpk_;
 };
@@ -2233,9 +2284,12 @@ std::unique_ptr<Backend> make_backend(const std::string& name) {
 void check_backend_rows(const std::string& name, int functions, const std::string& what) {
   const int limit = make_backend(name)->max_functions();
   if (functions > limit)
-    throw InputError(what + ": " + std::to_string(functions) + " basis functions, but LP backend '" + name +
-                     "' solves at most " + std::to_string(limit) + (name == "fast" ? " (lp.backend glpk takes up to " +
-                     std::to_string(make_backend("glpk")->max_functions()) + ")" : ""));
+    throw InputError(
+        what + ": " + std::to_string(functions) + " basis functions, but LP backend '" + name +
+        "' solves at most " + std::to_string(limit) +
+        (name == "fast" ? " (lp.backend glpk takes up to " +
+                              std::to_string(make_backend("glpk")->max_functions()) + ")"
+                        : ""));
 }
 
 }  // namespace mb::lp

@@ -85,7 +85,8 @@ class GlpkBackend : public Backend {
     s.G = glp_get_obj_val(lp_);
     for (int j = 0; j < p.cols(); ++j) {
       double w = glp_get_col_prim(lp_, j + 1);
-      if (glp_get_col_stat(lp_, j + 1) == GLP_BS && w > 0) s.support.push_back(j), s.weights.push_back(w);
+      if (glp_get_col_stat(lp_, j + 1) == GLP_BS && w > 0)
+        s.support.push_back(j), s.weights.push_back(w);
     }
     s.duals.resize(p.rows);
     for (int r = 0; r < p.rows; ++r) s.duals[r] = glp_get_row_dual(lp_, r + 1);
@@ -101,6 +102,8 @@ class GlpkBackend : public Backend {
 
 }  // namespace
 
-std::unique_ptr<Backend> make_glpk_backend() { return std::make_unique<GlpkBackend>(); }
+std::unique_ptr<Backend> make_glpk_backend() {
+  return std::make_unique<GlpkBackend>();
+}
 
 }  // namespace mb::lp

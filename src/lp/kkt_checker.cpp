@@ -8,17 +8,19 @@ namespace mb::lp {
 
 std::string KktReport::describe() const {
   char buffer[320];
-  std::snprintf(buffer, sizeof buffer,
-                "primal residual %.2e, negative weight %.2e, dual infeasibility %.2e, complementarity %.2e, "
-                "duality gap %.2e, error bound %.2e: %s",
-                primal_residual, negative_weight, dual_infeasibility, complementarity, duality_gap, error_bound,
-                ok ? "ok" : "FAILED");
+  std::snprintf(
+      buffer, sizeof buffer,
+      "primal residual %.2e, negative weight %.2e, dual infeasibility %.2e, complementarity %.2e, "
+      "duality gap %.2e, error bound %.2e: %s",
+      primal_residual, negative_weight, dual_infeasibility, complementarity, duality_gap,
+      error_bound, ok ? "ok" : "FAILED");
   return buffer;
 }
 
 KktReport check_kkt(const Problem& p, const Solution& s, double tolerance) {
   KktReport report;
-  if (s.status != ProblemStatus::Optimal || s.duals.size() != size_t(p.rows) || s.support.size() != s.weights.size())
+  if (s.status != ProblemStatus::Optimal || s.duals.size() != size_t(p.rows) ||
+      s.support.size() != s.weights.size())
     return report;
   std::vector<long double> residual(p.rhs.begin(), p.rhs.end());
   long double primal_objective = 0;
@@ -41,7 +43,8 @@ KktReport check_kkt(const Problem& p, const Solution& s, double tolerance) {
     report.dual_infeasibility = std::max(report.dual_infeasibility, double(-d));
   }
   long double complementarity = 0;
-  for (size_t k = 0; k < s.support.size(); ++k) complementarity += std::abs(s.weights[k] * reduced[s.support[k]]);
+  for (size_t k = 0; k < s.support.size(); ++k)
+    complementarity += std::abs(s.weights[k] * reduced[s.support[k]]);
   report.complementarity = double(complementarity);
   long double dual_objective = 0;
   for (int r = 0; r < p.rows; ++r) dual_objective += (long double)s.duals[r] * p.rhs[r];
@@ -49,7 +52,8 @@ KktReport check_kkt(const Problem& p, const Solution& s, double tolerance) {
   report.error_bound = double(moved + complementarity) + report.dual_infeasibility;
   report.ok = report.primal_residual <= tolerance && report.negative_weight <= tolerance &&
               report.dual_infeasibility <= tolerance && report.complementarity <= tolerance &&
-              report.duality_gap <= tolerance && std::abs(double(primal_objective) - s.G) <= tolerance;
+              report.duality_gap <= tolerance &&
+              std::abs(double(primal_objective) - s.G) <= tolerance;
   return report;
 }
 

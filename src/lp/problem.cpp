@@ -26,7 +26,8 @@ double largest_magnitude(const std::vector<double>& values) {
 }  // namespace
 
 std::vector<double> grid_points(const Discretization& disc) {
-  if (disc.grid < 2) throw InputError("grid: at least 2 points are needed, got " + std::to_string(disc.grid));
+  if (disc.grid < 2)
+    throw InputError("grid: at least 2 points are needed, got " + std::to_string(disc.grid));
   if (!(disc.lo < disc.hi)) throw InputError("interval: expected lo < hi");
   std::vector<double> g(disc.grid);
   for (int i = 0; i < disc.grid; ++i) g[i] = disc.lo + (disc.hi - disc.lo) * i / (disc.grid - 1);
@@ -40,13 +41,15 @@ double quantize_to_grid(const Discretization& disc, double z) {
   return k == disc.grid - 1 ? disc.hi : disc.lo + (disc.hi - disc.lo) * k / (disc.grid - 1);
 }
 
-ProblemFactory::ProblemFactory(const Basis& basis, const Discretization& disc) : basis_(basis), disc_(disc) {
+ProblemFactory::ProblemFactory(const Basis& basis, const Discretization& disc)
+    : basis_(basis), disc_(disc) {
   auto grid = std::make_shared<ColumnBlock>();
   grid->points = grid_points(disc);
   const int n = disc.grid, k = int(basis.size()) + 1;
   if (n < k) throw InputError("grid: fewer points than the basis has functions plus one");
   if (k > kMaxColumnRows)
-    throw InputError("basis: at most " + std::to_string(kMaxColumnRows - 1) + " functions, got " + std::to_string(k - 1));
+    throw InputError("basis: at most " + std::to_string(kMaxColumnRows - 1) + " functions, got " +
+                     std::to_string(k - 1));
   rows_ = k;
   // Evaluate (1, b(z_i)) on the grid and orthonormalise: A^T = Q R, rows := R^{-T} A = Q^T.
   // In long double: Eigen has no SIMD packets for it, so its reductions run in one order on every
@@ -60,7 +63,8 @@ ProblemFactory::ProblemFactory(const Basis& basis, const Discretization& disc) :
     basis[j].evaluate(grid->points, values);
     for (int i = 0; i < n; ++i) {
       if (!std::isfinite(values[i]))
-        throw InputError("basis function '" + basis[j].name() + "' is not finite at z = " + round_trip(grid->points[i]));
+        throw InputError("basis function '" + basis[j].name() +
+                         "' is not finite at z = " + round_trip(grid->points[i]));
       at(i, j + 1) = values[i];
     }
   }
@@ -71,7 +75,8 @@ ProblemFactory::ProblemFactory(const Basis& basis, const Discretization& disc) :
     if (std::abs(r_upper(r, r)) < 1e-12 * largest) {
       std::string names;
       for (const auto& name : basis.names()) names += (names.empty() ? "" : ", ") + name;
-      throw InputError("basis {" + names + "} is linearly dependent together with the constant on the grid");
+      throw InputError("basis {" + names +
+                       "} is linearly dependent together with the constant on the grid");
     }
   Matrix t = r_upper.transpose().triangularView<Eigen::Lower>().solve(Matrix::Identity(k, k));
   transform_.resize(size_t(k) * k);
@@ -101,7 +106,8 @@ void ProblemFactory::column(double z, double* out) const {
   for (size_t j = 0; j < basis_.size(); ++j) {
     raw[j + 1] = basis_[j](z);
     if (!std::isfinite(raw[j + 1]))
-      throw InputError("basis function '" + basis_[j].name() + "' is not finite at z = " + round_trip(z));
+      throw InputError("basis function '" + basis_[j].name() +
+                       "' is not finite at z = " + round_trip(z));
   }
   transform(raw, out);
 }
@@ -119,7 +125,8 @@ void finish_block(int rows, const std::vector<double>& staging, ColumnBlock& blo
 }
 
 // Writes T (1, b(z)) as column `slot` of a row-major block whose rows are `stride` apart.
-void put_column(const ProblemFactory& factory, double z, std::vector<double>& values, size_t stride, size_t slot) {
+void put_column(const ProblemFactory& factory, double z, std::vector<double>& values, size_t stride,
+                size_t slot) {
   double column[kMaxColumnRows];
   factory.column(z, column);
   for (int r = 0; r < factory.rows(); ++r) values[size_t(r) * stride + slot] = column[r];
@@ -130,8 +137,8 @@ void put_column(const ProblemFactory& factory, double z, std::vector<double>& va
 Problem ProblemFactory::from_moments(std::span<const double> moments, double zf,
                                      std::span<const double> extra_points) const {
   if (moments.size() != basis_.size())
-    throw InputError("moments: expected " + std::to_string(basis_.size()) + " values (one per basis function), got " +
-                     std::to_string(moments.size()));
+    throw InputError("moments: expected " + std::to_string(basis_.size()) +
+                     " values (one per basis function), got " + std::to_string(moments.size()));
   if (!std::isfinite(zf)) throw InputError("zf: not finite");
   Problem p;
   p.rows = rows_;
@@ -153,7 +160,8 @@ Problem ProblemFactory::from_moments(std::span<const double> moments, double zf,
   std::vector<double> raw(rows_);
   raw[0] = 1;
   for (size_t j = 0; j < moments.size(); ++j) {
-    if (!std::isfinite(moments[j])) throw InputError("moments: value " + std::to_string(j + 1) + " is not finite");
+    if (!std::isfinite(moments[j]))
+      throw InputError("moments: value " + std::to_string(j + 1) + " is not finite");
     raw[j + 1] = moments[j];
   }
   p.rhs.resize(rows_);
@@ -162,8 +170,8 @@ Problem ProblemFactory::from_moments(std::span<const double> moments, double zf,
   return p;
 }
 
-Problem ProblemFactory::from_distribution(std::span<const double> depths, std::span<const double> weights,
-                                          double zf) const {
+Problem ProblemFactory::from_distribution(std::span<const double> depths,
+                                          std::span<const double> weights, double zf) const {
   if (depths.size() != weights.size() || depths.empty())
     throw InputError("distribution: expected as many weights as depths, at least one");
   std::vector<double> columns(depths.size() * rows_);
@@ -180,8 +188,10 @@ Problem ProblemFactory::from_distribution(std::span<const double> depths, std::s
   return p;
 }
 
-void ProblemFactory::from_distribution(std::span<const double> depths, std::span<const double> weights,
-                                       std::span<const double* const> depth_columns, double zf, Problem& p) const {
+void ProblemFactory::from_distribution(std::span<const double> depths,
+                                       std::span<const double> weights,
+                                       std::span<const double* const> depth_columns, double zf,
+                                       Problem& p) const {
   p.rows = rows_;
   p.grid = grid_;
   p.zf = zf;
@@ -228,7 +238,8 @@ void ProblemFactory::from_distribution(std::span<const double> depths, std::span
       if (weights[t] == 0) continue;
       const double w = weights[t] * scale;
       const double* column = depth_columns[t];
-      for (int r = 0; r < rows; ++r) sum[r] = std::fma(w, column[r], sum[r]);  // fused: see transform
+      for (int r = 0; r < rows; ++r)
+        sum[r] = std::fma(w, column[r], sum[r]);  // fused: see transform
       // Equal depths are usually neighbours in tap order: look back a few slots only (a duplicate
       // column that slips through is harmless, a quadratic search per fragment is not).
       int slot = -1;  // the earliest match among the last four (selects, not branches)
@@ -264,7 +275,8 @@ void ProblemFactory::from_distribution(std::span<const double> depths, std::span
     }
   }
   for (int r = 1; r < rows_; ++r)  // pack: row r moves down from r * stride to r * count
-    std::copy(values.begin() + r * stride, values.begin() + r * stride + count, values.begin() + r * count);
+    std::copy(values.begin() + r * stride, values.begin() + r * stride + count,
+              values.begin() + r * count);
   values.resize(size_t(rows_) * count);
   p.extra.max_abs = largest_magnitude(values);
   p.rhs.assign(rhs, rhs + rows_);
@@ -284,7 +296,8 @@ bool ProblemFactory::move_zf(double zf, Problem& p) const {
   // z_f's own column is the last one exactly when it did not coincide with a kernel depth.
   const bool appended = p.zf_extra >= 0 && p.zf_extra == count - 1 && p.extra_tap[p.zf_extra] < 0;
   if (!appended || !(zf >= disc_.lo && zf <= disc_.hi)) return false;
-  if (std::find(p.extra.points.begin(), p.extra.points.end() - 1, zf) != p.extra.points.end() - 1) return false;
+  if (std::find(p.extra.points.begin(), p.extra.points.end() - 1, zf) != p.extra.points.end() - 1)
+    return false;
   put_column(*this, zf, p.extra.values, count, count - 1);
   p.extra.points[count - 1] = zf;
   p.extra.max_abs = largest_magnitude(p.extra.values);
@@ -292,12 +305,14 @@ bool ProblemFactory::move_zf(double zf, Problem& p) const {
   return true;
 }
 
-Problem make_problem(const Basis& basis, const Discretization& disc, std::span<const double> moments, double zf,
+Problem make_problem(const Basis& basis, const Discretization& disc,
+                     std::span<const double> moments, double zf,
                      std::span<const double> extra_points) {
   return ProblemFactory(basis, disc).from_moments(moments, zf, extra_points);
 }
 
-Problem make_problem_from_distribution(const Basis& basis, const Discretization& disc, std::span<const double> depths,
+Problem make_problem_from_distribution(const Basis& basis, const Discretization& disc,
+                                       std::span<const double> depths,
                                        std::span<const double> weights, double zf) {
   return ProblemFactory(basis, disc).from_distribution(depths, weights, zf);
 }

@@ -40,12 +40,12 @@ struct ColumnBlock {
 };
 
 struct Problem {
-  int rows = 0;                               // m + 1
-  std::shared_ptr<const ColumnBlock> grid;    // ascending grid points
-  ColumnBlock extra;                          // the fragment's own points
-  std::vector<double> rhs;                    // the moment vector in the transformed coordinates
+  int rows = 0;                             // m + 1
+  std::shared_ptr<const ColumnBlock> grid;  // ascending grid points
+  ColumnBlock extra;                        // the fragment's own points
+  std::vector<double> rhs;                  // the moment vector in the transformed coordinates
   double zf = 0;
-  std::vector<double> moments;                // the untransformed b_1..b_m, for reports
+  std::vector<double> moments;  // the untransformed b_1..b_m, for reports
   // A known feasible distribution (column indices and weights), when the problem was built from
   // one: backends may start from it instead of searching for feasibility.
   std::vector<int> start_support;
@@ -60,9 +60,12 @@ struct Problem {
   int cols() const { return grid_size() + extra.size(); }
   double at(int r, int j) const {
     const int g = grid_size();
-    return j < g ? grid->values[size_t(r) * g + j] : extra.values[size_t(r) * extra.size() + (j - g)];
+    return j < g ? grid->values[size_t(r) * g + j]
+                 : extra.values[size_t(r) * extra.size() + (j - g)];
   }
-  double point(int j) const { return j < grid_size() ? grid->points[j] : extra.points[j - grid_size()]; }
+  double point(int j) const {
+    return j < grid_size() ? grid->points[j] : extra.points[j - grid_size()];
+  }
   // The objective: 1 for mass strictly in front of z_f (REFERENCE.md §1).
   double cost(int j) const { return point(j) < zf ? 1.0 : 0.0; }
 };
@@ -82,15 +85,18 @@ class ProblemFactory {
   void transform(const double* untransformed, double* out) const;
 
   // From a given moment vector b (m values), e.g. from `solve --moments`.
-  Problem from_moments(std::span<const double> moments, double zf, std::span<const double> extra_points = {}) const;
+  Problem from_moments(std::span<const double> moments, double zf,
+                       std::span<const double> extra_points = {}) const;
   // From a depth distribution (the kernel's depths and weights): its depths join I, and the
   // moment vector is recomputed from them in the transformed coordinates, so that distribution
   // is exactly feasible (REFERENCE.md §2: 0 <= G <= F_Z(z_f) then holds without rounding trouble).
-  Problem from_distribution(std::span<const double> depths, std::span<const double> weights, double zf) const;
+  Problem from_distribution(std::span<const double> depths, std::span<const double> weights,
+                            double zf) const;
   // The same, with the depths' transformed columns already known (the sweep computes them once per
   // texel): column(depths[t]) == depth_columns[t]. Reuses `out`'s storage.
   void from_distribution(std::span<const double> depths, std::span<const double> weights,
-                         std::span<const double* const> depth_columns, double zf, Problem& out) const;
+                         std::span<const double* const> depth_columns, double zf,
+                         Problem& out) const;
   // `p`, built by from_distribution, for another z_f (the fragments of one texel share its kernel):
   // only z_f's column changes, and `p` ends up as from_distribution would build it. False, with `p`
   // unchanged, when z_f's column is not simply replaced (z_f on a kernel depth or outside [lo, hi],
@@ -106,9 +112,11 @@ class ProblemFactory {
 };
 
 // One-off conveniences (build a factory each time).
-Problem make_problem(const Basis& basis, const Discretization& disc, std::span<const double> moments, double zf,
+Problem make_problem(const Basis& basis, const Discretization& disc,
+                     std::span<const double> moments, double zf,
                      std::span<const double> extra_points = {});
-Problem make_problem_from_distribution(const Basis& basis, const Discretization& disc, std::span<const double> depths,
+Problem make_problem_from_distribution(const Basis& basis, const Discretization& disc,
+                                       std::span<const double> depths,
                                        std::span<const double> weights, double zf);
 // The grid of a discretisation, and rounding to it (quantize mode).
 std::vector<double> grid_points(const Discretization& disc);

@@ -17,9 +17,9 @@ struct Solution {
   CallStatus call = CallStatus::Ok;
   std::string call_message;
   ProblemStatus status = ProblemStatus::Unstable;
-  double G = 0;                   // the sharp lower bound (the LP optimum)
-  std::vector<int> support;       // indices into Problem::points with positive weight
-  std::vector<double> weights;    // same length as support
+  double G = 0;                 // the sharp lower bound (the LP optimum)
+  std::vector<int> support;     // indices into Problem::points with positive weight
+  std::vector<double> weights;  // same length as support
   // y, one per (transformed) row: a certificate of optimality. Long double because narrow kernels
   // (a sloped receiver covers depths 0.77..0.79) need |y| ~ 1e8, and y rounded to double then
   // misstates reduced costs by ~1e-8.
@@ -83,14 +83,17 @@ constexpr int kWarmLanes = 8;
 // the first has the row above to start from; bands of 8 rows keep 64 runs per 512-row view for
 // the threads to share.
 constexpr int kWarmRunRows = 8;
-inline int warm_run_of(size_t texel, int width) { return int(texel / size_t(width)) / kWarmRunRows; }
+inline int warm_run_of(size_t texel, int width) {
+  return int(texel / size_t(width)) / kWarmRunRows;
+}
 // Where the warm-start runs of `count` fragments in texel order begin, with `count` appended;
 // texel_of(i) is the i-th fragment's texel. Eval and sweep cut their runs with this.
 template <class TexelOf>
 std::vector<size_t> warm_run_begins(size_t count, int width, TexelOf texel_of) {
   std::vector<size_t> begins;
   for (size_t i = 0; i < count; ++i)
-    if (i == 0 || warm_run_of(texel_of(i), width) != warm_run_of(texel_of(i - 1), width)) begins.push_back(i);
+    if (i == 0 || warm_run_of(texel_of(i), width) != warm_run_of(texel_of(i - 1), width))
+      begins.push_back(i);
   begins.push_back(count);
   return begins;
 }

@@ -115,8 +115,8 @@ BasisFunction BasisFunction::parse(const std::string& text) {
     evaluator->z = 0.5;
     evaluator->parser.Eval();  // syntax errors surface here
   } catch (const mu::Parser::exception_type& e) {
-    throw InputError("basis function '" + text + "': not a catalog name and not a valid expression in z (" +
-                     e.GetMsg() + ")");
+    throw InputError("basis function '" + text +
+                     "': not a catalog name and not a valid expression in z (" + e.GetMsg() + ")");
   }
   f.name_ = text;
   f.expression_ = evaluator;
@@ -176,15 +176,17 @@ void Basis::check_admissible(double lo, double hi) const {
     double peak = 0;
     for (int i = 0; i < samples; ++i) {
       if (!std::isfinite(values[i]))
-        throw InputError("basis function '" + f.name() + "' is not finite at z = " + round_trip(z[i]) + " on " +
-                         interval + " (the admissible interval, lp.lo and lp.hi)");
+        throw InputError("basis function '" + f.name() +
+                         "' is not finite at z = " + round_trip(z[i]) + " on " + interval +
+                         " (the admissible interval, lp.lo and lp.hi)");
       peak = std::max(peak, std::abs(values[i]));
     }
     const double limit = kPoleFactor * std::max(peak, 1.0);
     auto pole = [&](double at, double value) {
       if (!std::isfinite(value) || std::abs(value) > limit)
-        throw InputError("basis function '" + f.name() + "' has a pole near z = " + round_trip(at) + " on " +
-                         interval + " (|f| reaches " + round_trip(std::abs(value)) + "): not admissible there");
+        throw InputError("basis function '" + f.name() + "' has a pole near z = " + round_trip(at) +
+                         " on " + interval + " (|f| reaches " + round_trip(std::abs(value)) +
+                         "): not admissible there");
     };
     for (int i = 0; i + 1 < samples; ++i) {
       // A sign change: bisect it. A zero leaves |f| small, a pole makes it grow without bound.
@@ -193,19 +195,24 @@ void Basis::check_admissible(double lo, double hi) const {
         for (int step = 0; step < 80 && b - a > 0; ++step) {
           const double m = 0.5 * (a + b), fm = f(m);
           pole(m, fm);
-          if ((fm < 0) == (fa < 0)) a = m, fa = fm;
-          else b = m;
+          if ((fm < 0) == (fa < 0))
+            a = m, fa = fm;
+          else
+            b = m;
         }
       }
       // A local peak of |f| (an even pole keeps its sign): narrow it by ternary search.
-      if (i > 0 && std::abs(values[i]) > std::abs(values[i - 1]) && std::abs(values[i]) > std::abs(values[i + 1])) {
+      if (i > 0 && std::abs(values[i]) > std::abs(values[i - 1]) &&
+          std::abs(values[i]) > std::abs(values[i + 1])) {
         double a = z[i - 1], b = z[i + 1];
         for (int step = 0; step < 80; ++step) {
           const double m1 = a + (b - a) / 3, m2 = b - (b - a) / 3, f1 = f(m1), f2 = f(m2);
           pole(m1, f1);
           pole(m2, f2);
-          if (std::abs(f1) < std::abs(f2)) a = m1;
-          else b = m2;
+          if (std::abs(f1) < std::abs(f2))
+            a = m1;
+          else
+            b = m2;
         }
       }
     }
@@ -227,7 +234,8 @@ void Basis::check_independent(double lo, double hi) const {
     functions_[j].evaluate(z, values);
     for (int i = 0; i < samples; ++i) {
       if (!std::isfinite(values[i]))
-        throw InputError("basis function '" + functions_[j].name() + "' is not finite at z = " + round_trip(z[i]));
+        throw InputError("basis function '" + functions_[j].name() +
+                         "' is not finite at z = " + round_trip(z[i]));
       A(i, j + 1) = values[i];
     }
   }
@@ -247,12 +255,14 @@ void Basis::check_independent(double lo, double hi) const {
   for (int j = 0; j < m; ++j) {
     Eigen::MatrixXd rest(samples, m);
     rest << A.leftCols(j + 1), A.rightCols(m - j - 1);
-    if (smallest_relative_singular_value(rest) >= kTolerance) culprits += (culprits.empty() ? "" : ", ") + functions_[j].name();
+    if (smallest_relative_singular_value(rest) >= kTolerance)
+      culprits += (culprits.empty() ? "" : ", ") + functions_[j].name();
   }
   std::string all;
   for (const auto& f : functions_) all += (all.empty() ? "" : ", ") + f.name();
-  throw InputError("basis {" + all + "} is linearly dependent together with the constant on [" + round_trip(lo) +
-                   ", " + round_trip(hi) + "]" + (culprits.empty() ? "" : "; remove one of: " + culprits));
+  throw InputError("basis {" + all + "} is linearly dependent together with the constant on [" +
+                   round_trip(lo) + ", " + round_trip(hi) + "]" +
+                   (culprits.empty() ? "" : "; remove one of: " + culprits));
 }
 
 }  // namespace mb

@@ -14,7 +14,8 @@ int cubic_roots(double c3, double c2, double c1, double c0, double* roots) {
     const double r = 2 * std::sqrt(-p / 3);
     const double argument = std::clamp(3 * q / (p * r), -1.0, 1.0);
     const double phi = std::acos(argument) / 3;
-    for (int k = 0; k < 3; ++k) roots[count++] = r * std::cos(phi - 2 * std::numbers::pi * k / 3) - a / 3;
+    for (int k = 0; k < 3; ++k)
+      roots[count++] = r * std::cos(phi - 2 * std::numbers::pi * k / 3) - a / 3;
   } else {
     roots[count++] = std::cbrt(-q) - a / 3;  // one real root (only from rounding here)
   }
@@ -102,7 +103,8 @@ int quartic_roots(Real c4, Real c3, Real c2, Real c1, Real c0, Real* roots) {
   for (int k = 0; k < count; ++k)
     for (int step = 0; step < 2; ++step) {
       const Real z = roots[k];
-      const Real f = (((z + A) * z + B) * z + C) * z + D, df = ((4 * z + 3 * A) * z + 2 * B) * z + C;
+      const Real f = (((z + A) * z + B) * z + C) * z + D,
+                 df = ((4 * z + 3 * A) * z + 2 * B) * z + C;
       if (df != 0 && std::isfinite(f / df)) roots[k] = z - f / df;
     }
   std::sort(roots, roots + count);

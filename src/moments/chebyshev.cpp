@@ -12,6 +12,8 @@ double vsm_bound(const double* b, double zf, double min_variance) {
   return d * d / (variance + d * d);
 }
 
-double esm_bound(double b1, double zf, double c) { return std::max(0.0, 1.0 - b1 * std::exp(-c * zf)); }
+double esm_bound(double b1, double zf, double c) {
+  return std::max(0.0, 1.0 - b1 * std::exp(-c * zf));
+}
 
 }  // namespace mb

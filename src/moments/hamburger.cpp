@@ -12,7 +12,8 @@ namespace {
 // G = the mass of the canonical distribution strictly below z_f: node 0 is z_f itself.
 template <class Real>
 void finish_bound(MsmBound<Real>& r, const Real* moments, Real zf) {
-  for (int i = 0; i < r.node_count; ++i) r.weights[i] = node_weight(moments, r.nodes, r.node_count, i);
+  for (int i = 0; i < r.node_count; ++i)
+    r.weights[i] = node_weight(moments, r.nodes, r.node_count, i);
   Real lower = 0;
   for (int i = 1; i < r.node_count; ++i)
     if (r.nodes[i] < zf) lower += r.weights[i];
@@ -69,13 +70,15 @@ MsmBound<Real> hamburger4(const Real* b, Real zf) {
   return r;
 }
 
-void hamburger4_lower_batch(const double* b, const double* zf, double* lower, size_t count, double alpha) {
+void hamburger4_lower_batch(const double* b, const double* zf, double* lower, size_t count,
+                            double alpha) {
 #pragma omp simd
   for (size_t k = 0; k < count; ++k) {
     const double* m = b + 4 * k;
-    const double g = hamburger4_core((1 - alpha) * m[0] + alpha * 0.5, (1 - alpha) * m[1] + alpha * 0.5,
-                                     (1 - alpha) * m[2] + alpha * 0.5, (1 - alpha) * m[3] + alpha * 0.5, zf[k])
-                         .lower;
+    const double g =
+        hamburger4_core((1 - alpha) * m[0] + alpha * 0.5, (1 - alpha) * m[1] + alpha * 0.5,
+                        (1 - alpha) * m[2] + alpha * 0.5, (1 - alpha) * m[3] + alpha * 0.5, zf[k])
+            .lower;
     lower[k] = std::min(1.0, std::max(0.0, g));
   }
 }

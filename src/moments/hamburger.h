@@ -21,7 +21,8 @@ MsmBound<Real> hamburger4(const Real* b, Real zf);
 // The lower bound alone for a stream of fragments: b holds 4 moments per fragment (unbiased),
 // biased here towards b* = (1/2, ..) by alpha. Branch-free and vectorised (AVX-512 where
 // available); it runs the same inlined steps as hamburger4.
-void hamburger4_lower_batch(const double* b, const double* zf, double* lower, size_t count, double alpha);
+void hamburger4_lower_batch(const double* b, const double* zf, double* lower, size_t count,
+                            double alpha);
 // b = (b1, .., b6), already biased (double).
 MsmBound<double> hamburger6(const double* b, double zf);
 

@@ -7,15 +7,22 @@ namespace mb {
 
 std::string MomentStorage::name() const {
   switch (kind) {
-    case StorageKind::Double: return "double";
-    case StorageKind::Float32: return "float32";
-    case StorageKind::Unorm16: return "unorm16";
+    case StorageKind::Double:
+      return "double";
+    case StorageKind::Float32:
+      return "float32";
+    case StorageKind::Unorm16:
+      return "unorm16";
   }
   return "?";
 }
 
-MomentStorage double_storage() { return {}; }
-MomentStorage float32_storage() { return {StorageKind::Float32, {}, {}}; }
+MomentStorage double_storage() {
+  return {};
+}
+MomentStorage float32_storage() {
+  return {StorageKind::Float32, {}, {}};
+}
 
 MomentStorage unorm16_power4_storage() {
   MomentStorage s{StorageKind::Unorm16, Eigen::MatrixXd(4, 4), Eigen::VectorXd::Zero(4)};
@@ -36,14 +43,16 @@ MomentStorage unorm16_power2_storage() {
 
 void store_moments(const MomentStorage& storage, std::span<double> b) {
   switch (storage.kind) {
-    case StorageKind::Double: return;
+    case StorageKind::Double:
+      return;
     case StorageKind::Float32:
       for (double& v : b) v = double(float(v));
       return;
     case StorageKind::Unorm16: {
       Eigen::Map<Eigen::VectorXd> v(b.data(), Eigen::Index(b.size()));
       Eigen::VectorXd q = storage.transform * v + storage.offset;
-      for (Eigen::Index i = 0; i < q.size(); ++i) v(i) = std::round(std::clamp(q(i), 0.0, 1.0) * 65535.0) / 65535.0;
+      for (Eigen::Index i = 0; i < q.size(); ++i)
+        v(i) = std::round(std::clamp(q(i), 0.0, 1.0) * 65535.0) / 65535.0;
       return;
     }
   }

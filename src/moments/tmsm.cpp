@@ -66,8 +66,9 @@ class TmsmSolver {
     // (a) the stationary points of w_a: the quartic of tmsm.md §3.
     Real roots[4];
     const Real x = xf_;
-    const int count = quartic_roots(e[0], -(4 * e[1] + 2 * x * e[0]), 3 * e[2] + 6 * x * e[1] - 3 * e[0],
-                                    4 * e[1] + 2 * x * e[0] - 4 * x * e[2], -(e[2] + 2 * x * e[1]), roots);
+    const int count =
+        quartic_roots(e[0], -(4 * e[1] + 2 * x * e[0]), 3 * e[2] + 6 * x * e[1] - 3 * e[0],
+                      4 * e[1] + 2 * x * e[0] - 4 * x * e[2], -(e[2] + 2 * x * e[1]), roots);
     for (int k = 0; k < count; ++k) {
       const Real a = roots[k];
       consider(a, (e[2] - a * e[1]) / (e[1] - a * e[0]), Kind::Stationary);
@@ -117,21 +118,26 @@ class TmsmSolver {
     const Real finite4 = v[0] * xf2 * xf2 + v[1] * a2 * a2 + v[2] * c2 * c2;
     k.w[3] = kind == Kind::NoCut ? Real(0) : (m[4] - finite4) / 8;
     if (k.w[0] >= 0 && k.w[1] >= 0 && k.w[2] >= 0 && k.w[3] >= 0) {
-      k.worst_weight = std::min({k.w[0], k.w[1], k.w[2], k.w[3]});  // admissible: no allowance needed
+      k.worst_weight =
+          std::min({k.w[0], k.w[1], k.w[2], k.w[3]});  // admissible: no allowance needed
     } else {
       // Each weight with the size of the terms it comes from, so that admissibility allows for its
       // own rounding error ((1 + x^2)^2 magnifies both far from z = 1/2).
       Real size[4];
       size[0] = no_zf ? Real(0)
-                      : (std::abs(m[2]) + std::abs((a + c) * m[1]) + std::abs(a * c * m[0])) / std::abs((xf - a) * (xf - c));
+                      : (std::abs(m[2]) + std::abs((a + c) * m[1]) + std::abs(a * c * m[0])) /
+                            std::abs((xf - a) * (xf - c));
       size[1] = (std::abs(base) + std::abs(c * slope)) / std::abs(den1);
       size[2] = (std::abs(base) + std::abs(a * slope)) / std::abs(den2);
       for (int i = 0; i < 3; ++i) size[i] *= scale[i];
-      size[3] = (std::abs(m[4]) + std::abs(v[0]) * xf2 * xf2 + std::abs(v[1]) * a2 * a2 + std::abs(v[2]) * c2 * c2) / 8;
+      size[3] = (std::abs(m[4]) + std::abs(v[0]) * xf2 * xf2 + std::abs(v[1]) * a2 * a2 +
+                 std::abs(v[2]) * c2 * c2) /
+                8;
       // A weight is negative for real unless it is within a few roundings of its terms.
       constexpr Real kRounding = 8 * std::numeric_limits<Real>::epsilon();
       k.worst_weight = std::numeric_limits<Real>::infinity();
-      for (int i = 0; i < 4; ++i) k.worst_weight = std::min(k.worst_weight, k.w[i] + kRounding * size[i]);
+      for (int i = 0; i < 4; ++i)
+        k.worst_weight = std::min(k.worst_weight, k.w[i] + kRounding * size[i]);
     }
     if (!std::isfinite(k.worst_weight)) return;
     const Real tolerance = std::is_same_v<Real, float> ? Real(1e-6) : Real(1e-12);

@@ -12,7 +12,8 @@ namespace mb {
 
 namespace {
 using OIIO::TypeDesc;
-const char* const kChannels[] = {"Z", "facing", "depth_hi", "depth_lo", "dzdx_hi", "dzdx_lo", "dzdy_hi", "dzdy_lo"};
+const char* const kChannels[] = {"Z",       "facing",  "depth_hi", "depth_lo",
+                                 "dzdx_hi", "dzdx_lo", "dzdy_hi",  "dzdy_lo"};
 constexpr int kChannelCount = 8;
 constexpr int kFormatVersion = 1;
 
@@ -21,7 +22,9 @@ void split(double value, uint32_t& hi, uint32_t& lo) {
   hi = uint32_t(bits >> 32);
   lo = uint32_t(bits);
 }
-double join(uint32_t hi, uint32_t lo) { return std::bit_cast<double>((uint64_t(hi) << 32) | lo); }
+double join(uint32_t hi, uint32_t lo) {
+  return std::bit_cast<double>((uint64_t(hi) << 32) | lo);
+}
 }  // namespace
 
 void write_deep_exr(const LayerStack& stack, const std::string& file) {
@@ -58,7 +61,8 @@ void write_deep_exr(const LayerStack& stack, const std::string& file) {
   }
   auto out = OIIO::ImageOutput::create(file);
   if (!out || !out->open(file, spec) || !out->write_deep_image(deep) || !out->close())
-    throw InputError(file + ": cannot write deep EXR: " + (out ? out->geterror() : OIIO::geterror()));
+    throw InputError(file +
+                     ": cannot write deep EXR: " + (out ? out->geterror() : OIIO::geterror()));
 }
 
 LayerStack read_deep_exr(const std::string& file) {
@@ -67,14 +71,17 @@ LayerStack read_deep_exr(const std::string& file) {
   const OIIO::ImageSpec& spec = in->spec();
   if (!spec.deep) throw InputError(file + ": not a deep image");
   if (spec.get_int_attribute("momentbench:format_version", 0) != kFormatVersion)
-    throw InputError(file + ": not a momentbench layer stack (format version " + std::to_string(kFormatVersion) + ")");
+    throw InputError(file + ": not a momentbench layer stack (format version " +
+                     std::to_string(kFormatVersion) + ")");
   int channel[kChannelCount];
   for (int c = 0; c < kChannelCount; ++c) {
     channel[c] = spec.channelindex(kChannels[c]);
-    if (channel[c] < 0) throw InputError(file + ": missing channel '" + std::string(kChannels[c]) + "'");
+    if (channel[c] < 0)
+      throw InputError(file + ": missing channel '" + std::string(kChannels[c]) + "'");
   }
   OIIO::DeepData deep;
-  if (!in->read_native_deep_image(0, 0, deep)) throw InputError(file + ": cannot read deep data: " + in->geterror());
+  if (!in->read_native_deep_image(0, 0, deep))
+    throw InputError(file + ": cannot read deep data: " + in->geterror());
   LayerStack stack;
   stack.width = spec.width;
   stack.height = spec.height;
@@ -82,7 +89,8 @@ LayerStack read_deep_exr(const std::string& file) {
   stack.view = spec.get_string_attribute("momentbench:view");
   stack.frame = spec.get_string_attribute("momentbench:frame");
   stack.offsets.assign(stack.texel_count() + 1, 0);
-  for (size_t t = 0; t < stack.texel_count(); ++t) stack.offsets[t + 1] = stack.offsets[t] + deep.samples(t);
+  for (size_t t = 0; t < stack.texel_count(); ++t)
+    stack.offsets[t + 1] = stack.offsets[t] + deep.samples(t);
   size_t total = stack.offsets.back();
   stack.depth.resize(total);
   stack.facing.resize(total);

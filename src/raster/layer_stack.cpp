@@ -19,7 +19,8 @@ LayerStackStats compute_stats(const LayerStack& stack, size_t triangles) {
     stats.covered_texels += n > 0;
     stats.max_layers = std::max(stats.max_layers, n);
   }
-  stats.mean_layers = stats.covered_texels ? double(stats.fragments) / double(stats.covered_texels) : 0;
+  stats.mean_layers =
+      stats.covered_texels ? double(stats.fragments) / double(stats.covered_texels) : 0;
   return stats;
 }
 

@@ -11,10 +11,10 @@ struct LayerStack {
   int width = 0, height = 0;
   // Texel t = row * width + column owns fragments [offsets[t], offsets[t + 1]).
   std::vector<uint64_t> offsets;
-  std::vector<double> depth;     // in [0, 1], ascending within a texel
-  std::vector<uint8_t> facing;   // 1 if the surface faces the light (a receiver, REFERENCE §3)
-  std::vector<double> dz_dx;     // depth gradient of the fragment's triangle, per texel along x
-  std::vector<double> dz_dy;     // ... along y (raster rows, downwards)
+  std::vector<double> depth;       // in [0, 1], ascending within a texel
+  std::vector<uint8_t> facing;     // 1 if the surface faces the light (a receiver, REFERENCE §3)
+  std::vector<double> dz_dx;       // depth gradient of the fragment's triangle, per texel along x
+  std::vector<double> dz_dy;       // ... along y (raster rows, downwards)
   std::string scene, view, frame;  // provenance, written to the file header
 
   size_t texel_count() const { return size_t(width) * size_t(height); }

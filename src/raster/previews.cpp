@@ -14,7 +14,8 @@ void write_depth_preview(const LayerStack& stack, const std::string& png_file) {
 
 void write_layer_count_preview(const LayerStack& stack, const std::string& png_file) {
   int max_layers = 1;
-  for (size_t t = 0; t < stack.texel_count(); ++t) max_layers = std::max(max_layers, stack.layers(t));
+  for (size_t t = 0; t < stack.texel_count(); ++t)
+    max_layers = std::max(max_layers, stack.layers(t));
   std::vector<float> pixels(stack.texel_count() * 3);
   for (size_t t = 0; t < stack.texel_count(); ++t) {
     auto rgb = colormap(double(stack.layers(t)) / max_layers);

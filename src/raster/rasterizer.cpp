@@ -32,12 +32,16 @@ struct TileFragment {
   double depth;
 };
 
-int64_t floor_div(int64_t a, int64_t b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
+int64_t floor_div(int64_t a, int64_t b) {
+  return a >= 0 ? a / b : -((-a + b - 1) / b);
+}
 
 // An edge of a counter-clockwise triangle covers the centres lying exactly on it only when it is
 // a "top" or "left" edge. The two triangles sharing an edge traverse it in opposite directions,
 // and exactly one of (dx, dy), (-dx, -dy) passes this test, so such a centre is covered once.
-bool tie_included(int64_t dx, int64_t dy) { return dy > 0 || (dy == 0 && dx < 0); }
+bool tie_included(int64_t dx, int64_t dy) {
+  return dy > 0 || (dy == 0 && dx < 0);
+}
 
 TriangleSetup make_setup(const RasterInput& in, const std::array<uint32_t, 3>& tri) {
   TriangleSetup s;
@@ -139,8 +143,10 @@ void sort_tile_fragments(std::vector<TileFragment>& fragments, std::vector<TileF
 }  // namespace
 
 LayerStack rasterize(const RasterInput& in, int threads) {
-  if (in.width <= 0 || in.height <= 0) throw std::invalid_argument("rasterize: resolution must be positive");
-  if (in.facing.size() != in.triangles.size()) throw std::invalid_argument("rasterize: one facing flag per triangle");
+  if (in.width <= 0 || in.height <= 0)
+    throw std::invalid_argument("rasterize: resolution must be positive");
+  if (in.facing.size() != in.triangles.size())
+    throw std::invalid_argument("rasterize: one facing flag per triangle");
   const size_t triangle_count = in.triangles.size();
   std::vector<TriangleSetup> setups(triangle_count);
 #pragma omp parallel for schedule(static) num_threads(threads)
@@ -161,7 +167,8 @@ LayerStack rasterize(const RasterInput& in, int threads) {
   {
     std::vector<uint32_t> cursor(bin_offsets.begin(), bin_offsets.end() - 1);
     for (size_t t = 0; t < triangle_count; ++t)
-      if (setups[t].valid) for_each_tile(setups[t], [&](size_t tile) { bins[cursor[tile]++] = uint32_t(t); });
+      if (setups[t].valid)
+        for_each_tile(setups[t], [&](size_t tile) { bins[cursor[tile]++] = uint32_t(t); });
   }
 
   // Rasterize every tile independently, then order its fragments by (texel, depth, triangle).
@@ -172,19 +179,19 @@ LayerStack rasterize(const RasterInput& in, int threads) {
   stack.offsets.assign(stack.texel_count() + 1, 0);
 #pragma omp parallel num_threads(threads)
   {
-  std::vector<TileFragment> scratch;
+    std::vector<TileFragment> scratch;
 #pragma omp for schedule(dynamic)
-  for (size_t tile = 0; tile < tile_count; ++tile) {
-    int col0 = int(tile % tiles_x) * kTile, row0 = int(tile / tiles_x) * kTile;
-    auto& fragments = tile_fragments[tile];
-    for (uint32_t k = bin_offsets[tile]; k < bin_offsets[tile + 1]; ++k)
-      rasterize_tile(setups[bins[k]], bins[k], col0, row0, fragments);
-    sort_tile_fragments(fragments, scratch);
-    for (const auto& f : fragments) {
-      size_t texel = size_t(row0 + f.texel / kTile) * in.width + (col0 + f.texel % kTile);
-      ++stack.offsets[texel + 1];
+    for (size_t tile = 0; tile < tile_count; ++tile) {
+      int col0 = int(tile % tiles_x) * kTile, row0 = int(tile / tiles_x) * kTile;
+      auto& fragments = tile_fragments[tile];
+      for (uint32_t k = bin_offsets[tile]; k < bin_offsets[tile + 1]; ++k)
+        rasterize_tile(setups[bins[k]], bins[k], col0, row0, fragments);
+      sort_tile_fragments(fragments, scratch);
+      for (const auto& f : fragments) {
+        size_t texel = size_t(row0 + f.texel / kTile) * in.width + (col0 + f.texel % kTile);
+        ++stack.offsets[texel + 1];
+      }
     }
-  }
   }
   for (size_t t = 0; t < stack.texel_count(); ++t) stack.offsets[t + 1] += stack.offsets[t];
   const size_t total = stack.offsets.back();

@@ -28,7 +28,8 @@ double available_bytes() {
     if (key == "MemAvailable:") available = std::min(available, kib * 1024);
     meminfo.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
   }
-  std::ifstream max_file("/sys/fs/cgroup/memory.max"), current_file("/sys/fs/cgroup/memory.current");
+  std::ifstream max_file("/sys/fs/cgroup/memory.max"),
+      current_file("/sys/fs/cgroup/memory.current");
   std::string max_text;
   double current = 0;
   if (max_file >> max_text && max_text != "max" && current_file >> current)
@@ -42,11 +43,14 @@ double available_bytes() {
 }  // namespace
 
 void check_render_memory(int resolution, const std::string& where) {
-  const double needed = double(resolution) * double(resolution) * kBytesPerTexel, available = available_bytes();
+  const double needed = double(resolution) * double(resolution) * kBytesPerTexel,
+               available = available_bytes();
   if (needed > available)
-    throw InputError(where + ": a " + std::to_string(resolution) + "x" + std::to_string(resolution) +
-                     " layer stack needs at least " + std::to_string(int64_t(needed / (1 << 20))) + " MiB, but only " +
-                     std::to_string(int64_t(available / (1 << 20))) + " MiB are available; lower the resolution");
+    throw InputError(where + ": a " + std::to_string(resolution) + "x" +
+                     std::to_string(resolution) + " layer stack needs at least " +
+                     std::to_string(int64_t(needed / (1 << 20))) + " MiB, but only " +
+                     std::to_string(int64_t(available / (1 << 20))) +
+                     " MiB are available; lower the resolution");
 }
 
 LayerStack render_view(const Scene& scene, const LightViewDesc& view, int threads) {
@@ -56,13 +60,15 @@ LayerStack render_view(const Scene& scene, const LightViewDesc& view, int thread
   input.width = input.height = view.resolution;
   input.vertices.resize(scene.mesh.vertices.size());
 #pragma omp parallel for schedule(static) num_threads(threads)
-  for (size_t v = 0; v < scene.mesh.vertices.size(); ++v) input.vertices[v] = frame.to_raster(scene.mesh.vertices[v]);
+  for (size_t v = 0; v < scene.mesh.vertices.size(); ++v)
+    input.vertices[v] = frame.to_raster(scene.mesh.vertices[v]);
   input.triangles = scene.mesh.triangles;
   input.facing.resize(scene.mesh.triangles.size());
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (size_t t = 0; t < scene.mesh.triangles.size(); ++t) {
     const auto& tri = scene.mesh.triangles[t];
-    const auto &a = scene.mesh.vertices[tri[0]], &b = scene.mesh.vertices[tri[1]], &c = scene.mesh.vertices[tri[2]];
+    const auto &a = scene.mesh.vertices[tri[0]], &b = scene.mesh.vertices[tri[1]],
+               &c = scene.mesh.vertices[tri[2]];
     input.facing[t] = scene.two_sided[t] || (b - a).cross(c - a).dot(frame.to_light()) > 0;
   }
   LayerStack stack = rasterize(input, threads);

@@ -1,10 +1,10 @@
 #pragma once
 // One light view of a scene -> its LayerStack: the fitted orthographic projection (scene/), then
 // the rasterizer. Facing comes from the world-space normal: n . to_light > 0, or two-sided.
+#include <string>
+
 #include "raster/layer_stack.h"
 #include "scene/scene.h"
-
-#include <string>
 
 namespace mb {
 

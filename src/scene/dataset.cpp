@@ -11,13 +11,16 @@ namespace fs = std::filesystem;
 
 std::string resolve_dataset_path(const std::string& name_or_path) {
   if (fs::exists(name_or_path)) return name_or_path;
-  bool bare_name = name_or_path.find('/') == std::string::npos && fs::path(name_or_path).extension().empty();
+  bool bare_name =
+      name_or_path.find('/') == std::string::npos && fs::path(name_or_path).extension().empty();
   if (bare_name) {
-    fs::path builtin = fs::path(MOMENTBENCH_SOURCE_DIR) / "configs" / "datasets" / (name_or_path + ".yaml");
+    fs::path builtin =
+        fs::path(MOMENTBENCH_SOURCE_DIR) / "configs" / "datasets" / (name_or_path + ".yaml");
     if (fs::exists(builtin)) return builtin.string();
     std::string names;
     for (const auto& entry : fs::directory_iterator(builtin.parent_path()))
-      if (entry.path().extension() == ".yaml") names += (names.empty() ? "" : ", ") + entry.path().stem().string();
+      if (entry.path().extension() == ".yaml")
+        names += (names.empty() ? "" : ", ") + entry.path().stem().string();
     throw InputError("dataset '" + name_or_path + "' not found; built-in datasets: " + names);
   }
   throw InputError(name_or_path + ": dataset file not found");

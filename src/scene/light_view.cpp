@@ -20,7 +20,8 @@ LightFrame::LightFrame(const LightViewDesc& desc, const std::vector<Eigen::Vecto
   w_ = -to_light_;  // depth grows along the light's travel
   // Raster up is the world's +y projected onto the image plane, unless the light looks straight
   // down, where +z serves instead.
-  Eigen::Vector3d up = std::abs(w_.y()) > 0.999 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitY();
+  Eigen::Vector3d up =
+      std::abs(w_.y()) > 0.999 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitY();
   u_ = up.cross(w_).normalized();
   v_ = w_.cross(u_);
   double inf = std::numeric_limits<double>::infinity();
@@ -41,15 +42,16 @@ LightFrame::LightFrame(const LightViewDesc& desc, const std::vector<Eigen::Vecto
 
 Eigen::Vector3d LightFrame::to_raster(const Eigen::Vector3d& p) const {
   return {(u_.dot(p) - u_center_) * texels_per_world_ + resolution_ / 2.0,
-          (v_center_ - v_.dot(p)) * texels_per_world_ + resolution_ / 2.0, (w_.dot(p) - w_min_) / depth_range_};
+          (v_center_ - v_.dot(p)) * texels_per_world_ + resolution_ / 2.0,
+          (w_.dot(p) - w_min_) / depth_range_};
 }
 
 std::string LightFrame::describe() const {
   std::ostringstream s;
   s.precision(17);
   s << "to_light " << to_light_.transpose() << " u " << u_.transpose() << " v " << v_.transpose()
-    << " center_uv " << u_center_ << " " << v_center_ << " w_min " << w_min_ << " depth_range " << depth_range_
-    << " texels_per_world " << texels_per_world_;
+    << " center_uv " << u_center_ << " " << v_center_ << " w_min " << w_min_ << " depth_range "
+    << depth_range_ << " texels_per_world " << texels_per_world_;
   return s.str();
 }
 

@@ -10,10 +10,10 @@ namespace mb {
 
 struct LightViewDesc {
   std::string name;
-  double azimuth_deg = 0;    // around +y, 0 = light from +z
+  double azimuth_deg = 0;     // around +y, 0 = light from +z
   double elevation_deg = 45;  // above the horizon, 90 = straight down
-  int resolution = 512;      // square shadow map
-  double margin = 0.02;      // added on every side, as a fraction of the scene's extent
+  int resolution = 512;       // square shadow map
+  double margin = 0.02;       // added on every side, as a fraction of the scene's extent
 };
 
 // Unit vector pointing from the scene towards the light.

@@ -24,6 +24,7 @@ struct TriangleMesh {
 
 // An affine transform applied to a mesh's vertices; a mirroring transform (det < 0) also flips
 // the winding so that outward normals stay outward.
-void apply_transform(TriangleMesh& mesh, const Eigen::Matrix3d& linear, const Eigen::Vector3d& offset);
+void apply_transform(TriangleMesh& mesh, const Eigen::Matrix3d& linear,
+                     const Eigen::Vector3d& offset);
 
 }  // namespace mb

@@ -78,11 +78,11 @@ TriangleMesh make_box(const Vector3d& size, const Vector3d& center) {
   auto face = [&](const Vector3d& o, const Vector3d& e1, const Vector3d& e2) {
     mesh.add_quad(o, o + e1, o + e1 + e2, o + e2);
   };
-  face(lo, ez, ey);                               // -x
+  face(lo, ez, ey);                                // -x
   face(Vector3d(hi.x(), lo.y(), lo.z()), ey, ez);  // +x
-  face(lo, ex, ez);                               // -y
+  face(lo, ex, ez);                                // -y
   face(Vector3d(lo.x(), hi.y(), lo.z()), ez, ex);  // +y
-  face(lo, ey, ex);                               // -z
+  face(lo, ey, ex);                                // -z
   face(Vector3d(lo.x(), lo.y(), hi.z()), ex, ey);  // +z
   return mesh;
 }
@@ -94,19 +94,24 @@ TriangleMesh make_sphere(double radius, const Vector3d& center, int rings, int s
     double theta = std::numbers::pi * r / rings;
     for (int s = 0; s < segments; ++s) {
       double phi = 2 * std::numbers::pi * s / segments;
-      mesh.vertices.push_back(center + radius * Vector3d(std::sin(theta) * std::cos(phi), std::cos(theta),
+      mesh.vertices.push_back(center + radius * Vector3d(std::sin(theta) * std::cos(phi),
+                                                         std::cos(theta),
                                                          std::sin(theta) * std::sin(phi)));
     }
   }
   mesh.vertices.push_back(center - Vector3d(0, radius, 0));
   uint32_t bottom = uint32_t(mesh.vertices.size() - 1);
-  auto ring_vertex = [&](int r, int s) { return uint32_t(1 + (r - 1) * segments + (s % segments)); };
+  auto ring_vertex = [&](int r, int s) {
+    return uint32_t(1 + (r - 1) * segments + (s % segments));
+  };
   for (int s = 0; s < segments; ++s) {
     mesh.triangles.push_back({0, ring_vertex(1, s), ring_vertex(1, s + 1)});
     mesh.triangles.push_back({bottom, ring_vertex(rings - 1, s), ring_vertex(rings - 1, s + 1)});
     for (int r = 1; r + 1 < rings; ++r) {
-      mesh.triangles.push_back({ring_vertex(r, s), ring_vertex(r + 1, s), ring_vertex(r + 1, s + 1)});
-      mesh.triangles.push_back({ring_vertex(r, s), ring_vertex(r + 1, s + 1), ring_vertex(r, s + 1)});
+      mesh.triangles.push_back(
+          {ring_vertex(r, s), ring_vertex(r + 1, s), ring_vertex(r + 1, s + 1)});
+      mesh.triangles.push_back(
+          {ring_vertex(r, s), ring_vertex(r + 1, s + 1), ring_vertex(r, s + 1)});
     }
   }
   orient_outward(mesh, center);
@@ -157,7 +162,8 @@ TriangleMesh make_fence(double length, double height, double post_spacing, int r
   double post = 0.06 * height, depth = 0.05 * height;
   int posts = std::max(2, int(std::round(length / post_spacing)) + 1);
   double step = length / (posts - 1);
-  for (int p = 0; p < posts; ++p) mesh.append(make_box({post, height, post}, {p * step, height / 2, 0}));
+  for (int p = 0; p < posts; ++p)
+    mesh.append(make_box({post, height, post}, {p * step, height / 2, 0}));
   for (int r = 0; r < rails; ++r) {
     double y = height * (r + 1) / (rails + 1);
     mesh.append(make_box({length, post * 0.6, depth * 0.6}, {length / 2, y, post * 0.5}));
@@ -165,23 +171,28 @@ TriangleMesh make_fence(double length, double height, double post_spacing, int r
   for (int p = 0; p + 1 < posts; ++p) {
     for (int k = 1; k <= pickets; ++k) {
       double x = p * step + step * k / (pickets + 1);
-      mesh.append(make_box({post * 0.5, height * 0.9, depth * 0.4}, {x, height * 0.45, -post * 0.5}));
+      mesh.append(
+          make_box({post * 0.5, height * 0.9, depth * 0.4}, {x, height * 0.45, -post * 0.5}));
     }
   }
   return mesh;
 }
 
 namespace {
-void grow_branch(TreeMeshes& tree, SeededRandom& random, const Vector3d& base, const Vector3d& direction,
-                 double length, double radius, int depth, int branches, double leaf_size) {
+void grow_branch(TreeMeshes& tree, SeededRandom& random, const Vector3d& base,
+                 const Vector3d& direction, double length, double radius, int depth, int branches,
+                 double leaf_size) {
   Vector3d tip = base + direction * length;
   tree.wood.append(make_prism(base, tip, radius, radius * 0.7, 6));
   if (depth == 0) {
     // A cluster of leaves: randomly tilted two-sided quads around the tip.
     for (int l = 0; l < 6; ++l) {
-      Vector3d center = tip + leaf_size * Vector3d(random.uniform(-1, 1), random.uniform(-0.5, 1), random.uniform(-1, 1));
-      Vector3d u = Vector3d(random.uniform(-1, 1), random.uniform(-0.3, 0.3), random.uniform(-1, 1)).normalized();
-      Vector3d v = u.cross(Vector3d(random.uniform(-0.3, 0.3), 1, random.uniform(-0.3, 0.3))).normalized();
+      Vector3d center = tip + leaf_size * Vector3d(random.uniform(-1, 1), random.uniform(-0.5, 1),
+                                                   random.uniform(-1, 1));
+      Vector3d u = Vector3d(random.uniform(-1, 1), random.uniform(-0.3, 0.3), random.uniform(-1, 1))
+                       .normalized();
+      Vector3d v =
+          u.cross(Vector3d(random.uniform(-0.3, 0.3), 1, random.uniform(-0.3, 0.3))).normalized();
       double s = leaf_size / 2;
       tree.leaves.add_quad(center - s * u - s * v, center + s * u - s * v, center + s * u + s * v,
                            center - s * u + s * v);
@@ -193,8 +204,8 @@ void grow_branch(TreeMeshes& tree, SeededRandom& random, const Vector3d& base, c
     double tilt = random.uniform(0.45, 0.9);
     Vector3d side(std::cos(azimuth), 0, std::sin(azimuth));
     Vector3d child = (direction * std::cos(tilt) + side * std::sin(tilt)).normalized();
-    grow_branch(tree, random, tip, child, length * random.uniform(0.6, 0.8), radius * 0.65, depth - 1,
-                branches, leaf_size);
+    grow_branch(tree, random, tip, child, length * random.uniform(0.6, 0.8), radius * 0.65,
+                depth - 1, branches, leaf_size);
   }
 }
 }  // namespace
@@ -203,8 +214,8 @@ TreeMeshes make_tree(double height, int depth, int branches, double leaf_size, u
   TreeMeshes tree;
   tree.leaves.two_sided = true;
   SeededRandom random(seed);
-  grow_branch(tree, random, Vector3d::Zero(), Vector3d::UnitY(), height * 0.4, height * 0.04, depth, branches,
-              leaf_size);
+  grow_branch(tree, random, Vector3d::Zero(), Vector3d::UnitY(), height * 0.4, height * 0.04, depth,
+              branches, leaf_size);
   return tree;
 }
 

@@ -29,33 +29,50 @@ const std::map<std::string, std::vector<ParamSpec>>& generators() {
   static const std::map<std::string, std::vector<ParamSpec>> table = {
       {"ground_plane", {{"size", 1, {20}, 1e-6, kHuge}, {"cells", 1, {1}, 1, 2000}}},
       {"box", {{"size", 3, {1, 1, 1}, 1e-9, kHuge}}},
-      {"sphere", {{"radius", 1, {1}, 1e-9, kHuge}, {"rings", 1, {24}, 2, 2000}, {"segments", 1, {48}, 3, 4000}}},
+      {"sphere",
+       {{"radius", 1, {1}, 1e-9, kHuge},
+        {"rings", 1, {24}, 2, 2000},
+        {"segments", 1, {48}, 3, 4000}}},
       {"staircase",
-       {{"steps", 1, {8}, 1, 1000}, {"width", 1, {2}, 1e-9, kHuge}, {"run", 1, {0.4}, 1e-9, kHuge},
+       {{"steps", 1, {8}, 1, 1000},
+        {"width", 1, {2}, 1e-9, kHuge},
+        {"run", 1, {0.4}, 1e-9, kHuge},
         {"rise", 1, {0.25}, 1e-9, kHuge}}},
       {"building_grid",
-       {{"nx", 1, {4}, 1, 1000}, {"nz", 1, {4}, 1, 1000}, {"footprint", 1, {1}, 1e-9, kHuge},
-        {"spacing", 1, {1.6}, 1e-9, kHuge}, {"min_height", 1, {0.5}, 1e-9, kHuge},
-        {"max_height", 1, {3}, 1e-9, kHuge}, {"seed", 1, {1}, 0, 1e15}}},
+       {{"nx", 1, {4}, 1, 1000},
+        {"nz", 1, {4}, 1, 1000},
+        {"footprint", 1, {1}, 1e-9, kHuge},
+        {"spacing", 1, {1.6}, 1e-9, kHuge},
+        {"min_height", 1, {0.5}, 1e-9, kHuge},
+        {"max_height", 1, {3}, 1e-9, kHuge},
+        {"seed", 1, {1}, 0, 1e15}}},
       {"fence",
-       {{"length", 1, {6}, 1e-9, kHuge}, {"height", 1, {1}, 1e-9, kHuge}, {"post_spacing", 1, {1.5}, 1e-9, kHuge},
-        {"rails", 1, {2}, 0, 100}, {"pickets", 1, {4}, 0, 1000}}},
+       {{"length", 1, {6}, 1e-9, kHuge},
+        {"height", 1, {1}, 1e-9, kHuge},
+        {"post_spacing", 1, {1.5}, 1e-9, kHuge},
+        {"rails", 1, {2}, 0, 100},
+        {"pickets", 1, {4}, 0, 1000}}},
       {"tree",
-       {{"height", 1, {3}, 1e-9, kHuge}, {"depth", 1, {4}, 0, 10}, {"branches", 1, {3}, 1, 8},
-        {"leaf_size", 1, {0.25}, 1e-9, kHuge}, {"seed", 1, {1}, 0, 1e15}}},
+       {{"height", 1, {3}, 1e-9, kHuge},
+        {"depth", 1, {4}, 0, 10},
+        {"branches", 1, {3}, 1, 8},
+        {"leaf_size", 1, {0.25}, 1e-9, kHuge},
+        {"seed", 1, {1}, 0, 1e15}}},
   };
   return table;
 }
 
 bool is_integer_param(const std::string& name) {
-  for (const char* n : {"cells", "rings", "segments", "steps", "nx", "nz", "seed", "rails", "pickets", "depth", "branches"})
+  for (const char* n : {"cells", "rings", "segments", "steps", "nx", "nz", "seed", "rails",
+                        "pickets", "depth", "branches"})
     if (name == n) return true;
   return false;
 }
 
 TransformDesc parse_transform(YamlMap map) {
   TransformDesc t;
-  if (auto v = map.numbers("translate", 3)) t.translate = Eigen::Vector3d((*v)[0], (*v)[1], (*v)[2]);
+  if (auto v = map.numbers("translate", 3))
+    t.translate = Eigen::Vector3d((*v)[0], (*v)[1], (*v)[2]);
   if (auto v = map.numbers("rotate", 3)) t.rotate_deg = Eigen::Vector3d((*v)[0], (*v)[1], (*v)[2]);
   if (map.is_sequence("scale")) {
     auto v = *map.numbers("scale", 3);
@@ -68,7 +85,9 @@ TransformDesc parse_transform(YamlMap map) {
   return t;
 }
 
-std::string where_of(const YamlMap& map) { return map.file() + " (" + map.path() + ")"; }
+std::string where_of(const YamlMap& map) {
+  return map.file() + " (" + map.path() + ")";
+}
 
 PartDesc parse_part(YamlMap map, const std::filesystem::path& base_dir) {
   PartDesc part;
@@ -77,7 +96,8 @@ PartDesc parse_part(YamlMap map, const std::filesystem::path& base_dir) {
   for (const auto& [name, _] : generators()) kinds.push_back(name);
   for (const auto& kind : kinds) {
     if (!map.has(kind)) continue;
-    if (!part.kind.empty()) map.fail(kind, "a part has one of mesh or a generator, but also has '" + part.kind + "'");
+    if (!part.kind.empty())
+      map.fail(kind, "a part has one of mesh or a generator, but also has '" + part.kind + "'");
     part.kind = kind;
   }
   if (part.kind.empty()) {
@@ -100,7 +120,8 @@ PartDesc parse_part(YamlMap map, const std::filesystem::path& base_dir) {
         if (auto v = params.number(spec.name, spec.min, spec.max)) value = {*v};
       } else if (auto v = params.numbers(spec.name, spec.count)) {
         for (double x : *v)
-          if (x < spec.min || x > spec.max) params.fail(spec.name, "every element must be positive");
+          if (x < spec.min || x > spec.max)
+            params.fail(spec.name, "every element must be positive");
         value = *v;
       }
       if (is_integer_param(spec.name) && value[0] != std::floor(value[0]))
@@ -117,10 +138,11 @@ PartDesc parse_part(YamlMap map, const std::filesystem::path& base_dir) {
 
 Eigen::Matrix3d linear_part(const TransformDesc& t) {
   auto radians = [](double d) { return d * std::numbers::pi / 180; };
-  Eigen::Matrix3d rotation = (Eigen::AngleAxisd(radians(t.rotate_deg.z()), Eigen::Vector3d::UnitZ()) *
-                              Eigen::AngleAxisd(radians(t.rotate_deg.y()), Eigen::Vector3d::UnitY()) *
-                              Eigen::AngleAxisd(radians(t.rotate_deg.x()), Eigen::Vector3d::UnitX()))
-                                 .toRotationMatrix();
+  Eigen::Matrix3d rotation =
+      (Eigen::AngleAxisd(radians(t.rotate_deg.z()), Eigen::Vector3d::UnitZ()) *
+       Eigen::AngleAxisd(radians(t.rotate_deg.y()), Eigen::Vector3d::UnitY()) *
+       Eigen::AngleAxisd(radians(t.rotate_deg.x()), Eigen::Vector3d::UnitX()))
+          .toRotationMatrix();
   return rotation * t.scale.asDiagonal();
 }
 
@@ -147,12 +169,13 @@ std::vector<TriangleMesh> build_part(const PartDesc& part) {
   } else if (part.kind == "staircase") {
     mesh = make_staircase(n("steps"), p("width"), p("run"), p("rise"));
   } else if (part.kind == "building_grid") {
-    mesh = make_building_grid(n("nx"), n("nz"), p("footprint"), p("spacing"), p("min_height"), p("max_height"),
-                              uint64_t(p("seed")));
+    mesh = make_building_grid(n("nx"), n("nz"), p("footprint"), p("spacing"), p("min_height"),
+                              p("max_height"), uint64_t(p("seed")));
   } else if (part.kind == "fence") {
     mesh = make_fence(p("length"), p("height"), p("post_spacing"), n("rails"), n("pickets"));
   } else if (part.kind == "tree") {
-    TreeMeshes tree = make_tree(p("height"), n("depth"), n("branches"), p("leaf_size"), uint64_t(p("seed")));
+    TreeMeshes tree =
+        make_tree(p("height"), n("depth"), n("branches"), p("leaf_size"), uint64_t(p("seed")));
     mesh = std::move(tree.wood);
     pieces.push_back(std::move(tree.leaves));  // two-sided whatever the part says
   }
@@ -164,10 +187,12 @@ std::vector<TriangleMesh> build_part(const PartDesc& part) {
     Eigen::AlignedBox3d box = mesh.bounds();
     double scale = part.fit / box.sizes().maxCoeff();
     Eigen::Vector3d offset(-box.center().x(), -box.min().y(), -box.center().z());
-    apply_transform(mesh, Eigen::Matrix3d::Identity() * scale, offset * scale + part.transform.translate);
+    apply_transform(mesh, Eigen::Matrix3d::Identity() * scale,
+                    offset * scale + part.transform.translate);
     return pieces;
   }
-  for (auto& piece : pieces) apply_transform(piece, linear_part(part.transform), part.transform.translate);
+  for (auto& piece : pieces)
+    apply_transform(piece, linear_part(part.transform), part.transform.translate);
   return pieces;
 }
 
@@ -196,7 +221,8 @@ SceneDesc parse_scene(const std::string& file) {
     v.margin = view.number("margin", 0.02, 0, 1);
     // Outputs are named scene_view: two views of one name would overwrite each other's files.
     for (const auto& other : desc.views)
-      if (other.name == v.name) view.fail("name", "view name '" + v.name + "' is used twice in this scene");
+      if (other.name == v.name)
+        view.fail("name", "view name '" + v.name + "' is used twice in this scene");
     view.finish();
     desc.views.push_back(v);
   }
@@ -212,12 +238,14 @@ Scene build_scene(const SceneDesc& desc) {
   for (const auto& part : desc.parts) {
     for (const auto& piece : build_part(part)) {
       for (const auto& v : piece.vertices)
-        if (!v.allFinite()) throw InputError(part.where + ": transform produced a non-finite vertex");
+        if (!v.allFinite())
+          throw InputError(part.where + ": transform produced a non-finite vertex");
       scene.mesh.append(piece);
       scene.two_sided.resize(scene.mesh.triangles.size(), piece.two_sided ? 1 : 0);
     }
   }
-  if (scene.mesh.triangles.empty()) throw InputError(desc.file + ": the scene is empty (no triangles)");
+  if (scene.mesh.triangles.empty())
+    throw InputError(desc.file + ": the scene is empty (no triangles)");
   return scene;
 }
 

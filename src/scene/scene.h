@@ -17,8 +17,8 @@ struct TransformDesc {
 };
 
 struct PartDesc {
-  std::string kind;                                 // "mesh" or a generator name
-  std::string mesh_file;                            // for kind == "mesh", resolved path
+  std::string kind;                                   // "mesh" or a generator name
+  std::string mesh_file;                              // for kind == "mesh", resolved path
   std::map<std::string, std::vector<double>> params;  // generator parameters, validated
   double fit = 0;  // mesh only: scale so the largest extent is `fit`, centred, resting on y = 0
   bool two_sided = false;

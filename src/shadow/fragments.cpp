@@ -32,8 +32,8 @@ ShadowMap layer0_shadow_map(const LayerStack& stack) {
   return map;
 }
 
-Fragments collect_receivers(const LayerStack& stack, const GaussianKernel& kernel, const BiasParams& bias,
-                            int threads) {
+Fragments collect_receivers(const LayerStack& stack, const GaussianKernel& kernel,
+                            const BiasParams& bias, int threads) {
   Fragments f;
   f.reference = bias.reference;
   f.width = stack.width;
@@ -76,8 +76,9 @@ Fragments collect_receivers(const LayerStack& stack, const GaussianKernel& kerne
   return f;
 }
 
-void kernel_distribution(const ShadowMap& map, const GaussianKernel& kernel, int x, int y, std::span<double> depths,
-                         std::span<double> weights, std::span<size_t> texels) {
+void kernel_distribution(const ShadowMap& map, const GaussianKernel& kernel, int x, int y,
+                         std::span<double> depths, std::span<double> weights,
+                         std::span<size_t> texels) {
   const int r = kernel.radius();
   size_t k = 0;
   for (int dy = -r; dy <= r; ++dy)

@@ -60,14 +60,15 @@ struct Fragments {
 };
 
 // Receivers in texel order, then layer order; identical for every thread count.
-Fragments collect_receivers(const LayerStack& stack, const GaussianKernel& kernel, const BiasParams& bias,
-                            int threads);
+Fragments collect_receivers(const LayerStack& stack, const GaussianKernel& kernel,
+                            const BiasParams& bias, int threads);
 
 // The depth distribution Z the kernel sees around texel (x, y): size^2 layer-0 depths and their
 // weights, written to `depths` and `weights` (each kernel.size^2 long), in tap order (rows, then
 // columns). With `texels`, also each tap's texel index, or width * height for taps outside the map.
-void kernel_distribution(const ShadowMap& map, const GaussianKernel& kernel, int x, int y, std::span<double> depths,
-                         std::span<double> weights, std::span<size_t> texels = {});
+void kernel_distribution(const ShadowMap& map, const GaussianKernel& kernel, int x, int y,
+                         std::span<double> depths, std::span<double> weights,
+                         std::span<size_t> texels = {});
 // F_Z(z) = Z(depth < z) for that distribution (REFERENCE.md §1: strictly less).
 double kernel_cdf(const ShadowMap& map, const GaussianKernel& kernel, int x, int y, double z);
 

@@ -10,9 +10,11 @@ namespace mb {
 
 GaussianKernel make_gaussian_kernel(int size, double sigma) {
   if (size <= 0 || size % 2 == 0)
-    throw InputError("kernel.size: expected an odd number of taps >= 1, got " + std::to_string(size));
+    throw InputError("kernel.size: expected an odd number of taps >= 1, got " +
+                     std::to_string(size));
   if (!(sigma > 0) || !std::isfinite(sigma))
-    throw InputError("kernel.sigma: expected a positive number of texels, got " + round_trip(sigma));
+    throw InputError("kernel.sigma: expected a positive number of texels, got " +
+                     round_trip(sigma));
   GaussianKernel k;
   k.size = size;
   k.sigma = sigma;

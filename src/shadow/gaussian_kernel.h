@@ -6,8 +6,8 @@
 namespace mb {
 
 struct GaussianKernel {
-  int size = 9;        // odd, taps per axis
-  double sigma = 2.4;  // texels
+  int size = 9;                 // odd, taps per axis
+  double sigma = 2.4;           // texels
   std::vector<double> weights;  // one axis, normalised to sum 1 (so the 2D weights do too)
   int radius() const { return size / 2; }
   double weight(int dx, int dy) const { return weights[dx + radius()] * weights[dy + radius()]; }

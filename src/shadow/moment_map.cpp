@@ -9,14 +9,16 @@ MomentMap compute_moment_map(const ShadowMap& map, const Basis& basis, const Gau
   // Padded stored values: outside the map is the far plane, depth 1 (REFERENCE.md §3).
   std::vector<double> padded_depth(size_t(pw) * ph, 1.0);
   for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) padded_depth[size_t(y + r) * pw + x + r] = map.depth[size_t(y) * w + x];
+    for (int x = 0; x < w; ++x)
+      padded_depth[size_t(y + r) * pw + x + r] = map.depth[size_t(y) * w + x];
   std::vector<double> stored(size_t(pw) * ph * m), column(padded_depth.size());
   for (int j = 0; j < m; ++j) {
     basis[j].evaluate(padded_depth, column);
     for (size_t t = 0; t < column.size(); ++t) stored[t * m + j] = column[t];
   }
 #pragma omp parallel for schedule(static) num_threads(threads)
-  for (size_t t = 0; t < padded_depth.size(); ++t) store_moments(storage, {stored.data() + t * m, size_t(m)});
+  for (size_t t = 0; t < padded_depth.size(); ++t)
+    store_moments(storage, {stored.data() + t * m, size_t(m)});
 
   // Horizontal pass over the padded rows, then vertical; each sum in a fixed tap order.
   std::vector<double> horizontal(size_t(w) * ph * m);
@@ -25,7 +27,8 @@ MomentMap compute_moment_map(const ShadowMap& map, const Basis& basis, const Gau
     for (int x = 0; x < w; ++x)
       for (int j = 0; j < m; ++j) {
         double sum = 0;
-        for (int d = 0; d < kernel.size; ++d) sum += kernel.weights[d] * stored[(size_t(y) * pw + x + d) * m + j];
+        for (int d = 0; d < kernel.size; ++d)
+          sum += kernel.weights[d] * stored[(size_t(y) * pw + x + d) * m + j];
         horizontal[(size_t(y) * w + x) * m + j] = sum;
       }
   MomentMap out{w, h, m, std::vector<double>(size_t(w) * h * m)};
@@ -35,7 +38,8 @@ MomentMap compute_moment_map(const ShadowMap& map, const Basis& basis, const Gau
       double* b = out.values.data() + (size_t(y) * w + x) * m;
       for (int j = 0; j < m; ++j) {
         double sum = 0;
-        for (int d = 0; d < kernel.size; ++d) sum += kernel.weights[d] * horizontal[(size_t(y + d) * w + x) * m + j];
+        for (int d = 0; d < kernel.size; ++d)
+          sum += kernel.weights[d] * horizontal[(size_t(y + d) * w + x) * m + j];
         b[j] = sum;
       }
       load_moments(storage, {b, size_t(m)});

@@ -13,18 +13,26 @@ namespace mb {
 namespace {
 const char* type_name(OptionType type) {
   switch (type) {
-    case OptionType::Integer: return "an integer";
-    case OptionType::Number: return "a finite number";
-    case OptionType::Boolean: return "true or false";
-    case OptionType::String: return "a string";
-    case OptionType::StringList: return "a list of strings";
-    case OptionType::NumberList: return "a list of finite numbers";
+    case OptionType::Integer:
+      return "an integer";
+    case OptionType::Number:
+      return "a finite number";
+    case OptionType::Boolean:
+      return "true or false";
+    case OptionType::String:
+      return "a string";
+    case OptionType::StringList:
+      return "a list of strings";
+    case OptionType::NumberList:
+      return "a list of finite numbers";
   }
   return "";
 }
 
 // The shortest text that reads back as the same double: 2.4, not 2.3999999999999999.
-std::string number_text(double v) { return round_trip(v); }
+std::string number_text(double v) {
+  return round_trip(v);
+}
 
 std::string emit(const YAML::Node& node) {
   YAML::Emitter out;
@@ -50,7 +58,8 @@ std::string Config::canonical(const std::string& name) const {
   std::vector<std::string> names;
   for (const auto& s : specs_) names.push_back(s.name);
   std::string hint = closest_match(name, names);
-  throw InputError("unknown key '" + name + "'" + (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
+  throw InputError("unknown key '" + name + "'" +
+                   (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
 }
 
 void Config::assign(const std::string& name, const YAML::Node& node, const std::string& origin) {
@@ -79,8 +88,9 @@ void Config::assign(const std::string& name, const YAML::Node& node, const std::
     } else if (node.IsSequence()) {
       for (const auto& item : node) {
         if (!item.IsScalar())
-          throw InputError(origin + ": key '" + name + "': expected " + type_name(s.type) + ", but item " +
-                           std::to_string(items.size() + 1) + " is a YAML " + (item.IsMap() ? "map" : "list") +
+          throw InputError(origin + ": key '" + name + "': expected " + type_name(s.type) +
+                           ", but item " + std::to_string(items.size() + 1) + " is a YAML " +
+                           (item.IsMap() ? "map" : "list") +
                            " (quote items that hold ': ' or brackets, e.g. \"lp:z;z^2\")");
         items.push_back(item.Scalar());
       }
@@ -94,14 +104,17 @@ void Config::assign(const std::string& name, const YAML::Node& node, const std::
     case OptionType::Integer: {
       int64_t v;
       if (!node.IsScalar() || !YAML::convert<int64_t>::decode(node, v)) bad(type_name(s.type));
-      if (v < s.min || v > s.max) bad("an integer in [" + number_text(s.min) + ", " + number_text(s.max) + "]");
+      if (v < s.min || v > s.max)
+        bad("an integer in [" + number_text(s.min) + ", " + number_text(s.max) + "]");
       stored = YAML::Node(v);
       break;
     }
     case OptionType::Number: {
       double v;
-      if (!node.IsScalar() || !YAML::convert<double>::decode(node, v) || !std::isfinite(v)) bad(type_name(s.type));
-      if (v < s.min || v > s.max) bad("a number in [" + number_text(s.min) + ", " + number_text(s.max) + "]");
+      if (!node.IsScalar() || !YAML::convert<double>::decode(node, v) || !std::isfinite(v))
+        bad(type_name(s.type));
+      if (v < s.min || v > s.max)
+        bad("a number in [" + number_text(s.min) + ", " + number_text(s.max) + "]");
       stored = YAML::Node(number_text(v));
       break;
     }
@@ -130,7 +143,8 @@ void Config::assign(const std::string& name, const YAML::Node& node, const std::
         double v;
         const std::string where = "item " + std::to_string(k + 1) + " '" + items[k] + "'";
         if (!YAML::convert<double>::decode(YAML::Node(items[k]), v) || !std::isfinite(v))
-          throw InputError(origin + ": key '" + name + "': " + where + ": expected a finite number");
+          throw InputError(origin + ": key '" + name + "': " + where +
+                           ": expected a finite number");
         if (v < s.min || v > s.max)
           throw InputError(origin + ": key '" + name + "': " + where + ": expected a number in [" +
                            number_text(s.min) + ", " + number_text(s.max) + "]");
@@ -195,30 +209,36 @@ void Config::set(const std::string& assignment) {
 }
 
 int64_t Config::integer(const std::string& name) const {
-  if (spec(name).type != OptionType::Integer) throw std::logic_error(name + " is not an integer option");
+  if (spec(name).type != OptionType::Integer)
+    throw std::logic_error(name + " is not an integer option");
   return values_.at(name).node.as<int64_t>();
 }
 double Config::number(const std::string& name) const {
-  if (spec(name).type != OptionType::Number) throw std::logic_error(name + " is not a number option");
+  if (spec(name).type != OptionType::Number)
+    throw std::logic_error(name + " is not a number option");
   return values_.at(name).node.as<double>();
 }
 bool Config::boolean(const std::string& name) const {
-  if (spec(name).type != OptionType::Boolean) throw std::logic_error(name + " is not a boolean option");
+  if (spec(name).type != OptionType::Boolean)
+    throw std::logic_error(name + " is not a boolean option");
   return values_.at(name).node.as<bool>();
 }
 std::string Config::string(const std::string& name) const {
-  if (spec(name).type != OptionType::String) throw std::logic_error(name + " is not a string option");
+  if (spec(name).type != OptionType::String)
+    throw std::logic_error(name + " is not a string option");
   return values_.at(name).node.Scalar();
 }
 std::vector<std::string> Config::strings(const std::string& name) const {
-  if (spec(name).type != OptionType::StringList) throw std::logic_error(name + " is not a list option");
+  if (spec(name).type != OptionType::StringList)
+    throw std::logic_error(name + " is not a list option");
   std::vector<std::string> out;
   for (const auto& item : values_.at(name).node) out.push_back(item.Scalar());
   return out;
 }
 
 std::vector<double> Config::numbers(const std::string& name) const {
-  if (spec(name).type != OptionType::NumberList) throw std::logic_error(name + " is not a number-list option");
+  if (spec(name).type != OptionType::NumberList)
+    throw std::logic_error(name + " is not a number-list option");
   std::vector<double> out;
   for (const auto& item : values_.at(name).node) out.push_back(item.as<double>());
   return out;
@@ -228,7 +248,8 @@ std::string Config::to_yaml() const {
   std::ostringstream out;
   for (const auto& s : specs_) {
     out << "# " << s.doc;
-    if (s.type == OptionType::Integer || s.type == OptionType::Number || s.type == OptionType::NumberList) {
+    if (s.type == OptionType::Integer || s.type == OptionType::Number ||
+        s.type == OptionType::NumberList) {
       if (std::isfinite(s.min) || std::isfinite(s.max))
         out << " Range [" << number_text(s.min) << ", " << number_text(s.max) << "].";
     }
@@ -256,7 +277,8 @@ std::string Config::options_markdown() const {
   std::ostringstream out;
   out << "| key | type | default | meaning |\n|---|---|---|---|\n";
   for (const auto& s : specs_)
-    out << "| `" << s.name << "` | " << type_name(s.type) << " | `" << s.default_value << "` | " << s.doc << " |\n";
+    out << "| `" << s.name << "` | " << type_name(s.type) << " | `" << s.default_value << "` | "
+        << s.doc << " |\n";
   return out.str();
 }
 

@@ -15,11 +15,13 @@ namespace mb {
 enum class OptionType { Integer, Number, Boolean, String, StringList, NumberList };
 
 struct OptionSpec {
-  std::string name;  // dotted, e.g. "raster.threads"; a YAML file may nest it as raster: {threads: }
+  std::string
+      name;  // dotted, e.g. "raster.threads"; a YAML file may nest it as raster: {threads: }
   OptionType type;
   std::string default_value;  // YAML text
   std::string doc;
-  double min = -std::numeric_limits<double>::infinity();  // numbers, integers, each item of a number list
+  double min =
+      -std::numeric_limits<double>::infinity();  // numbers, integers, each item of a number list
   double max = std::numeric_limits<double>::infinity();
   std::vector<std::string> choices;  // for strings (and string lists): the allowed values, if any
 };

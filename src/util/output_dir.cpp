@@ -31,7 +31,8 @@ void remove_dead_stagings(const fs::path& parent, const std::string& name) {
 
 }  // namespace
 
-StagedOutputDir::StagedOutputDir(fs::path target, bool force) : target_(std::move(target)), force_(force) {
+StagedOutputDir::StagedOutputDir(fs::path target, bool force)
+    : target_(std::move(target)), force_(force) {
   if (target_.empty()) throw InputError("--out: an output directory is required");
   if (fs::exists(target_) && !force_)
     throw InputError(target_.string() + ": output directory exists (use --force to replace it)");
@@ -47,7 +48,8 @@ StagedOutputDir::StagedOutputDir(fs::path target, bool force) : target_(std::mov
   staging_ = parent / ("." + target_.filename().string() + ".staging-" + std::to_string(getpid()));
   fs::remove_all(staging_, ec);
   fs::create_directory(staging_, ec);
-  if (ec) throw InputError(target_.string() + ": cannot create the output directory: " + ec.message());
+  if (ec)
+    throw InputError(target_.string() + ": cannot create the output directory: " + ec.message());
 }
 
 StagedOutputDir::~StagedOutputDir() {

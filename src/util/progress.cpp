@@ -11,7 +11,9 @@ ProgressBar::ProgressBar(std::string label, uint64_t total, bool quiet)
   start_ = last_draw_ = std::chrono::steady_clock::now();
 }
 
-ProgressBar::~ProgressBar() { finish(); }
+ProgressBar::~ProgressBar() {
+  finish();
+}
 
 std::string format_duration(double seconds) {
   char buffer[32];
@@ -30,7 +32,8 @@ void ProgressBar::advance(uint64_t amount) {
   if (!enabled_) return;
   auto now = std::chrono::steady_clock::now();
   // Nothing for the first second: short work stays silent.
-  if (now - start_ < std::chrono::seconds(1) || now - last_draw_ < std::chrono::milliseconds(200)) return;
+  if (now - start_ < std::chrono::seconds(1) || now - last_draw_ < std::chrono::milliseconds(200))
+    return;
   std::unique_lock lock(draw_mutex_, std::try_to_lock);
   if (!lock.owns_lock()) return;
   last_draw_ = now;
@@ -47,8 +50,8 @@ void ProgressBar::draw(uint64_t done, bool final) {
   std::string eta = final ? "done in " + format_duration(elapsed)
                           : "ETA " + format_duration(rate > 0 ? (total_ - done) / rate : 0);
   std::fprintf(stderr, "\r%s [%s] %llu/%llu (%.3g/min) %s%s%s   ", label_.c_str(), bar.c_str(),
-               (unsigned long long)done, (unsigned long long)total_, rate * 60, eta.c_str(), note_.empty() ? "" : ", ",
-               note_.c_str());
+               (unsigned long long)done, (unsigned long long)total_, rate * 60, eta.c_str(),
+               note_.empty() ? "" : ", ", note_.c_str());
   if (final) std::fputc('\n', stderr);
   std::fflush(stderr);
   drawn_ = true;

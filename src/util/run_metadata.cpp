@@ -41,6 +41,8 @@ std::string to_yaml(const RunMetadata& meta) {
   return out.str();
 }
 
-int resolve_thread_count(int requested) { return requested > 0 ? requested : omp_get_max_threads(); }
+int resolve_thread_count(int requested) {
+  return requested > 0 ? requested : omp_get_max_threads();
+}
 
 }  // namespace mb

@@ -46,7 +46,8 @@ YAML::Node load_yaml_file(const std::string& file, const std::string& what) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (!fs::exists(file, ec)) throw InputError(file + ": " + what + " not found");
-  if (fs::is_directory(file, ec)) throw InputError(file + ": is a directory, expected a " + what + " (YAML)");
+  if (fs::is_directory(file, ec))
+    throw InputError(file + ": is a directory, expected a " + what + " (YAML)");
   std::ifstream in(file, std::ios::binary);
   std::ostringstream text;
   text << in.rdbuf();
@@ -70,7 +71,9 @@ YamlMap YamlMap::load_file(const std::string& file, const std::string& what) {
 YamlMap::YamlMap(YAML::Node node, std::string file, std::string path)
     : node_(std::move(node)), file_(std::move(file)), path_(std::move(path)) {}
 
-bool YamlMap::has(const std::string& key) const { return bool(node_[key]); }
+bool YamlMap::has(const std::string& key) const {
+  return bool(node_[key]);
+}
 
 std::string YamlMap::describe(const std::string& key) const {
   return "key '" + (path_.empty() ? key : path_ + "." + key) + "'";
@@ -83,7 +86,8 @@ void YamlMap::fail(const std::string& key, const std::string& message) const {
     for (auto it = node_.begin(); it != node_.end(); ++it)
       if (it->first.Scalar() == key) mark = it->first.Mark();
   }
-  std::string what = key.empty() ? (path_.empty() ? "" : "'" + path_ + "': ") : describe(key) + ": ";
+  std::string what =
+      key.empty() ? (path_.empty() ? "" : "'" + path_ + "': ") : describe(key) + ": ";
   throw InputError(located(file_, mark.line + 1, mark.column + 1, what + message));
 }
 
@@ -98,7 +102,8 @@ std::optional<double> YamlMap::number(const std::string& key, double min, double
   double x;
   if (!v.IsScalar() || !YAML::convert<double>::decode(v, x) || !std::isfinite(x))
     fail(key, "expected a finite number, got " + quoted(v));
-  if (x < min || x > max) fail(key, "expected a number in " + range_text(min, max) + ", got " + v.Scalar());
+  if (x < min || x > max)
+    fail(key, "expected a number in " + range_text(min, max) + ", got " + v.Scalar());
   return x;
 }
 
@@ -147,8 +152,10 @@ std::string YamlMap::require_string(const std::string& key) {
 std::optional<std::vector<double>> YamlMap::numbers(const std::string& key, size_t count) {
   YAML::Node v = at(key);
   if (!v) return std::nullopt;
-  std::string expected = count ? "a list of " + std::to_string(count) + " numbers" : "a list of numbers";
-  if (!v.IsSequence() || (count && v.size() != count)) fail(key, "expected " + expected + ", got " + quoted(v));
+  std::string expected =
+      count ? "a list of " + std::to_string(count) + " numbers" : "a list of numbers";
+  if (!v.IsSequence() || (count && v.size() != count))
+    fail(key, "expected " + expected + ", got " + quoted(v));
   std::vector<double> out;
   for (const auto& item : v) {
     double x;
@@ -173,7 +180,8 @@ std::vector<std::string> YamlMap::strings(const std::string& key) {
 
 YamlMap YamlMap::map(const std::string& key) {
   YAML::Node v = at(key);
-  if (!v) return YamlMap(YAML::Node(YAML::NodeType::Map), file_, path_.empty() ? key : path_ + "." + key);
+  if (!v)
+    return YamlMap(YAML::Node(YAML::NodeType::Map), file_, path_.empty() ? key : path_ + "." + key);
   if (!v.IsMap()) fail(key, "expected a map, got " + quoted(v));
   return YamlMap(v, file_, path_.empty() ? key : path_ + "." + key);
 }
@@ -185,13 +193,16 @@ std::vector<YamlMap> YamlMap::maps(const std::string& key) {
   if (!v.IsSequence()) fail(key, "expected a list of maps, got " + quoted(v));
   std::string base = path_.empty() ? key : path_ + "." + key;
   for (size_t i = 0; i < v.size(); ++i) {
-    if (!v[i].IsMap()) fail(key, "expected a list of maps, element " + std::to_string(i) + " is " + quoted(v[i]));
+    if (!v[i].IsMap())
+      fail(key, "expected a list of maps, element " + std::to_string(i) + " is " + quoted(v[i]));
     out.emplace_back(v[i], file_, base + "[" + std::to_string(i) + "]");
   }
   return out;
 }
 
-bool YamlMap::is_sequence(const std::string& key) const { return node_[key] && node_[key].IsSequence(); }
+bool YamlMap::is_sequence(const std::string& key) const {
+  return node_[key] && node_[key].IsSequence();
+}
 
 void YamlMap::finish() const {
   std::vector<std::string> known(read_.begin(), read_.end());

@@ -44,7 +44,9 @@ class YamlMap {
   bool is_sequence(const std::string& key) const;
 
   // Names offered as suggestions for a misspelled key without counting as read.
-  void also_suggest(const std::vector<std::string>& keys) { suggest_.insert(keys.begin(), keys.end()); }
+  void also_suggest(const std::vector<std::string>& keys) {
+    suggest_.insert(keys.begin(), keys.end());
+  }
   // Throws InputError for any key that no getter asked for, suggesting the closest known key.
   void finish() const;
   // An InputError located at `key` (or at the map itself when key is "").

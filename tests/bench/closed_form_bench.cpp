@@ -27,7 +27,8 @@ struct Stream {
     for (int k = 0; k < kFragments; ++k) {
       int atoms = 1 + k % 8;
       double b[6] = {}, total = 0, z[8], w[8];
-      for (int a = 0; a < atoms; ++a) total += w[a] = rng.uniform(0.05, 1), z[a] = rng.uniform(0, 1);
+      for (int a = 0; a < atoms; ++a)
+        total += w[a] = rng.uniform(0.05, 1), z[a] = rng.uniform(0, 1);
       for (int a = 0; a < atoms; ++a)
         for (int j = 0, p = 1; j < 6; ++j, ++p) b[j] += w[a] / total * std::pow(z[a], p);
       double t[4] = {};
@@ -80,7 +81,8 @@ void BM_Hamburger4DoubleBatch(benchmark::State& state) {
 BENCHMARK(BM_Hamburger4DoubleBatch);
 
 void BM_Hamburger4Float(benchmark::State& state) {
-  run(state, [](const Stream& s, int k) { return double(hamburger4(&s.b4f[4 * k], s.zff[k]).lower); });
+  run(state,
+      [](const Stream& s, int k) { return double(hamburger4(&s.b4f[4 * k], s.zff[k]).lower); });
 }
 void BM_Hausdorff4(benchmark::State& state) {
   run(state, [](const Stream& s, int k) { return hausdorff4(&s.b6[6 * k], s.zf[k]).lower; });
@@ -95,7 +97,8 @@ void BM_TmsmDouble(benchmark::State& state) {
   run(state, [](const Stream& s, int k) { return tmsm(&s.trig[4 * k], s.zf[k], false).lower; });
 }
 void BM_TmsmFloat(benchmark::State& state) {
-  run(state, [](const Stream& s, int k) { return double(tmsm(&s.trigf[4 * k], s.zff[k], false).lower); });
+  run(state,
+      [](const Stream& s, int k) { return double(tmsm(&s.trigf[4 * k], s.zff[k], false).lower); });
 }
 BENCHMARK(BM_Hamburger4Double);
 BENCHMARK(BM_TmsmDouble);

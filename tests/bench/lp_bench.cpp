@@ -35,7 +35,8 @@ constexpr int kInstances = 1500;
 
 const std::vector<ViewData>& views() {
   static std::vector<ViewData> v = [] {
-    bool have_data = std::filesystem::exists(std::string(MOMENTBENCH_SOURCE_DIR) + "/data/buildings.obj");
+    bool have_data =
+        std::filesystem::exists(std::string(MOMENTBENCH_SOURCE_DIR) + "/data/buildings.obj");
     EvalSettings settings;
     settings.threads = 2;
     return prepare_views(load_dataset(have_data ? "default" : "tiny"), 0, settings, true);
@@ -130,7 +131,9 @@ struct TimedSolver {
   }
 #else
   using Ticks = std::chrono::steady_clock::rep;
-  static Ticks now() { return std::chrono::steady_clock::now().time_since_epoch().count(); }
+  static Ticks now() {
+    return std::chrono::steady_clock::now().time_since_epoch().count();
+  }
 #endif
   Ticks solving = 0;
   Ticks pass_ticks = now();
@@ -157,12 +160,14 @@ struct TimedSolver {
 };
 
 // `warm`: solve_next within a run (what the sweep does); otherwise every LP from scratch.
-void BM_SolveRuns(benchmark::State& state, const std::string& backend, const std::string& basis, int grid, bool warm) {
+void BM_SolveRuns(benchmark::State& state, const std::string& backend, const std::string& basis,
+                  int grid, bool warm) {
   const auto& list = runs(basis, grid);
   TimedSolver solver{lp::make_backend(backend)};
   size_t unstable = 0, iterations = 0, solved = 0;
   double checksum = 0;
-  uint64_t answers = 0;  // a hash of every G's bits in the last pass: equal across builds = the same answers
+  uint64_t answers =
+      0;  // a hash of every G's bits in the last pass: equal across builds = the same answers
   // Each LP's ticks and pivots in the last pass: where the time goes (the tail_share counters).
   std::vector<std::pair<double, int>> costs;
   for (auto _ : state) {
@@ -170,7 +175,8 @@ void BM_SolveRuns(benchmark::State& state, const std::string& backend, const std
     costs.clear();
     for (const auto& run : list)
       for (size_t i = 0; i < run.problems.size(); ++i) {
-        const lp::Solution& s = solver.solve(run.problems[i], warm && i > 0 ? &run.positions[i] : nullptr);
+        const lp::Solution& s =
+            solver.solve(run.problems[i], warm && i > 0 ? &run.positions[i] : nullptr);
         costs.emplace_back(double(solver.last), s.iterations);
         unstable += s.status != lp::ProblemStatus::Optimal;
         iterations += s.iterations;
@@ -185,7 +191,8 @@ void BM_SolveRuns(benchmark::State& state, const std::string& backend, const std
   state.counters["pivots"] = double(iterations) / double(solved);
   state.counters["not_optimal"] = double(unstable) / double(solved);
   state.counters["lps_per_pass"] = double(solved) / double(state.iterations());
-  state.counters["answers"] = double(answers >> 12);  // exact in a double (52 bits); compare with --benchmark_format=json
+  state.counters["answers"] =
+      double(answers >> 12);  // exact in a double (52 bits); compare with --benchmark_format=json
   // The share of the last pass's solve time in its slowest 5 % of LPs, and in the LPs that took
   // 8 pivots or more (warm starts that needed the composite repair, and the runs' cold starts).
   double total = 0, many_pivots = 0;
@@ -197,16 +204,36 @@ void BM_SolveRuns(benchmark::State& state, const std::string& backend, const std
   state.counters["tail_share_8_pivots"] = total > 0 ? many_pivots / total : 0;
 }
 
-BENCHMARK_CAPTURE(BM_SolveRuns, fast_warm_power4_256, "fast", "power4", 256, true)->UseManualTime()->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_SolveRuns, fast_cold_power4_256, "fast", "power4", 256, false)->UseManualTime()->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_SolveRuns, glpk_power4_256, "glpk", "power4", 256, false)->UseManualTime()->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_SolveRuns, fast_warm_trig4_256, "fast", "trig4", 256, true)->UseManualTime()->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_SolveRuns, fast_cold_trig4_256, "fast", "trig4", 256, false)->UseManualTime()->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_SolveRuns, glpk_trig4_256, "glpk", "trig4", 256, false)->UseManualTime()->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_SolveRuns, fast_warm_power4_1024, "fast", "power4", 1024, true)->UseManualTime()->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_SolveRuns, glpk_power4_1024, "glpk", "power4", 1024, false)->UseManualTime()->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_SolveRuns, fast_warm_trig4_1024, "fast", "trig4", 1024, true)->UseManualTime()->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_SolveRuns, glpk_trig4_1024, "glpk", "trig4", 1024, false)->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SolveRuns, fast_warm_power4_256, "fast", "power4", 256, true)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SolveRuns, fast_cold_power4_256, "fast", "power4", 256, false)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SolveRuns, glpk_power4_256, "glpk", "power4", 256, false)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SolveRuns, fast_warm_trig4_256, "fast", "trig4", 256, true)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SolveRuns, fast_cold_trig4_256, "fast", "trig4", 256, false)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SolveRuns, glpk_trig4_256, "glpk", "trig4", 256, false)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SolveRuns, fast_warm_power4_1024, "fast", "power4", 1024, true)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SolveRuns, glpk_power4_1024, "glpk", "power4", 1024, false)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SolveRuns, fast_warm_trig4_1024, "fast", "trig4", 1024, true)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SolveRuns, glpk_trig4_1024, "glpk", "trig4", 1024, false)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
 
 // What issue 5's budget leaves (8 hours on 2 cores for 66045 candidates x 2.42 M LPs is ~880
 // cycles of one core an LP, building included), measured on the same runs: BM_FloorPricing is one
@@ -279,9 +306,10 @@ void BM_FloorPricing(benchmark::State& state, const std::string& basis, int grid
       const lp::Problem& p = *f.problem;
       const int g = p.grid_size();
       for (int pass = 0; pass < kHotPasses; ++pass) {
-        worst = std::min(worst, least_reduced_cost<5>(f.duals.data(), p.grid->values.data(), f.costs.data(), g));
-        worst = std::min(worst, least_reduced_cost<5>(f.duals.data(), p.extra.values.data(), f.costs.data() + g,
-                                                      p.extra.size()));
+        worst = std::min(
+            worst, least_reduced_cost<5>(f.duals.data(), p.grid->values.data(), f.costs.data(), g));
+        worst = std::min(worst, least_reduced_cost<5>(f.duals.data(), p.extra.values.data(),
+                                                      f.costs.data() + g, p.extra.size()));
         benchmark::DoNotOptimize(worst);
         benchmark::ClobberMemory();
       }
@@ -302,7 +330,8 @@ void BM_FloorMoments(benchmark::State& state) {
   for (const auto& v : views())
     for (size_t k = 0; k < v.fragments.size() && lps < 20000; k += 97) {
       const size_t t = v.fragments.texel[k];
-      kernel_distribution(v.map, kernel, int(t % v.map.width), int(t / v.map.width), depths, weights);
+      kernel_distribution(v.map, kernel, int(t % v.map.width), int(t / v.map.width), depths,
+                          weights);
       for (int n = 0; n < taps; ++n) {
         columns.resize(columns.size() + 5);
         factory.column(depths[n], &columns[columns.size() - 5]);
@@ -327,7 +356,8 @@ void BM_FloorMoments(benchmark::State& state) {
 }
 BENCHMARK(BM_FloorMoments)->Unit(benchmark::kMicrosecond);
 
-void BM_Solve(benchmark::State& state, const std::string& backend, const std::string& basis, int grid) {
+void BM_Solve(benchmark::State& state, const std::string& backend, const std::string& basis,
+              int grid) {
   const auto& list = problems(basis, grid);
   TimedSolver solver{lp::make_backend(backend)};
   size_t unstable = 0, iterations = 0, solved = 0;
@@ -346,14 +376,30 @@ void BM_Solve(benchmark::State& state, const std::string& backend, const std::st
   state.counters["not_optimal"] = double(unstable) / double(solved);
 }
 
-BENCHMARK_CAPTURE(BM_Solve, fast_power4_256, "fast", "power4", 256)->UseManualTime()->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Solve, glpk_power4_256, "glpk", "power4", 256)->UseManualTime()->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Solve, fast_trig4_256, "fast", "trig4", 256)->UseManualTime()->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Solve, glpk_trig4_256, "glpk", "trig4", 256)->UseManualTime()->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Solve, fast_power4_1024, "fast", "power4", 1024)->UseManualTime()->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Solve, glpk_power4_1024, "glpk", "power4", 1024)->UseManualTime()->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Solve, fast_trig4_1024, "fast", "trig4", 1024)->UseManualTime()->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Solve, glpk_trig4_1024, "glpk", "trig4", 1024)->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Solve, fast_power4_256, "fast", "power4", 256)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Solve, glpk_power4_256, "glpk", "power4", 256)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Solve, fast_trig4_256, "fast", "trig4", 256)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Solve, glpk_trig4_256, "glpk", "trig4", 256)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Solve, fast_power4_1024, "fast", "power4", 1024)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Solve, glpk_power4_1024, "glpk", "power4", 1024)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Solve, fast_trig4_1024, "fast", "trig4", 1024)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Solve, glpk_trig4_1024, "glpk", "trig4", 1024)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace mb
