@@ -1,5 +1,6 @@
 // Sweep building blocks: candidate ids, the plan, and the sweep's per-candidate error against the
-// `lp:` technique of eval on the same basis (two code paths, one number).
+// `lp:` technique of eval on the same basis (one loop, solve_lp_view: a named set and its function
+// list give the same bits, for any thread count), and that loop against cold per-fragment solves.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -103,6 +104,43 @@ TEST(Sweep, DefaultDatasetLeavesAtMostTwoLpsUnstable) {
     EXPECT_GT(r.solved, 1200000u) << basis;  // 1.24 M LPs with delta_f (REFERENCE.md §3)
     EXPECT_EQ(r.infeasible, 0u) << basis;    // the kernel distribution is always feasible
     EXPECT_LE(r.unstable, 2u) << basis;
+  }
+}
+
+}  // namespace
+}  // namespace mb
+
+namespace mb {
+namespace {
+
+// The view loop (warm-start runs, columns built once per texel, z_f's column moved along a texel)
+// against the technique's own per-fragment path (each LP built from the kernel's distribution and
+// solved from scratch): the same certified G to 1e-9 at every fragment of the tiny dataset.
+TEST(Sweep, ViewLoopAgreesWithColdPerFragmentSolves) {
+  EvalSettings settings;
+  settings.threads = 2;
+  settings.technique.lp.grid = 128;
+  const auto views = prepare_views(load_dataset("tiny"), 0, settings, true);
+  for (const char* name : {"lp:power4", "lp:z;exp(-z);sin(pi z);1/(1+z)"}) {
+    auto technique = make_technique(name, settings.technique);
+    size_t compared = 0;
+    for (const auto& view : views) {
+      const TechniqueResult warm = evaluate_technique(view, name, settings, nullptr);
+      std::vector<double> depths(81), weights(81);
+      for (size_t k = 0; k < view.fragments.size(); k += 3) {
+        const size_t t = view.fragments.texel[k];
+        kernel_distribution(view.map, settings.kernel, int(t % view.map.width),
+                            int(t / view.map.width), depths, weights);
+        FragmentInput in;
+        in.zf = view.fragments.ztest[k];
+        in.kernel_depths = depths;
+        in.kernel_weights = weights;
+        ASSERT_NEAR(technique->shadow(in), warm.shadow[k], 1e-9) << name << " fragment " << k;
+        ++compared;
+      }
+    }
+    EXPECT_EQ(technique->failures(), 0u) << name;
+    EXPECT_GT(compared, 2000u);
   }
 }
 

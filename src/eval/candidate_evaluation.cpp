@@ -1,22 +1,13 @@
 #include "eval/candidate_evaluation.h"
 
-#include <omp.h>
-
-#include "lp/problem.h"
-#include "lp/solution.h"
-#include "util/parallel_errors.h"
+#include "eval/lp_fragment_solver.h"
 
 namespace mb {
 
 CandidateEvaluator::CandidateEvaluator(const std::vector<ViewData>& views,
                                        const EvalSettings& settings)
     : views_(views), settings_(settings) {
-  for (const auto& v : views) {
-    std::vector<uint32_t> list;
-    for (size_t k = 0; k < v.fragments.size(); ++k)
-      if (v.fragments.oracle[k] > 0) list.push_back(uint32_t(k));
-    needs_lp_.push_back(std::move(list));
-  }
+  for (const auto& v : views) needs_lp_.push_back(fragments_needing_lp(v.fragments));
 }
 
 uint64_t CandidateEvaluator::lp_fragments() const {
@@ -27,96 +18,23 @@ uint64_t CandidateEvaluator::lp_fragments() const {
 
 CandidateResult CandidateEvaluator::evaluate(const Basis& basis,
                                              std::vector<std::vector<double>>* shadow) const {
-  const lp::Discretization& disc = settings_.technique.lp;
-  lp::ProblemFactory factory(basis, disc);
-  const int k = factory.rows(), m = int(basis.size());
-  const GaussianKernel& kernel = settings_.kernel;
-  const int taps = kernel.size * kernel.size;
+  const lp::ProblemFactory factory(basis, settings_.technique.lp);
   CandidateResult result;
-  uint64_t solved = 0, infeasible = 0, unstable = 0;
   for (size_t v = 0; v < views_.size(); ++v) {
-    const ViewData& view = views_[v];
-    const ShadowMap& map = view.map;
-    // Transformed columns T (1, b(z)) of every texel's layer-0 depth, and of the far plane.
-    std::vector<double> depth(map.depth);
-    if (disc.quantize)
-      for (double& z : depth) z = lp::quantize_to_grid(disc, z);
-    depth.push_back(disc.quantize ? lp::quantize_to_grid(disc, 1.0)
-                                  : 1.0);  // outside: index = map size
-    const size_t texels = depth.size();
-    std::vector<double> raw(texels * k), columns(texels * k), values(texels);
-    for (size_t t = 0; t < texels; ++t) raw[t * k] = 1;
-    for (int j = 0; j < m; ++j) {
-      basis[j].evaluate(depth, values);
-      for (size_t t = 0; t < texels; ++t) raw[t * k + j + 1] = values[t];
-    }
-#pragma omp parallel for schedule(static) num_threads(settings_.threads)
-    for (size_t t = 0; t < texels; ++t) factory.transform(&raw[t * k], &columns[t * k]);
-
-    const auto& list = needs_lp_[v];
-    // Warm-start runs (bands of lp::kWarmRunRows texel rows; fragments are in texel order): each
-    // run is solved in order by one thread, first from scratch, so the answers do not depend on
-    // the schedule and equal eval's lp: technique, which cuts its runs the same way.
-    const std::vector<size_t> run_begin = lp::warm_run_begins(
-        list.size(), map.width, [&](size_t i) { return view.fragments.texel[list[i]]; });
-    const size_t runs = run_begin.size() - 1;
-    std::vector<double> g(view.fragments.size(), 0.0);  // skipped fragments: G = 0 exactly
-    ParallelErrors errors;  // each run captured: a throw must not leave the worksharing loop
-#pragma omp parallel num_threads(settings_.threads) reduction(+ : solved, infeasible, unstable)
-    {
-      auto backend = lp::make_backend(settings_.technique.lp_backend);
-      lp::Problem problem;
-      std::vector<double> tap_depth(taps), tap_weight(taps);
-      std::vector<const double*> tap_column(taps);
-      std::vector<size_t> tap_texel(taps);
-      lp::Solution s;  // reused: no allocation per LP
-#pragma omp for schedule(dynamic, 1)
-      for (size_t run = 0; run < runs; ++run)
-        errors.capture([&] {
-          for (size_t i = run_begin[run]; i < run_begin[run + 1]; ++i) {
-            const size_t f = list[i], t = view.fragments.texel[f];
-            const int x = int(t % map.width), y = int(t / map.width);
-            const double zf = view.fragments.ztest[f];  // z_f - delta_f (REFERENCE.md §3)
-            // The fragments of one texel share its kernel (41 % of them follow one of their
-            // texel's): then only z_f's column changes, and the problem is the same as built anew.
-            const bool same_kernel = i > run_begin[run] && view.fragments.texel[list[i - 1]] == t;
-            if (!same_kernel || !factory.move_zf(zf, problem)) {
-              // The same taps, in the same order, as eval's lp: technique; the extra texel index
-              // picks the column (the far plane's, one past the map, for taps outside it).
-              kernel_distribution(map, kernel, x, y, tap_depth, tap_weight, tap_texel);
-              for (int n = 0; n < taps; ++n) {
-                tap_depth[n] = depth[tap_texel[n]];  // quantized in quantize mode
-                tap_column[n] = &columns[tap_texel[n] * k];
-              }
-              factory.from_distribution(tap_depth, tap_weight, tap_column, zf, problem);
-            }
-            const lp::WarmPosition at{view.fragments.layer[f], x, y};
-            backend->solve_into(problem, i == run_begin[run] ? nullptr : &at, s);
-            if (s.call == lp::CallStatus::Ok && s.status == lp::ProblemStatus::Optimal) {
-              g[f] = std::clamp(s.G, 0.0, 1.0);
-              ++solved;
-            } else if (s.status == lp::ProblemStatus::Infeasible) {
-              ++infeasible;  // shown lit (G = 0), counted
-            } else {
-              ++unstable;
-            }
-          }
-        });
-    }
-    errors.rethrow();
+    LpViewAnswers answers = solve_lp_view(views_[v], needs_lp_[v], basis, factory, settings_);
+    result.solved += answers.solved;
+    result.infeasible += answers.infeasible;
+    result.unstable += answers.unstable;
     ErrorStats stats;
-    stats.add_all(view.fragments.pcf, g);
+    stats.add_all(views_[v].fragments.pcf, answers.shadow);
     result.overall.merge(stats);
     result.per_view.push_back(std::move(stats));
-    if (shadow) shadow->push_back(std::move(g));
+    if (shadow) shadow->push_back(std::move(answers.shadow));
   }
-  result.solved = solved;
-  result.infeasible = infeasible;
-  result.unstable = unstable;
-  result.overall.failures = infeasible + unstable;
+  result.overall.failures = result.infeasible + result.unstable;
   uint64_t total = 0;
   for (const auto& v : views_) total += v.fragments.size();
-  result.skipped = total - solved - infeasible - unstable;
+  result.skipped = total - result.solved - result.infeasible - result.unstable;
   return result;
 }
 

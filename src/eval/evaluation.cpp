@@ -2,6 +2,10 @@
 
 #include <omp.h>
 
+#include <algorithm>
+
+#include "eval/lp_fragment_solver.h"
+#include "eval/lp_technique.h"
 #include "lp/solution.h"
 #include "raster/render_view.h"
 #include "shadow/moment_map.h"
@@ -53,28 +57,38 @@ TechniqueResult evaluate_technique(const ViewData& view, const std::string& tech
                                    const EvalSettings& settings, ProgressBar* progress) {
   const Fragments& f = view.fragments;
   TechniqueResult result;
-  result.shadow.resize(f.size());
   auto probe = make_technique(technique_name, settings.technique);
+  if (is_lp_technique(technique_name)) {
+    // The sweep's loop, so that eval's lp: and a sweep candidate are one computation.
+    const std::vector<uint32_t> needs_lp = fragments_needing_lp(f);
+    const lp::ProblemFactory factory(probe->basis(), settings.technique.lp);
+    LpViewAnswers answers =
+        solve_lp_view(view, needs_lp, probe->basis(), factory, settings, progress);
+    if (progress) progress->advance(f.size() - needs_lp.size());  // the skipped fragments
+    result.shadow = std::move(answers.shadow);
+    result.failures = answers.infeasible + answers.unstable;
+    return result;
+  }
+  result.shadow.resize(f.size());
   MomentMap moments;
   if (probe->basis().size() > 0)
     moments = compute_moment_map(view.map, probe->basis(), settings.kernel, probe->storage(),
                                  settings.threads);
   const size_t taps = size_t(settings.kernel.size) * settings.kernel.size;
-  // Whole warm-start runs per thread (fragments are in texel order, so each run is contiguous).
-  const std::vector<size_t> run_begin =
-      lp::warm_run_begins(f.size(), f.width, [&](size_t k) { return f.texel[k]; });
-  const size_t runs = run_begin.size() - 1;
+  // Closed forms answer each fragment on its own: any split of the work gives the same bits.
+  constexpr size_t kBlock = 4096;
+  const size_t blocks = (f.size() + kBlock - 1) / kBlock;
   size_t failures = 0;
-  ParallelErrors errors;  // each run's body captured: a throw must not leave the worksharing loop
+  ParallelErrors errors;  // each block captured: a throw must not leave the worksharing loop
 #pragma omp parallel num_threads(settings.threads) reduction(+ : failures)
   {
     auto technique = make_technique(technique_name, settings.technique);
     const bool needs_distribution = technique->needs_distribution();
     std::vector<double> depths(taps), weights(taps);
 #pragma omp for schedule(dynamic, 1)
-    for (size_t run = 0; run < runs; ++run)
+    for (size_t block = 0; block < blocks; ++block)
       errors.capture([&] {
-        const size_t begin = run_begin[run], end = run_begin[run + 1];
+        const size_t begin = block * kBlock, end = std::min(f.size(), begin + kBlock);
         for (size_t k = begin; k < end; ++k) {
           const size_t texel = f.texel[k];
           FragmentInput in;
@@ -82,13 +96,9 @@ TechniqueResult evaluate_technique(const ViewData& view, const std::string& tech
           in.zf = f.ztest[k];
           in.pcf = f.pcf[k];
           in.oracle = f.oracle[k];
-          in.fragment = k;
-          in.layer = f.layer[k];
-          in.column = int(texel % f.width);
-          in.row = int(texel / f.width);
-          in.run = lp::warm_run_of(texel, f.width);
           if (needs_distribution) {
-            kernel_distribution(view.map, settings.kernel, in.column, in.row, depths, weights);
+            kernel_distribution(view.map, settings.kernel, int(texel % f.width),
+                                int(texel / f.width), depths, weights);
             in.kernel_depths = depths;
             in.kernel_weights = weights;
           }

@@ -28,16 +28,12 @@ class LpTechnique : public Technique {
       if (in.kernel_depths[t] < in.zf) cdf += in.kernel_weights[t];
     if (cdf == 0) return 0;
     // The kernel's own distribution fixes the moments, so the program is feasible by construction.
-    // The grid columns are shared (built once per technique instance); only the kernel's depths
-    // and z_f are new per fragment.
-    lp::Problem problem = factory_.from_distribution(in.kernel_depths, in.kernel_weights, in.zf);
-    // Along a warm-start run (the same runs as the sweep's), continue from the neighbours' bases.
-    const bool continues = in.run == last_run_ && in.fragment > last_fragment_;
-    const lp::WarmPosition at{in.layer, in.column, in.row};
-    lp::Solution& s = solution_;
-    backend_->solve_into(problem, continues ? &at : nullptr, s);
-    last_fragment_ = in.fragment;
-    last_run_ = in.run;
+    // One fragment alone, from scratch: evaluate_technique solves whole views with warm starts
+    // instead (solve_lp_view), to the same certified answers.
+    const lp::Problem problem =
+        factory_.from_distribution(in.kernel_depths, in.kernel_weights, in.zf);
+    backend_->solve_into(problem, nullptr, solution_);
+    const lp::Solution& s = solution_;
     if (s.call != lp::CallStatus::Ok || s.status != lp::ProblemStatus::Optimal) {
       ++failures_;
       return 0;
@@ -51,11 +47,13 @@ class LpTechnique : public Technique {
   std::unique_ptr<lp::Backend> backend_;
   lp::Solution solution_;  // reused: no allocation per LP
   size_t failures_ = 0;
-  size_t last_fragment_ = 0;
-  int last_run_ = -1;  // none yet: runs are numbered from 0
 };
 
 }  // namespace
+
+bool is_lp_technique(const std::string& name) {
+  return name.rfind("lp:", 0) == 0;
+}
 
 std::vector<std::string> lp_technique_basis(const std::string& name) {
   std::string spec = name.substr(3);

@@ -21,10 +21,6 @@ struct FragmentInput {
   double oracle = 0;                // F_Z(z_f - delta_f) (the `oracle` row)
   // The kernel's depth distribution (layer-0 depths and weights), for techniques that need it.
   std::span<const double> kernel_depths, kernel_weights;
-  // Where the fragment is in its view's fragment order, its layer, texel column and warm-start
-  // run (lp::warm_run_of): LP techniques warm-start along runs of neighbouring fragments.
-  size_t fragment = 0;
-  int layer = 0, column = 0, row = 0, run = 0;
 };
 
 // Every technique parameter, with the defaults of the eval options table.

@@ -1,0 +1,30 @@
+#pragma once
+// The one loop that solves a view's receivers as LPs of Problem 1 (REFERENCE.md §2-3), shared by
+// eval's lp: techniques and the sweep, so the two cannot drift apart (DESIGN.md §Performance
+// shape): the basis columns of every texel's layer-0 depth once per view, the exact skip where
+// F_Z(z_f - delta_f) = 0, warm-start runs cut the same way for any thread count.
+#include <cstdint>
+#include <vector>
+
+#include "eval/evaluation.h"
+#include "lp/problem.h"
+#include "moments/basis.h"
+#include "util/progress.h"
+
+namespace mb {
+
+struct LpViewAnswers {
+  std::vector<double> shadow;  // G per fragment, in fragment order (0 where skipped or failed)
+  uint64_t solved = 0, infeasible = 0, unstable = 0;
+};
+
+// The fragments of `fragments` that need an LP: F_Z(z_f - delta_f) > 0 (the others have G = 0).
+std::vector<uint32_t> fragments_needing_lp(const Fragments& fragments);
+
+// Solves the LPs of `needs_lp` (ascending fragment indices of `view`) with `factory`'s basis and
+// discretisation, the backend of `settings`; failed LPs are counted and shown lit (G = 0).
+LpViewAnswers solve_lp_view(const ViewData& view, const std::vector<uint32_t>& needs_lp,
+                            const Basis& basis, const lp::ProblemFactory& factory,
+                            const EvalSettings& settings, ProgressBar* progress = nullptr);
+
+}  // namespace mb
