@@ -177,7 +177,7 @@ TEST(LpBackends, AgreeOnOneHundredThousandRandomInstancesAcrossTheCatalog) {
   SeededRandom random(20261124);
   auto fast = make_backend("fast"), glpk = make_backend("glpk");
   const int kInstances = 100000;
-  int boundary = 0, unstable = 0, glpk_inconsistent = 0, close = 0;
+  int boundary = 0, unstable = 0, glpk_inconsistent = 0, close = 0, fallback = 0;
   double max_difference = 0;
   for (int n = 0; n < kInstances; ++n) {
     auto inst = testing_support::random_instance(random, 1 + n % 4, 16, 96);
@@ -201,6 +201,10 @@ TEST(LpBackends, AgreeOnOneHundredThousandRandomInstancesAcrossTheCatalog) {
                 : 0;
     ASSERT_LE(a.G, fz + 1e-9) << "instance " << n;
     ASSERT_GE(a.G, -1e-12);
+    if (a.engine == Engine::Glpk) {  // our fallback's answer is GLPK's own: no comparison
+      ++fallback;
+      continue;
+    }
     if (b.status == ProblemStatus::Optimal && std::abs(a.G - b.G) <= 1e-9) {
       ++close;
       max_difference = std::max(max_difference, std::abs(a.G - b.G));
@@ -214,8 +218,9 @@ TEST(LpBackends, AgreeOnOneHundredThousandRandomInstancesAcrossTheCatalog) {
   std::printf(
       "random instances: %d (%d on the boundary); ours unstable %d; agreeing to 1e-9: %d (max |dG| "
       "%.2e); "
-      "GLPK wrong by our certificate: %d\n",
-      kInstances, boundary, unstable, close, max_difference, glpk_inconsistent);
+      "GLPK wrong by our certificate: %d; answered by our GLPK fallback (not compared): %d\n",
+      kInstances, boundary, unstable, close, max_difference, glpk_inconsistent, fallback);
+  EXPECT_LE(fallback, kInstances / 1000);
   EXPECT_GT(boundary, kInstances / 4);
   EXPECT_LE(unstable, kInstances / 1000);
   // GLPK's own error rate, not ours (each case is checked above): ~0.1 %; it counts a few more

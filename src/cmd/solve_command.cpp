@@ -89,6 +89,7 @@ json solve_one(lp::Backend& backend, FactoryCache& factories,
     out["note"] = "zf lies at or below the interval's start: no mass is below it, so G = 0";
   out["iterations"] = s.iterations;
   out["backend"] = backend.name();
+  out["engine"] = lp::to_string(s.engine);  // "glpk" when the fast backend's fallback answered
   if (check && s.status == lp::ProblemStatus::Optimal)
     out["kkt"] = lp::check_kkt(problem, s).describe();
   return out;

@@ -2225,6 +2225,7 @@ class FastBackend : public Backend {
     }
     with_row_count<kMaxRows>(p.rows,
                              [&](auto rows) { std::get<rows() - 1>(simplices_).run(p, at, s); });
+    s.engine = Engine::Fast;  // `s` may hold an earlier fallback answer's tag
     if (s.status != ProblemStatus::Unstable) return;
     // The rare instance our simplex cannot certify goes to GLPK, and its answer is accepted only
     // if the independent KKT checker certifies it, with its first-order error bound, and its
@@ -2257,6 +2258,10 @@ class FastBackend : public Backend {
 
 std::unique_ptr<Backend> make_fast_backend() {
   return std::make_unique<FastBackend>();
+}
+
+const char* to_string(Engine engine) {
+  return engine == Engine::Fast ? "fast" : "glpk";
 }
 
 const char* to_string(ProblemStatus status) {

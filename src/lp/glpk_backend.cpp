@@ -50,6 +50,7 @@ class GlpkBackend : public Backend {
     glp_load_matrix(lp_, int(nonzeros), ia_.data(), ja_.data(), ar_.data());
 
     Solution s;
+    s.engine = Engine::Glpk;
     glp_std_basis(lp_);
     params_.meth = GLP_PRIMAL;
     // Optimal in ~30-140 pivots on dataset LPs; past 2000 GLPK is stalling (about one LP in 5000

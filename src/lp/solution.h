@@ -13,6 +13,12 @@ enum class ProblemStatus { Optimal, Infeasible, Unstable };
 enum class CallStatus { Ok, Failed };
 const char* to_string(ProblemStatus status);
 
+// Which solver produced an answer: the fast backend hands the rare LP its simplex cannot certify
+// to GLPK (accepted only with an independent certificate), so a comparison of the two backends
+// must know which answers are GLPK's own.
+enum class Engine { Fast, Glpk };
+const char* to_string(Engine engine);
+
 struct Solution {
   CallStatus call = CallStatus::Ok;
   std::string call_message;
@@ -25,6 +31,7 @@ struct Solution {
   // misstates reduced costs by ~1e-8.
   std::vector<long double> duals;
   int iterations = 0;
+  Engine engine = Engine::Fast;
   // A fresh Solution again, with the vectors' storage kept (Backend::solve_into).
   void reset() {
     call = CallStatus::Ok;
@@ -35,6 +42,7 @@ struct Solution {
     weights.clear();
     duals.clear();
     iterations = 0;
+    engine = Engine::Fast;
   }
 };
 
