@@ -81,12 +81,9 @@ int run_eval(const EvalOptions& options) {
   }
   const int threads = resolve_thread_count(int(config.integer("threads")));
   EvalSettings settings = shadow_settings_from(config, threads);
-  auto techniques = config.strings("techniques");
-  if (techniques.empty()) throw InputError("techniques: expected at least one technique");
-  // REFERENCE.md §3: under the receiver-plane reference every table shows the oracle floor.
-  if (settings.bias.reference == Reference::ReceiverPlane &&
-      std::find(techniques.begin(), techniques.end(), "oracle") == techniques.end())
-    techniques.push_back("oracle");
+  if (config.strings("techniques").empty())
+    throw InputError("techniques: expected at least one technique");
+  const auto techniques = with_oracle_row(config.strings("techniques"), settings.bias);
   // Construct every technique once before any work: unknown names fail here, with no output.
   std::map<std::string, double> darkening_bound;
   std::map<std::string, std::string> darkening_reason;

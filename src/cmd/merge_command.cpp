@@ -22,15 +22,9 @@ struct MergeOptions {
   bool force = false, partial = false;
 };
 
-std::string database_of(const std::string& dir) {
-  return std::filesystem::is_directory(dir)
-             ? (std::filesystem::path(dir) / "results.sqlite").string()
-             : dir;
-}
-
 int run_merge(const MergeOptions& o) {
   std::vector<ResultsStore> inputs;
-  for (const auto& s : o.shards) inputs.push_back(ResultsStore::open(database_of(s)));
+  for (const auto& s : o.shards) inputs.push_back(ResultsStore::open(results_database_path(s)));
   auto first = inputs[0].meta();
   std::map<uint64_t, std::string> owner;
   std::set<std::string> shard_names;

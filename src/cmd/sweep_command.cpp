@@ -117,11 +117,7 @@ int run_sweep(const SweepOptions& options) {
     Basis(functions).check_admissible(settings.technique.lp.lo, settings.technique.lp.hi);
     lp::check_backend_rows(settings.technique.lp_backend, plan.size, "combination_size");
   }
-  auto references = config.strings("references");
-  // REFERENCE.md §3: under the receiver-plane reference every table shows the oracle floor.
-  if (settings.bias.reference == Reference::ReceiverPlane &&
-      std::find(references.begin(), references.end(), "oracle") == references.end())
-    references.push_back("oracle");
+  const auto references = with_oracle_row(config.strings("references"), settings.bias);
   std::map<std::string, std::pair<double, std::string>>
       darkening;  // Technique::darkening_bound, _reason
   for (const auto& name : references) {

@@ -1,5 +1,6 @@
 #include "eval/eval_config.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <limits>
 
@@ -89,6 +90,14 @@ EvalSettings shadow_settings_from(const Config& config, int threads) {
   t.lp_backend = config.string("lp.backend");
   s.threads = threads;
   return s;
+}
+
+std::vector<std::string> with_oracle_row(std::vector<std::string> techniques,
+                                         const BiasParams& bias) {
+  if (bias.reference == Reference::ReceiverPlane &&
+      std::find(techniques.begin(), techniques.end(), "oracle") == techniques.end())
+    techniques.push_back("oracle");
+  return techniques;
 }
 
 std::string describe_settings(const EvalSettings& s) {

@@ -5,7 +5,6 @@
 #include <algorithm>
 
 #include "eval/lp_fragment_solver.h"
-#include "eval/lp_technique.h"
 #include "lp/solution.h"
 #include "raster/render_view.h"
 #include "shadow/moment_map.h"
@@ -58,12 +57,11 @@ TechniqueResult evaluate_technique(const ViewData& view, const std::string& tech
   const Fragments& f = view.fragments;
   TechniqueResult result;
   auto probe = make_technique(technique_name, settings.technique);
-  if (is_lp_technique(technique_name)) {
+  if (const lp::ProblemFactory* factory = probe->lp_factory()) {
     // The sweep's loop, so that eval's lp: and a sweep candidate are one computation.
     const std::vector<uint32_t> needs_lp = fragments_needing_lp(f);
-    const lp::ProblemFactory factory(probe->basis(), settings.technique.lp);
     LpViewAnswers answers =
-        solve_lp_view(view, needs_lp, probe->basis(), factory, settings, progress);
+        solve_lp_view(view, needs_lp, probe->basis(), *factory, settings, progress);
     if (progress) progress->advance(f.size() - needs_lp.size());  // the skipped fragments
     result.shadow = std::move(answers.shadow);
     result.failures = answers.infeasible + answers.unstable;

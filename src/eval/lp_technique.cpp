@@ -19,6 +19,7 @@ class LpTechnique : public Technique {
         backend_(lp::make_backend(backend)) {}
   bool needs_distribution() const override { return true; }
   double darkening_bound() const override { return kLpDarkeningBound; }
+  const lp::ProblemFactory* lp_factory() const override { return &factory_; }
 
   double shadow(const FragmentInput& in) override {
     // REFERENCE.md §2: G <= F_Z(z_f), so F_Z(z_f) = 0 gives G = 0 without solving (z_f here is
@@ -50,10 +51,6 @@ class LpTechnique : public Technique {
 };
 
 }  // namespace
-
-bool is_lp_technique(const std::string& name) {
-  return name.rfind("lp:", 0) == 0;
-}
 
 std::vector<std::string> lp_technique_basis(const std::string& name) {
   std::string spec = name.substr(3);

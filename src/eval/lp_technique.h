@@ -12,8 +12,6 @@ namespace mb {
 // the kernel's own (REFERENCE.md §2), so it exceeds F_Z(z_f - delta_f) by at most this.
 constexpr double kLpDarkeningBound = 1e-9;
 
-// "lp:..." names an LP technique: evaluate_technique solves it per view (lp_fragment_solver.h).
-bool is_lp_technique(const std::string& name);
 // `name` = "lp:" + a named set (power4, trig4, ...) or functions separated by ';' or ','.
 std::unique_ptr<Technique> make_lp_technique(const std::string& name,
                                              const lp::Discretization& disc,

@@ -202,6 +202,13 @@ std::vector<ResultRow> ResultsStore::references() const {
   return rows("references_", "name");
 }
 
+std::string results_database_path(const std::string& given) {
+  namespace fs = std::filesystem;
+  const bool file = fs::is_regular_file(given) ||
+                    (given.size() >= 7 && given.compare(given.size() - 7, 7, ".sqlite") == 0);
+  return !fs::is_directory(given) && file ? given : (fs::path(given) / "results.sqlite").string();
+}
+
 ResultRow make_result_row(uint64_t id, const std::string& name, const ErrorStats& s,
                           const std::vector<std::pair<std::string, double>>& view_errors) {
   ResultRow r;

@@ -53,6 +53,10 @@ class ResultsStore {
   std::string path_;
 };
 
+// The results database of `given`: a sweep's output directory (its results.sqlite) or the file
+// itself (an existing file, or a name ending in .sqlite); a missing directory names its database.
+std::string results_database_path(const std::string& given);
+
 // A row from an evaluation's statistics.
 ResultRow make_result_row(uint64_t id, const std::string& name, const ErrorStats& overall,
                           const std::vector<std::pair<std::string, double>>& view_errors);

@@ -29,16 +29,6 @@ constexpr double kPaperPower = 0.0219, kPaperTrig = 0.0193;
 // `settings` is describe_settings (kernel, reference, bias, LP grid and interval, backend).
 constexpr const char* kComparableKeys[] = {"dataset", "reference", "settings"};
 
-std::string database_path(const std::string& given) {
-  // A sweep's output directory or its results.sqlite.
-  const std::string suffix = "/results.sqlite";
-  if (given.size() >= suffix.size() &&
-      given.compare(given.size() - suffix.size(), suffix.size(), suffix) == 0)
-    return given;
-  if (given.size() > 7 && given.compare(given.size() - 7, 7, ".sqlite") == 0) return given;
-  return given + suffix;
-}
-
 // A candidate's name as the sweep writes it ("f1; f2; ..."), for a named basis set.
 std::string candidate_name(const std::string& set) {
   std::string name;
@@ -239,7 +229,7 @@ std::vector<SweepSeries> load_sweep_series(const std::vector<std::string>& datab
   std::map<std::string, int> labels;
   for (const auto& given : databases) {
     SweepSeries s;
-    s.database = database_path(given);
+    s.database = results_database_path(given);
     ResultsStore store = ResultsStore::open(s.database);
     s.meta = store.meta();
     s.ranked = store.candidates();

@@ -35,7 +35,6 @@ ShadowMap layer0_shadow_map(const LayerStack& stack) {
 Fragments collect_receivers(const LayerStack& stack, const GaussianKernel& kernel,
                             const BiasParams& bias, int threads) {
   Fragments f;
-  f.reference = bias.reference;
   f.width = stack.width;
   f.height = stack.height;
   for (size_t t = 0; t < stack.texel_count(); ++t)
@@ -90,15 +89,6 @@ void kernel_distribution(const ShadowMap& map, const GaussianKernel& kernel, int
       const bool inside = xx >= 0 && yy >= 0 && xx < map.width && yy < map.height;
       texels[k] = inside ? size_t(yy) * map.width + xx : map.depth.size();
     }
-}
-
-double kernel_cdf(const ShadowMap& map, const GaussianKernel& kernel, int x, int y, double z) {
-  const int r = kernel.radius();
-  double total = 0;
-  for (int dy = -r; dy <= r; ++dy)
-    for (int dx = -r; dx <= r; ++dx)
-      if (map.at(x + dx, y + dy) < z) total += kernel.weight(dx, dy);
-  return total;
 }
 
 }  // namespace mb

@@ -55,7 +55,6 @@ struct Fragments {
   std::vector<double> ztest;    // z_f - delta_f: the depth every technique is evaluated at
   std::vector<double> oracle;   // F_Z(z_f - delta_f); 0 means G = 0 exactly (REFERENCE.md §2)
   std::vector<double> pcf;      // the reference shadow intensity in [0, 1] (= oracle if Biased)
-  Reference reference = Reference::Biased;
   size_t size() const { return zf.size(); }
 };
 
@@ -69,7 +68,5 @@ Fragments collect_receivers(const LayerStack& stack, const GaussianKernel& kerne
 void kernel_distribution(const ShadowMap& map, const GaussianKernel& kernel, int x, int y,
                          std::span<double> depths, std::span<double> weights,
                          std::span<size_t> texels = {});
-// F_Z(z) = Z(depth < z) for that distribution (REFERENCE.md §1: strictly less).
-double kernel_cdf(const ShadowMap& map, const GaussianKernel& kernel, int x, int y, double z);
 
 }  // namespace mb

@@ -60,8 +60,9 @@ const std::vector<lp::Problem>& problems(const std::string& basis_name, int grid
       if (index % stride) continue;
       const size_t t = v.fragments.texel[k];
       const int x = int(t % v.map.width), y = int(t / v.map.width);
-      const double zf = v.fragments.zf[k] - 1e-3;
-      if (kernel_cdf(v.map, kernel, x, y, zf) == 0) continue;  // skipped exactly in eval and sweep
+      // The LPs the sweep solves (REFERENCE.md §3): at z_f - delta_f, where F_Z of it is not 0.
+      const double zf = v.fragments.ztest[k];
+      if (v.fragments.oracle[k] == 0) continue;  // skipped exactly in eval and sweep
       kernel_distribution(v.map, kernel, x, y, depths, weights);
       out.push_back(factory.from_distribution(depths, weights, zf));
     }
@@ -93,8 +94,8 @@ const std::vector<Run>& runs(const std::string& basis_name, int grid) {
         const size_t t = v.fragments.texel[k];
         const int x = int(t % v.map.width), y = int(t / v.map.width);
         if (lp::warm_run_of(t, v.map.width) != band || x < x0 || x >= x0 + kRunColumns) continue;
-        const double zf = v.fragments.zf[k] - 1e-3;
-        if (kernel_cdf(v.map, kernel, x, y, zf) == 0) continue;
+        const double zf = v.fragments.ztest[k];
+        if (v.fragments.oracle[k] == 0) continue;
         kernel_distribution(v.map, kernel, x, y, depths, weights);
         run.problems.push_back(factory.from_distribution(depths, weights, zf));
         run.positions.push_back({v.fragments.layer[k], x, y});
