@@ -1,0 +1,193 @@
+#pragma once
+// One LP: warm bases first, then the known distribution, then phase 1 from artificials.
+#include "lp/fast/simplex.h"
+
+namespace mb::lp::fast {
+
+// at == nullptr: from scratch, and every basis is forgotten; otherwise the warm bases of the
+// texel to the left and of the texel above are tried first (Backend::solve_next).
+template <int K>
+void FastSimplex<K>::run(const Problem& p, const WarmPosition* at, Solution& s) {
+  if (!at) {
+    std::fill(std::begin(lane_zf_), std::end(lane_zf_), kNoBasis);
+    std::fill(above_zf_.begin(), above_zf_.end(), kNoBasis);
+  }
+  const int layer = at ? std::clamp(at->layer, 0, kWarmLanes - 1) : 0;
+  const int column = at ? at->column : -1;
+  if (column >= 0 && size_t(column + 1) * kWarmLanes > above_.size()) {
+    above_.resize(size_t(column + 1) * kWarmLanes);
+    above_zf_.resize(above_.size(), kNoBasis);
+  }
+  // Warm bases to try, closest z_f first: layers of neighbouring texels do not always count the
+  // same surfaces, so the fragment's own lane is not always the best guess, and where the
+  // surfaces change from left to right (a silhouette along the column) the texel above often
+  // still sees the same ones: with it, a third fewer LPs need the composite repair. The texel
+  // above and to the right (the row above has passed it, this row not yet) adds what a silhouette
+  // running down to the left hides from both: 12 % fewer pivots, 20 % fewer repairs (power4,
+  // 256).
+  WarmOffers offers;
+  if (at) {
+    const bool above = column >= 0,
+               right = above && size_t(column + 2) * kWarmLanes <= above_.size();
+    const size_t slot = above ? size_t(column) * kWarmLanes : 0;
+    offers.offer(0, lanes_, lane_zf_, p.zf);
+    offers.offer(1, above ? &above_[slot] : nullptr, above ? &above_zf_[slot] : nullptr, p.zf);
+    offers.offer(2, right ? &above_[slot + kWarmLanes] : nullptr,
+                 right ? &above_zf_[slot + kWarmLanes] : nullptr, p.zf);
+  }
+  s.reset();
+  at_ = at;
+  solve(p, offers, s);
+  if (s.status == ProblemStatus::Unstable) {
+    // Once more from scratch with Dantzig's rule over every column (no slide_entering either): a
+    // narrow kernel's LP (|y| ~ 1e6) that failed every start with the extras priced first (one
+    // LP in a power4 sweep of the default dataset;
+    // LpFastBackend.NarrowKernelThatExtrasFirstPricingLeftUnstableIsSolved) is optimal in 70
+    // pivots this way (G = 1.98e-7, where GLPK's answer, 1.3e-10, is not certified).
+    WarmOffers none;
+    start_over(s);
+    retrying_ = true;
+    solve(p, none, s);
+    retrying_ = false;
+  }
+  lane_zf_[layer] = remember_basis(s, lanes_[layer]);
+  if (!std::isnan(lane_zf_[layer])) save_basis(lane_factors_[layer]);
+  if (column >= 0) {  // the same basis for the row below
+    const size_t slot = size_t(column) * kWarmLanes + layer;
+    above_[slot] = lanes_[layer];
+    above_zf_[slot] = lane_zf_[layer];
+  }
+}
+
+// Into `s`, fresh (reset).
+template <int K>
+void FastSimplex<K>::solve(const Problem& p, WarmOffers& warm, Solution& s) {
+  p_ = &p;
+  priced_phase_ = -1;  // reduced_ belongs to the previous problem
+  duals_fresh_ = false;
+  n_ = p.cols();
+  g_ = p.grid_size();
+  e_ = p.extra.size();
+  composite_ = n_ + k_;
+  reduced_.resize(n_);
+  // Costs once per problem: the grid is ascending, so its cost is a prefix of ones.
+  cost_.resize(n_);
+  const auto& grid = p.grid->points;
+  grid_points_ = grid.data();
+  extra_points_ = p.extra.points.data();
+  cell_scale_ = grid.back() > grid.front() ? (g_ - 1) / (grid.back() - grid.front()) : 0.0;
+  const int in_front = grid_bound(grid, p.zf, false, cell_scale_);
+  const int taps = int(p.tap_extra.size());
+  if (taps != kernel_taps_) {  // the same kernel for every problem of a run, nearly always
+    const int side = int(std::lround(std::sqrt(double(taps))));
+    kernel_taps_ = taps;
+    kernel_side_ = side * side == taps ? side : 0;
+    // Each tap's column and row in the kernel: texel_tap needs them for every kernel column of
+    // every warm try, and a division each was ~1 % of an LP.
+    tap_column_.resize(taps), tap_row_.resize(taps);
+    for (int t = 0; t < taps && kernel_side_ > 0; ++t)
+      tap_column_[t] = t % kernel_side_, tap_row_[t] = t / kernel_side_;
+  }
+  // Along a run the grid stays and z_f moves by a few cells, so only the cells between the last
+  // problem's prefix and this one's are rewritten (the whole fill was ~2 % of a warm LP).
+  if (p.grid != costed_grid_) {
+    std::fill(cost_.begin(), cost_.begin() + in_front, 1.0);
+    std::fill(cost_.begin() + in_front, cost_.begin() + g_, 0.0);
+    costed_grid_ = p.grid;
+    grid_first_row_ = constant_first_row(p.grid->values.data(), g_);
+  } else if (in_front != costed_front_) {
+    const bool ones = in_front > costed_front_;
+    std::fill(cost_.begin() + std::min(in_front, costed_front_),
+              cost_.begin() + std::max(in_front, costed_front_), ones ? 1.0 : 0.0);
+  }
+  costed_front_ = in_front;
+#ifdef __AVX512F__
+  {
+    const __m512d zf = _mm512_set1_pd(p.zf), one = _mm512_set1_pd(1.0), zero = _mm512_setzero_pd();
+    for (int e = 0; e < e_; e += 8) {
+      const __mmask8 live = lanes_below(e_, e);
+      const __mmask8 front = _mm512_mask_cmp_pd_mask(
+          live, _mm512_maskz_loadu_pd(live, extra_points_ + e), zf, _CMP_LT_OQ);
+      _mm512_mask_storeu_pd(cost_.data() + g_ + e, live, _mm512_mask_blend_pd(front, zero, one));
+    }
+  }
+#else
+  for (int e = 0; e < e_; ++e) cost_[g_ + e] = p.extra.points[e] < p.zf ? 1.0 : 0.0;
+#endif
+  composite_cost_ = std::numeric_limits<double>::quiet_NaN();  // cost() computes it if asked
+
+  if (warm.usable > 0) {
+    if (solve_from_previous_basis(warm, s)) return;
+    start_over(s);
+  }
+  if (!p.start_support.empty() && start_from_distribution()) {
+    phase_ = 2;
+    if (solve_phase2(s)) return;
+    start_over(s);
+  }
+  start_with_artificials();
+  phase_ = 1;
+  if (!iterate(s)) return unstable(s);
+  double artificial = 0;
+  for (int i = 0; i < k_; ++i)
+    if (is_artificial(basis_[i])) artificial += x_[i];
+  if (artificial > kPhase1Tolerance) {
+    s.status = ProblemStatus::Infeasible;
+    return;
+  }
+  if (!drive_out_artificials()) return unstable(s);
+  phase_ = 2;
+  if (solve_phase2(s)) return;
+  unstable(s);
+}
+
+// A failed start: only the pivots it spent are kept.
+template <int K>
+void FastSimplex<K>::start_over(Solution& s) {
+  const int spent = s.iterations;
+  s.reset();
+  s.iterations = spent;
+}
+
+// A warm basis that no bracket shift made feasible: its most negative column makes way for the
+// composite column (the kernel distribution, which alone reproduces the moments), so x = e_i is
+// a basic feasible solution next to the old basis; the primal simplex goes on from there.
+template <int K>
+bool FastSimplex<K>::repair_with_composite(Solution& s) {
+  if (p_->start_support.empty() || is_basic(composite_)) return false;
+  const int worst = most_negative();
+  basis_[worst] = composite_;
+  if (!refactor()) return false;
+  for (int i = 0; i < k_; ++i) x_[i] = i == worst ? 1.0 : 0.0;  // exact: B e_worst = rhs
+  return solve_phase2(s);
+}
+
+template <int K>
+void FastSimplex<K>::unstable(Solution& s) {
+  s.status = ProblemStatus::Unstable;
+}
+
+// Phase 2, then certification; a failed certificate resumes from the accurate basis. One that
+// failed on a negative reduced cost only the precise (double-double) pass sees (|y| ~ 1e8: the
+// double pass rounds ~1e-8, so its entering tolerance is that wide) names the column, and a step
+// brings it in: the double iterations could not have found it, and such LPs used to end unstable
+// (477 of a power4 sweep's 2.4M, then GLPK's answer or "lit"; now 1).
+template <int K>
+bool FastSimplex<K>::solve_phase2(Solution& s) {
+  int guided = 0;
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    if (!iterate(s)) return false;
+    if (certify(s)) return true;
+    for (; certificate_entering_ >= 0 && guided < kGuidedSteps; ++guided) {
+      double u[kMaxRows];
+      column_in_basis(certificate_entering_, u);
+      if (!(step(certificate_entering_, u, false, s) >= 0) || !iterate(s)) return false;
+      if (certify(s)) return true;
+    }
+    if (!dual_simplex(s)) return false;
+    if (certify(s)) return true;
+  }
+  return false;
+}
+
+}  // namespace mb::lp::fast

@@ -1,0 +1,185 @@
+#pragma once
+// Simplex iterations: the primal loop (pricing, ratio test, update) and dual simplex steps.
+#include "lp/fast/simplex.h"
+
+namespace mb::lp::fast {
+
+// The basis position of the most negative weight (the first, on ties).
+template <int K>
+int FastSimplex<K>::most_negative() const {
+  int worst = 0;
+  double least = x_[0];
+  for (int i = 1; i < k_; ++i) {  // selects, not branches (they mispredicted: ~3 % of an LP)
+    const bool less = x_[i] < least;
+    least = less ? x_[i] : least;
+    worst = less ? i : worst;
+  }
+  return worst;
+}
+
+// The ratio test's step for column a without Harris' relaxation: min over u_i > kPivotTolerance
+// of max(x_i, 0) / u_i, u = B^-1 a as a fused chain over r from 0 (infinity when no u_i is). The
+// ratios are compared as products (x_i den < num u_i), so one division, not k: eight columns' k
+// divisions each made the search cost more than the pivots it saved at grid 1024.
+template <int K>
+double FastSimplex<K>::blocking_step(const double* a) const {
+  double num = std::numeric_limits<double>::infinity(), den = 1;
+  for (int i = 0; i < K; ++i) {
+    double u = 0;
+    for (int r = 0; r < K; ++r) u = std::fma(binv_[i][r], a[r], u);
+    const double x = std::max(x_[i], 0.0);
+    if (u > kPivotTolerance && x * den < num * u) num = x, den = u;
+  }
+  return num / den;
+}
+
+// One simplex run to optimality for the current phase. False on numerical failure.
+template <int K>
+bool FastSimplex<K>::iterate(Solution& s) {
+  int degenerate = 0;
+  // A node slides when the last two pivots left the same basis position, or the last one entered
+  // an end of the grid, where Dantzig's steepest column often lies and from where a node of small
+  // weight then walks back (slide_entering; the ends as a trigger: 0.94 -> 0.90 pivots an LP,
+  // power4, 256).
+  bool sliding = false;
+  int previous_leave = -1;
+  // Optimal bases are reached in ~20-40 pivots (measured on dataset fragments); a run past 1000
+  // is stalling on an ill-conditioned basis and goes to the fallback instead.
+  const int limit = std::min(20 * (n_ + k_), 1000);
+  for (int guard = 0; guard < limit; ++guard) {
+    if (updates_ >= refactor_interval() && !refactor()) return false;
+    bool bland = degenerate >= kDegenerateBeforeBland;
+    // The extra columns first (phase 2 only, after the first iteration: see enter_among_extras):
+    // only when none of them may enter does a full pass decide, so every run still ends with one,
+    // and optimality is never judged on the extras alone.
+    dual_values(y_);  // once per iteration, for the extras and the full pass alike
+    duals_fresh_ = true;
+    precise_duals_ = false;
+    const bool partial = phase_ == 2 && !bland && !retrying_;
+    int entering = partial && guard > 0 && !sliding ? enter_from_extras() : -1;
+    if (entering < 0) {
+      // Duals too large for the double certificate (|y| ~ 1e8: narrow kernels) are refined in
+      // double-double before the full pass, so that the precise certificate finds the reduced
+      // costs of its duals in place; it used to refine them itself and price again (~8 % of a
+      // warm LP: 44 % of the LPs need it, and most of them end after this pass).
+      if (phase_ == 2 && pricing_rounding(y_) > 0.1 * kCertifyBound) refine_duals_for_certificate();
+      reduced_costs();
+      // (Only when some column may enter at all: most warm LPs are optimal, and their smallest
+      // reduced cost is rounding, below zero but inside the tolerance.)
+      if (partial && guard == 0 && priced_smallest_ < -entering_tolerance())
+        entering = enter_among_extras();
+      if (entering < 0 && sliding && partial) entering = slide_entering();  // (not run's retry)
+      if (entering < 0) entering = choose_entering(bland);
+    }
+    if (entering < 0) return true;
+    double u[kMaxRows];
+    column_in_basis(entering, u);
+    const double theta = step(entering, u, bland, s);
+    if (!(theta >= 0)) return false;
+    // Near-zero steps count as degenerate too: Harris steps of 1e-18 can cycle as well.
+    degenerate = theta < 1e-12 ? degenerate + 1 : 0;
+    const int left = basic_position(entering);  // the position the step's leaving column held
+    sliding = left == previous_leave || entering == 0 || entering == g_ - 1;
+    previous_leave = left;
+  }
+  return false;
+}
+
+// One primal simplex step: `entering` (u = B^{-1} a_entering) comes in, the ratio test picks the
+// leaving row. The step length, or -1 when no row may leave (numerical failure).
+template <int K>
+double FastSimplex<K>::step(int entering, const double* u, bool bland, Solution& s) {
+  int leave = -1;
+  if (!bland) {
+    // Harris ratio test: a relaxed bound first, then the largest pivot within it.
+    // Selects, not branches (which rows block varies from pivot to pivot).
+    double theta_max = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < k_; ++i) {
+      const double ratio = (x_[i] + kFeasibilityTolerance) / u[i];
+      theta_max = u[i] > kPivotTolerance && ratio < theta_max ? ratio : theta_max;
+    }
+    if (!std::isfinite(theta_max)) return -1;  // unbounded: impossible with sum w = 1
+    const double limit = std::max(theta_max, 0.0);
+    double best_pivot = 0;
+    for (int i = 0; i < k_; ++i) {
+      const bool better = u[i] > kPivotTolerance && !(x_[i] / u[i] > limit) && u[i] > best_pivot;
+      leave = better ? i : leave;
+      best_pivot = better ? u[i] : best_pivot;
+    }
+  } else {
+    // Bland's rule needs the textbook ratio test (Harris' relaxation can cycle): the minimum
+    // ratio, ties to the smallest column index.
+    double best_ratio = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < k_; ++i) {
+      if (u[i] <= kPivotTolerance) continue;
+      double ratio = std::max(x_[i], 0.0) / u[i];
+      if (ratio < best_ratio || (ratio == best_ratio && leave >= 0 && basis_[i] < basis_[leave]))
+        leave = i, best_ratio = ratio;
+    }
+  }
+  if (leave < 0) return -1;
+  const double theta = std::max(x_[leave], 0.0) / u[leave];
+  for (int i = 0; i < k_; ++i) x_[i] -= theta * u[i];
+  x_[leave] = theta;
+  pivot(leave, entering, u);
+  ++s.iterations;
+  return theta;
+}
+
+// Dual simplex steps from a dual feasible but slightly primal infeasible basis, which
+// ill-conditioned instances (z^3, z^6 near z = 0) can end the primal phase with: the most
+// negative basic variable leaves, the entering column keeps every reduced cost >= 0. Every step
+// starts from a fresh inverse, since x_B is judged at 1e-12.
+template <int K>
+bool FastSimplex<K>::dual_simplex(Solution& s) {
+  alpha_.resize(n_);
+  for (int step = 0; step < 4 * k_ + 16; ++step) {
+    if (!refactor()) return false;
+    // x_B refined with double-double residuals, so that a weight the certificate found negative
+    // (it refines the same way) leaves here too: in double, cond(B) ~ 1e8 hides -1e-12.
+    refine_weights();
+    const int leave = most_negative();
+    if (!(x_[leave] < -kNegligibleWeight)) return true;
+    price();
+    // alpha_j = (B^{-1} A)_{leave, j}, stored negated: -alpha_j = 0 - row_leave . a_j.
+    subtract_row_combination(binv_[leave], nullptr, alpha_.data());
+    for (int i = 0; i < k_; ++i)
+      if (basis_[i] < n_) alpha_[basis_[i]] = 0;  // basic columns cannot enter
+    // Dual Harris ratio test: a relaxed bound on the step in the duals, then the largest
+    // |alpha| within it, so that the new basis stays well conditioned.
+    double alpha_max = 0;
+#pragma omp simd reduction(max : alpha_max)
+    for (int j = 0; j < n_; ++j) alpha_max = std::max(alpha_max, alpha_[j]);
+    const double pivot_floor = std::max(kPivotTolerance, 1e-7 * alpha_max);
+    double bound = std::numeric_limits<double>::infinity();
+    for (int j = 0; j < n_; ++j)
+      if (alpha_[j] > pivot_floor)
+        bound = std::min(bound, (reduced_[j] + kOptimalityTolerance) / alpha_[j]);
+    int entering = -1;
+    double best_alpha = 0;
+    for (int j = 0; j < n_; ++j)
+      if (alpha_[j] > pivot_floor && reduced_[j] / alpha_[j] <= bound && alpha_[j] > best_alpha)
+        entering = j, best_alpha = alpha_[j];
+    if (entering < 0) return false;
+    double u[kMaxRows];
+    column_in_basis(entering, u);
+    double theta = x_[leave] / u[leave];
+    for (int i = 0; i < k_; ++i) x_[i] -= theta * u[i];
+    x_[leave] = theta;
+    pivot(leave, entering, u);
+    ++s.iterations;
+  }
+  return false;
+}
+
+// One step of iterative refinement of x_B with a double-double residual (rhs - B x_B), rounded
+// back to double.
+template <int K>
+void FastSimplex<K>::refine_weights() {
+  DoubleDouble x[kMaxRows];
+  for (int i = 0; i < k_; ++i) x[i] = {x_[i], 0};
+  refine_precisely<false>(x, p_->rhs.data(), binv_);
+  for (int i = 0; i < k_; ++i) x_[i] = x[i].value();
+}
+
+}  // namespace mb::lp::fast
