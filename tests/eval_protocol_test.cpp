@@ -104,7 +104,9 @@ TEST(Protocol, ExactTechniquesNeverOverDarkenTheTinyDataset) {
       const Fragments& f = view.fragments;
       for (size_t k = 0; k < f.size(); ++k) {
         ASSERT_LE(f.oracle[k], f.pcf[k]) << reference_name(reference) << " fragment " << k;
-        if (reference == Reference::Biased) ASSERT_EQ(f.oracle[k], f.pcf[k]);
+        if (reference == Reference::Biased) {
+          ASSERT_EQ(f.oracle[k], f.pcf[k]);
+        }
         floor_sum += f.pcf[k] - f.oracle[k];
         ++fragments;
       }

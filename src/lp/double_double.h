@@ -39,7 +39,8 @@ inline DoubleDouble fast_two_sum(double a, double b) {
 // where a two-sum and a renormalisation were ~7 dependent ones (1.02x on lp_bench's warm rows at
 // grid 256, where the precise certificate's residuals are such chains).
 inline void add_product(DoubleDouble& acc, DoubleDouble b, double c) {
-  const double p = b.hi * c, e = std::fma(b.hi, c, -p) + b.lo * c;
+  // (Both FMAs explicit: the same bits whether or not the compiler contracts, as the lanes do.)
+  const double p = b.hi * c, e = std::fma(b.lo, c, std::fma(b.hi, c, -p));
   const DoubleDouble s = two_sum(acc.hi, p);
   acc = {s.hi, s.lo + acc.lo + e};
 }
@@ -68,7 +69,7 @@ inline long double to_long_double(double v) {
 #ifdef __AVX512F__
 // Eight double-doubles side by side, one a lane: the certificate's k <= 8 sums (rows of B x, or
 // positions of B^T y) at once. Every lane runs exactly the scalar functions' operations in their
-// order (FMA where the compiler contracts the scalar add_product), so each lane's result has the
+// order, FMAs included, so each lane's result has the
 // same bits as the scalar one: one sum at a time, the dependent chains of the two-sums were most
 // of the certificate's time.
 struct DoubleDouble8 {

@@ -2,6 +2,7 @@
 
 #include <tuple>
 
+#include "lp/fallback_backend.h"
 #include "lp/fast/bracket_shift.h"
 #include "lp/fast/certificates.h"
 #include "lp/fast/driver.h"
@@ -13,7 +14,6 @@
 #include "lp/fast/starts.h"
 #include "lp/fast/warm_start.h"
 #include "lp/glpk_backend.h"
-#include "lp/kkt_checker.h"
 #include "lp/row_count.h"
 #include "util/error.h"
 
@@ -22,8 +22,6 @@ namespace mb::lp {
 namespace {
 
 using fast::FastSimplex;
-using fast::kCertifyBound;
-using fast::kFallbackResidual;
 
 class FastBackend : public Backend {
  public:
@@ -50,32 +48,12 @@ class FastBackend : public Backend {
     with_row_count<kMaxRows>(p.rows,
                              [&](auto rows) { std::get<rows() - 1>(simplices_).run(p, at, s); });
     s.engine = Engine::Fast;  // `s` may hold an earlier fallback answer's tag
-    if (s.status != ProblemStatus::Unstable) return;
-    // The rare instance our simplex cannot certify goes to GLPK, and its answer is accepted only
-    // if the independent KKT checker certifies it, with its first-order error bound, and its
-    // weights reproduce the moments to double rounding. The bound alone is one-sided (see
-    // kCertifyResidual): GLPK's answer 1.2e-10 to an LP whose optimum is 2.0e-7 (a basis feasible
-    // and dual feasible in __float128) had a residual of 2e-12 and a bound of 5e-11. Otherwise
-    // the LP stays unstable.
-    if (!glpk_) glpk_ = make_glpk_backend();
-    Solution reference = glpk_->solve(p);
-    const KktReport check = check_kkt(p, reference, kCertifyBound);
-    if (reference.status == ProblemStatus::Optimal && check.ok &&
-        check.error_bound <= kCertifyBound && check.primal_residual <= kFallbackResidual) {
-      reference.iterations += s.iterations;
-      s = std::move(reference);
-      return;
-    }
-    // GLPK's "infeasible" is wrong by construction when a feasible distribution is known.
-    if (reference.status == ProblemStatus::Infeasible && p.start_support.empty())
-      s = std::move(reference);
   }
 
   // One simplex per row count (each keeps the warm bases of its own problems).
   std::tuple<FastSimplex<1>, FastSimplex<2>, FastSimplex<3>, FastSimplex<4>, FastSimplex<5>,
              FastSimplex<6>, FastSimplex<7>, FastSimplex<8>>
       simplices_;
-  std::unique_ptr<Backend> glpk_;
 };
 
 }  // namespace
@@ -94,6 +72,8 @@ const char* to_string(ProblemStatus status) {
       return "optimal";
     case ProblemStatus::Infeasible:
       return "infeasible";
+    case ProblemStatus::IterationLimit:
+      return "iteration_limit";
     case ProblemStatus::Unstable:
       return "unstable";
   }
@@ -105,7 +85,7 @@ std::vector<std::string> backend_names() {
 }
 
 std::unique_ptr<Backend> make_backend(const std::string& name) {
-  if (name == "fast") return make_fast_backend();
+  if (name == "fast") return make_fallback_backend(make_fast_backend());
   if (name == "glpk") return make_glpk_backend();
   throw InputError("unknown LP backend '" + name + "'; valid: fast, glpk");
 }

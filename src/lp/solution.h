@@ -9,7 +9,12 @@
 
 namespace mb::lp {
 
-enum class ProblemStatus { Optimal, Infeasible, Unstable };
+// Unstable: numerical trouble (no basis could be certified); IterationLimit: the simplex stopped at
+// its iteration limit (a stalling, ill-conditioned LP). Neither is an answer.
+enum class ProblemStatus { Optimal, Infeasible, IterationLimit, Unstable };
+// Every Optimal answer's G is within this of the LP's optimum (REFERENCE.md §2): the fast backend
+// proves it with a certificate, and accepts a GLPK answer only with the KKT checker's.
+constexpr double kCertifiedError = 1e-9;
 enum class CallStatus { Ok, Failed };
 const char* to_string(ProblemStatus status);
 

@@ -171,8 +171,10 @@ void BM_SolveRuns(benchmark::State& state, const std::string& backend, const std
       0;  // a hash of every G's bits in the last pass: equal across builds = the same answers
   // Each LP's ticks and pivots in the last pass: where the time goes (the tail_share counters).
   std::vector<std::pair<double, int>> costs;
+  double pass_sum = 0;  // sum of G in the last pass (builds that differ by rounding compare this)
   for (auto _ : state) {
     answers = 0;
+    pass_sum = 0;
     costs.clear();
     for (const auto& run : list)
       for (size_t i = 0; i < run.problems.size(); ++i) {
@@ -182,6 +184,7 @@ void BM_SolveRuns(benchmark::State& state, const std::string& backend, const std
         unstable += s.status != lp::ProblemStatus::Optimal;
         iterations += s.iterations;
         checksum += s.G;
+        pass_sum += s.G;
         answers = answers * 1099511628211ull ^ std::bit_cast<uint64_t>(s.G);
         ++solved;
       }
@@ -192,6 +195,7 @@ void BM_SolveRuns(benchmark::State& state, const std::string& backend, const std
   state.counters["pivots"] = double(iterations) / double(solved);
   state.counters["not_optimal"] = double(unstable) / double(solved);
   state.counters["lps_per_pass"] = double(solved) / double(state.iterations());
+  state.counters["g_sum"] = pass_sum;
   state.counters["answers"] =
       double(answers >> 12);  // exact in a double (52 bits); compare with --benchmark_format=json
   // The share of the last pass's solve time in its slowest 5 % of LPs, and in the LPs that took

@@ -280,27 +280,9 @@ bool FastSimplex<K>::precise_bound(const DoubleDouble* x, const DoubleDouble* y,
     if (basis_[i] < n_) judge(basis_[i], basic_reduced[i]);
   const BasicColumnsHidden hidden(*this, std::numeric_limits<double>::infinity());
   const double* reduced = reduced_.data();
-  int j = any_below(reduced, n_, suspect_below) ? 0 : n_;
   auto judge_precisely = [&](int column) { judge(column, precise_reduced_cost(column, y)); };
-#ifdef __AVX512F__
-  // Eight at a time, masked at the end, skipping blocks without a suspect.
-  const __m512d threshold = _mm512_set1_pd(suspect_below);
-  for (; j < n_; j += 8) {
-    const __mmask8 live = lanes_below(n_, j);
-    unsigned mask = _mm512_mask_cmp_pd_mask(live, _mm512_maskz_loadu_pd(live, reduced + j),
-                                            threshold, _CMP_NGE_UQ);
-    for (; mask; mask &= mask - 1) judge_precisely(j + __builtin_ctz(mask));
-  }
-#elif defined(__AVX__)
-  // Four at a time, skipping blocks without a suspect (a branch per column was ~20 % of this).
-  const __m256d below = _mm256_set1_pd(suspect_below);
-  for (; j + 4 <= n_; j += 4) {
-    int mask = _mm256_movemask_pd(_mm256_cmp_pd(_mm256_loadu_pd(reduced + j), below, _CMP_NGE_UQ));
-    for (; mask; mask &= mask - 1) judge_precisely(j + __builtin_ctz(mask));
-  }
-#endif
-  for (; j < n_; ++j)
-    if (!(reduced[j] >= suspect_below)) judge_precisely(j);
+  if (lanes::any_below(reduced, n_, suspect_below))
+    lanes::for_each_below(reduced, n_, suspect_below, judge_precisely);
   if (!(bound + infeasibility <= kCertifyBound)) {
     // Dual infeasible beyond the budget: the most negative column, unless basic (rounding).
     if (infeasibility > 0 && !is_basic(most_negative_column))

@@ -38,7 +38,7 @@ void FastSimplex<K>::run(const Problem& p, const WarmPosition* at, Solution& s) 
   s.reset();
   at_ = at;
   solve(p, offers, s);
-  if (s.status == ProblemStatus::Unstable) {
+  if (s.status == ProblemStatus::Unstable || s.status == ProblemStatus::IterationLimit) {
     // Once more from scratch with Dantzig's rule over every column (no slide_entering either): a
     // narrow kernel's LP (|y| ~ 1e6) that failed every start with the extras priced first (one
     // LP in a power4 sweep of the default dataset;
@@ -62,6 +62,7 @@ void FastSimplex<K>::run(const Problem& p, const WarmPosition* at, Solution& s) 
 // Into `s`, fresh (reset).
 template <int K>
 void FastSimplex<K>::solve(const Problem& p, WarmOffers& warm, Solution& s) {
+  iteration_limit_ = false;
   p_ = &p;
   priced_phase_ = -1;  // reduced_ belongs to the previous problem
   duals_fresh_ = false;
@@ -101,19 +102,7 @@ void FastSimplex<K>::solve(const Problem& p, WarmOffers& warm, Solution& s) {
               cost_.begin() + std::max(in_front, costed_front_), ones ? 1.0 : 0.0);
   }
   costed_front_ = in_front;
-#ifdef __AVX512F__
-  {
-    const __m512d zf = _mm512_set1_pd(p.zf), one = _mm512_set1_pd(1.0), zero = _mm512_setzero_pd();
-    for (int e = 0; e < e_; e += 8) {
-      const __mmask8 live = lanes_below(e_, e);
-      const __mmask8 front = _mm512_mask_cmp_pd_mask(
-          live, _mm512_maskz_loadu_pd(live, extra_points_ + e), zf, _CMP_LT_OQ);
-      _mm512_mask_storeu_pd(cost_.data() + g_ + e, live, _mm512_mask_blend_pd(front, zero, one));
-    }
-  }
-#else
-  for (int e = 0; e < e_; ++e) cost_[g_ + e] = p.extra.points[e] < p.zf ? 1.0 : 0.0;
-#endif
+  lanes::front_costs(extra_points_, e_, p.zf, cost_.data() + g_);
   composite_cost_ = std::numeric_limits<double>::quiet_NaN();  // cost() computes it if asked
 
   if (warm.usable > 0) {
@@ -163,8 +152,8 @@ bool FastSimplex<K>::repair_with_composite(Solution& s) {
 }
 
 template <int K>
-void FastSimplex<K>::unstable(Solution& s) {
-  s.status = ProblemStatus::Unstable;
+void FastSimplex<K>::unstable(Solution& s) const {
+  s.status = iteration_limit_ ? ProblemStatus::IterationLimit : ProblemStatus::Unstable;
 }
 
 // Phase 2, then certification; a failed certificate resumes from the accurate basis. One that

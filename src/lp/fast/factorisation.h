@@ -27,12 +27,12 @@ bool FastSimplex<K>::update_factors(const BasisState& factors) {
   int changed[kMaxRows], count = 0;
   for (int i = 0; i < k_; ++i) {
     load_column(basis_[i], a[i]);
-    if (!same_row<K>(a[i], factors.basic[i])) changed[count++] = i;
+    if (!lanes::same_row<K>(a[i], factors.basic[i])) changed[count++] = i;
   }
   if (count > kChangedColumns || factors.updates + count > refactor_interval()) return false;
   for (int i = 0; i < k_; ++i) {
-    copy_row<K>(factors.binv[i], binv_[i]);
-    copy_row<K>(factors.basic[i], basic_[i]);
+    lanes::copy_row<K>(factors.binv[i], binv_[i]);
+    lanes::copy_row<K>(factors.basic[i], basic_[i]);
   }
   updates_ = factors.updates;
   duals_fresh_ = false;
@@ -50,10 +50,10 @@ bool FastSimplex<K>::update_factors(const BasisState& factors) {
 template <int K>
 void FastSimplex<K>::save_basis(BasisState& to) const {
   std::copy(basis_, basis_ + k_, to.basis);
-  copy_row<K>(x_, to.x);
+  lanes::copy_row<K>(x_, to.x);
   for (int i = 0; i < k_; ++i) {
-    copy_row<K>(binv_[i], to.binv[i]);
-    copy_row<K>(basic_[i], to.basic[i]);
+    lanes::copy_row<K>(binv_[i], to.binv[i]);
+    lanes::copy_row<K>(basic_[i], to.basic[i]);
   }
   to.updates = updates_;
 }
@@ -61,10 +61,10 @@ void FastSimplex<K>::save_basis(BasisState& to) const {
 template <int K>
 void FastSimplex<K>::restore_basis(const BasisState& from) {
   std::copy(from.basis, from.basis + k_, basis_);
-  copy_row<K>(from.x, x_);
+  lanes::copy_row<K>(from.x, x_);
   for (int i = 0; i < k_; ++i) {
-    copy_row<K>(from.binv[i], binv_[i]);
-    copy_row<K>(from.basic[i], basic_[i]);
+    lanes::copy_row<K>(from.binv[i], binv_[i]);
+    lanes::copy_row<K>(from.basic[i], basic_[i]);
   }
   updates_ = from.updates;
   duals_fresh_ = false;
@@ -190,25 +190,7 @@ bool FastSimplex<K>::stable_pivot(const double* u, int i) const {
 template <int K>
 void FastSimplex<K>::pivot(int leave, int entering, const double* u) {
   const double reciprocal = 1 / u[leave];  // one division, not k (8.8 exchanges and pivots an LP)
-#ifdef __AVX512F__
-  // A row of B^-1 a vector: one multiply-add a row, rows left alone masked, not branched (the
-  // scalar loops, with a branch a row, were ~3 % of the solver's samples). The same bits: the
-  // compiler contracts the scalar update into the same fused multiply-add.
-  const __m512d pivot_row =
-      _mm512_mul_pd(_mm512_maskz_loadu_pd(kLanes, binv_[leave]), _mm512_set1_pd(reciprocal));
-  _mm512_mask_storeu_pd(binv_[leave], kLanes, pivot_row);
-  for (int i = 0; i < K; ++i) {
-    const __mmask8 update = i == leave || u[i] == 0 ? 0 : kLanes;
-    const __m512d row = _mm512_maskz_loadu_pd(kLanes, binv_[i]);
-    _mm512_mask_storeu_pd(binv_[i], update, _mm512_fnmadd_pd(_mm512_set1_pd(u[i]), pivot_row, row));
-  }
-#else
-  for (int r = 0; r < k_; ++r) binv_[leave][r] *= reciprocal;
-  for (int i = 0; i < k_; ++i) {
-    if (i == leave || u[i] == 0) continue;
-    for (int r = 0; r < k_; ++r) binv_[i][r] -= u[i] * binv_[leave][r];
-  }
-#endif
+  lanes::update_inverse<K>(binv_, leave, u, reciprocal);
   basis_[leave] = entering;
   load_column(entering, basic_[leave]);
   ++updates_;

@@ -17,22 +17,6 @@ int FastSimplex<K>::most_negative() const {
   return worst;
 }
 
-// The ratio test's step for column a without Harris' relaxation: min over u_i > kPivotTolerance
-// of max(x_i, 0) / u_i, u = B^-1 a as a fused chain over r from 0 (infinity when no u_i is). The
-// ratios are compared as products (x_i den < num u_i), so one division, not k: eight columns' k
-// divisions each made the search cost more than the pivots it saved at grid 1024.
-template <int K>
-double FastSimplex<K>::blocking_step(const double* a) const {
-  double num = std::numeric_limits<double>::infinity(), den = 1;
-  for (int i = 0; i < K; ++i) {
-    double u = 0;
-    for (int r = 0; r < K; ++r) u = std::fma(binv_[i][r], a[r], u);
-    const double x = std::max(x_[i], 0.0);
-    if (u > kPivotTolerance && x * den < num * u) num = x, den = u;
-  }
-  return num / den;
-}
-
 // One simplex run to optimality for the current phase. False on numerical failure.
 template <int K>
 bool FastSimplex<K>::iterate(Solution& s) {
@@ -82,6 +66,7 @@ bool FastSimplex<K>::iterate(Solution& s) {
     sliding = left == previous_leave || entering == 0 || entering == g_ - 1;
     previous_leave = left;
   }
+  iteration_limit_ = true;
   return false;
 }
 

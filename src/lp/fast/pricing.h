@@ -40,20 +40,10 @@ bool FastSimplex<K>::priced_with(const double* y) const {
 template <int K>
 double FastSimplex<K>::subtract_row_combination(const double* w, const double* base,
                                                 double* out) const {
-#ifdef __AVX512F__
-  __m512d weight[K], low = _mm512_setzero_pd();
-  for (int r = 0; r < K; ++r) weight[r] = _mm512_set1_pd(w[r]);
-  combine_masked<K>(weight, p_->grid->values.data(), g_, base, out, g_, low, grid_first_row_);
-  combine_masked<K>(weight, p_->extra.values.data(), e_, base ? base + g_ : nullptr, out + g_, e_,
-                    low);
-  return smallest_lane(low);
-#endif
-  const double* rows[K];
-  for (int r = 0; r < K; ++r) rows[r] = p_->grid->values.data() + size_t(r) * g_;
-  const double grid_smallest = combine_block<K>(w, rows, base, out, g_);
-  for (int r = 0; r < K; ++r)
-    rows[r] = p_->extra.values.data() + size_t(r) * e_;  // data(): the block may be empty
-  const double extra_smallest = combine_block<K>(w, rows, base ? base + g_ : nullptr, out + g_, e_);
+  const double grid_smallest =
+      lanes::combine<K>(w, p_->grid->values.data(), g_, base, out, g_, grid_first_row_);
+  const double extra_smallest =
+      lanes::combine<K>(w, p_->extra.values.data(), e_, base ? base + g_ : nullptr, out + g_, e_);
   return extra_smallest < grid_smallest ? extra_smallest : grid_smallest;
 }
 
@@ -81,14 +71,14 @@ int FastSimplex<K>::choose_entering(bool bland) {
   // before it with that value, so excluding the basic ones would find the same).
   if (!(priced_smallest_ < -tolerance)) return -1;
   {
-    const int first = first_holding(reduced_.data(), n_, priced_smallest_);
+    const int first = lanes::first_holding(reduced_.data(), n_, priced_smallest_);
     if (first >= 0 && !is_basic(first)) return first;
   }
   // Basic columns out of the race, then a vectorised minimum and the first index holding it.
   const BasicColumnsHidden hidden(*this);
   const double* d = reduced_.data();
-  const double smallest = smallest_of(d, n_);
-  return smallest < -tolerance ? first_holding(d, n_, smallest) : -1;
+  const double smallest = lanes::smallest_of(d, n_);
+  return smallest < -tolerance ? lanes::first_holding(d, n_, smallest) : -1;
 }
 
 // Greatest decrease for a node that slides. When a basis position loses the column that had just
@@ -106,71 +96,14 @@ int FastSimplex<K>::slide_entering() {
   const double tolerance = entering_tolerance();
   const BasicColumnsHidden hidden(*this);
   int chosen = -1;
-#ifdef __AVX512F__
-  __m512d best = _mm512_setzero_pd();
-  __m512i index = _mm512_set1_epi64(-1);
-  greatest_decrease(p_->grid->values.data(), g_, 0, g_, tolerance, best, index);
-  greatest_decrease(p_->extra.values.data(), e_, g_, e_, tolerance, best, index);
-  chosen = first_least_lane(best, index);
-#else
-  double best = 0;
-  auto judge = [&](const double* values, size_t stride, int offset, int n) {
-    for (int j = 0; j < n; ++j) {
-      const double d = reduced_[offset + j];
-      if (!(d < -tolerance)) continue;
-      double a[kMaxRows];
-      for (int r = 0; r < K; ++r) a[r] = values[r * stride + j];
-      const double theta = blocking_step(a);
-      if (!(theta < std::numeric_limits<double>::infinity())) continue;
-      if (d * theta < best) best = d * theta, chosen = offset + j;
-    }
-  };
-  judge(p_->grid->values.data(), g_, 0, g_);
-  judge(p_->extra.values.data(), e_, g_, e_);
-#endif
+  double best = 0, weight[kMaxRows];
+  for (int i = 0; i < K; ++i) weight[i] = std::max(x_[i], 0.0);
+  lanes::greatest_decrease<K>(binv_, weight, p_->grid->values.data(), g_, reduced_.data(), 0, g_,
+                              tolerance, kPivotTolerance, best, chosen);
+  lanes::greatest_decrease<K>(binv_, weight, p_->extra.values.data(), e_, reduced_.data() + g_, g_,
+                              e_, tolerance, kPivotTolerance, best, chosen);
   return chosen;
 }
-
-#ifdef __AVX512F__
-// slide_entering's search over one column block (rows `stride` apart, reduced costs from
-// reduced_[offset]), eight columns at a time in the same chains as blocking_step; each lane
-// keeps its first strict least d_j theta_j (below 0) and its column.
-template <int K>
-void FastSimplex<K>::greatest_decrease(const double* values, size_t stride, int offset, int n,
-                                       double tolerance, __m512d& best, __m512i& index) const {
-  const __m512d limit = _mm512_set1_pd(-tolerance);
-  const __m512d pivot_tolerance = _mm512_set1_pd(kPivotTolerance);
-  const __m512d infinity = _mm512_set1_pd(std::numeric_limits<double>::infinity());
-  __m512d weight[K];
-  for (int i = 0; i < K; ++i) weight[i] = _mm512_set1_pd(std::max(x_[i], 0.0));
-  const __m512i lane = _mm512_set_epi64(7, 6, 5, 4, 3, 2, 1, 0);
-  for (int j = 0; j < n; j += 8) {
-    const __mmask8 live = lanes_below(n, j);
-    const __m512d d = _mm512_maskz_loadu_pd(live, reduced_.data() + offset + j);
-    const __mmask8 entering = _mm512_mask_cmp_pd_mask(live, d, limit, _CMP_LT_OQ);
-    if (!entering) continue;
-    __m512d a[K];
-    for (int r = 0; r < K; ++r) a[r] = _mm512_maskz_loadu_pd(entering, values + r * stride + j);
-    __m512d num = infinity, den = _mm512_set1_pd(1);
-    for (int i = 0; i < K; ++i) {
-      __m512d u = _mm512_setzero_pd();
-      for (int r = 0; r < K; ++r) u = _mm512_fmadd_pd(_mm512_set1_pd(binv_[i][r]), a[r], u);
-      const __mmask8 blocks = _mm512_mask_cmp_pd_mask(entering, u, pivot_tolerance, _CMP_GT_OQ);
-      const __m512d candidate = _mm512_mul_pd(weight[i], den), current = _mm512_mul_pd(num, u);
-      const __mmask8 less = _mm512_mask_cmp_pd_mask(blocks, candidate, current, _CMP_LT_OQ);
-      num = _mm512_mask_mov_pd(num, less, weight[i]);
-      den = _mm512_mask_mov_pd(den, less, u);
-    }
-    const __m512d theta = _mm512_maskz_div_pd(entering, num, den);
-    const __mmask8 finite = _mm512_mask_cmp_pd_mask(entering, theta, infinity, _CMP_LT_OQ);
-    const __m512d decrease = _mm512_mul_pd(d, theta);
-    const __mmask8 better = _mm512_mask_cmp_pd_mask(finite, decrease, best, _CMP_LT_OQ);
-    best = _mm512_mask_mov_pd(best, better, decrease);
-    const __m512i column = _mm512_add_epi64(_mm512_set1_epi64(offset + j), lane);
-    index = _mm512_mask_mov_epi64(index, better, column);
-  }
-}
-#endif
 
 // Partial pricing over the extra columns (the kernel's depths and z_f, which REFERENCE.md §2 adds
 // to the grid): Dantzig among them first, and a full pass only when none of them may enter, so
@@ -186,19 +119,8 @@ void FastSimplex<K>::greatest_decrease(const double* values, size_t stride, int 
 template <int K>
 int FastSimplex<K>::enter_from_extras() {
   priced_phase_ = -1;
-#ifdef __AVX512F__
-  {
-    __m512d weight[K], low = _mm512_setzero_pd();
-    for (int r = 0; r < K; ++r) weight[r] = _mm512_set1_pd(y_[r]);
-    combine_masked<K>(weight, p_->extra.values.data(), e_, cost_.data() + g_, reduced_.data() + g_,
-                      e_, low);
-    return extra_holding(smallest_lane(low));
-  }
-#endif
-  const double* rows[K];
-  for (int r = 0; r < K; ++r)
-    rows[r] = p_->extra.values.data() + size_t(r) * e_;  // data(): the block may be empty
-  return extra_holding(combine_block<K>(y_, rows, cost_.data() + g_, reduced_.data() + g_, e_));
+  return extra_holding(lanes::combine<K>(y_, p_->extra.values.data(), e_, cost_.data() + g_,
+                                         reduced_.data() + g_, e_));
 }
 
 // The same choice from reduced_ fresh from a full pass (no arithmetic, the same bits): the first
@@ -206,7 +128,7 @@ int FastSimplex<K>::enter_from_extras() {
 // (84 % of lp_bench's LPs need no pivot) and then a pass over the extras alone was wasted.
 template <int K>
 int FastSimplex<K>::enter_among_extras() const {
-  return extra_holding(smallest_of(reduced_.data() + g_, e_));
+  return extra_holding(lanes::smallest_of(reduced_.data() + g_, e_));
 }
 
 // Dantzig's choice among the extra columns (reduced_ fresh on them), `smallest` their least
@@ -215,7 +137,7 @@ int FastSimplex<K>::enter_among_extras() const {
 template <int K>
 int FastSimplex<K>::extra_holding(double smallest) const {
   if (!(smallest < -entering_tolerance())) return -1;
-  const int first = g_ + first_holding(reduced_.data() + g_, e_, smallest);
+  const int first = g_ + lanes::first_holding(reduced_.data() + g_, e_, smallest);
   return is_basic(first) ? -1 : first;
 }
 

@@ -38,51 +38,7 @@ void FastSimplex<K>::correct_precisely(DoubleDouble* v, const double* misfit,
 template <int K>
 template <bool Transposed>
 void FastSimplex<K>::misfit_of(const DoubleDouble* v, const double* target, double* misfit) const {
-#ifdef __AVX512F__
-  // As the lanes of one vector: rows of B v from B's columns (basic_[i]), or positions of B^T v
-  // from its rows.
-  DoubleDouble8 sum{_mm512_maskz_loadu_pd(kLanes, target)};
-  if constexpr (Transposed) {
-    __m512d row[K];
-    basic_rows(row);
-    for (int r = 0; r < K; ++r) add_product(sum, v[r], negated(row[r]));
-  } else {
-    for (int i = 0; i < K; ++i)
-      add_product(sum, v[i], negated(_mm512_maskz_loadu_pd(kLanes, basic_[i])));
-  }
-  _mm512_mask_storeu_pd(misfit, kLanes, value(sum));
-#else
-  DoubleDouble sum[kMaxRows];
-  for (int q = 0; q < k_; ++q) sum[q] = {target[q], 0};
-  if constexpr (Transposed) {
-    for (int r = 0; r < k_; ++r)
-      for (int i = 0; i < k_; ++i) add_product(sum[i], v[r], -basic_[i][r]);
-  } else {
-    for (int i = 0; i < k_; ++i)
-      for (int r = 0; r < k_; ++r) add_product(sum[r], v[i], -basic_[i][r]);
-  }
-  for (int q = 0; q < k_; ++q) misfit[q] = sum[q].value();
-#endif
+  lanes::misfit<K, Transposed>(basic_, v, target, misfit);
 }
-
-#ifdef __AVX512F__
-// row[r] = (basic_[0][r], ..., basic_[k-1][r]): row r of B, one lane a basis position.
-template <int K>
-void FastSimplex<K>::basic_rows(__m512d (&row)[K]) const {
-  static_assert(kMaxRows == 8, "basic_[i][r] lies 8 doubles after basic_[i - 1][r]");
-  const __m512i position = _mm512_set_epi64(56, 48, 40, 32, 24, 16, 8, 0);
-  for (int r = 0; r < K; ++r)
-    row[r] = _mm512_mask_i64gather_pd(_mm512_setzero_pd(), kLanes, position, &basic_[0][r], 8);
-}
-#endif
-
-#ifdef __AVX512F__
-// -v exactly (the sign bit flipped, as the scalar unary minus).
-template <int K>
-__m512d FastSimplex<K>::negated(__m512d v) {
-  return _mm512_castsi512_pd(
-      _mm512_xor_si512(_mm512_castpd_si512(v), _mm512_set1_epi64(int64_t(1) << 63)));
-}
-#endif
 
 }  // namespace mb::lp::fast

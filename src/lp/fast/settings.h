@@ -1,6 +1,7 @@
 #pragma once
 // The fast simplex's tolerances and limits, each with its reason (REFERENCE.md §2).
 #include "lp/fast_backend.h"
+#include "lp/solution.h"
 
 namespace mb::lp::fast {
 
@@ -8,11 +9,11 @@ namespace mb::lp::fast {
 // orthonormal, so absolute tolerances are meaningful. By weak duality with sum w = 1, a basis
 // whose reduced costs are >= -eps is within eps of the optimum: the certificate's 1e-11 keeps G
 // two orders inside the promised 1e-9.
-constexpr double kFeasibilityTolerance = 1e-11;  // Harris: x_B >= -tol during iterations
-constexpr double kOptimalityTolerance = 1e-11;   // reduced cost >= -tol counts as optimal
-constexpr double kPivotTolerance = 1e-9;         // smallest |u_i| accepted as a pivot
-constexpr double kPhase1Tolerance = 1e-10;       // residual artificial mass that means infeasible
-constexpr double kCertifyBound = 1e-9;           // certified bound on |G - G*| (see certify)
+constexpr double kFeasibilityTolerance = 1e-11;    // Harris: x_B >= -tol during iterations
+constexpr double kOptimalityTolerance = 1e-11;     // reduced cost >= -tol counts as optimal
+constexpr double kPivotTolerance = 1e-9;           // smallest |u_i| accepted as a pivot
+constexpr double kPhase1Tolerance = 1e-10;         // residual artificial mass that means infeasible
+constexpr double kCertifyBound = kCertifiedError;  // certified bound on |G - G*| (see certify)
 // Largest |B max(x_B, 0) - rhs| a certificate accepts. The bound's |y| * residual term alone is not
 // enough: it bounds how far G lies *above* the optimum (weak duality), but only a (nearly)
 // feasible x_B bounds it from below, and with y = 0 (every basic point behind z_f) the term
@@ -26,8 +27,6 @@ constexpr double kCertifyResidual = 1e-12;
 // default dataset). Double-double leaves weights that are exactly zero at ~cond(B) 1e-32, far
 // inside this.
 constexpr double kNegligibleWeight = 1e-18;
-// The residual a GLPK fallback answer may leave (its weights, rounded to double, leave ~1e-16).
-constexpr double kFallbackResidual = 1e-14;
 // Rank-1 updates between fresh inverses. The updates carry over from LP to LP in the left texel's
 // factors, and the certificates refine x_B and y against B itself. 32 instead of 16 (with
 // kChangedColumns 3 instead of 2): 0.36 instead of 0.46 factorisations an LP on lp_bench's warm

@@ -72,7 +72,7 @@ class FastSimplex {
   void solve(const Problem& p, WarmOffers& warm, Solution& s);
   static void start_over(Solution& s);
   bool repair_with_composite(Solution& s);
-  static void unstable(Solution& s);
+  void unstable(Solution& s) const;
   bool solve_phase2(Solution& s);
 
   // starts.h: cold starts (artificials for phase 1, the composite column)
@@ -82,7 +82,6 @@ class FastSimplex {
 
   // iterations.h: primal simplex (pricing -> ratio test -> update), dual simplex
   int most_negative() const;
-  double blocking_step(const double* a) const;
   bool iterate(Solution& s);
   double step(int entering, const double* u, bool bland, Solution& s);
   bool dual_simplex(Solution& s);
@@ -96,10 +95,6 @@ class FastSimplex {
   double entering_tolerance() const;
   int choose_entering(bool bland);
   int slide_entering();
-#ifdef __AVX512F__
-  void greatest_decrease(const double* values, size_t stride, int offset, int n, double tolerance,
-                         __m512d& best, __m512i& index) const;
-#endif
   int enter_from_extras();
   int enter_among_extras() const;
   int extra_holding(double smallest) const;
@@ -146,10 +141,6 @@ class FastSimplex {
   void correct_precisely(DoubleDouble* v, const double* misfit, const Inverse& inverse) const;
   template <bool Transposed>
   void misfit_of(const DoubleDouble* v, const double* target, double* misfit) const;
-#ifdef __AVX512F__
-  void basic_rows(__m512d (&row)[K]) const;
-  static __m512d negated(__m512d v);
-#endif
 
   // warm_start.h: a previous fragment's basis mapped onto this problem
   double remember_basis(const Solution& s, WarmBasis& warm);
@@ -162,7 +153,6 @@ class FastSimplex {
   // bracket_shift.h: bracket shifts that repair a warm basis
   bool shift_bracket(int i);
   bool bracket_node(int i, int partner, double direction, const double* points);
-  double fused_dot(const double* v, int j) const;
   int grid_beyond(double from, double direction, int column) const;
   int first_sign_change(const double* v, int g, int step, double limit) const;
   template <int Q>
@@ -172,10 +162,6 @@ class FastSimplex {
   void basic_points(double (&out)[kMaxRows]) const;
 
  private:
-#ifdef __AVX512F__
-  static constexpr __mmask8 kLanes = __mmask8((1u << K) - 1);  // one lane a row or basis position
-#endif
-
   const Problem* p_ = nullptr;
   const WarmPosition* at_ = nullptr;  // where the problem being solved sits (run), or null
   static constexpr int k_ = K;
@@ -196,6 +182,9 @@ class FastSimplex {
   // run's retry from scratch: no partial pricing over the extra columns (iterate), and fresh
   // inverses every kCarefulRefactorInterval updates.
   bool retrying_ = false;
+  // An attempt of this solve ran out of iterations (iterate): a failure is then reported as
+  // ProblemStatus::IterationLimit rather than Unstable.
+  bool iteration_limit_ = false;
   int kernel_side_ = 0;   // taps a side of the problem's square kernel, 0: not square (texel_tap)
   int kernel_taps_ = -1;  // the taps kernel_side_, tap_column_ and tap_row_ are for
   std::vector<int> tap_column_, tap_row_;
@@ -211,7 +200,7 @@ class FastSimplex {
   // The grid whose costs cost_[0, g_) holds, ones up to costed_front_ (solve).
   std::shared_ptr<const ColumnBlock> costed_grid_;
   int costed_front_ = 0;
-  // The value of every entry of that grid's first row, or NaN when they differ (combine_masked).
+  // The value of every entry of that grid's first row, or NaN when they differ (lanes::combine).
   double grid_first_row_ = std::numeric_limits<double>::quiet_NaN();
   WarmBasis lanes_[kWarmLanes];          // by layer: the texel to the left
   BasisState lane_factors_[kWarmLanes];  // their inverses (update_factors)

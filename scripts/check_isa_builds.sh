@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# The LP engine's answers must not depend on the instruction set (src/lp/fast/lanes.h). Builds
+# lp_bench for other -march targets and compares its four warm rows with NATIVE_BUILD's:
+#  - x86-64-v3 (AVX2 + FMA): the same answers hash, bit for bit, and the same pivots;
+#  - x86-64 (SSE2, no FMA): the compiler cannot contract a * b + c into one rounding as the other
+#    builds do, so single LPs differ in the last bits; every answer is still certified to 1e-9
+#    (REFERENCE.md §2), so the sums of G must agree to 2e-9 per LP, with no LP left unsolved.
+#   bash scripts/check_isa_builds.sh [NATIVE_BUILD] [WORK_DIR]   (defaults build/release, build/isa)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+native=${1:-build/release}
+work=${2:-build/isa}
+python=/usr/bin/python3
+jobs=$(nproc)
+
+rows() {  # BINARY -> "row answers pivots g_sum lps not_optimal" lines
+  "$1" --benchmark_filter='SolveRuns/fast_warm' --benchmark_min_time=0.01 --benchmark_repetitions=1 \
+      --benchmark_format=json 2>/dev/null |
+    "$python" -c 'import json, sys
+for b in json.load(sys.stdin)["benchmarks"]:
+    print(b["name"].split("/")[1], "%d" % b["answers"], repr(b["pivots"]), repr(b["g_sum"]),
+          "%d" % b["lps_per_pass"], repr(b["not_optimal"]))'
+}
+
+[[ -x $native/tests/bench/lp_bench ]] || { echo "no $native/tests/bench/lp_bench: build first" >&2; exit 2; }
+mkdir -p "$work"
+rows "$native/tests/bench/lp_bench" >"$work/native.txt"
+status=0
+for target in x86-64-v3 x86-64; do
+  dir=$work/$target
+  cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release -DMOMENTBENCH_NATIVE=OFF \
+      -DMOMENTBENCH_MARCH="$target" >/dev/null
+  cmake --build "$dir" -j"$jobs" --target lp_bench >"$dir.log" 2>&1 || { tail -20 "$dir.log"; exit 1; }
+  rows "$dir/tests/bench/lp_bench" >"$dir.txt"
+  "$python" - "$work/native.txt" "$dir.txt" "$target" <<'PY' || status=1
+import sys
+native = {l.split()[0]: l.split() for l in open(sys.argv[1])}
+other = {l.split()[0]: l.split() for l in open(sys.argv[2])}
+target, ok = sys.argv[3], True
+for row, n in sorted(native.items()):
+    o = other[row]
+    if target == "x86-64-v3":
+        same = o[1] == n[1] and o[2] == n[2]
+        print("%-10s %-24s answers %s vs native %s, pivots %s vs %s: %s" % (
+            target, row, o[1], n[1], o[2], n[2], "same" if same else "DIFFERENT"))
+    else:
+        lps = int(n[4])
+        gap = abs(float(o[3]) - float(n[3]))
+        same = gap <= 2e-9 * lps and float(o[5]) == 0 and float(n[5]) == 0
+        print("%-10s %-24s sum of G differs by %.3g over %d LPs (allowed %.3g), unsolved %s: %s" % (
+            target, row, gap, lps, 2e-9 * lps, o[5], "agrees" if same else "DISAGREES"))
+    ok &= same
+sys.exit(0 if ok else 1)
+PY
+done
+exit $status
