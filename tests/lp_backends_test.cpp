@@ -7,6 +7,8 @@
 
 #include "eval/evaluation.h"
 #include "eval/lp_technique.h"
+#include "lp/fallback_backend.h"
+#include "lp/fast_backend.h"
 #include "lp/kkt_checker.h"
 #include "lp/problem.h"
 #include "lp/solution.h"
@@ -437,6 +439,41 @@ TEST(LpWarmStart, MappingByTexelNeedsFewerPivotsThanBySameOffset) {
   std::printf("%d LPs: %.2f pivots an LP by texel, %.2f by the same offset\n", solved,
               double(texel_pivots) / solved, double(offset_pivots) / solved);
   EXPECT_LT(texel_pivots, offset_pivots);
+}
+
+}  // namespace
+}  // namespace mb::lp
+
+namespace mb::lp {
+namespace {
+
+// A simplex held to one pivot a run stops at its iteration limit, says so (not "unstable"), and
+// the fallback then answers with GLPK's certified optimum, tagged as GLPK's; the default settings
+// answer the same LP themselves.
+TEST(LpFastBackend, IterationLimitIsReportedAndTheFallbackAnswers) {
+  const Basis basis = Basis::parse({"z", "z^2", "z^3", "z^4"});
+  const Discretization disc{0, 1, 256, false};
+  const std::vector<double> depths{0.2, 0.35, 0.5, 0.8}, weights{0.1, 0.4, 0.3, 0.2};
+  // From its moments alone (no known distribution): phase 1 from artificials needs k pivots.
+  std::vector<double> moments(4, 0.0);
+  for (size_t i = 0; i < depths.size(); ++i)
+    for (int j = 0; j < 4; ++j) moments[j] += weights[i] * std::pow(depths[i], j + 1);
+  const Problem p = make_problem(basis, disc, moments, 0.6);
+
+  const Solution exact = make_fast_backend()->solve(p);
+  ASSERT_EQ(exact.status, ProblemStatus::Optimal);
+  EXPECT_EQ(exact.engine, Engine::Fast);
+  EXPECT_GT(exact.iterations, 1);
+
+  fast::SimplexSettings held;
+  held.max_iterations = 1;
+  const Solution stopped = make_fast_backend(held)->solve(p);
+  EXPECT_EQ(stopped.status, ProblemStatus::IterationLimit) << to_string(stopped.status);
+
+  const Solution rescued = make_fallback_backend(make_fast_backend(held))->solve(p);
+  ASSERT_EQ(rescued.status, ProblemStatus::Optimal);
+  EXPECT_EQ(rescued.engine, Engine::Glpk);
+  EXPECT_NEAR(rescued.G, exact.G, 2 * kCertifiedError);
 }
 
 }  // namespace

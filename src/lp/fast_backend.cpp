@@ -25,6 +25,9 @@ using fast::FastSimplex;
 
 class FastBackend : public Backend {
  public:
+  explicit FastBackend(const fast::SimplexSettings& settings) {
+    std::apply([&](auto&... simplex) { (simplex.use(settings), ...); }, simplices_);
+  }
   std::string name() const override { return "fast"; }
   int max_functions() const override { return kMaxRows - 1; }
   Solution solve(const Problem& p) override {
@@ -58,8 +61,8 @@ class FastBackend : public Backend {
 
 }  // namespace
 
-std::unique_ptr<Backend> make_fast_backend() {
-  return std::make_unique<FastBackend>();
+std::unique_ptr<Backend> make_fast_backend(const fast::SimplexSettings& settings) {
+  return std::make_unique<FastBackend>(settings);
 }
 
 const char* to_string(Engine engine) {

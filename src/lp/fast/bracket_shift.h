@@ -15,9 +15,9 @@ namespace mb::lp::fast {
 template <int K>
 bool FastSimplex<K>::shift_bracket(int i) {
   const int j = basis_[i];
-  // Weights are probabilities: one below -kHopelessWeight means a basis far from any feasible
-  // one, and shifts from such starts nearly always ran out of rounds.
-  if (j >= n_ || x_[i] < -kHopelessWeight) return false;
+  // Weights are probabilities: one below -settings_.hopeless_weight means a basis far from any
+  // feasible one, and shifts from such starts nearly always ran out of rounds.
+  if (j >= n_ || x_[i] < -settings_.hopeless_weight) return false;
   const double z = point(j);
   // Once for the partner and bracket_node's limit (the basis stays until an exchange).
   double points[kMaxRows];

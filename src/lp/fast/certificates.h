@@ -49,12 +49,12 @@ bool FastSimplex<K>::certify_in_double(Solution& s) {
   in_basis(misfit, correction);
   for (int i = 0; i < k_; ++i) x_[i] += correction[i];
   // A weight below what double-double would call zero is for the precise pass (and then the
-  // dual simplex) to judge: the bound's terms would not notice it (kCertifyResidual; a clamped
-  // weight of ~-1e-12 passed here with G = 1.41e-8 where the optimum, a basis primal and dual
-  // feasible in __float128, is 2.50e-8).
+  // dual simplex) to judge: the bound's terms would not notice it (settings_.certify_residual; a
+  // clamped weight of ~-1e-12 passed here with G = 1.41e-8 where the optimum, a basis primal and
+  // dual feasible in __float128, is 2.50e-8).
   double clamped[kMaxRows];
   for (int i = 0; i < k_; ++i) {
-    if (!(x_[i] >= -kNegligibleWeight)) return false;
+    if (!(x_[i] >= -settings_.negligible_weight)) return false;
     clamped[i] = std::max(x_[i], 0.0);
   }
   double bound = 0;
@@ -67,7 +67,7 @@ bool FastSimplex<K>::certify_in_double(Solution& s) {
     }
     // The reported support must reproduce the moments as accurately as long double's does
     // (the KKT checker and the users' own checks look at the residual alone).
-    if (!(std::abs(residual) + gamma * size <= kCertifyResidual)) return false;
+    if (!(std::abs(residual) + gamma * size <= settings_.certify_residual)) return false;
     bound += std::abs(y[r]) * (std::abs(residual) + gamma * size);
   }
   const bool priced = priced_with(y);
@@ -219,7 +219,7 @@ bool FastSimplex<K>::precise_bound(const DoubleDouble* x, const DoubleDouble* y,
   DoubleDouble clamped[kMaxRows];
   bool unclamped = true;
   for (int i = 0; i < k_; ++i) {
-    if (!(x[i].value() >= -kNegligibleWeight)) return false;
+    if (!(x[i].value() >= -settings_.negligible_weight)) return false;
     clamped[i] = x[i].hi > 0 ? x[i] : DoubleDouble{};
     unclamped &= x[i].hi > 0 || (x[i].hi == 0 && x[i].lo == 0);
   }
@@ -233,7 +233,7 @@ bool FastSimplex<K>::precise_bound(const DoubleDouble* x, const DoubleDouble* y,
   // rest is not computed.
   double bound = 0;
   for (int r = 0; r < k_; ++r) {
-    if (!(std::abs(residual[r]) <= kCertifyResidual)) return false;  // x_B not feasible
+    if (!(std::abs(residual[r]) <= settings_.certify_residual)) return false;  // x_B not feasible
     bound += std::abs(y[r].value() * residual[r]);
   }
   if (!(bound <= kCertifyBound)) return false;

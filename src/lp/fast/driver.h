@@ -120,7 +120,7 @@ void FastSimplex<K>::solve(const Problem& p, WarmOffers& warm, Solution& s) {
   double artificial = 0;
   for (int i = 0; i < k_; ++i)
     if (is_artificial(basis_[i])) artificial += x_[i];
-  if (artificial > kPhase1Tolerance) {
+  if (artificial > settings_.phase1_tolerance) {
     s.status = ProblemStatus::Infeasible;
     return;
   }
@@ -167,7 +167,7 @@ bool FastSimplex<K>::solve_phase2(Solution& s) {
   for (int attempt = 0; attempt < 3; ++attempt) {
     if (!iterate(s)) return false;
     if (certify(s)) return true;
-    for (; certificate_entering_ >= 0 && guided < kGuidedSteps; ++guided) {
+    for (; certificate_entering_ >= 0 && guided < settings_.guided_steps; ++guided) {
       double u[kMaxRows];
       column_in_basis(certificate_entering_, u);
       if (!(step(certificate_entering_, u, false, s) >= 0) || !iterate(s)) return false;

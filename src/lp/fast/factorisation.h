@@ -29,7 +29,8 @@ bool FastSimplex<K>::update_factors(const BasisState& factors) {
     load_column(basis_[i], a[i]);
     if (!lanes::same_row<K>(a[i], factors.basic[i])) changed[count++] = i;
   }
-  if (count > kChangedColumns || factors.updates + count > refactor_interval()) return false;
+  if (count > settings_.changed_columns || factors.updates + count > refactor_interval())
+    return false;
   for (int i = 0; i < k_; ++i) {
     lanes::copy_row<K>(factors.binv[i], binv_[i]);
     lanes::copy_row<K>(factors.basic[i], basic_[i]);
@@ -216,7 +217,7 @@ double FastSimplex<K>::composite_cost() const {
 
 template <int K>
 int FastSimplex<K>::refactor_interval() const {
-  return retrying_ ? kCarefulRefactorInterval : kRefactorInterval;
+  return retrying_ ? settings_.careful_refactor_interval : settings_.refactor_interval;
 }
 
 }  // namespace mb::lp::fast

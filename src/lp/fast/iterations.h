@@ -27,12 +27,10 @@ bool FastSimplex<K>::iterate(Solution& s) {
   // power4, 256).
   bool sliding = false;
   int previous_leave = -1;
-  // Optimal bases are reached in ~20-40 pivots (measured on dataset fragments); a run past 1000
-  // is stalling on an ill-conditioned basis and goes to the fallback instead.
-  const int limit = std::min(20 * (n_ + k_), 1000);
+  const int limit = std::min(20 * (n_ + k_), settings_.max_iterations);
   for (int guard = 0; guard < limit; ++guard) {
     if (updates_ >= refactor_interval() && !refactor()) return false;
-    bool bland = degenerate >= kDegenerateBeforeBland;
+    bool bland = degenerate >= settings_.degenerate_before_bland;
     // The extra columns first (phase 2 only, after the first iteration: see enter_among_extras):
     // only when none of them may enter does a full pass decide, so every run still ends with one,
     // and optimality is never judged on the extras alone.
@@ -80,14 +78,15 @@ double FastSimplex<K>::step(int entering, const double* u, bool bland, Solution&
     // Selects, not branches (which rows block varies from pivot to pivot).
     double theta_max = std::numeric_limits<double>::infinity();
     for (int i = 0; i < k_; ++i) {
-      const double ratio = (x_[i] + kFeasibilityTolerance) / u[i];
-      theta_max = u[i] > kPivotTolerance && ratio < theta_max ? ratio : theta_max;
+      const double ratio = (x_[i] + settings_.feasibility_tolerance) / u[i];
+      theta_max = u[i] > settings_.pivot_tolerance && ratio < theta_max ? ratio : theta_max;
     }
     if (!std::isfinite(theta_max)) return -1;  // unbounded: impossible with sum w = 1
     const double limit = std::max(theta_max, 0.0);
     double best_pivot = 0;
     for (int i = 0; i < k_; ++i) {
-      const bool better = u[i] > kPivotTolerance && !(x_[i] / u[i] > limit) && u[i] > best_pivot;
+      const bool better =
+          u[i] > settings_.pivot_tolerance && !(x_[i] / u[i] > limit) && u[i] > best_pivot;
       leave = better ? i : leave;
       best_pivot = better ? u[i] : best_pivot;
     }
@@ -96,7 +95,7 @@ double FastSimplex<K>::step(int entering, const double* u, bool bland, Solution&
     // ratio, ties to the smallest column index.
     double best_ratio = std::numeric_limits<double>::infinity();
     for (int i = 0; i < k_; ++i) {
-      if (u[i] <= kPivotTolerance) continue;
+      if (u[i] <= settings_.pivot_tolerance) continue;
       double ratio = std::max(x_[i], 0.0) / u[i];
       if (ratio < best_ratio || (ratio == best_ratio && leave >= 0 && basis_[i] < basis_[leave]))
         leave = i, best_ratio = ratio;
@@ -124,7 +123,7 @@ bool FastSimplex<K>::dual_simplex(Solution& s) {
     // (it refines the same way) leaves here too: in double, cond(B) ~ 1e8 hides -1e-12.
     refine_weights();
     const int leave = most_negative();
-    if (!(x_[leave] < -kNegligibleWeight)) return true;
+    if (!(x_[leave] < -settings_.negligible_weight)) return true;
     price();
     // alpha_j = (B^{-1} A)_{leave, j}, stored negated: -alpha_j = 0 - row_leave . a_j.
     subtract_row_combination(binv_[leave], nullptr, alpha_.data());
@@ -135,11 +134,11 @@ bool FastSimplex<K>::dual_simplex(Solution& s) {
     double alpha_max = 0;
 #pragma omp simd reduction(max : alpha_max)
     for (int j = 0; j < n_; ++j) alpha_max = std::max(alpha_max, alpha_[j]);
-    const double pivot_floor = std::max(kPivotTolerance, 1e-7 * alpha_max);
+    const double pivot_floor = std::max(settings_.pivot_tolerance, 1e-7 * alpha_max);
     double bound = std::numeric_limits<double>::infinity();
     for (int j = 0; j < n_; ++j)
       if (alpha_[j] > pivot_floor)
-        bound = std::min(bound, (reduced_[j] + kOptimalityTolerance) / alpha_[j]);
+        bound = std::min(bound, (reduced_[j] + settings_.optimality_tolerance) / alpha_[j]);
     int entering = -1;
     double best_alpha = 0;
     for (int j = 0; j < n_; ++j)

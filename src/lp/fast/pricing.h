@@ -54,7 +54,7 @@ template <int K>
 double FastSimplex<K>::entering_tolerance() const {
   double largest_dual = 0;
   for (int r = 0; r < k_; ++r) largest_dual = std::max(largest_dual, std::abs(y_[r]));
-  return std::max(kOptimalityTolerance, 1e-15 * largest_dual);
+  return std::max(settings_.optimality_tolerance, 1e-15 * largest_dual);
 }
 
 // Dantzig (or Bland) over non-basic columns, with reduced_ fresh for y_.
@@ -99,9 +99,9 @@ int FastSimplex<K>::slide_entering() {
   double best = 0, weight[kMaxRows];
   for (int i = 0; i < K; ++i) weight[i] = std::max(x_[i], 0.0);
   lanes::greatest_decrease<K>(binv_, weight, p_->grid->values.data(), g_, reduced_.data(), 0, g_,
-                              tolerance, kPivotTolerance, best, chosen);
+                              tolerance, settings_.pivot_tolerance, best, chosen);
   lanes::greatest_decrease<K>(binv_, weight, p_->extra.values.data(), e_, reduced_.data() + g_, g_,
-                              e_, tolerance, kPivotTolerance, best, chosen);
+                              e_, tolerance, settings_.pivot_tolerance, best, chosen);
   return chosen;
 }
 

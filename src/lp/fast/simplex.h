@@ -27,6 +27,7 @@ template <int K>
 class FastSimplex {
  public:
   FastSimplex() { std::fill(std::begin(lane_zf_), std::end(lane_zf_), kNoBasis); }
+  void use(const SimplexSettings& settings) { settings_ = settings; }
 
   // at == nullptr: from scratch, and every basis is forgotten; otherwise the warm bases of the
   // texel to the left and of the texel above are tried first (Backend::solve_next).
@@ -162,6 +163,7 @@ class FastSimplex {
   void basic_points(double (&out)[kMaxRows]) const;
 
  private:
+  SimplexSettings settings_;
   const Problem* p_ = nullptr;
   const WarmPosition* at_ = nullptr;  // where the problem being solved sits (run), or null
   static constexpr int k_ = K;
@@ -180,7 +182,7 @@ class FastSimplex {
   mutable double composite_cost_ = 0;
   int updates_ = 0;
   // run's retry from scratch: no partial pricing over the extra columns (iterate), and fresh
-  // inverses every kCarefulRefactorInterval updates.
+  // inverses every settings_.careful_refactor_interval updates.
   bool retrying_ = false;
   // An attempt of this solve ran out of iterations (iterate): a failure is then reported as
   // ProblemStatus::IterationLimit rather than Unstable.

@@ -62,7 +62,7 @@ bool FastSimplex<K>::start_from_previous_basis(const WarmBasis& warm, int rounds
   // past one of them, that point's weight turns negative. Moving it past its partner fixes it.
   for (int round = 0; round < rounds; ++round) {
     const int worst = most_negative();
-    if (x_[worst] >= -kFeasibilityTolerance || !shift_bracket(worst)) break;
+    if (x_[worst] >= -settings_.feasibility_tolerance || !shift_bracket(worst)) break;
   }
   return true;
 }
@@ -93,7 +93,7 @@ bool FastSimplex<K>::solve_from_previous_basis(WarmOffers& warm, Solution& s) {
   int usable = -1;
   double least_infeasibility = 0;  // the usable try's sum of negative weights
   bool usable_is_current = false;  // the basis in place is still the usable try's
-  const int tries = std::min(warm.usable, kWarmTries);
+  const int tries = std::min(warm.usable, settings_.warm_tries);
   for (int c = 0; c < tries; ++c) {
     const WarmBasis* w = warm.take();
     const bool left = w >= lanes_ && w < lanes_ + kWarmLanes;
@@ -103,7 +103,7 @@ bool FastSimplex<K>::solve_from_previous_basis(WarmOffers& warm, Solution& s) {
       usable_is_current = false;
       continue;
     }
-    if (x_[most_negative()] >= -kFeasibilityTolerance) return solve_phase2(s);
+    if (x_[most_negative()] >= -settings_.feasibility_tolerance) return solve_phase2(s);
     // The repair starts from the least infeasible try (sum of its negative weights), not the
     // closest z_f's: 1.86 -> 1.84 pivots an LP (power4, 256), 1.89 -> 1.83 (trig4).
     double infeasibility = 0;
@@ -123,7 +123,7 @@ bool FastSimplex<K>::solve_from_previous_basis(WarmOffers& warm, Solution& s) {
 
 template <int K>
 int FastSimplex<K>::shift_rounds(int try_index) const {
-  return try_index == 0 ? 4 * k_ : kLaterTryRounds;
+  return try_index == 0 ? 4 * k_ : settings_.later_try_rounds;
 }
 
 }  // namespace mb::lp::fast
