@@ -36,8 +36,8 @@ inline DoubleDouble fast_two_sum(double a, double b) {
 // two_sum) goes into lo in double, without renormalising the pair each step; read the sum with
 // value(). The result is as accurate as a renormalised double-double sum for these few terms
 // (error ~eps |sum| + ~eps^2 sum |terms|), and the chain from one term to the next is one add
-// where a two-sum and a renormalisation were ~7 dependent ones (1.02x on lp_bench's warm rows at
-// grid 256, where the precise certificate's residuals are such chains).
+// where a two-sum and a renormalisation were ~7 dependent ones (the precise certificate's residuals
+// are such chains).
 inline void add_product(DoubleDouble& acc, DoubleDouble b, double c) {
   // (Both FMAs explicit: the same bits whether or not the compiler contracts, as the lanes do.)
   const double p = b.hi * c, e = std::fma(b.lo, c, std::fma(b.hi, c, -p));

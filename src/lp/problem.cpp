@@ -13,7 +13,7 @@ namespace mb::lp {
 namespace {
 
 // The largest |value| (ColumnBlock::max_abs), with four independent maxima: one running maximum is
-// a chain of dependent maxsd (3 cycles each), and the sweep needs one per fragment.
+// a chain of dependent maxsd, and the sweep needs one per fragment.
 double largest_magnitude(const std::vector<double>& values) {
   double lane[4] = {0, 0, 0, 0};
   size_t j = 0;
@@ -207,7 +207,7 @@ void ProblemFactory::from_distribution(std::span<const double> depths,
     for (int q = 0; q < 4; ++q) part[q] += weights[i + q];
   for (; i < weights.size(); ++i) part[0] += weights[i];
   const double total = (part[0] + part[1]) + (part[2] + part[3]);
-  const double scale = 1 / total;  // one division per fragment, not one per tap (~13 cycles each)
+  const double scale = 1 / total;  // one division per fragment, not one per tap
   // Distinct depths become extra columns (a kernel often sees one surface many times); the rhs is
   // the distribution's own moment vector, accumulated in tap order (in registers: through p.rhs
   // every tap waited for the previous tap's store). Columns go straight to their rows, `stride`

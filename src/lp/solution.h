@@ -84,7 +84,7 @@ class Backend {
   }
   // solve (at == nullptr) or solve_next, into `out`, whose storage a backend may reuse: the loops
   // over millions of LPs (sweep, eval's lp:) then allocate nothing per LP (three allocations and
-  // frees were ~2 % of an LP).
+  // frees an LP otherwise).
   virtual void solve_into(const Problem& problem, const WarmPosition* at, Solution& out) {
     out = at ? solve_next(problem, *at) : solve(problem);
   }

@@ -113,7 +113,7 @@ void FastSimplex<K>::report(Solution& s, double objective, const double* weights
       }
     }
   } else {
-    // Distinct basic columns: no atom to merge, so no search (add_support's was ~1 % of an LP).
+    // Distinct basic columns: no atom to merge, so no search.
     s.support.resize(k_);
     s.weights.resize(k_);
     int count = 0;
@@ -134,8 +134,8 @@ void FastSimplex<K>::report(Solution& s, double objective, const double* weights
 // (two steps with double-double residuals reach well past long double accuracy for cond(B) up to
 // ~1e8, at a fraction of a factorisation's cost; most bases need one), then, if that does not
 // certify, with B inverted afresh in long double. On that failure the accurate inverse and x_B
-// are kept, so the caller resumes from them. (In x87 long double this was ~4000 cycles an LP,
-// a fifth of the LP time of a sweep.)
+// are kept, so the caller resumes from them. (Double-double lives in SSE registers and
+// pipelines; x87 long double does neither.)
 template <int K>
 bool FastSimplex<K>::certify_precisely(Solution& s) {
   DoubleDouble x[kMaxRows], y[kMaxRows];
@@ -239,7 +239,7 @@ bool FastSimplex<K>::precise_bound(const DoubleDouble* x, const DoubleDouble* y,
   if (!(bound <= kCertifyBound)) return false;
   // Complementarity as the KKT checker sees it: basic reduced costs, zero in exact arithmetic,
   // are |y| times rounding in practice. Computed for every basic column, since each is also a
-  // suspect below (judged twice, they were ~15 % of this certificate).
+  // suspect below (so that none is judged twice).
   // (Read for the structural columns only: the composite's atoms count instead.)
   double basic_cost[kMaxRows], basic_reduced[kMaxRows];
   for (int i = 0; i < k_; ++i) basic_cost[i] = basis_[i] < n_ ? cost_[basis_[i]] : 0.0;
@@ -274,8 +274,7 @@ bool FastSimplex<K>::precise_bound(const DoubleDouble* x, const DoubleDouble* y,
   };
   // The basic columns, suspects by their rounding alone, are judged by their double-double
   // values, then hidden (read +inf), so that one branch-free pass nearly always shows that no
-  // other column is a suspect (a scan branching on every block holding a suspect was ~4 % of an
-  // LP).
+  // other column is a suspect, without a branch per block.
   for (int i = 0; i < k_; ++i)
     if (basis_[i] < n_) judge(basis_[i], basic_reduced[i]);
   const BasicColumnsHidden hidden(*this, std::numeric_limits<double>::infinity());
@@ -289,8 +288,7 @@ bool FastSimplex<K>::precise_bound(const DoubleDouble* x, const DoubleDouble* y,
       certificate_entering_ = most_negative_column;
     return false;
   }
-  // G and the weights from double-double sums, rounded once (x87 long double here was ~100
-  // ticks of this certificate's ~600).
+  // G and the weights from double-double sums, rounded once.
   DoubleDouble objective;
   double weights[kMaxRows];
   for (int i = 0; i < k_; ++i) {

@@ -31,8 +31,8 @@ bool invert_fixed(Real a[kMaxRows][kMaxRows], Real inv[kMaxRows][kMaxRows], Real
       for (int j = 0; j < k; ++j) std::swap(a[p][j], a[c][j]);
       std::swap(perm[p], perm[c]);
     }
-    // One division per pivot, not one per entry: 35 divisions (latency ~13 cycles each) were
-    // most of a factorisation's time.
+    // One division per pivot, not one per entry: divisions have the longest latency of
+    // the factorisation's operations.
     reciprocal[c] = Real(1) / a[c][c];
     for (int r = c + 1; r < k; ++r) {
       Real f = a[r][c] *= reciprocal[c];

@@ -23,8 +23,8 @@ void FastSimplex<K>::run(const Problem& p, const WarmPosition* at, Solution& s) 
   // surfaces change from left to right (a silhouette along the column) the texel above often
   // still sees the same ones: with it, a third fewer LPs need the composite repair. The texel
   // above and to the right (the row above has passed it, this row not yet) adds what a silhouette
-  // running down to the left hides from both: 12 % fewer pivots, 20 % fewer repairs (power4,
-  // 256).
+  // running down to the left hides from both (fewer pivots and
+  // composite repairs on lp_bench's runs).
   WarmOffers offers;
   if (at) {
     const bool above = column >= 0,
@@ -84,13 +84,13 @@ void FastSimplex<K>::solve(const Problem& p, WarmOffers& warm, Solution& s) {
     kernel_taps_ = taps;
     kernel_side_ = side * side == taps ? side : 0;
     // Each tap's column and row in the kernel: texel_tap needs them for every kernel column of
-    // every warm try, and a division each was ~1 % of an LP.
+    // every warm try, and a division each would be on that path.
     tap_column_.resize(taps), tap_row_.resize(taps);
     for (int t = 0; t < taps && kernel_side_ > 0; ++t)
       tap_column_[t] = t % kernel_side_, tap_row_[t] = t / kernel_side_;
   }
   // Along a run the grid stays and z_f moves by a few cells, so only the cells between the last
-  // problem's prefix and this one's are rewritten (the whole fill was ~2 % of a warm LP).
+  // problem's prefix and this one's are rewritten.
   if (p.grid != costed_grid_) {
     std::fill(cost_.begin(), cost_.begin() + in_front, 1.0);
     std::fill(cost_.begin() + in_front, cost_.begin() + g_, 0.0);

@@ -152,7 +152,7 @@ bool FastSimplex<K>::is_basic(int j) const {
 }
 
 // The position of column j among basis_[0..among), or -1. Selects, no early exit: k is fixed,
-// and std::find was a call (~1 % of an LP).
+// and std::find is a call.
 template <int K>
 int FastSimplex<K>::basic_position(int j, int among) const {
   int at = -1;

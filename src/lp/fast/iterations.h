@@ -9,7 +9,7 @@ template <int K>
 int FastSimplex<K>::most_negative() const {
   int worst = 0;
   double least = x_[0];
-  for (int i = 1; i < k_; ++i) {  // selects, not branches (they mispredicted: ~3 % of an LP)
+  for (int i = 1; i < k_; ++i) {  // selects, not branches (they mispredict)
     const bool less = x_[i] < least;
     least = less ? x_[i] : least;
     worst = less ? i : worst;
@@ -42,8 +42,8 @@ bool FastSimplex<K>::iterate(Solution& s) {
     if (entering < 0) {
       // Duals too large for the double certificate (|y| ~ 1e8: narrow kernels) are refined in
       // double-double before the full pass, so that the precise certificate finds the reduced
-      // costs of its duals in place; it used to refine them itself and price again (~8 % of a
-      // warm LP: 44 % of the LPs need it, and most of them end after this pass).
+      // costs of its duals in place; refining them there would mean a second
+      // pricing pass, and most LPs that need it end after this pass.
       if (phase_ == 2 && pricing_rounding(y_) > 0.1 * kCertifyBound) refine_duals_for_certificate();
       reduced_costs();
       // (Only when some column may enter at all: most warm LPs are optimal, and their smallest

@@ -113,9 +113,8 @@ int FastSimplex<K>::slide_entering() {
 // than full Dantzig pricing and than the grid windows it replaced (grid cells around each basic
 // point and z_f, plus the extras): 1.43 / 1.41 pivots an LP at grid 256 (power4 / trig4) against
 // 1.61 / 1.58 with the windows, and 1.71 against 1.95 at 1024; adding the grid's ±2 cells around
-// the basic points to the extras made it 2.75 at 256. Throughput 1.09-1.11x at 256, 1.03-1.04x at
-// 1024 (4 alternating rounds). y_ must be the current basis's duals. reduced_ then holds stale
-// values on the grid, so the next full pass or certificate prices afresh.
+// the basic points to the extras made it 2.75 at 256. y_ must be the current basis's duals.
+// reduced_ then holds stale values on the grid, so the next full pass or certificate prices afresh.
 template <int K>
 int FastSimplex<K>::enter_from_extras() {
   priced_phase_ = -1;

@@ -43,7 +43,7 @@ struct SimplexSettings {
   int degenerate_before_bland = 24;  // degenerate pivots in a row before Bland's rule
   // Bracket-shift rounds per warm basis: the closest z_f's gets 4k, the others, which succeed less
   // often, 6: on the default dataset that saved 3.1M of 17.6M exchanges for 0.15M more pivots
-  // (power4 sweep, ~4 % faster). 8k for the first cut repairs 102k -> 91k but cost the failing
+  // (power4 sweep). 8k for the first cut repairs 102k -> 91k but cost the failing
   // starts more.
   int later_try_rounds = 6;
   int guided_steps = 8;  // certificate-guided steps per LP (solve_phase2)

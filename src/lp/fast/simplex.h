@@ -21,8 +21,8 @@
 
 namespace mb::lp::fast {
 
-// K = m + 1 rows, fixed at compile time: every loop over rows or basis positions unrolls (at run
-// time k, the 5x5 products of the duals, the entering column and the pivot were ~20 % of an LP).
+// K = m + 1 rows, fixed at compile time: every loop over rows or basis positions unrolls, and the
+// k x k products of the duals, the entering column and the pivot stay in registers.
 template <int K>
 class FastSimplex {
  public:
@@ -178,7 +178,7 @@ class FastSimplex {
   double binv_[kMaxRows][kMaxRows];
   double basic_[kMaxRows][kMaxRows];  // basic_[i] = column basis_[i] (kept by refactor and pivot)
   // F_Z(z_f), the composite column's cost, computed the first time it is asked for: the column
-  // enters few LPs (repairs, cold starts), and the sum over the taps was ~2 % of every LP.
+  // enters few LPs (repairs, cold starts), and the sum over the taps would be paid by every LP.
   mutable double composite_cost_ = 0;
   int updates_ = 0;
   // run's retry from scratch: no partial pricing over the extra columns (iterate), and fresh
@@ -208,7 +208,7 @@ class FastSimplex {
   BasisState lane_factors_[kWarmLanes];  // their inverses (update_factors)
   std::vector<WarmBasis> above_;         // by column and layer: the row above
   // Their z_f, NaN where there is no basis: the selection reads these alone (a WarmBasis spans
-  // ~80 bytes, and the 16 of a selection were ~8 % of a warm LP's time).
+  // ~80 bytes, and a selection would otherwise touch 24 of them).
   double lane_zf_[kWarmLanes];
   std::vector<double> above_zf_;
   static constexpr double kNoBasis =

@@ -25,8 +25,7 @@ struct WarmBasis {
 // first, ties in the order offered. Taken one at a time, since most LPs need only the first:
 // ranking all of them up front was a 24 x 24 comparison. Offered a block of kWarmLanes at a time
 // (the lanes of one texel lie side by side), so that with AVX-512 each block is one vector and a
-// take three minimums and a compare (offered one by one and taken in a scalar loop, they were ~3 %
-// of a warm LP).
+// take three minimums and a compare (lanes::offer_distances, lanes::closest).
 struct WarmOffers {
   static constexpr int kBlocks = 3, kCount = kBlocks * kWarmLanes;
   static_assert(kWarmLanes == 8, "a block is one vector of eight doubles");

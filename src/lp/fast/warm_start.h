@@ -15,8 +15,7 @@ double FastSimplex<K>::remember_basis(const Solution& s, WarmBasis& warm) {
   warm.row = at_ ? at_->row : -1;
   warm.zf = p_->zf;
   // Roles by selects, not a chain of branches: which basis position holds which kind of column
-  // varies from LP to LP, and the branches mispredicted (with start_from_previous_basis's switch
-  // ~2 % of the solver's samples).
+  // varies from LP to LP, and the branches mispredict.
   const int* extra_tap = p_->extra_tap.empty() ? nullptr : p_->extra_tap.data();
   for (int i = 0; i < k_; ++i) {
     const int j = basis_[i];
@@ -112,8 +111,8 @@ bool FastSimplex<K>::solve_from_previous_basis(WarmOffers& warm, Solution& s) {
     if (!usable_is_current) continue;
     usable = c;
     least_infeasibility = infeasibility;
-    // Kept for the repair, should the later tries fail too: redoing its mapping and up to 4k
-    // shifts (what this used to do) was ~4 % of the LP time.
+    // Kept for the repair, should the later tries fail too: otherwise its mapping and up to 4k
+    // shifts would be redone.
     if (c + 1 < tries) save_basis(usable_basis_);
   }
   if (usable < 0) return false;
