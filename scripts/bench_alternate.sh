@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Ratios on a noisy machine (results/BENCHMARKS.md, session 16): runs lp_bench binaries in
+# Ratios on a noisy machine (results/bench-log/sessions-01-35.md, session 16): runs lp_bench binaries in
 # alternation, ROUNDS rounds of 3 randomly interleaved repetitions each, and prints per binary and
 # row the median and the best items/s of all its repetitions, and our warm runs' ratio to GLPK by
 # each. The VM's interference only ever adds time, so the best repetition is the one least
@@ -13,7 +13,7 @@ log=$(mktemp); trap 'rm -f "$log"' EXIT
 pin=(); command -v taskset >/dev/null && pin=(taskset -c "$(($(nproc) - 1))")
 for ((round = 1; round <= rounds; ++round)); do
   # Each round in a fresh random order: the VM drifts within a set by as much as the effects
-  # measured (results/BENCHMARKS.md, session 26), and a fixed order can turn drift into a bias.
+  # measured (results/bench-log/sessions-01-35.md, session 26), and a fixed order can turn drift into a bias.
   mapfile -t order < <(printf '%s\n' "$@" | shuf)
   for binary in "${order[@]}"; do
     "${pin[@]}" "$binary" --benchmark_filter="${BENCH_FILTER:-SolveRuns/(fast_warm|glpk)}" --benchmark_repetitions=3 \

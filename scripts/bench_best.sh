@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Small speed differences on a noisy machine (results/BENCHMARKS.md, session 20): runs lp_bench
+# Small speed differences on a noisy machine (results/bench-log/sessions-01-35.md, session 20): runs lp_bench
 # binaries in alternation, ROUNDS rounds of 10 short repetitions each, and prints per row and binary
 # the best, 80th-percentile and median items/s, each also as a ratio to the first binary. Noise
 # only ever slows a repetition down, so the fast end of the distribution moves least.
@@ -13,7 +13,7 @@ log=$(mktemp); trap 'rm -f "$log"' EXIT
 pin=(); command -v taskset >/dev/null && pin=(taskset -c "$(($(nproc) - 1))")
 for ((round = 1; round <= rounds; ++round)); do
   # Each round in a fresh random order: the VM drifts within a set by as much as the effects
-  # measured (results/BENCHMARKS.md, session 26), and a fixed order can turn drift into a bias.
+  # measured (results/bench-log/sessions-01-35.md, session 26), and a fixed order can turn drift into a bias.
   mapfile -t order < <(printf '%s\n' "$@" | shuf)
   for binary in "${order[@]}"; do
     "${pin[@]}" "$binary" --benchmark_filter="$filter" --benchmark_min_time=0.05 --benchmark_repetitions=10 \
