@@ -32,7 +32,7 @@ bool FastSimplex<K>::certify_in_double(Solution& s) {
   constexpr double kEps = std::numeric_limits<double>::epsilon();
   const double gamma = (k_ + 2) * kEps;
   double y[kMaxRows] = {};  // (GCC cannot see that the copy fills k_ <= kMaxRows)
-  if (duals_fresh_)  // the iterations' last duals, of this very basis and inverse: the same bits
+  if (fresh_.duals)  // the iterations' last duals, of this very basis and inverse: the same bits
     std::copy(y_, y_ + k_, y);
   else
     dual_values(y);
@@ -82,7 +82,7 @@ bool FastSimplex<K>::certify_in_double(Solution& s) {
         bound += clamped[i] * p_->start_weights[t] * reduced_cost(p_->start_support[t]);
   }
   // Weak duality with sum w = 1: no distribution beats y.(1, b) by more than -min_j d_j.
-  bound += std::max(0.0, reduced_cost_error - priced_smallest_);  // reduced_ is y's (above)
+  bound += std::max(0.0, reduced_cost_error - fresh_.smallest_reduced);  // reduced_ is y's (above)
   if (!(bound <= kCertifyBound)) return false;
   double objective = 0;
   for (int i = 0; i < k_; ++i) objective += cost(basis_[i]) * clamped[i];
@@ -140,7 +140,7 @@ template <int K>
 bool FastSimplex<K>::certify_precisely(Solution& s) {
   DoubleDouble x[kMaxRows], y[kMaxRows];
   double basic_cost[kMaxRows];
-  const bool refined = duals_fresh_ && precise_duals_;  // y_ refined by iterate already
+  const bool refined = fresh_.duals && fresh_.precise_duals;  // y_ refined by iterate already
   for (int i = 0; i < k_; ++i) {
     basic_cost[i] = cost(basis_[i]);
     x[i] = {x_[i], 0};
@@ -175,7 +175,7 @@ bool FastSimplex<K>::certify_precisely(Solution& s) {
     for (int r = 0; r < k_; ++r) binv_[i][r] = double(inv[i][r]);
   }
   updates_ = 0;
-  duals_fresh_ = false;
+  fresh_.basis_changed();
   for (int r = 0; r < k_; ++r) {
     long double v = 0;
     for (int i = 0; i < k_; ++i) v += basic_cost[i] * inv[i][r];
@@ -196,7 +196,7 @@ void FastSimplex<K>::refine_duals_for_certificate() {
   for (int i = 0; i < k_; ++i) basic_cost[i] = cost(basis_[i]), precise_y_[i] = {y_[i], 0};
   refine_precisely<true>(precise_y_, basic_cost, binv_);
   for (int i = 0; i < k_; ++i) y_[i] = precise_y_[i].value();
-  precise_duals_ = true;
+  fresh_.precise_duals = true;
 }
 
 // d_j = c_j - y.a_j in double-double.

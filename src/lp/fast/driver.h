@@ -64,8 +64,7 @@ template <int K>
 void FastSimplex<K>::solve(const Problem& p, WarmOffers& warm, Solution& s) {
   iteration_limit_ = false;
   p_ = &p;
-  priced_phase_ = -1;  // reduced_ belongs to the previous problem
-  duals_fresh_ = false;
+  fresh_.new_problem();  // y_ and reduced_ belong to the previous problem
   n_ = p.cols();
   g_ = p.grid_size();
   e_ = p.extra.size();

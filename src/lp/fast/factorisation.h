@@ -36,7 +36,7 @@ bool FastSimplex<K>::update_factors(const BasisState& factors) {
     lanes::copy_row<K>(factors.basic[i], basic_[i]);
   }
   updates_ = factors.updates;
-  duals_fresh_ = false;
+  fresh_.basis_changed();
   for (int c = 0; c < count; ++c) {
     const int i = changed[c];
     double u[kMaxRows] = {};  // (GCC cannot see that in_basis fills k_ <= kMaxRows)
@@ -68,7 +68,7 @@ void FastSimplex<K>::restore_basis(const BasisState& from) {
     lanes::copy_row<K>(from.basic[i], basic_[i]);
   }
   updates_ = from.updates;
-  duals_fresh_ = false;
+  fresh_.basis_changed();
 }
 
 template <int K>
@@ -121,7 +121,7 @@ bool FastSimplex<K>::refactor() {
   for (int i = 0; i < k_; ++i) std::copy(inv[i], inv[i] + k_, binv_[i]);
   in_basis(p_->rhs.data(), x_);
   updates_ = 0;
-  duals_fresh_ = false;
+  fresh_.basis_changed();
   return true;
 }
 
@@ -195,7 +195,7 @@ void FastSimplex<K>::pivot(int leave, int entering, const double* u) {
   basis_[leave] = entering;
   load_column(entering, basic_[leave]);
   ++updates_;
-  duals_fresh_ = false;
+  fresh_.basis_changed();
 }
 
 // |a_rj| <= column_bound() for every column.

@@ -35,8 +35,7 @@ bool FastSimplex<K>::iterate(Solution& s) {
     // only when none of them may enter does a full pass decide, so every run still ends with one,
     // and optimality is never judged on the extras alone.
     dual_values(y_);  // once per iteration, for the extras and the full pass alike
-    duals_fresh_ = true;
-    precise_duals_ = false;
+    fresh_.duals_computed();
     const bool partial = phase_ == 2 && !bland && !retrying_;
     int entering = partial && guard > 0 && !sliding ? enter_from_extras() : -1;
     if (entering < 0) {
@@ -48,7 +47,7 @@ bool FastSimplex<K>::iterate(Solution& s) {
       reduced_costs();
       // (Only when some column may enter at all: most warm LPs are optimal, and their smallest
       // reduced cost is rounding, below zero but inside the tolerance.)
-      if (partial && guard == 0 && priced_smallest_ < -entering_tolerance())
+      if (partial && guard == 0 && fresh_.smallest_reduced < -entering_tolerance())
         entering = enter_among_extras();
       if (entering < 0 && sliding && partial) entering = slide_entering();  // (not run's retry)
       if (entering < 0) entering = choose_entering(bland);

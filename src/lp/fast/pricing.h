@@ -10,25 +10,24 @@ namespace mb::lp::fast {
 template <int K>
 void FastSimplex<K>::price() {
   dual_values(y_);
-  duals_fresh_ = true;
-  precise_duals_ = false;
+  fresh_.duals_computed();
   reduced_costs();
 }
 
 template <int K>
 void FastSimplex<K>::reduced_costs() {
-  priced_smallest_ =
+  fresh_.smallest_reduced =
       subtract_row_combination(y_, phase_ == 1 ? nullptr : cost_.data(), reduced_.data());
-  priced_phase_ = phase_;
-  for (int r = 0; r < k_; ++r) priced_y_[r] = y_[r];
+  fresh_.reduced = true, fresh_.reduced_phase = phase_;
+  for (int r = 0; r < k_; ++r) fresh_.reduced_y[r] = y_[r];
 }
 
 // Whether reduced_ holds the reduced costs of these duals (in the current phase).
 template <int K>
 bool FastSimplex<K>::priced_with(const double* y) const {
-  if (priced_phase_ != phase_) return false;
+  if (!fresh_.reduced || fresh_.reduced_phase != phase_) return false;
   for (int r = 0; r < k_; ++r)
-    if (y[r] != priced_y_[r]) return false;
+    if (y[r] != fresh_.reduced_y[r]) return false;
   return true;
 }
 
@@ -69,9 +68,9 @@ int FastSimplex<K>::choose_entering(bool bland) {
   // Fresh from a full pass: the smallest reduced cost over all columns decides, and when the
   // first column holding it is not basic it is the one Dantzig enters (no basic column comes
   // before it with that value, so excluding the basic ones would find the same).
-  if (!(priced_smallest_ < -tolerance)) return -1;
+  if (!(fresh_.smallest_reduced < -tolerance)) return -1;
   {
-    const int first = lanes::first_holding(reduced_.data(), n_, priced_smallest_);
+    const int first = lanes::first_holding(reduced_.data(), n_, fresh_.smallest_reduced);
     if (first >= 0 && !is_basic(first)) return first;
   }
   // Basic columns out of the race, then a vectorised minimum and the first index holding it.
@@ -117,7 +116,7 @@ int FastSimplex<K>::slide_entering() {
 // reduced_ then holds stale values on the grid, so the next full pass or certificate prices afresh.
 template <int K>
 int FastSimplex<K>::enter_from_extras() {
-  priced_phase_ = -1;
+  fresh_.reduced = false;
   return extra_holding(lanes::combine<K>(y_, p_->extra.values.data(), e_, cost_.data() + g_,
                                          reduced_.data() + g_, e_));
 }

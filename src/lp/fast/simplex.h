@@ -169,8 +169,22 @@ class FastSimplex {
   static constexpr int k_ = K;
   int n_ = 0, g_ = 0, e_ = 0, composite_ = 0;
   int certificate_entering_ = -1;  // set by a failed precise certificate (solve_phase2)
-  bool duals_fresh_ = false;       // y_ is dual_values' of the current basis and inverse
-  bool precise_duals_ = false;     // and refined into precise_y_ (refine_duals_for_certificate)
+  // What the cached duals and reduced costs are still valid for, in one place: every change of
+  // the basis or of its inverse (pivot, refactor, update_factors, restore_basis, a start) calls
+  // basis_changed(); BTRAN (dual_values into y_) calls duals_computed(); reduced_costs() records
+  // the duals and phase it priced with, and partial pricing marks reduced_ stale.
+  struct Freshness {
+    bool duals = false;          // y_ is dual_values' of the current basis and inverse
+    bool precise_duals = false;  // and refined into precise_y_ (refine_duals_for_certificate)
+    bool reduced = false;        // reduced_ = c - A^T reduced_y for every column, in reduced_phase
+    int reduced_phase = 0;
+    double reduced_y[kMaxRows] = {};
+    double smallest_reduced = 0;  // min(0, min_j reduced_[j]), set with reduced_
+    void basis_changed() { duals = false; }
+    void duals_computed() { duals = true, precise_duals = false; }
+    void new_problem() { duals = false, reduced = false; }
+  };
+  Freshness fresh_;
   DoubleDouble precise_y_[kMaxRows];
   int phase_ = 1;
   int basis_[kMaxRows] = {};
@@ -193,11 +207,8 @@ class FastSimplex {
   const double* grid_points_ = nullptr;  // the problem's grid and extra points (point)
   const double* extra_points_ = nullptr;
 
-  double cell_scale_ = 0;           // grid cells per unit of z
-  BasisState usable_basis_;         // solve_from_previous_basis: the first usable warm try
-  double priced_y_[kMaxRows] = {};  // the duals reduced_ was computed with, in priced_phase_
-  int priced_phase_ = -1;
-  double priced_smallest_ = 0;  // min(0, min_j reduced_[j]), set with reduced_
+  double cell_scale_ = 0;    // grid cells per unit of z
+  BasisState usable_basis_;  // solve_from_previous_basis: the first usable warm try
   std::vector<double> reduced_, alpha_, cost_;
   // The grid whose costs cost_[0, g_) holds, ones up to costed_front_ (solve).
   std::shared_ptr<const ColumnBlock> costed_grid_;

@@ -16,7 +16,7 @@ void FastSimplex<K>::start_with_artificials() {
     for (int r = 0; r < k_; ++r) binv_[i][r] = i == r ? artificial_sign_[r] : 0.0;
   }
   updates_ = 0;
-  duals_fresh_ = false;
+  fresh_.basis_changed();
 }
 
 // The known distribution as one composite column (its moment vector, which is the rhs, at its
