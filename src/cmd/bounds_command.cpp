@@ -17,8 +17,6 @@
 
 namespace mb {
 
-namespace {
-
 std::vector<OptionSpec> bounds_specs() {
   auto specs = dataset_option_specs();
   for (auto& s : shadow_option_specs())
@@ -44,6 +42,8 @@ std::vector<OptionSpec> bounds_specs() {
   specs.push_back({"bounds.zf_range", OptionType::NumberList, "[0, 1]", "z_f from, to."});
   return specs;
 }
+
+namespace {
 
 // The kernel distribution at a dataset texel: the same taps as PCF and the moment maps see.
 std::string texel_distribution(const Config& config, BoundCurveRequest& request,

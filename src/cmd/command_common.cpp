@@ -41,6 +41,11 @@ Config resolve_config(std::vector<OptionSpec> specs, const CommonOptions& option
   return config;
 }
 
+void apply_flags(const CLI::App& command, Config& config, const std::vector<FlagKey>& flags) {
+  for (const auto& f : flags)
+    if (command.get_option(f.flag)->count() > 0) config.set_node(f.key, f.value(), f.flag);
+}
+
 std::vector<OptionSpec> dataset_option_specs() {
   return {
       {"dataset", OptionType::String, "default",

@@ -2,6 +2,7 @@
 // What every subcommand shares: --config, --set, --print-config, --out, --force, --quiet, and
 // turning them into a validated Config (DESIGN.md §Command line).
 #include <CLI/CLI.hpp>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,17 @@ struct CommonOptions {
 void add_common_options(CLI::App& command, CommonOptions& options, bool has_output = true);
 // Defaults, then the config file, then every --set in order.
 Config resolve_config(std::vector<OptionSpec> specs, const CommonOptions& options);
+// A command's own flags as shorthands of option keys: each flag given on the command line sets its
+// key after the config file and every --set (a list flag gives a list; a flag without a value
+// gives true, or false for a "!--no-x" flag), so --print-config shows it and it is validated
+// like --set.
+struct FlagKey {
+  std::string flag;                   // as registered, e.g. "--grid"
+  std::string key;                    // the option key, e.g. "grid"
+  std::function<YAML::Node()> value;  // the flag's parsed value, as YAML
+};
+void apply_flags(const CLI::App& command, Config& config, const std::vector<FlagKey>& flags);
+
 // The argv of this process, for run metadata.
 const std::vector<std::string>& process_arguments();
 void set_process_arguments(int argc, char** argv);

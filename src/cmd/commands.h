@@ -2,6 +2,9 @@
 // One register function per subcommand; each sets `action` when its subcommand is chosen.
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <vector>
+
+#include "util/config.h"
 
 namespace mb {
 
@@ -13,5 +16,17 @@ void register_merge_command(CLI::App& app, std::function<int()>& action);
 void register_report_command(CLI::App& app, std::function<int()>& action);
 void register_verify_command(CLI::App& app, std::function<int()>& action);
 void register_bounds_command(CLI::App& app, std::function<int()>& action);
+// `momentbench options`: every command's option table as Markdown (the README's lists).
+void register_options_command(CLI::App& app, std::function<int()>& action);
+
+// Each command's option table (keys for --config, --set and --print-config).
+std::vector<OptionSpec> render_specs();
+std::vector<OptionSpec> eval_specs();
+std::vector<OptionSpec> solve_specs();
+std::vector<OptionSpec> sweep_specs();
+std::vector<OptionSpec> merge_specs();
+std::vector<OptionSpec> report_specs();
+std::vector<OptionSpec> verify_specs();
+std::vector<OptionSpec> bounds_specs();
 
 }  // namespace mb

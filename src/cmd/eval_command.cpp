@@ -22,8 +22,6 @@
 
 namespace mb {
 
-namespace {
-
 std::vector<OptionSpec> eval_specs() {
   auto specs = dataset_option_specs();
   for (auto& s : shadow_option_specs()) specs.push_back(s);
@@ -38,6 +36,8 @@ std::vector<OptionSpec> eval_specs() {
                    "|PCF - G| at the top of the error colour bar.", 1e-6, 1});
   return specs;
 }
+
+namespace {
 
 struct EvalOptions {
   CommonOptions common;

@@ -81,18 +81,38 @@ int run_merge(const MergeOptions& o) {
 
 }  // namespace
 
+std::vector<OptionSpec> merge_specs() {
+  return {
+      {"partial", OptionType::Boolean, "false",
+       "Merge even when some shards of the sweep are missing (the report names them)."},
+  };
+}
+
 void register_merge_command(CLI::App& app, std::function<int()>& action) {
   auto options = std::make_shared<MergeOptions>();
+  auto common = std::make_shared<CommonOptions>();
   CLI::App* command = app.add_subcommand("merge", "Combine the shard databases of one sweep");
-  command
-      ->add_option("shards", options->shards, "Shard output directories (or results.sqlite files)")
-      ->required();
-  command->add_option("-o,--out", options->out, "Output directory (must not exist, unless --force)")
-      ->required();
-  command->add_flag("-f,--force", options->force, "Replace an existing output directory");
-  command->add_flag("--partial", options->partial,
-                    "Merge even when some shards of the sweep are missing");
-  command->callback([options, &action] { action = [options] { return run_merge(*options); }; });
+  add_common_options(*command, *common);
+  command->add_option("shards", options->shards,
+                      "Shard output directories (or results.sqlite files)");
+  command->add_flag("--partial", options->partial, "= --set partial=true");
+  command->callback([options, common, command, &action] {
+    action = [options, common, command] {
+      Config config = resolve_config(merge_specs(), *common);
+      apply_flags(*command, config,
+                  {{"--partial", "partial", [&] { return YAML::Node(options->partial); }}});
+      if (common->print_config) {
+        std::fputs(config.to_yaml().c_str(), stdout);
+        return 0;
+      }
+      MergeOptions o = *options;
+      o.out = common->out, o.force = common->force;
+      o.partial = config.boolean("partial");
+      if (o.shards.empty()) throw InputError("merge: give the shards' output directories");
+      if (o.out.empty()) throw InputError("merge: --out DIR is required");
+      return run_merge(o);
+    };
+  });
 }
 
 }  // namespace mb

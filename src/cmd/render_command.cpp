@@ -15,14 +15,14 @@
 
 namespace mb {
 
-namespace {
-
 std::vector<OptionSpec> render_specs() {
   auto specs = dataset_option_specs();
   specs.push_back({"previews", OptionType::Boolean, "true",
                    "Write PNG previews (layer-0 depth, layer counts)."});
   return specs;
 }
+
+namespace {
 
 struct RenderOptions {
   CommonOptions common;

@@ -7,6 +7,7 @@
 #include "cmd/command_common.h"
 #include "cmd/commands.h"
 #include "eval/sweep_report.h"
+#include "util/error.h"
 #include "util/output_dir.h"
 
 namespace mb {
@@ -46,22 +47,44 @@ int run_report(const ReportOptions& o) {
 
 }  // namespace
 
+std::vector<OptionSpec> report_specs() {
+  return {
+      {"bins", OptionType::Integer, "60", "Histogram bins.", 1, 10000},
+      {"plot", OptionType::Boolean, "true",
+       "Draw histogram.png/pdf with scripts/plot_histogram.py (needs matplotlib)."},
+  };
+}
+
 void register_report_command(CLI::App& app, std::function<int()>& action) {
   auto options = std::make_shared<ReportOptions>();
+  auto common = std::make_shared<CommonOptions>();
   CLI::App* command = app.add_subcommand("report",
                                          "Ranked tables, findings, histogram and plot from one or "
                                          "more sweeps (e.g. of 2, 3 and 4 functions)");
-  command
-      ->add_option("results", options->results,
-                   "Sweep output directories (or their results.sqlite files)")
-      ->required();
-  command->add_option("-o,--out", options->out, "Report directory (must not exist, unless --force)")
-      ->required();
-  command->add_flag("-f,--force", options->force, "Replace an existing report directory");
-  command->add_flag("-q,--quiet", options->quiet, "Nothing on stderr");
-  command->add_flag("!--no-plot", options->plot, "Do not call scripts/plot_histogram.py");
-  command->add_option("--bins", options->bins, "Histogram bins")->check(CLI::Range(1, 10000));
-  command->callback([options, &action] { action = [options] { return run_report(*options); }; });
+  add_common_options(*command, *common);
+  command->add_option("results", options->results,
+                      "Sweep output directories (or their results.sqlite files)");
+  command->add_flag("!--no-plot", options->plot, "= --set plot=false");
+  command->add_option("--bins", options->bins, "= --set bins=N")->check(CLI::Range(1, 10000));
+  command->callback([options, common, command, &action] {
+    action = [options, common, command] {
+      Config config = resolve_config(report_specs(), *common);
+      apply_flags(*command, config,
+                  {{"--no-plot", "plot", [&] { return YAML::Node(options->plot); }},
+                   {"--bins", "bins", [&] { return YAML::Node(options->bins); }}});
+      if (common->print_config) {
+        std::fputs(config.to_yaml().c_str(), stdout);
+        return 0;
+      }
+      ReportOptions o = *options;
+      o.out = common->out, o.force = common->force, o.quiet = common->quiet;
+      o.bins = int(config.integer("bins"));
+      o.plot = config.boolean("plot");
+      if (o.results.empty()) throw InputError("report: give one or more results databases");
+      if (o.out.empty()) throw InputError("report: --out DIR is required");
+      return run_report(o);
+    };
+  });
 }
 
 }  // namespace mb

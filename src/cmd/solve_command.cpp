@@ -273,35 +273,112 @@ int run_solve(const SolveOptions& o) {
 
 }  // namespace
 
+std::vector<OptionSpec> solve_specs() {
+  return {
+      {"basis", OptionType::StringList, "[power4]",
+       "Basis functions: catalog names, expressions in z, or a set (power4, trig4)."},
+      {"interval", OptionType::NumberList, "[0, 1]", "Admissible interval [lo, hi]."},
+      {"grid", OptionType::Integer, "1024", "Uniform grid points on the interval.", 2, 1 << 24},
+      {"moments", OptionType::NumberList, "[]", "Moment vector b_1..b_m of the instance."},
+      {"points", OptionType::NumberList, "[]", "Extra points of I (e.g. the kernel's depths)."},
+      {"zf", OptionType::Number, "0.5", "Fragment depth z_f."},
+      {"backend", OptionType::String, "fast", "LP backend.", 0, 0, {"fast", "glpk"}},
+      {"technique", OptionType::String, "''",
+       "A closed form instead of the LP (hamburger4, hausdorff4, tmsm, vsm, esm, ...); basis is "
+       "then ignored."},
+      {"alpha", OptionType::Number, "-1",
+       "Moment bias for technique; below 0: the technique's own.", -1, 0.999999},
+      {"input", OptionType::String, "''",
+       "JSON Lines file of instances (the instance options above are then refused)."},
+      {"output", OptionType::String, "''",
+       "JSON Lines results (written atomically); stdout if ''."},
+      {"check", OptionType::Boolean, "false",
+       "Run the independent KKT checker on every optimal answer."},
+      {"quantize", OptionType::Boolean, "false",
+       "Round extra points to the grid (REFERENCE.md §2)."},
+  };
+}
+
+namespace {
+
+template <class T>
+YAML::Node yaml_of(const T& value) {
+  return YAML::Node(value);
+}
+
+int run_solve_command(const CLI::App& command, const CommonOptions& common, SolveOptions flags) {
+  Config config = resolve_config(solve_specs(), common);
+  apply_flags(command, config,
+              {{"--basis", "basis", [&] { return yaml_of(flags.basis); }},
+               {"--interval", "interval", [&] { return yaml_of(flags.interval); }},
+               {"--grid", "grid", [&] { return yaml_of(flags.grid); }},
+               {"--moments", "moments", [&] { return yaml_of(flags.moments); }},
+               {"--points", "points", [&] { return yaml_of(flags.points); }},
+               {"--zf", "zf", [&] { return yaml_of(flags.zf); }},
+               {"--backend", "backend", [&] { return yaml_of(flags.backend); }},
+               {"--technique", "technique", [&] { return yaml_of(flags.technique); }},
+               {"--alpha", "alpha", [&] { return yaml_of(flags.alpha); }},
+               {"--input", "input", [&] { return yaml_of(flags.input); }},
+               {"--output", "output", [&] { return yaml_of(flags.output); }},
+               {"--check", "check", [&] { return yaml_of(flags.check); }},
+               {"--quantize", "quantize", [&] { return yaml_of(flags.quantize); }}});
+  if (common.print_config) {
+    std::fputs(config.to_yaml().c_str(), stdout);
+    return 0;
+  }
+  SolveOptions o;
+  o.basis = config.strings("basis");
+  o.interval = config.numbers("interval");
+  o.grid = int(config.integer("grid"));
+  o.moments = config.numbers("moments");
+  o.points = config.numbers("points");
+  o.zf = config.number("zf");
+  o.backend = config.string("backend");
+  o.technique = config.string("technique");
+  o.alpha = config.number("alpha");
+  o.input = config.string("input");
+  o.output = config.string("output");
+  o.check = config.boolean("check");
+  o.quantize = config.boolean("quantize");
+  if (!o.input.empty())  // an instance comes from options or from input, never both
+    for (const auto& changed : config.non_default())
+      for (const char* key : {"basis", "interval", "moments", "points", "zf", "technique", "alpha"})
+        if (changed.rfind(std::string(key) + ":", 0) == 0)
+          throw InputError("solve: key '" + std::string(key) +
+                           "' beside 'input' (a batch's lines carry their own instances)");
+  return run_solve(o);
+}
+
+}  // namespace
+
 void register_solve_command(CLI::App& app, std::function<int()>& action) {
   auto o = std::make_shared<SolveOptions>();
+  auto common = std::make_shared<CommonOptions>();
   CLI::App* c = app.add_subcommand(
       "solve", "Solve Problem 1 instances as LPs (one from flags, or JSON Lines)");
-  c->add_option("--basis", o->basis,
-                "Basis functions: catalog names, expressions in z, or a set (power4, trig4)")
-      ->delimiter(',');
-  c->add_option("--interval", o->interval, "Admissible interval lo,hi")->delimiter(',');
-  c->add_option("--grid", o->grid, "Uniform grid points on the interval")
-      ->check(CLI::Range(2, 1 << 24));
-  c->add_option("--moments", o->moments, "Moment vector b_1..b_m")->delimiter(',');
-  c->add_option("--points", o->points, "Extra points of I (e.g. the kernel's depths)")
-      ->delimiter(',');
-  c->add_option("--zf", o->zf, "Fragment depth z_f");
-  c->add_option("--backend", o->backend, "LP backend")->check(CLI::IsMember({"fast", "glpk"}));
-  c->add_option("--technique", o->technique,
-                "A closed form instead of the LP (hamburger4, hausdorff4, tmsm, vsm, esm, ...); "
-                "--basis is ignored");
-  c->add_option("--alpha", o->alpha, "Moment bias for --technique (default: the technique's own)")
-      ->check(CLI::Range(0.0, 0.999999));
-  CLI::Option* input = c->add_option("--input", o->input, "JSON Lines file of instances");
-  c->add_option("--output", o->output, "JSON Lines results (written atomically; stdout if absent)");
-  c->add_flag("--check", o->check, "Run the independent KKT checker on every optimal answer");
-  c->add_flag("--quantize", o->quantize, "Round extra points to the grid (REFERENCE.md §2)");
+  add_common_options(*c, *common, /*has_output=*/false);
+  // Shorthands of the option keys (solve_specs); given, they override the config file and --set.
+  c->add_option("--basis", o->basis, "= --set basis=[...]")->delimiter(',');
+  c->add_option("--interval", o->interval, "= --set interval=[lo, hi]")->delimiter(',');
+  c->add_option("--grid", o->grid, "= --set grid=N")->check(CLI::Range(2, 1 << 24));
+  c->add_option("--moments", o->moments, "= --set moments=[...]")->delimiter(',');
+  c->add_option("--points", o->points, "= --set points=[...]")->delimiter(',');
+  c->add_option("--zf", o->zf, "= --set zf=Z");
+  c->add_option("--backend", o->backend, "= --set backend=NAME")
+      ->check(CLI::IsMember({"fast", "glpk"}));
+  c->add_option("--technique", o->technique, "= --set technique=NAME");
+  c->add_option("--alpha", o->alpha, "= --set alpha=A")->check(CLI::Range(0.0, 0.999999));
+  CLI::Option* input = c->add_option("--input", o->input, "= --set input=FILE");
+  c->add_option("--output", o->output, "= --set output=FILE");
+  c->add_flag("--check", o->check, "= --set check=true");
+  c->add_flag("--quantize", o->quantize, "= --set quantize=true");
   // An instance comes from flags or from --input, never both (flags beside a batch were ignored).
   for (const char* flag :
        {"--basis", "--interval", "--moments", "--points", "--zf", "--technique", "--alpha"})
     input->excludes(c->get_option(flag));
-  c->callback([o, &action] { action = [o] { return run_solve(*o); }; });
+  c->callback([o, common, c, &action] {
+    action = [o, common, c] { return run_solve_command(*c, *common, *o); };
+  });
 }
 
 }  // namespace mb

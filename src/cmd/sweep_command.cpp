@@ -27,8 +27,6 @@
 
 namespace mb {
 
-namespace {
-
 std::vector<OptionSpec> sweep_specs() {
   auto specs = dataset_option_specs();
   for (auto& s : shadow_option_specs()) specs.push_back(s);
@@ -46,6 +44,8 @@ std::vector<OptionSpec> sweep_specs() {
                    "Techniques evaluated once on the same dataset, for the report."});
   return specs;
 }
+
+namespace {
 
 struct SweepOptions {
   CommonOptions common;

@@ -20,8 +20,6 @@
 
 namespace mb {
 
-namespace {
-
 std::vector<OptionSpec> verify_specs() {
   auto specs = dataset_option_specs();
   for (auto& s : shadow_option_specs()) specs.push_back(s);
@@ -47,6 +45,8 @@ std::vector<OptionSpec> verify_specs() {
       {"verify.worst", OptionType::Integer, "5", "Worst cases listed per solver.", 0, 1000});
   return specs;
 }
+
+namespace {
 
 std::string num(double v) {
   return format_number(v, "%.3g");

@@ -188,6 +188,10 @@ void Config::load_file(const std::string& file) {
   flatten(root, "", file);
 }
 
+void Config::set_node(const std::string& name, const YAML::Node& node, const std::string& origin) {
+  assign(canonical(name), node, origin);
+}
+
 void Config::set(const std::string& assignment) {
   auto eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0)
@@ -244,22 +248,30 @@ std::vector<double> Config::numbers(const std::string& name) const {
   return out;
 }
 
+namespace {
+// The documentation of an option with its range and choices, as --print-config and the README's
+// tables show it.
+std::string documented(const OptionSpec& s) {
+  std::ostringstream out;
+  out << s.doc;
+  if (s.type == OptionType::Integer || s.type == OptionType::Number ||
+      s.type == OptionType::NumberList) {
+    if (std::isfinite(s.min) || std::isfinite(s.max))
+      out << " Range [" << number_text(s.min) << ", " << number_text(s.max) << "].";
+  }
+  if (!s.choices.empty()) {
+    out << " One of:";
+    for (const auto& c : s.choices) out << " " << c;
+    out << ".";
+  }
+  return out.str();
+}
+}  // namespace
+
 std::string Config::to_yaml() const {
   std::ostringstream out;
-  for (const auto& s : specs_) {
-    out << "# " << s.doc;
-    if (s.type == OptionType::Integer || s.type == OptionType::Number ||
-        s.type == OptionType::NumberList) {
-      if (std::isfinite(s.min) || std::isfinite(s.max))
-        out << " Range [" << number_text(s.min) << ", " << number_text(s.max) << "].";
-    }
-    if (!s.choices.empty()) {
-      out << " One of:";
-      for (const auto& c : s.choices) out << " " << c;
-      out << ".";
-    }
-    out << "\n" << s.name << ": " << emit(values_.at(s.name).node) << "\n";
-  }
+  for (const auto& s : specs_)
+    out << "# " << documented(s) << "\n" << s.name << ": " << emit(values_.at(s.name).node) << "\n";
   return out.str();
 }
 
@@ -278,7 +290,7 @@ std::string Config::options_markdown() const {
   out << "| key | type | default | meaning |\n|---|---|---|---|\n";
   for (const auto& s : specs_)
     out << "| `" << s.name << "` | " << type_name(s.type) << " | `" << s.default_value << "` | "
-        << s.doc << " |\n";
+        << documented(s) << " |\n";
   return out.str();
 }
 

@@ -34,6 +34,9 @@ class Config {
   void load_file(const std::string& file);
   // "key=value" as given to --set; the value is parsed as YAML.
   void set(const std::string& assignment);
+  // A value given another way (a command's own flag, e.g. solve --grid), validated as --set's;
+  // `origin` names it in errors.
+  void set_node(const std::string& name, const YAML::Node& node, const std::string& origin);
 
   int64_t integer(const std::string& name) const;
   double number(const std::string& name) const;
