@@ -10,6 +10,7 @@
 #include "eval/eval_config.h"
 #include "eval/evaluation.h"
 #include "eval/verification.h"
+#include "eval/verify_report.h"
 #include "scene/dataset.h"
 #include "scene/procedural.h"
 #include "util/error.h"
@@ -47,19 +48,6 @@ std::vector<OptionSpec> verify_specs() {
 }
 
 namespace {
-
-std::string num(double v) {
-  return format_number(v, "%.3g");
-}
-std::string full(double v) {
-  return round_trip(v);
-}
-
-std::string joined(const std::vector<double>& v, const char* separator) {
-  std::string s;
-  for (size_t i = 0; i < v.size(); ++i) s += (i ? separator : "") + full(v[i]);
-  return s;
-}
 
 // Every receiver is equally likely; the sample is drawn with a seeded generator, in a fixed order.
 std::vector<VerifyInstance> dataset_instances(const std::vector<ViewData>& views,
@@ -148,112 +136,26 @@ int run_verify(const CommonOptions& options) {
     bar.finish();
   }
 
-  RunMetadata meta = collect_run_metadata(threads, process_arguments());
-  std::ostringstream md, csv, worst;
-  md << "# Closed forms against the LP (REFERENCE.md §6)\n\n"
-     << "Made by momentbench " << meta.version << " (git " << meta.git_sha << "), " << threads
-     << " threads, " << meta.started_utc << ".\n\n"
-     << "- " << random_count << " seeded random distributions (seed " << seed
-     << "; 1-8 atoms, two-bump mixtures), " << instances.size() - random_count
-     << " real receiver kernels of dataset " << dataset_name
-     << " (at z_f - delta_f, delta_f = " << num(settings.bias.constant) << " + "
-     << num(settings.bias.slope) << " * " << settings.kernel.radius() << " * (|dz/dx| + |dz/dy|))\n"
-     << "- The LP sees the exact distribution (its depths join the grid); the closed form sees its "
-        "moments as its "
-        "map stores them. Exact solvers run with alpha = 0; float/16-bit ones with their own "
-        "bias.\n"
-     << "- Pass: on the finest grid |dG| <= " << num(tolerance)
-     << " for every instance, and never above an LP witness: each LP optimum is a distribution on "
-        "I (its moments "
-        "miss the instance's by the LP tolerance, which near singular moments moves G by more than "
-        "1e-6), so the "
-        "closed form evaluated on that distribution's own moments must not exceed its mass below "
-        "z_f by more than "
-        "1e-6. Undefined: the closed form gave no number (singular moments at alpha = 0).\n\n"
-     << "| technique | LP basis | interval | instances | undefined |";
-  for (int g : grids) md << " grid " << g << ": max / mean abs dG |";
-  md << " beyond tol. | above witness | verdict |\n|---|---|---|---|---|";
-  for (size_t k = 0; k < grids.size(); ++k) md << "---|";
-  md << "---|---|---|\n";
-  csv << "technique,lp_basis,lo,hi,grid,instances,undefined,compared,lp_failures,max_abs_dG,mean_"
-         "abs_dG,beyond_tolerance,"
-         "above_lp,exact,passed\n";
-  worst << "technique,kind,rank,source,zf,moments,depths,weights,G_closed_form";
-  for (int g : grids) worst << ",G_lp_" << g;
-  worst << "\n";
-  bool all_passed = true;
-  for (const auto& r : results) {
-    std::string basis;
-    for (const auto& b : r.target.lp_basis) basis += (basis.empty() ? "" : ",") + b;
-    md << "| " << r.target.technique << " | " << basis << " | [" << num(r.target.lo) << ", "
-       << num(r.target.hi) << "] | " << r.instances << " | " << r.undefined << " |";
-    for (const auto& g : r.grids)
-      md << " " << num(g.max_difference) << " / " << num(g.mean_difference) << " |";
-    md << " " << r.beyond_tolerance << " | " << r.above_lp << " | "
-       << (r.target.exact ? (r.passed() ? "pass" : "**FAIL**") : "reported (bias)") << " |\n";
-    for (const auto& g : r.grids)
-      csv << r.target.technique << ",\"" << basis << "\"," << full(r.target.lo) << ","
-          << full(r.target.hi) << "," << g.grid << "," << r.instances << "," << r.undefined << ","
-          << g.compared << "," << g.lp_failures << "," << full(g.max_difference) << ","
-          << full(g.mean_difference) << "," << r.beyond_tolerance << "," << r.above_lp << ","
-          << (r.target.exact ? 1 : 0) << "," << (r.passed() ? 1 : 0) << "\n";
-    all_passed = all_passed && r.passed();
-  }
-  md << "\n## Worst cases\n\nPer solver: the largest |dG| on the finest grid, then (if any) the "
-        "cases furthest above an "
-        "LP. Re-run one with the printed `solve` commands (closed form, then the LP with the "
-        "distribution's depths "
-        "as extra points).\n";
-  // One table (and its worst.csv rows) per list of cases; `kind` names the ordering.
-  const auto write_cases = [&](const VerifySolverResult& r, const std::vector<VerifyCase>& cases,
-                               const char* kind, const char* heading) {
-    if (cases.empty()) return;
-    md << "\n### " << r.target.technique << ": " << heading
-       << "\n\n| rank | source | z_f | G closed form |";
-    for (int g : grids) md << " G LP " << g << " |";
-    md << "\n|---|---|---|---|";
-    for (size_t k = 0; k < grids.size(); ++k) md << "---|";
-    md << "\n";
-    for (size_t k = 0; k < cases.size(); ++k) {
-      const VerifyCase& c = cases[k];
-      const VerifyInstance& inst = instances[c.instance];
-      md << "| " << k + 1 << " | " << inst.source << " | " << full(inst.zf) << " | "
-         << full(c.closed_form) << " |";
-      for (double g : c.lp) md << " " << full(g) << " |";
-      md << "\n";
-      worst << r.target.technique << "," << kind << "," << k + 1 << ",\"" << inst.source << "\","
-            << full(inst.zf) << ",\"" << joined(c.moments, " ") << "\",\""
-            << joined(inst.depths, " ") << "\",\"" << joined(inst.weights, " ") << "\","
-            << full(c.closed_form);
-      for (double g : c.lp) worst << "," << full(g);
-      worst << "\n";
-    }
-    std::string basis;
-    for (const auto& b : r.target.lp_basis) basis += (basis.empty() ? "" : ",") + b;
-    const VerifyCase& c = cases.front();
-    const VerifyInstance& inst = instances[c.instance];
-    md << "\n```\nmomentbench solve --technique " << r.target.technique
-       << (r.target.exact ? " --alpha 0" : "") << " --moments " << joined(c.moments, ",")
-       << " --zf " << full(inst.zf) << "\nmomentbench solve --basis '" << basis << "' --interval "
-       << num(r.target.lo) << "," << num(r.target.hi) << " --grid " << grids.back() << " --zf "
-       << full(inst.zf) << " --points " << joined(inst.depths, ",")
-       << " --moments <E[b] of those points>\n```\n";
-  };
-  for (const auto& r : results) {
-    write_cases(r, r.worst, "largest_dG", "largest |dG| on the finest grid");
-    write_cases(r, r.worst_above, "above_lp", "furthest above an LP witness");
-  }
-  write_file_atomically(out / "verify.md", md.str());
-  write_file_atomically(out / "verify.csv", csv.str());
-  write_file_atomically(out / "worst.csv", worst.str());
+  const RunMetadata meta = collect_run_metadata(threads, process_arguments());
+  VerifyReportContext context;
+  context.version = meta.version, context.git_sha = meta.git_sha,
+  context.started = meta.started_utc;
+  context.threads = threads, context.seed = seed, context.random_count = random_count;
+  context.dataset = dataset_name, context.bias = settings.bias;
+  context.kernel_radius = settings.kernel.radius(), context.tolerance = tolerance;
+  context.grids = grids;
+  const VerifyReport report = render_verify_report(context, results, instances);
+  write_file_atomically(out / "verify.md", report.markdown);
+  write_file_atomically(out / "verify.csv", report.csv);
+  write_file_atomically(out / "worst.csv", report.worst_csv);
   write_file_atomically(out / "config.yaml", config.to_yaml());
   write_file_atomically(out / "run.yaml", to_yaml(meta));
   out.commit();
   // The table on stdout.
-  const std::string text = md.str();
+  const std::string& text = report.markdown;
   std::fputs(text.substr(0, text.find("\n## Worst")).c_str(), stdout);
   std::fputs("\n", stdout);
-  if (!all_passed) {
+  if (!report.all_passed) {
     for (const auto& r : results)
       if (!r.passed())
         std::fprintf(stderr,
