@@ -18,6 +18,7 @@
 #include "eval/evaluation.h"
 #include "eval/lp_technique.h"
 #include "eval/results_store.h"
+#include "eval/sweep_directory.h"
 #include "eval/sweep_plan.h"
 #include "eval/technique.h"
 #include "lp/solution.h"
@@ -72,22 +73,6 @@ std::string config_hash(const Config& config) {
   return buffer;
 }
 
-// Only what a sweep writes before its database exists: config.yaml, run_*.yaml, and the
-// temporaries of atomic writes.
-bool is_sweep_directory(const std::filesystem::path& dir) {
-  if (!std::filesystem::is_directory(dir)) return false;
-  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-    const std::string name = entry.path().filename().string();
-    const bool ours = name == "config.yaml" ||
-                      (name.rfind("run_", 0) == 0 && name.find(".yaml") != std::string::npos) ||
-                      name.find(".tmp-") != std::string::npos ||
-                      name.rfind("results.sqlite", 0) == 0 ||
-                      name.rfind(".results.sqlite.new-", 0) == 0;
-    if (!ours) return false;
-  }
-  return true;
-}
-
 std::vector<std::pair<std::string, double>> view_errors(const std::vector<ViewData>& views,
                                                         const std::vector<ErrorStats>& per_view) {
   std::vector<std::pair<std::string, double>> out;
@@ -132,60 +117,24 @@ int run_sweep(const SweepOptions& options) {
       prepare_views(dataset, int(config.integer("resolution")), settings, options.common.quiet);
   // The output directory is the sweep's state: new unless resuming, then it must match.
   namespace fs = std::filesystem;
-  const fs::path out = options.common.out, db_path = out / "results.sqlite";
+  const fs::path out = options.common.out;
   const std::string hash = config_hash(config),
                     shard_text = std::to_string(shard) + "/" + std::to_string(shards);
-  std::optional<ResultsStore> store;
-  if (options.resume && fs::exists(db_path)) {
-    store.emplace(ResultsStore::open(db_path.string()));
-    auto meta = store->meta();
-    if (meta["config_hash"] != hash)
-      throw InputError(db_path.string() + ": the sweep there was run with another config (hash " +
-                       meta["config_hash"] + ", now " + hash +
-                       "); compare its config.yaml, or start a new sweep elsewhere");
-    if (meta["shard"] != shard_text)
-      throw InputError(db_path.string() + ": that sweep is shard " + meta["shard"] + ", not " +
-                       shard_text);
-  } else {
-    // A sweep killed before its database existed left at most its own files: --resume starts it
-    // afresh there, so a sweep resumes from every instant (ResultsStore::create is atomic).
-    if (fs::exists(out)) {
-      if (options.resume) {
-        if (!is_sweep_directory(out))
-          throw InputError(
-              out.string() +
-              ": holds no results.sqlite and files that are not a sweep's; not resuming here");
-      } else if (!options.common.force) {
-        throw InputError(out.string() +
-                         ": output directory exists (use --resume to continue its sweep, --force "
-                         "to replace it)");
-      } else {
-        fs::remove_all(out);
-      }
-    }
-    std::error_code ec;
-    fs::create_directories(out, ec);
-    if (ec)
-      throw InputError(out.string() + ": cannot create the output directory: " + ec.message());
-    write_file_atomically(out / "config.yaml", config.to_yaml());
-    store.emplace(ResultsStore::create(db_path.string(),
-                                       {{"config_hash", hash},
-                                        {"shard", shard_text},
-                                        {"dataset", dataset.name},
-                                        {"reference", reference_name(settings.bias.reference)},
-                                        {"git_sha", collect_run_metadata(threads, {}).git_sha},
-                                        {"catalog_size", std::to_string(plan.catalog.size())},
-                                        {"combination_size", std::to_string(plan.size)},
-                                        {"planned", std::to_string(plan.ids.size())},
-                                        {"settings", describe_settings(settings)},
-                                        {"config", config.to_yaml()}}));
-  }
+  ResultsStore store = open_sweep_directory(out, {hash, shard_text, config.to_yaml()},
+                                            {{"dataset", dataset.name},
+                                             {"reference", reference_name(settings.bias.reference)},
+                                             {"git_sha", collect_run_metadata(threads, {}).git_sha},
+                                             {"catalog_size", std::to_string(plan.catalog.size())},
+                                             {"combination_size", std::to_string(plan.size)},
+                                             {"planned", std::to_string(plan.ids.size())},
+                                             {"settings", describe_settings(settings)}},
+                                            options.resume, options.common.force);
   write_file_atomically(out / ("run_" + std::to_string(std::time(nullptr)) + ".yaml"),
                         to_yaml(collect_run_metadata(threads, process_arguments())));
 
   // References first (once; a resumed sweep keeps them).
   std::set<std::string> have;
-  for (const auto& r : store->references()) have.insert(r.name);
+  for (const auto& r : store.references()) have.insert(r.name);
   for (const auto& name : references) {
     if (have.count(name)) continue;
     auto start = std::chrono::steady_clock::now();
@@ -203,11 +152,11 @@ int run_sweep(const SweepOptions& options) {
     row.unstable = total.failures;
     std::tie(row.darkening_bound, row.darkening_reason) = darkening[name];
     row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    store->put_reference(row);
+    store.put_reference(row);
   }
 
   CandidateEvaluator evaluator(views, settings);
-  const auto done = store->candidate_ids();
+  const auto done = store.candidate_ids();
   std::vector<uint64_t> todo;
   for (uint64_t id : shard_ids(plan, shard, shards))
     if (!done.count(id)) todo.push_back(id);
@@ -247,7 +196,7 @@ int run_sweep(const SweepOptions& options) {
     row.unstable = result.unstable;
     row.darkening_bound = kLpDarkeningBound;
     row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    store->put_candidate(row);
+    store.put_candidate(row);
     lps += result.solved + result.infeasible + result.unstable;
     double elapsed =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - sweep_start).count();
@@ -257,7 +206,7 @@ int run_sweep(const SweepOptions& options) {
     bar.advance();
   }
   bar.finish();
-  if (!options.common.quiet) std::fprintf(stderr, "sweep: %s complete\n", db_path.c_str());
+  if (!options.common.quiet) std::fprintf(stderr, "sweep: %s complete\n", (out / "results.sqlite").c_str());
   return 0;
 }
 
