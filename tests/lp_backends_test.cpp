@@ -7,6 +7,7 @@
 
 #include "eval/evaluation.h"
 #include "eval/lp_technique.h"
+#include "eval/warm_runs.h"
 #include "lp/fallback_backend.h"
 #include "lp/fast_backend.h"
 #include "lp/kkt_checker.h"
@@ -316,22 +317,24 @@ TEST(LpWarmStart, RunsOfNeighbouringFragmentsGiveTheColdAnswers) {
     ProblemFactory factory(Basis::parse(mb::lp_technique_basis(std::string("lp:") + basis_text)),
                            Discretization{0, 1, grid, false});
     auto cold = make_backend("fast"), warm = make_backend("fast");
+    const KernelAtomMap atoms(settings.kernel.size);
     int cold_pivots = 0, warm_pivots = 0, compared = 0, not_optimal = 0;
     for (const auto& v : views) {
       int run = -1;  // every third warm-start band, each in fragment order as the sweep solves it
       for (size_t k = 0; k < v.fragments.size(); ++k) {
         const size_t t = v.fragments.texel[k];
         const int x = int(t % v.map.width), y = int(t / v.map.width);
-        if (warm_run_of(t, v.map.width) % 3 != 0) continue;
-        const bool first = warm_run_of(t, v.map.width) != run;
+        if (mb::warm_run_of(t, v.map.width) % 3 != 0) continue;
+        const bool first = mb::warm_run_of(t, v.map.width) != run;
         const double zf = v.fragments.ztest[k];
         if (v.fragments.oracle[k] == 0) continue;  // F_Z(z_f - delta_f) = 0: G = 0, no LP
         kernel_distribution(v.map, settings.kernel, x, y, depths, weights);
         const Problem p = factory.from_distribution(depths, weights, zf);
         const Solution a = cold->solve(p);
         const Solution b =
-            first ? warm->solve(p) : warm->solve_next(p, {v.fragments.layer[k], x, y});
-        run = warm_run_of(t, v.map.width);
+            first ? warm->solve(p)
+                  : warm->solve_next(p, warm_start_at(v.fragments.layer[k], x, y, &atoms));
+        run = mb::warm_run_of(t, v.map.width);
         cold_pivots += a.iterations;
         warm_pivots += b.iterations;
         ASSERT_EQ(a.status, b.status) << basis_text << " fragment " << k;
@@ -358,10 +361,10 @@ TEST(LpWarmStart, RunsOfNeighbouringFragmentsGiveTheColdAnswers) {
   }
 }
 
-// A basis carries over by texel (WarmPosition's column and row): the same kernel solved again at
-// the same texel maps every kernel column to itself, so the remembered basis and its inverse come
-// back unchanged and the LP is optimal without a pivot; one texel to the right the same depths are
-// one tap to the left, and the answer is still the cold one.
+// A basis carries over by texel (eval/warm_runs.h's KernelAtomMap over WarmStart::place): the same
+// kernel solved again at the same texel maps every kernel column to itself, so the remembered basis
+// and its inverse come back unchanged and the LP is optimal without a pivot; one texel to the right
+// the same depths are one tap to the left, and the answer is still the cold one.
 TEST(LpWarmStart, TheSameTexelGivesTheSameBasisBack) {
   EvalSettings settings;
   settings.threads = 1;
@@ -369,6 +372,7 @@ TEST(LpWarmStart, TheSameTexelGivesTheSameBasisBack) {
   const ViewData& v = views.front();
   ProblemFactory factory(Basis::parse({"power4"}), Discretization{0, 1, 256, false});
   std::vector<double> depths(81), weights(81);
+  const KernelAtomMap atoms(settings.kernel.size);
   int checked = 0;
   for (size_t k = 0; k < v.fragments.size() && checked < 40; k += 7) {
     const size_t t = v.fragments.texel[k];
@@ -380,13 +384,14 @@ TEST(LpWarmStart, TheSameTexelGivesTheSameBasisBack) {
     auto warm = make_backend("fast"), cold = make_backend("fast");
     const Solution first = warm->solve(p);
     ASSERT_EQ(first.status, ProblemStatus::Optimal);
-    const Solution again = warm->solve_next(p, {v.fragments.layer[k], x, y});
+    const Solution again = warm->solve_next(p, warm_start_at(v.fragments.layer[k], x, y, &atoms));
     ASSERT_EQ(again.status, ProblemStatus::Optimal);
     EXPECT_EQ(again.iterations, 0) << "fragment " << k;
     EXPECT_NEAR(again.G, first.G, 1e-9) << "fragment " << k;
     kernel_distribution(v.map, settings.kernel, x + 1, y, depths, weights);
     const Problem right = factory.from_distribution(depths, weights, zf);
-    const Solution next = warm->solve_next(right, {v.fragments.layer[k], x + 1, y});
+    const Solution next =
+        warm->solve_next(right, warm_start_at(v.fragments.layer[k], x + 1, y, &atoms));
     const Solution reference = cold->solve(right);
     ASSERT_EQ(next.status, reference.status) << "fragment " << k;
     if (reference.status == ProblemStatus::Optimal) {
@@ -412,6 +417,7 @@ TEST(LpWarmStart, MappingByTexelNeedsFewerPivotsThanBySameOffset) {
   };
   const GaussianKernel kernel = make_gaussian_kernel(9, 2.4);
   const int r = kernel.radius();
+  const KernelAtomMap atoms(kernel.size);
   ProblemFactory factory(Basis::parse({"power4"}), Discretization{0, 1, 256, false});
   auto cold = make_backend("fast"), by_texel = make_backend("fast"),
        by_offset = make_backend("fast");
@@ -427,8 +433,10 @@ TEST(LpWarmStart, MappingByTexelNeedsFewerPivotsThanBySameOffset) {
       const Problem p = factory.from_distribution(depths, weights, zf);
       const Solution reference = cold->solve(p);
       const bool first = x == 0 && y == 0;
-      const Solution a = first ? by_texel->solve(p) : by_texel->solve_next(p, {0, x, y});
-      const Solution b = first ? by_offset->solve(p) : by_offset->solve_next(p, {0, x, -1});
+      const Solution a =
+          first ? by_texel->solve(p) : by_texel->solve_next(p, warm_start_at(0, x, y, &atoms));
+      const Solution b =
+          first ? by_offset->solve(p) : by_offset->solve_next(p, warm_start_at(0, x, -1, &atoms));
       ASSERT_EQ(reference.status, ProblemStatus::Optimal) << x << ", " << y;
       ASSERT_EQ(a.status, ProblemStatus::Optimal) << x << ", " << y;
       ASSERT_EQ(b.status, ProblemStatus::Optimal) << x << ", " << y;

@@ -19,8 +19,8 @@ void expect_same_problem(const Problem& a, const Problem& b) {
   EXPECT_EQ(a.moments, b.moments);
   EXPECT_EQ(a.start_support, b.start_support);
   EXPECT_EQ(a.start_weights, b.start_weights);
-  EXPECT_EQ(a.tap_extra, b.tap_extra);
-  EXPECT_EQ(a.extra_tap, b.extra_tap);
+  EXPECT_EQ(a.atom_extra, b.atom_extra);
+  EXPECT_EQ(a.extra_atom, b.extra_atom);
   EXPECT_EQ(a.zf_extra, b.zf_extra);
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "eval/warm_runs.h"
 #include "lp/solution.h"
 #include "util/parallel_errors.h"
 
@@ -41,12 +42,13 @@ LpViewAnswers solve_lp_view(const ViewData& view, const std::vector<uint32_t>& l
 #pragma omp parallel for schedule(static) num_threads(settings.threads)
   for (size_t t = 0; t < texels; ++t) factory.transform(&raw[t * k], &columns[t * k]);
 
-  // Warm-start runs (bands of lp::kWarmRunRows texel rows; fragments are in texel order): each
+  // Warm-start runs (bands of kWarmRunRows texel rows; fragments are in texel order): each
   // run is solved in order by one thread, first from scratch, so the answers do not depend on
   // the schedule.
-  const std::vector<size_t> run_begin = lp::warm_run_begins(
+  const std::vector<size_t> run_begin = warm_run_begins(
       list.size(), map.width, [&](size_t i) { return view.fragments.texel[list[i]]; });
   const size_t runs = run_begin.size() - 1;
+  const KernelAtomMap atoms(kernel.size);
   std::vector<double> g(view.fragments.size(), 0.0);  // skipped fragments: G = 0 exactly
   ParallelErrors errors;  // each run captured: a throw must not leave the worksharing loop
 #pragma omp parallel num_threads(settings.threads) reduction(+ : solved, infeasible, unstable)
@@ -77,7 +79,7 @@ LpViewAnswers solve_lp_view(const ViewData& view, const std::vector<uint32_t>& l
             }
             factory.from_distribution(tap_depth, tap_weight, tap_column, zf, problem);
           }
-          const lp::WarmPosition at{view.fragments.layer[f], x, y};
+          const lp::WarmStart at = warm_start_at(view.fragments.layer[f], x, y, &atoms);
           backend->solve_into(problem, i == run_begin[run] ? nullptr : &at, s);
           if (s.call == lp::CallStatus::Ok && s.status == lp::ProblemStatus::Optimal) {
             g[f] = std::clamp(s.G, 0.0, 1.0);

@@ -20,12 +20,12 @@ class FallbackBackend : public Backend {
     solve_into(p, nullptr, s);
     return s;
   }
-  Solution solve_next(const Problem& p, WarmPosition at) override {
+  Solution solve_next(const Problem& p, const WarmStart& at) override {
     Solution s;
     solve_into(p, &at, s);
     return s;
   }
-  void solve_into(const Problem& p, const WarmPosition* at, Solution& s) override {
+  void solve_into(const Problem& p, const WarmStart* at, Solution& s) override {
     primary_->solve_into(p, at, s);
     if (s.call != CallStatus::Ok || s.status == ProblemStatus::Optimal ||
         s.status == ProblemStatus::Infeasible)

@@ -35,12 +35,12 @@ class FastBackend : public Backend {
     solve_into(p, nullptr, s);
     return s;
   }
-  Solution solve_next(const Problem& p, WarmPosition at) override {
+  Solution solve_next(const Problem& p, const WarmStart& at) override {
     Solution s;
     solve_into(p, &at, s);
     return s;
   }
-  void solve_into(const Problem& p, const WarmPosition* at, Solution& s) override {
+  void solve_into(const Problem& p, const WarmStart* at, Solution& s) override {
     if (p.rows > kMaxRows) {
       s.reset();
       s.call = CallStatus::Failed;

@@ -198,8 +198,8 @@ void ProblemFactory::from_distribution(std::span<const double> depths,
   p.extra.points.clear();
   p.start_support.clear();
   p.start_weights.clear();
-  p.tap_extra.assign(depths.size(), -1);
-  p.extra_tap.clear();
+  p.atom_extra.assign(depths.size(), -1);
+  p.extra_atom.clear();
   p.zf_extra = -1;
   double part[4] = {0, 0, 0, 0};  // four independent sums: one is a chain of dependent adds
   size_t i = 0;
@@ -207,40 +207,40 @@ void ProblemFactory::from_distribution(std::span<const double> depths,
     for (int q = 0; q < 4; ++q) part[q] += weights[i + q];
   for (; i < weights.size(); ++i) part[0] += weights[i];
   const double total = (part[0] + part[1]) + (part[2] + part[3]);
-  const double scale = 1 / total;  // one division per fragment, not one per tap
+  const double scale = 1 / total;  // one division per fragment, not one per atom
   // Distinct depths become extra columns (a kernel often sees one surface many times); the rhs is
-  // the distribution's own moment vector, accumulated in tap order (in registers: through p.rhs
-  // every tap waited for the previous tap's store). Columns go straight to their rows, `stride`
-  // apart (room for every tap and z_f), and the rows are packed at the end.
+  // the distribution's own moment vector, accumulated in atom order (in registers: through p.rhs
+  // every atom waited for the previous atom's store). Columns go straight to their rows, `stride`
+  // apart (room for every atom and z_f), and the rows are packed at the end.
   double rhs[kMaxColumnRows] = {};
-  const size_t taps = depths.size(), stride = taps + 1;
+  const size_t atoms = depths.size(), stride = atoms + 1;
   std::vector<double>& values = p.extra.values;
   values.resize(size_t(rows_) * stride);
-  // Sized for every tap and z_f, written through pointers, trimmed at the end.
+  // Sized for every atom and z_f, written through pointers, trimmed at the end.
   p.extra.points.resize(stride);
-  p.extra_tap.resize(stride);
-  p.start_support.resize(taps);
-  p.start_weights.resize(taps);
+  p.extra_atom.resize(stride);
+  p.start_support.resize(atoms);
+  p.start_weights.resize(atoms);
   const int g = grid_->size();
   int count = with_row_count<0>(rows_, [&](auto fixed) {
     // The row count known at compile time (0: not), so that rhs stays in registers.
     constexpr int kRows = decltype(fixed)::value;
     const int rows = kRows ? kRows : rows_;
     double* points = p.extra.points.data();
-    int* extra_tap = p.extra_tap.data();
+    int* extra_atom = p.extra_atom.data();
     double* start_weights = p.start_weights.data();
     int* start_support = p.start_support.data();
-    int* tap_extra = p.tap_extra.data();
+    int* atom_extra = p.atom_extra.data();
     double* out = values.data();
     double sum[kRows ? kRows : kMaxColumnRows] = {};
     int n = 0;
-    for (size_t t = 0; t < taps; ++t) {
+    for (size_t t = 0; t < atoms; ++t) {
       if (weights[t] == 0) continue;
       const double w = weights[t] * scale;
       const double* column = depth_columns[t];
       for (int r = 0; r < rows; ++r)
         sum[r] = std::fma(w, column[r], sum[r]);  // fused: see transform
-      // Equal depths are usually neighbours in tap order: look back a few slots only (a duplicate
+      // Equal depths are usually neighbours in atom order: look back a few slots only (a duplicate
       // column that slips through is harmless, a quadratic search per fragment is not).
       int slot = -1;  // the earliest match among the last four (selects, not branches)
       for (int back = 4; back >= 1; --back) {
@@ -250,13 +250,13 @@ void ProblemFactory::from_distribution(std::span<const double> depths,
       if (slot < 0) {
         slot = n++;
         points[slot] = depths[t];
-        extra_tap[slot] = int(t);
+        extra_atom[slot] = int(t);
         for (int r = 0; r < rows; ++r) out[r * stride + slot] = column[r];
         start_support[slot] = g + slot;
         start_weights[slot] = 0;
       }
       start_weights[slot] += w;
-      tap_extra[t] = slot;
+      atom_extra[t] = slot;
     }
     for (int r = 0; r < rows; ++r) rhs[r] = sum[r];
     return n;
@@ -264,13 +264,13 @@ void ProblemFactory::from_distribution(std::span<const double> depths,
   p.start_support.resize(count);
   p.start_weights.resize(count);
   p.extra.points.resize(count);
-  p.extra_tap.resize(count);
+  p.extra_atom.resize(count);
   if (zf >= disc_.lo && zf <= disc_.hi) {
     const auto same = std::find(p.extra.points.begin(), p.extra.points.end(), zf);
     p.zf_extra = int(same - p.extra.points.begin());
     if (same == p.extra.points.end()) {
       p.extra.points.push_back(zf);
-      p.extra_tap.push_back(-1);
+      p.extra_atom.push_back(-1);
       put_column(*this, zf, values, stride, count++);
     }
   }
@@ -294,7 +294,7 @@ void ProblemFactory::from_distribution(std::span<const double> depths,
 bool ProblemFactory::move_zf(double zf, Problem& p) const {
   const int count = p.extra.size();
   // z_f's own column is the last one exactly when it did not coincide with a kernel depth.
-  const bool appended = p.zf_extra >= 0 && p.zf_extra == count - 1 && p.extra_tap[p.zf_extra] < 0;
+  const bool appended = p.zf_extra >= 0 && p.zf_extra == count - 1 && p.extra_atom[p.zf_extra] < 0;
   if (!appended || !(zf >= disc_.lo && zf <= disc_.hi)) return false;
   if (std::find(p.extra.points.begin(), p.extra.points.end() - 1, zf) != p.extra.points.end() - 1)
     return false;

@@ -50,10 +50,11 @@ struct Problem {
   // one: backends may start from it instead of searching for feasibility.
   std::vector<int> start_support;
   std::vector<double> start_weights;
-  // Built from a kernel (from_distribution): which extra column each tap became (-1: zero weight),
-  // the first tap of each extra column (-1: the z_f column), and z_f's extra column (-1: none).
-  // A warm start maps a neighbour's basis through these, to the taps that see the same texels.
-  std::vector<int> tap_extra, extra_tap;
+  // Built from a distribution (from_distribution): which extra column each atom became, in the
+  // order given (-1: zero weight), the first atom of each extra column (-1: the z_f column), and
+  // z_f's extra column (-1: none). A warm start maps a remembered basis through these and an
+  // AtomMap (solution.h), so that the atoms standing for the same depths come back.
+  std::vector<int> atom_extra, extra_atom;
   int zf_extra = -1;
 
   int grid_size() const { return grid ? grid->size() : 0; }
@@ -97,10 +98,10 @@ class ProblemFactory {
   void from_distribution(std::span<const double> depths, std::span<const double> weights,
                          std::span<const double* const> depth_columns, double zf,
                          Problem& out) const;
-  // `p`, built by from_distribution, for another z_f (the fragments of one texel share its kernel):
-  // only z_f's column changes, and `p` ends up as from_distribution would build it. False, with `p`
-  // unchanged, when z_f's column is not simply replaced (z_f on a kernel depth or outside [lo, hi],
-  // before or now): then build anew.
+  // `p`, built by from_distribution, for another z_f (e.g. the fragments of one texel, which share
+  // its kernel): only z_f's column changes, and `p` ends up as from_distribution would build it.
+  // False, with `p` unchanged, when z_f's column is not simply replaced (z_f on a kernel depth or
+  // outside [lo, hi], before or now): then build anew.
   bool move_zf(double zf, Problem& p) const;
 
  private:

@@ -51,17 +51,38 @@ struct Solution {
   }
 };
 
-// Where a fragment sits in its warm-start run (DESIGN.md §Performance shape, extended to two
-// dimensions): its layer, so that it can continue from the same layer of the texel to the left
-// (the last problem solved in that lane), and its texel column, so that it can continue from any
-// layer of the texel above or above to the right (the last problems solved in those columns; the
-// run goes in raster order); -1: no column memory.
-struct WarmPosition {
-  int layer = 0;
-  int column = -1;
-  // The texel row (-1: unknown): with it and the column, a kernel column of a remembered basis maps
-  // to the tap that sees the same texel, so that the same depth (the same column) comes back.
-  int row = -1;
+// Warm starts (Backend::solve_next): problems solved one after another that resemble each other
+// (the caller's neighbours) start from each other's optimal bases. The caller says where a basis
+// is remembered and which remembered ones to offer; the LP knows nothing of where its problems
+// come from.
+constexpr int kWarmLanes = 8;
+
+// An opaque position of a problem, given back to the AtomMap (-1: unknown).
+struct Place {
+  int x = -1, y = -1;
+};
+
+// Maps the atoms of a known distribution (Problem::atom_extra's order) between two problems, so
+// that a remembered basis's atom columns come back as the atoms that stand for the same depths.
+class AtomMap {
+ public:
+  virtual ~AtomMap() = default;
+  // For a basis remembered at `then` and offered to the problem at `now`: table[a] is the atom of
+  // `now` that stands for atom a of `then`, for a < size(); null when every atom maps to itself.
+  virtual const int* table(Place then, Place now) const = 0;
+  virtual int size() const = 0;
+};
+
+struct WarmStart {
+  // The lane (0..kWarmLanes-1) whose last basis is offered first and in which this problem's
+  // optimal basis is remembered (e.g. the fragment's layer, so that lane l continues layer l).
+  int lane = 0;
+  // Also remember the basis in memory `memory` (>= 0), under its lane; -1: no.
+  int memory = -1;
+  // Offer every lane's basis of these memories too (-1: none).
+  int offers[2] = {-1, -1};
+  Place place;                     // stored with the basis, passed to `atoms`
+  const AtomMap* atoms = nullptr;  // null: atoms keep their index
 };
 
 class Backend {
@@ -72,44 +93,21 @@ class Backend {
   virtual int max_functions() const = 0;
   virtual Solution solve(const Problem& problem) = 0;
   // The same answer to within the certified 1e-9, possibly faster: `problem` continues a run of
-  // neighbouring fragments in raster order, and the backend may start from the optimal bases of
-  // the problems it solved last at the texel to the left (same layer; layers >= kWarmLanes share
-  // the last lane) and at the texels above and above to the right (`at`). The result then depends
-  // on the run, so callers that promise results independent of the thread count must cut runs the
-  // same way on every schedule (warm_run_of) and start each with `solve`, which forgets every
-  // basis. Backends without warm starts solve from scratch.
-  virtual Solution solve_next(const Problem& problem, WarmPosition at) {
+  // similar problems, and the backend may start from the optimal bases remembered in `at`'s lanes
+  // and memories (WarmStart). The result then depends on the run, so callers that promise results
+  // independent of the thread count must cut runs the same way on every schedule and start each
+  // with `solve`, which forgets every basis. Backends without warm starts solve from scratch.
+  virtual Solution solve_next(const Problem& problem, const WarmStart& at) {
     (void)at;
     return solve(problem);
   }
   // solve (at == nullptr) or solve_next, into `out`, whose storage a backend may reuse: the loops
   // over millions of LPs (sweep, eval's lp:) then allocate nothing per LP (three allocations and
   // frees an LP otherwise).
-  virtual void solve_into(const Problem& problem, const WarmPosition* at, Solution& out) {
+  virtual void solve_into(const Problem& problem, const WarmStart* at, Solution& out) {
     out = at ? solve_next(problem, *at) : solve(problem);
   }
 };
-
-constexpr int kWarmLanes = 8;
-// Shadow-map rows per warm-start run: eval and sweep start a fresh run at every band of this many
-// rows, whatever thread gets it, so their results agree bit for bit. Within a band every row but
-// the first has the row above to start from; bands of 8 rows keep 64 runs per 512-row view for
-// the threads to share.
-constexpr int kWarmRunRows = 8;
-inline int warm_run_of(size_t texel, int width) {
-  return int(texel / size_t(width)) / kWarmRunRows;
-}
-// Where the warm-start runs of `count` fragments in texel order begin, with `count` appended;
-// texel_of(i) is the i-th fragment's texel. Eval and sweep cut their runs with this.
-template <class TexelOf>
-std::vector<size_t> warm_run_begins(size_t count, int width, TexelOf texel_of) {
-  std::vector<size_t> begins;
-  for (size_t i = 0; i < count; ++i)
-    if (i == 0 || warm_run_of(texel_of(i), width) != warm_run_of(texel_of(i - 1), width))
-      begins.push_back(i);
-  begins.push_back(count);
-  return begins;
-}
 
 // "fast" (our exact dense simplex) or "glpk" (the reference).
 std::unique_ptr<Backend> make_backend(const std::string& name);

@@ -28,4 +28,13 @@ GaussianKernel make_gaussian_kernel(int size, double sigma) {
   return k;
 }
 
+std::vector<int> kernel_tap_permutation(int size, int dx, int dy) {
+  std::vector<int> out(size_t(size) * size);
+  for (int t = 0; t < size * size; ++t) {
+    const int x = t % size - dx, y = t / size - dy;
+    out[t] = x >= 0 && y >= 0 && x < size && y < size ? y * size + x : t;
+  }
+  return out;
+}
+
 }  // namespace mb

@@ -16,4 +16,10 @@ struct GaussianKernel {
 // Rejects (InputError) an even or non-positive size and sigma <= 0.
 GaussianKernel make_gaussian_kernel(int size, double sigma);
 
+// Taps are listed row by row (kernel_distribution's order). For the kernel of the texel (dx, dy)
+// away from another's: out[t] is the tap of this kernel that sees the texel tap t of the other saw,
+// or t itself where that texel lies outside this kernel (the tap at the same offset then sees a
+// nearby surface). Warm starts map a neighbour's LP basis through it (eval/warm_runs.h).
+std::vector<int> kernel_tap_permutation(int size, int dx, int dy);
+
 }  // namespace mb

@@ -25,6 +25,7 @@
 #endif
 
 #include "eval/evaluation.h"
+#include "eval/warm_runs.h"
 #include "lp/problem.h"
 #include "lp/solution.h"
 
@@ -69,12 +70,17 @@ const std::vector<lp::Problem>& problems(const std::string& basis_name, int grid
   return out;
 }
 
-// Runs as the sweep solves them: the fragments of a warm-start band (lp::kWarmRunRows texel rows)
+// Runs as the sweep solves them: the fragments of a warm-start band (kWarmRunRows texel rows)
 // in fragment order, the LP ones among them, within a window of kRunColumns columns so that a pass
 // stays short; three windows at evenly spaced places of every view.
+// The sweep's atom map for its 9 x 9 kernel (eval/warm_runs.h).
+const KernelAtomMap& atom_map() {
+  static const KernelAtomMap map(9);
+  return map;
+}
 struct Run {
   std::vector<lp::Problem> problems;
-  std::vector<lp::WarmPosition> positions;
+  std::vector<lp::WarmStart> positions;
 };
 const std::vector<Run>& runs(const std::string& basis_name, int grid) {
   static std::map<std::pair<std::string, int>, std::vector<Run>> cache;
@@ -85,7 +91,7 @@ const std::vector<Run>& runs(const std::string& basis_name, int grid) {
   std::vector<double> depths(81), weights(81);
   constexpr int kRunsPerView = 3, kRunColumns = 48;
   for (const auto& v : views()) {
-    const int bands = v.map.height / lp::kWarmRunRows;
+    const int bands = v.map.height / kWarmRunRows;
     for (int r = 0; r < kRunsPerView && bands > 0; ++r) {
       Run run;
       const int band = bands * (2 * r + 1) / (2 * kRunsPerView);
@@ -93,12 +99,12 @@ const std::vector<Run>& runs(const std::string& basis_name, int grid) {
       for (size_t k = 0; k < v.fragments.size(); ++k) {
         const size_t t = v.fragments.texel[k];
         const int x = int(t % v.map.width), y = int(t / v.map.width);
-        if (lp::warm_run_of(t, v.map.width) != band || x < x0 || x >= x0 + kRunColumns) continue;
+        if (warm_run_of(t, v.map.width) != band || x < x0 || x >= x0 + kRunColumns) continue;
         const double zf = v.fragments.ztest[k];
         if (v.fragments.oracle[k] == 0) continue;
         kernel_distribution(v.map, kernel, x, y, depths, weights);
         run.problems.push_back(factory.from_distribution(depths, weights, zf));
-        run.positions.push_back({v.fragments.layer[k], x, y});
+        run.positions.push_back(warm_start_at(v.fragments.layer[k], x, y, &atom_map()));
       }
       out.push_back(std::move(run));
     }
@@ -140,7 +146,7 @@ struct TimedSolver {
   Ticks pass_ticks = now();
   std::chrono::steady_clock::time_point pass_start = std::chrono::steady_clock::now();
   Ticks last = 0;  // the last solve's ticks
-  const lp::Solution& solve(const lp::Problem& stored, const lp::WarmPosition* at) {
+  const lp::Solution& solve(const lp::Problem& stored, const lp::WarmStart* at) {
     problem = stored;
     const Ticks start = now();
     backend->solve_into(problem, at, solution);

@@ -4,36 +4,35 @@
 
 namespace mb::lp::fast {
 
-// at == nullptr: from scratch, and every basis is forgotten; otherwise the warm bases of the
-// texel to the left and of the texel above are tried first (Backend::solve_next).
+// at == nullptr: from scratch, and every basis is forgotten; otherwise the bases of the lanes and
+// of the memories `at` offers are tried first (Backend::solve_next).
 template <int K>
-void FastSimplex<K>::run(const Problem& p, const WarmPosition* at, Solution& s) {
+void FastSimplex<K>::run(const Problem& p, const WarmStart* at, Solution& s) {
   if (!at) {
     std::fill(std::begin(lane_zf_), std::end(lane_zf_), kNoBasis);
-    std::fill(above_zf_.begin(), above_zf_.end(), kNoBasis);
+    std::fill(memory_zf_.begin(), memory_zf_.end(), kNoBasis);
   }
-  const int layer = at ? std::clamp(at->layer, 0, kWarmLanes - 1) : 0;
-  const int column = at ? at->column : -1;
-  if (column >= 0 && size_t(column + 1) * kWarmLanes > above_.size()) {
-    above_.resize(size_t(column + 1) * kWarmLanes);
-    above_zf_.resize(above_.size(), kNoBasis);
+  const int lane = at ? std::clamp(at->lane, 0, kWarmLanes - 1) : 0;
+  const int memory = at ? at->memory : -1;
+  if (memory >= 0 && size_t(memory + 1) * kWarmLanes > memories_.size()) {
+    memories_.resize(size_t(memory + 1) * kWarmLanes);
+    memory_zf_.resize(memories_.size(), kNoBasis);
   }
-  // Warm bases to try, closest z_f first: layers of neighbouring texels do not always count the
-  // same surfaces, so the fragment's own lane is not always the best guess, and where the
-  // surfaces change from left to right (a silhouette along the column) the texel above often
-  // still sees the same ones: with it, a third fewer LPs need the composite repair. The texel
-  // above and to the right (the row above has passed it, this row not yet) adds what a silhouette
-  // running down to the left hides from both (fewer pivots and
-  // composite repairs on lp_bench's runs).
+  // Warm bases to try, closest z_f first: every lane's last basis, then the offered memories'.
+  // (In eval and sweep a lane is a layer and a memory a texel column, offered for the texel above
+  // and above to the right: layers of neighbouring texels do not always count the same surfaces,
+  // and where the surfaces change from left to right the texel above often still sees the same
+  // ones; lp_fragment_solver.cpp.)
   WarmOffers offers;
   if (at) {
-    const bool above = column >= 0,
-               right = above && size_t(column + 2) * kWarmLanes <= above_.size();
-    const size_t slot = above ? size_t(column) * kWarmLanes : 0;
     offers.offer(0, lanes_, lane_zf_, p.zf);
-    offers.offer(1, above ? &above_[slot] : nullptr, above ? &above_zf_[slot] : nullptr, p.zf);
-    offers.offer(2, right ? &above_[slot + kWarmLanes] : nullptr,
-                 right ? &above_zf_[slot + kWarmLanes] : nullptr, p.zf);
+    for (int o = 0; o < 2; ++o) {
+      const int m = at->offers[o];
+      const bool kept = m >= 0 && size_t(m + 1) * kWarmLanes <= memories_.size();
+      const size_t slot = kept ? size_t(m) * kWarmLanes : 0;
+      offers.offer(1 + o, kept ? &memories_[slot] : nullptr, kept ? &memory_zf_[slot] : nullptr,
+                   p.zf);
+    }
   }
   s.reset();
   at_ = at;
@@ -50,12 +49,12 @@ void FastSimplex<K>::run(const Problem& p, const WarmPosition* at, Solution& s) 
     solve(p, none, s);
     retrying_ = false;
   }
-  lane_zf_[layer] = remember_basis(s, lanes_[layer]);
-  if (!std::isnan(lane_zf_[layer])) save_basis(lane_factors_[layer]);
-  if (column >= 0) {  // the same basis for the row below
-    const size_t slot = size_t(column) * kWarmLanes + layer;
-    above_[slot] = lanes_[layer];
-    above_zf_[slot] = lane_zf_[layer];
+  lane_zf_[lane] = remember_basis(s, lanes_[lane]);
+  if (!std::isnan(lane_zf_[lane])) save_basis(lane_factors_[lane]);
+  if (memory >= 0) {  // the same basis in its memory (for the row below, in eval)
+    const size_t slot = size_t(memory) * kWarmLanes + lane;
+    memories_[slot] = lanes_[lane];
+    memory_zf_[slot] = lane_zf_[lane];
   }
 }
 
@@ -77,17 +76,6 @@ void FastSimplex<K>::solve(const Problem& p, WarmOffers& warm, Solution& s) {
   extra_points_ = p.extra.points.data();
   cell_scale_ = grid.back() > grid.front() ? (g_ - 1) / (grid.back() - grid.front()) : 0.0;
   const int in_front = grid_bound(grid, p.zf, false, cell_scale_);
-  const int taps = int(p.tap_extra.size());
-  if (taps != kernel_taps_) {  // the same kernel for every problem of a run, nearly always
-    const int side = int(std::lround(std::sqrt(double(taps))));
-    kernel_taps_ = taps;
-    kernel_side_ = side * side == taps ? side : 0;
-    // Each tap's column and row in the kernel: texel_tap needs them for every kernel column of
-    // every warm try, and a division each would be on that path.
-    tap_column_.resize(taps), tap_row_.resize(taps);
-    for (int t = 0; t < taps && kernel_side_ > 0; ++t)
-      tap_column_[t] = t % kernel_side_, tap_row_[t] = t / kernel_side_;
-  }
   // Along a run the grid stays and z_f moves by a few cells, so only the cells between the last
   // problem's prefix and this one's are rewritten.
   if (p.grid != costed_grid_) {

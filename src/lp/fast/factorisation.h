@@ -17,7 +17,7 @@ bool FastSimplex<K>::is_artificial(int j) const {
 }
 
 // The inverse of the mapped basis from `factors` (its previous LP's) by a product-form update per
-// column that changed, instead of a factorisation: with the same texels mapped to the same taps,
+// column that changed, instead of a factorisation: with the same atoms mapped to the same depths,
 // most columns come back unchanged (grid points and kernel depths; z_f's and the composite's
 // are new). False (the caller factorises) when too many changed or an update would be (nearly)
 // singular. x_B from the new moments.

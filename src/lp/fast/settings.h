@@ -31,7 +31,7 @@ struct SimplexSettings {
   // of the default dataset). Double-double leaves weights that are exactly zero at ~cond(B) 1e-32,
   // far inside this.
   double negligible_weight = 1e-18;
-  // Rank-1 updates between fresh inverses. The updates carry over from LP to LP in the left texel's
+  // Rank-1 updates between fresh inverses. The updates carry over from LP to LP in a lane's
   // factors, and the certificates refine x_B and y against B itself. 32 instead of 16 (with
   // kChangedColumns 3 instead of 2): 0.36 instead of 0.46 factorisations an LP on lp_bench's warm
   // runs at grid 256, the same pivots, and the 100 000 random instances' and three sweeps' unstable

@@ -30,8 +30,8 @@ class FastSimplex {
   void use(const SimplexSettings& settings) { settings_ = settings; }
 
   // at == nullptr: from scratch, and every basis is forgotten; otherwise the warm bases of the
-  // texel to the left and of the texel above are tried first (Backend::solve_next).
-  void run(const Problem& p, const WarmPosition* at, Solution& s);
+  // lanes and memories `at` offers are tried first (Backend::solve_next).
+  void run(const Problem& p, const WarmStart* at, Solution& s);
 
  private:
   // A basis with its inverse and x_B, as the warm start leaves it or an LP ended
@@ -40,16 +40,6 @@ class FastSimplex {
     int basis[kMaxRows];
     double x[kMaxRows], binv[kMaxRows][kMaxRows], basic[kMaxRows][kMaxRows];
     int updates;
-  };
-
-  // The tap of this problem's kernel that sees the texel tap `t` of `warm`'s saw (taps in row-major
-  // order of a square kernel, as kernel_distribution lists them), so that the same depth, and so
-  // the same column, comes back; `t` itself when that texel is outside this kernel or either
-  // position is unknown (the same offset then sees a nearby surface).
-  // (`shift`: tap_shift(warm), once per warm basis.)
-  struct TapShift {
-    bool known = false;         // both positions known, and the kernel square
-    int columns = 0, rows = 0;  // this texel's position less warm's
   };
 
   // While it lives, the basic columns' reduced costs (rounding; zero in exact arithmetic) read 0
@@ -146,8 +136,6 @@ class FastSimplex {
   // warm_start.h: a previous fragment's basis mapped onto this problem
   double remember_basis(const Solution& s, WarmBasis& warm);
   bool start_from_previous_basis(const WarmBasis& warm, int rounds, const BasisState* factors);
-  TapShift tap_shift(const WarmBasis& warm) const;
-  int texel_tap(const TapShift& shift, int t) const;
   bool solve_from_previous_basis(WarmOffers& warm, Solution& s);
   int shift_rounds(int try_index) const;
 
@@ -165,7 +153,7 @@ class FastSimplex {
  private:
   SimplexSettings settings_;
   const Problem* p_ = nullptr;
-  const WarmPosition* at_ = nullptr;  // where the problem being solved sits (run), or null
+  const WarmStart* at_ = nullptr;  // where the problem being solved sits (run), or null
   static constexpr int k_ = K;
   int n_ = 0, g_ = 0, e_ = 0, composite_ = 0;
   int certificate_entering_ = -1;  // set by a failed precise certificate (solve_phase2)
@@ -192,7 +180,7 @@ class FastSimplex {
   double binv_[kMaxRows][kMaxRows];
   double basic_[kMaxRows][kMaxRows];  // basic_[i] = column basis_[i] (kept by refactor and pivot)
   // F_Z(z_f), the composite column's cost, computed the first time it is asked for: the column
-  // enters few LPs (repairs, cold starts), and the sum over the taps would be paid by every LP.
+  // enters few LPs (repairs, cold starts), and the sum over the atoms would be paid by every LP.
   mutable double composite_cost_ = 0;
   int updates_ = 0;
   // run's retry from scratch: no partial pricing over the extra columns (iterate), and fresh
@@ -201,9 +189,6 @@ class FastSimplex {
   // An attempt of this solve ran out of iterations (iterate): a failure is then reported as
   // ProblemStatus::IterationLimit rather than Unstable.
   bool iteration_limit_ = false;
-  int kernel_side_ = 0;   // taps a side of the problem's square kernel, 0: not square (texel_tap)
-  int kernel_taps_ = -1;  // the taps kernel_side_, tap_column_ and tap_row_ are for
-  std::vector<int> tap_column_, tap_row_;
   const double* grid_points_ = nullptr;  // the problem's grid and extra points (point)
   const double* extra_points_ = nullptr;
 
@@ -215,13 +200,13 @@ class FastSimplex {
   int costed_front_ = 0;
   // The value of every entry of that grid's first row, or NaN when they differ (lanes::combine).
   double grid_first_row_ = std::numeric_limits<double>::quiet_NaN();
-  WarmBasis lanes_[kWarmLanes];          // by layer: the texel to the left
+  WarmBasis lanes_[kWarmLanes];          // each lane's last basis
   BasisState lane_factors_[kWarmLanes];  // their inverses (update_factors)
-  std::vector<WarmBasis> above_;         // by column and layer: the row above
+  std::vector<WarmBasis> memories_;      // by memory and lane (WarmStart::memory)
   // Their z_f, NaN where there is no basis: the selection reads these alone (a WarmBasis spans
   // ~80 bytes, and a selection would otherwise touch 24 of them).
   double lane_zf_[kWarmLanes];
-  std::vector<double> above_zf_;
+  std::vector<double> memory_zf_;
   static constexpr double kNoBasis =
       std::numeric_limits<double>::quiet_NaN();  // a z_f slot without one
 };

@@ -8,23 +8,23 @@
 
 namespace mb::lp::fast {
 
-// The previous fragment's optimal basis, in terms that carry over to a neighbouring fragment:
-// grid columns by index, kernel columns by the tap they came from (texel_tap maps it to the tap of
-// the next kernel that sees the same texel), z_f's column and the composite column by role.
-enum class Role { Grid, Tap, Zf, Composite };
+// A previous problem's optimal basis, in terms that carry over to the next: grid columns by
+// index, atom columns by the atom they came from (an AtomMap maps it to the atom of the next
+// problem that stands for the same depth), z_f's column and the composite column by role.
+enum class Role { Grid, Atom, Zf, Composite };
 struct WarmBasis {
   double zf = 0;
   int rows = 0, grid = 0;
-  int column = -1, row = -1;  // the texel it was solved at (WarmPosition), -1: unknown
+  Place place;  // where it was solved (WarmStart::place)
   Role role[kMaxRows];
   int index[kMaxRows];
 };
 
-// The warm bases offered to one LP (the texel to the left by layer, the texels above and above to
-// the right by layer) with the distance of their z_f to the LP's (NaN: no basis), taken closest
+// The warm bases offered to one LP (every lane's last basis, then every lane of up to two
+// memories: WarmStart) with the distance of their z_f to the LP's (NaN: no basis), taken closest
 // first, ties in the order offered. Taken one at a time, since most LPs need only the first:
 // ranking all of them up front was a 24 x 24 comparison. Offered a block of kWarmLanes at a time
-// (the lanes of one texel lie side by side), so that with AVX-512 each block is one vector and a
+// (the lanes of one memory lie side by side), so that with AVX-512 each block is one vector and a
 // take three minimums and a compare (lanes::offer_distances, lanes::closest).
 struct WarmOffers {
   static constexpr int kBlocks = 3, kCount = kBlocks * kWarmLanes;

@@ -11,46 +11,49 @@ double FastSimplex<K>::remember_basis(const Solution& s, WarmBasis& warm) {
     return kNoBasis;
   warm.rows = k_;
   warm.grid = g_;
-  warm.column = at_ ? at_->column : -1;
-  warm.row = at_ ? at_->row : -1;
+  warm.place = at_ ? at_->place : Place{};
   warm.zf = p_->zf;
   // Roles by selects, not a chain of branches: which basis position holds which kind of column
   // varies from LP to LP, and the branches mispredict.
-  const int* extra_tap = p_->extra_tap.empty() ? nullptr : p_->extra_tap.data();
+  const int* extra_atom = p_->extra_atom.empty() ? nullptr : p_->extra_atom.data();
   for (int i = 0; i < k_; ++i) {
     const int j = basis_[i];
     const bool composite = j == composite_, grid = j < g_, extra = !grid && j < n_;
     const int e = extra ? j - g_ : 0;
     const bool zf = extra && e == p_->zf_extra;
-    const int tap = extra && extra_tap ? extra_tap[e] : -1;
-    // An extra point without a tap (from_moments), or an artificial: nothing to map.
-    if (!(composite || grid || zf || tap >= 0)) return kNoBasis;
-    warm.role[i] = composite ? Role::Composite : grid ? Role::Grid : zf ? Role::Zf : Role::Tap;
-    warm.index[i] = grid ? j : composite || zf ? 0 : tap;
+    const int atom = extra && extra_atom ? extra_atom[e] : -1;
+    // An extra point without an atom (from_moments), or an artificial: nothing to map.
+    if (!(composite || grid || zf || atom >= 0)) return kNoBasis;
+    warm.role[i] = composite ? Role::Composite : grid ? Role::Grid : zf ? Role::Zf : Role::Atom;
+    warm.index[i] = grid ? j : composite || zf ? 0 : atom;
   }
   return warm.zf;
 }
 
-// `factors`: the basis's inverse as its own LP left it, when kept (the texel to the left).
+// `factors`: the basis's inverse as its own LP left it, when kept (a lane's own last basis).
 template <int K>
 bool FastSimplex<K>::start_from_previous_basis(const WarmBasis& warm, int rounds,
                                                const BasisState* factors) {
   if (warm.rows != k_ || warm.grid != g_) return false;
   // Each position's column by its role, picked from the four candidates by index rather than by
   // a switch (see remember_basis); -1: none in this problem.
-  static_assert(int(Role::Grid) == 0 && int(Role::Tap) == 1 && int(Role::Zf) == 2 &&
+  static_assert(int(Role::Grid) == 0 && int(Role::Atom) == 1 && int(Role::Zf) == 2 &&
                 int(Role::Composite) == 3);
   int candidate[4];
   candidate[int(Role::Zf)] = p_->zf_extra < 0 ? -1 : g_ + p_->zf_extra;
   candidate[int(Role::Composite)] = p_->start_support.empty() ? -1 : composite_;
-  const int taps = int(p_->tap_extra.size());
-  const TapShift shift = tap_shift(warm);
+  const int atoms = int(p_->atom_extra.size());
+  // The atoms of `warm`'s problem as this one's (once per warm basis; null: the same indices).
+  const bool mapped = at_ && at_->atoms;
+  const int* map = mapped ? at_->atoms->table(warm.place, at_->place) : nullptr;
+  const int mapped_atoms = map ? at_->atoms->size() : 0;
   for (int i = 0; i < k_; ++i) {
     const Role role = warm.role[i];
     candidate[int(Role::Grid)] = warm.index[i];
-    const int t = texel_tap(shift, role == Role::Tap ? warm.index[i] : 0);
-    const int tap = unsigned(t) < unsigned(taps) ? p_->tap_extra[t] : -1;
-    candidate[int(Role::Tap)] = tap >= 0 ? g_ + tap : -1;
+    const int a = role == Role::Atom ? warm.index[i] : 0;
+    const int t = unsigned(a) < unsigned(mapped_atoms) ? map[a] : a;
+    const int atom = unsigned(t) < unsigned(atoms) ? p_->atom_extra[t] : -1;
+    candidate[int(Role::Atom)] = atom >= 0 ? g_ + atom : -1;
     const int j = candidate[int(role)];
     if (j < 0 || basic_position(j, i) >= 0) return false;
     basis_[i] = j;
@@ -64,22 +67,6 @@ bool FastSimplex<K>::start_from_previous_basis(const WarmBasis& warm, int rounds
     if (x_[worst] >= -settings_.feasibility_tolerance || !shift_bracket(worst)) break;
   }
   return true;
-}
-
-template <int K>
-typename FastSimplex<K>::TapShift FastSimplex<K>::tap_shift(const WarmBasis& warm) const {
-  if (!at_ || at_->row < 0 || warm.row < 0 || warm.column < 0 || at_->column < 0 ||
-      kernel_side_ == 0)
-    return {};
-  return {true, at_->column - warm.column, at_->row - warm.row};
-}
-
-template <int K>
-int FastSimplex<K>::texel_tap(const TapShift& shift, int t) const {
-  const int side = kernel_side_;
-  if (!shift.known || t < 0 || t >= kernel_taps_) return t;
-  const int x = tap_column_[t] - shift.columns, y = tap_row_[t] - shift.rows;
-  return x >= 0 && y >= 0 && x < side && y < side ? y * side + x : t;
 }
 
 // The first warm basis that is primal feasible after the bracket shifts: the primal simplex
