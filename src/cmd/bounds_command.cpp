@@ -7,6 +7,7 @@
 #include "cmd/command_common.h"
 #include "cmd/commands.h"
 #include "eval/bound_curves.h"
+#include "eval/bounds_report.h"
 #include "eval/eval_config.h"
 #include "eval/evaluation.h"
 #include "scene/dataset.h"
@@ -120,55 +121,21 @@ int run_bounds(const CommonOptions& options) {
   StagedOutputDir out(options.out, options.force);
   const BoundCurves curves = compute_bound_curves(request);
 
-  std::ostringstream csv, dist, md;
-  csv << "zf,cdf";
-  for (const auto& s : curves.series) csv << ",\"" << s.basis << " m=" << s.m << "\"";
-  csv << "\n";
-  for (size_t i = 0; i < curves.zf.size(); ++i) {
-    csv << round_trip(curves.zf[i]) << "," << round_trip(curves.cdf[i]);
-    for (const auto& s : curves.series)
-      csv << "," << (std::isnan(s.lower[i]) ? std::string() : round_trip(s.lower[i]));
-    csv << "\n";
-  }
-  dist << "depth,weight\n";
-  for (size_t t = 0; t < request.depths.size(); ++t)
-    if (request.weights[t] > 0)
-      dist << round_trip(request.depths[t]) << "," << round_trip(request.weights[t]) << "\n";
-
-  RunMetadata meta = collect_run_metadata(request.threads, process_arguments());
-  md << "# Sharp lower bounds of Problem 1 for one kernel (seed 000, Figure 3)\n\n"
-     << "Made by momentbench " << meta.version << " (git " << meta.git_sha << "), "
-     << request.threads << " threads, " << meta.started_utc << ".\n\n"
-     << "- Distribution: " << source << "\n"
-     << "- LP: I = " << request.lp.grid << "-point grid on [" << format_number(request.lp.lo, "%g")
-     << ", " << format_number(request.lp.hi, "%g")
-     << "] ∪ the distribution's depths ∪ {z_f} (REFERENCE.md §2), backend " << request.backend
-     << "; " << request.samples << " values of z_f on [" << format_number(request.zf_lo, "%g")
-     << ", " << format_number(request.zf_hi, "%g") << "]\n"
-     << "- Gap = F_Z(z_f) − G(b, z_f) ≥ 0; its mean over z_f is the area between the CDF and the "
-        "bound.\n\n"
-     << "| basis | m | functions | mean gap | max gap | LPs not optimal "
-        "|\n|---|---|---|---|---|---|\n";
-  for (const auto& s : curves.series) {
-    std::string functions;
-    for (const auto& f : s.functions) functions += (functions.empty() ? "" : ", ") + f;
-    md << "| " << s.basis << " | " << s.m << " | " << functions << " | "
-       << format_number(s.mean_gap, "%.5f") << " | " << format_number(s.max_gap, "%.5f") << " | "
-       << s.failures << " |\n";
-  }
-  write_file_atomically(out / "bounds.csv", csv.str());
-  write_file_atomically(out / "distribution.csv", dist.str());
+  const RunMetadata meta = collect_run_metadata(request.threads, process_arguments());
+  const BoundsReport report =
+      render_bounds_report(request, curves, source, {meta.version, meta.git_sha, meta.started_utc});
+  write_file_atomically(out / "bounds.csv", report.bounds_csv);
+  write_file_atomically(out / "distribution.csv", report.distribution_csv);
   const std::string plot =
       run_plot_script("plot_bounds.py",
                       "--bounds '" + (out / "bounds.csv").string() + "' --distribution '" +
                           (out / "distribution.csv").string() + "'",
                       (out / "bounds").string(), "CDF and sharp lower bounds", options.quiet);
-  md << "\n" << plot;
-  write_file_atomically(out / "bounds.md", md.str());
+  const std::string text = report.markdown + "\n" + plot;
+  write_file_atomically(out / "bounds.md", text);
   write_file_atomically(out / "config.yaml", config.to_yaml());
   write_file_atomically(out / "run.yaml", to_yaml(meta));
   out.commit();
-  const std::string text = md.str();
   std::fputs(text.substr(0, text.rfind("\n\n![")).c_str(), stdout);
   std::fputs("\n", stdout);
   return 0;

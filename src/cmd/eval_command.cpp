@@ -12,6 +12,7 @@
 #include "eval/darkening.h"
 #include "eval/error_stats.h"
 #include "eval/eval_config.h"
+#include "eval/eval_report.h"
 #include "eval/evaluation.h"
 #include "eval/shadow_images.h"
 #include "eval/technique.h"
@@ -43,36 +44,6 @@ struct EvalOptions {
   CommonOptions common;
 };
 
-// Technique names may hold ';', ':' and spaces (lp:z;z^2): file names keep [A-Za-z0-9._-].
-std::string file_stem(const std::string& name) {
-  std::string out;
-  for (char c : name)
-    out += std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' ? c : '_';
-  return out;
-}
-
-std::string number(double v) {
-  return round_trip(v);
-}
-
-struct Row {
-  std::string technique, scene, view;
-  ErrorStats stats;
-  double seconds = 0;
-  double darkening_bound = 0;  // Technique::darkening_bound
-};
-
-std::string table_row(const Row& r) {
-  std::ostringstream s;
-  s << "| " << r.technique << " | " << r.scene << (r.view.empty() ? "" : "/" + r.view) << " | "
-    << r.stats.count << " | " << percent_text(r.stats.mean()) << " | "
-    << percent_text(r.stats.leak()) << " | "
-    << darkening_text(r.stats.dark(), r.stats.max_dark, r.darkening_bound) << " | "
-    << format_number(r.stats.max, "%.6g") << " | " << percent_text(r.stats.share_over_tenth())
-    << " | " << r.stats.failures << " |";
-  return s.str();
-}
-
 int run_eval(const EvalOptions& options) {
   Config config = resolve_config(eval_specs(), options.common);
   if (options.common.print_config) {
@@ -102,17 +73,17 @@ int run_eval(const EvalOptions& options) {
   std::filesystem::create_directories(out.staging() / "histograms");
   if (config.boolean("images")) std::filesystem::create_directories(out.staging() / "images");
 
-  std::vector<Row> overall, per_view;
+  std::vector<EvalRow> overall, per_view;
   for (const auto& name : techniques) {
     ProgressBar bar(name, receivers, quiet);
-    Row total;
+    EvalRow total;
     total.technique = name;
     total.scene = "all";
     total.darkening_bound = darkening_bound[name];
     for (const auto& view : views) {
       auto start = std::chrono::steady_clock::now();
       TechniqueResult result = evaluate_technique(view, name, settings, &bar);
-      Row row = total;
+      EvalRow row = total;
       row.scene = view.scene;
       row.view = view.view;
       row.stats = ErrorStats();
@@ -131,74 +102,26 @@ int run_eval(const EvalOptions& options) {
       per_view.push_back(std::move(row));
     }
     bar.finish();
-    std::ostringstream histogram;
-    histogram << "error_lo,error_hi,fragments\n";
-    for (int b = 0; b < ErrorStats::kHistogramBins; ++b)
-      histogram << number(double(b) / ErrorStats::kHistogramBins) << ","
-                << number(double(b + 1) / ErrorStats::kHistogramBins) << ","
-                << total.stats.histogram[b] << "\n";
-    write_file_atomically(out / ("histograms/" + file_stem(name) + ".csv"), histogram.str());
+    write_file_atomically(out / ("histograms/" + file_stem(name) + ".csv"),
+                          histogram_csv(total.stats));
     overall.push_back(std::move(total));
   }
 
-  RunMetadata meta = collect_run_metadata(threads, process_arguments());
-  const std::string header =
-      "| technique | views | receivers | mean error % | leak % | over-darkening % | max error | "
-      "share > 0.1 % | "
-      "failures |\n|---|---|---|---|---|---|---|---|---|\n";
-  std::ostringstream table, report, csv;
-  table << header;
-  for (const auto& r : overall) table << table_row(r) << "\n";
-  report << "# Shadow evaluation of dataset " << dataset.name << "\n\n"
-         << "Made by momentbench " << meta.version << " (git " << meta.git_sha << "), "
-         << meta.compiler << ", " << threads << " threads, " << meta.started_utc << ".\n\n"
-         << "- " << describe_settings(settings) << "\n"
-         << "- " << views.size() << " views, " << receivers
-         << " receiver fragments (every light-facing fragment of "
-         << "every layer, REFERENCE.md §3)\n";
-  for (const auto& line : config.non_default()) report << "- option " << line << "\n";
-  report << "\n" << protocol_text(settings.bias.reference) << "\n\n";
-  for (const auto& r : overall)
-    if (r.technique == "oracle" && settings.bias.reference == Reference::ReceiverPlane)
-      report << "**Oracle floor: " << percent_text(r.stats.mean())
-             << " %.** The error of F_Z(z_f - delta_f) itself against the receiver-plane "
-                "reference: the part of every "
-                "technique's error that is the bias's, not the moments'.\n\n";
-  std::vector<DarkeningRow> darkening;
-  for (const auto& r : overall)
-    darkening.push_back({r.technique, r.stats.dark(), r.stats.max_dark, r.darkening_bound,
-                         darkening_reason[r.technique]});
-  report << darkening_notes(darkening) << "## All views\n\n"
-         << table.str() << "\n## Per view\n\n"
-         << header;
-  for (const auto& r : per_view) report << table_row(r) << "\n";
-  for (const auto& r : overall)
-    if (r.stats.failures)
-      report << "\n**" << r.technique << "**: " << r.stats.failures
-             << " fragments failed; raise the technique's alpha, or the LP grid, and re-run.\n";
-  if (config.boolean("images"))
-    report << "\nImages (images/): `<scene>_<view>_<technique>_shadow.exr` holds G of layer-0 "
-              "receivers, the PNG shows "
-              "1 - G (white = lit; dark blue = no layer-0 receiver); `_error.png` shows |PCF - G| "
-              "on a colour bar from "
-              "0 to "
-           << number(config.number("error_scale")) << ".\n";
-  csv << "technique,scene,view,receivers,mean_error,leak,over_darkening,max_over_darkening,max_"
-         "error,share_over_0.1,"
-         "failures,reference\n";
-  for (const auto* rows : {&overall, &per_view})
-    for (const auto& r : *rows)
-      csv << '"' << r.technique << "\"," << r.scene << "," << (r.view.empty() ? "all" : r.view)
-          << "," << r.stats.count << "," << number(r.stats.mean()) << "," << number(r.stats.leak())
-          << "," << number(r.stats.dark()) << "," << number(r.stats.max_dark) << ","
-          << number(r.stats.max) << "," << number(r.stats.share_over_tenth()) << ","
-          << r.stats.failures << "," << reference_name(settings.bias.reference) << "\n";
-  write_file_atomically(out / "report.md", report.str());
-  write_file_atomically(out / "errors.csv", csv.str());
+  const RunMetadata meta = collect_run_metadata(threads, process_arguments());
+  EvalReportContext context;
+  context.dataset = dataset.name, context.version = meta.version, context.git_sha = meta.git_sha;
+  context.compiler = meta.compiler, context.started = meta.started_utc, context.threads = threads;
+  context.settings_text = describe_settings(settings), context.reference = settings.bias.reference;
+  context.views = views.size(), context.receivers = receivers;
+  context.non_default = config.non_default();
+  context.images = config.boolean("images"), context.error_scale = config.number("error_scale");
+  const EvalReport report = render_eval_report(context, overall, per_view, darkening_reason);
+  write_file_atomically(out / "report.md", report.markdown);
+  write_file_atomically(out / "errors.csv", report.errors_csv);
   write_file_atomically(out / "config.yaml", config.to_yaml());
   write_file_atomically(out / "run.yaml", to_yaml(meta));
   out.commit();
-  std::fputs(table.str().c_str(), stdout);
+  std::fputs(report.table.c_str(), stdout);
   return 0;
 }
 
