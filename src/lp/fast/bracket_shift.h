@@ -13,7 +13,7 @@ namespace mb::lp::fast {
 // unchanged, when there is no such point, the exchange would be (nearly) singular, or the start
 // is hopeless.
 template <int K>
-bool FastSimplex<K>::shift_bracket(int i) {
+inline bool FastSimplex<K>::shift_bracket(int i) {
   const int j = basis_[i];
   // Weights are probabilities: one below -settings_.hopeless_weight means a basis far from any
   // feasible one, and shifts from such starts nearly always ran out of rounds.
@@ -63,7 +63,8 @@ bool FastSimplex<K>::shift_bracket(int i) {
 // and 1.70.
 // `points`: basic_points' of the current basis.
 template <int K>
-bool FastSimplex<K>::bracket_node(int i, int partner, double direction, const double* points) {
+inline bool FastSimplex<K>::bracket_node(int i, int partner, double direction,
+                                         const double* points) {
   double v[K];
   for (int r = 0; r < K; ++r) v[r] = x_[partner] * binv_[i][r] - x_[i] * binv_[partner][r];
   const int from_column = basis_[partner], step = direction > 0 ? 1 : -1;
@@ -98,7 +99,7 @@ bool FastSimplex<K>::bracket_node(int i, int partner, double direction, const do
 // neighbour of `column` when that is the grid point at `from` (the grid ascends strictly), else
 // by grid_bound.
 template <int K>
-int FastSimplex<K>::grid_beyond(double from, double direction, int column) const {
+inline int FastSimplex<K>::grid_beyond(double from, double direction, int column) const {
   const auto& grid = p_->grid->points;
   if (column >= 0 && column < g_) return column + (direction > 0 ? 1 : -1);
   return direction > 0 ? grid_bound(grid, from, true, cell_scale_)
@@ -108,7 +109,7 @@ int FastSimplex<K>::grid_beyond(double from, double direction, int column) const
 // From grid point g on, in steps of `step`: the first grid point where phi = v.a <= 0, or -1 when
 // the grid ends or `limit` is reached first (at or beyond it).
 template <int K>
-int FastSimplex<K>::first_sign_change(const double* v, int g, int step, double limit) const {
+inline int FastSimplex<K>::first_sign_change(const double* v, int g, int step, double limit) const {
   return lanes::first_sign_change<K>(v, grid_points_, p_->grid->values.data(), g_, g, step, limit);
 }
 
@@ -119,8 +120,8 @@ int FastSimplex<K>::first_sign_change(const double* v, int g, int step, double l
 // holding each nearest distance.
 template <int K>
 template <int Q>
-void FastSimplex<K>::points_beyond(const double (&from)[Q], const double (&direction)[Q],
-                                   const int (&column)[Q], int (&out)[Q]) const {
+inline void FastSimplex<K>::points_beyond(const double (&from)[Q], const double (&direction)[Q],
+                                          const int (&column)[Q], int (&out)[Q]) const {
   constexpr double kNone = std::numeric_limits<double>::infinity();
   const auto& grid = p_->grid->points;
   double distance[Q];
@@ -140,7 +141,7 @@ void FastSimplex<K>::points_beyond(const double (&from)[Q], const double (&direc
 // x_B, not a new factorisation. False, with nothing changed, if it is basic already or the
 // exchange would be (nearly) singular.
 template <int K>
-bool FastSimplex<K>::exchange(int i, int entering) {
+inline bool FastSimplex<K>::exchange(int i, int entering) {
   if (is_basic(entering)) return false;
   // A fresh inverse rather than an end to the shifts: the limit used to stop the first warm
   // basis's shifts in most of the starts that then failed (~85 k of the 119 k composite repairs
@@ -159,7 +160,7 @@ bool FastSimplex<K>::exchange(int i, int entering) {
 // The points of the basic structural columns by basis position, NaN for the others (the
 // composite, artificials) and in out[k..kMaxRows).
 template <int K>
-void FastSimplex<K>::basic_points(double (&out)[kMaxRows]) const {
+inline void FastSimplex<K>::basic_points(double (&out)[kMaxRows]) const {
   lanes::basic_points<K>(basis_, g_, n_, grid_points_, extra_points_, out);
 }
 

@@ -7,7 +7,7 @@ namespace mb::lp::fast {
 // A bound on the rounding error of any reduced cost the double pass computes with duals y:
 // gamma (1 + |y|_1 max |a_rj|), gamma = (k + 2) eps.
 template <int K>
-double FastSimplex<K>::pricing_rounding(const double* y) const {
+inline double FastSimplex<K>::pricing_rounding(const double* y) const {
   double y_norm = 0;
   for (int r = 0; r < k_; ++r) y_norm += std::abs(y[r]);
   return (k_ + 2) * std::numeric_limits<double>::epsilon() * (1 + y_norm * column_bound());
@@ -15,7 +15,7 @@ double FastSimplex<K>::pricing_rounding(const double* y) const {
 
 // The certificate, in double when that is provably enough, else in double-double.
 template <int K>
-bool FastSimplex<K>::certify(Solution& s) {
+inline bool FastSimplex<K>::certify(Solution& s) {
   certificate_entering_ = -1;
   return certify_in_double(s) || certify_precisely(s);
 }
@@ -28,7 +28,7 @@ bool FastSimplex<K>::certify(Solution& s) {
 // costs of the y used), so the inverse need not be fresh: the product-form one, with one step of
 // refinement for y as for x_B, serves as well, and saves a factorisation per LP.
 template <int K>
-bool FastSimplex<K>::certify_in_double(Solution& s) {
+inline bool FastSimplex<K>::certify_in_double(Solution& s) {
   constexpr double kEps = std::numeric_limits<double>::epsilon();
   const double gamma = (k_ + 2) * kEps;
   double y[kMaxRows] = {};  // (GCC cannot see that the copy fills k_ <= kMaxRows)
@@ -93,8 +93,8 @@ bool FastSimplex<K>::certify_in_double(Solution& s) {
 // weights: x_B clamped at 0; y: the duals, double or double-double (Solution keeps long double).
 template <int K>
 template <class Dual>
-void FastSimplex<K>::report(Solution& s, double objective, const double* weights,
-                            const Dual* y) const {
+inline void FastSimplex<K>::report(Solution& s, double objective, const double* weights,
+                                   const Dual* y) const {
   s.status = ProblemStatus::Optimal;
   s.support.clear();
   s.weights.clear();
@@ -137,7 +137,7 @@ void FastSimplex<K>::report(Solution& s, double objective, const double* weights
 // are kept, so the caller resumes from them. (Double-double lives in SSE registers and
 // pipelines; x87 long double does neither.)
 template <int K>
-bool FastSimplex<K>::certify_precisely(Solution& s) {
+inline bool FastSimplex<K>::certify_precisely(Solution& s) {
   DoubleDouble x[kMaxRows], y[kMaxRows];
   double basic_cost[kMaxRows];
   const bool refined = fresh_.duals && fresh_.precise_duals;  // y_ refined by iterate already
@@ -191,7 +191,7 @@ bool FastSimplex<K>::certify_precisely(Solution& s) {
 // y_ (dual_values' of the current basis) refined by one double-double step into precise_y_, and
 // rounded back into y_ (iterate, for certify_precisely).
 template <int K>
-void FastSimplex<K>::refine_duals_for_certificate() {
+inline void FastSimplex<K>::refine_duals_for_certificate() {
   double basic_cost[kMaxRows];
   for (int i = 0; i < k_; ++i) basic_cost[i] = cost(basis_[i]), precise_y_[i] = {y_[i], 0};
   refine_precisely<true>(precise_y_, basic_cost, binv_);
@@ -201,7 +201,7 @@ void FastSimplex<K>::refine_duals_for_certificate() {
 
 // d_j = c_j - y.a_j in double-double.
 template <int K>
-double FastSimplex<K>::precise_reduced_cost(int j, const DoubleDouble* y) const {
+inline double FastSimplex<K>::precise_reduced_cost(int j, const DoubleDouble* y) const {
   double a[kMaxRows];
   load_column(j, a);
   DoubleDouble d{cost_[j], 0};
@@ -214,8 +214,8 @@ double FastSimplex<K>::precise_reduced_cost(int j, const DoubleDouble* y) const 
 // every term from double-double sums (the bound's own double rounding is ~1e-16 of it).
 // `residual_of_x`: rhs - B x when known (used when no weight is clamped).
 template <int K>
-bool FastSimplex<K>::precise_bound(const DoubleDouble* x, const DoubleDouble* y, Solution& s,
-                                   const double* residual_of_x) {
+inline bool FastSimplex<K>::precise_bound(const DoubleDouble* x, const DoubleDouble* y, Solution& s,
+                                          const double* residual_of_x) {
   DoubleDouble clamped[kMaxRows];
   bool unclamped = true;
   for (int i = 0; i < k_; ++i) {
@@ -301,7 +301,7 @@ bool FastSimplex<K>::precise_bound(const DoubleDouble* x, const DoubleDouble* y,
 }
 
 template <int K>
-void FastSimplex<K>::add_support(Solution& s, int j, double w) {
+inline void FastSimplex<K>::add_support(Solution& s, int j, double w) {
   for (size_t t = 0; t < s.support.size(); ++t)
     if (s.support[t] == j) {
       s.weights[t] += w;

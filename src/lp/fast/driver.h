@@ -7,7 +7,7 @@ namespace mb::lp::fast {
 // at == nullptr: from scratch, and every basis is forgotten; otherwise the bases of the lanes and
 // of the memories `at` offers are tried first (Backend::solve_next).
 template <int K>
-void FastSimplex<K>::run(const Problem& p, const WarmStart* at, Solution& s) {
+inline void FastSimplex<K>::run(const Problem& p, const WarmStart* at, Solution& s) {
   if (!at) {
     std::fill(std::begin(lane_zf_), std::end(lane_zf_), kNoBasis);
     std::fill(memory_zf_.begin(), memory_zf_.end(), kNoBasis);
@@ -60,7 +60,7 @@ void FastSimplex<K>::run(const Problem& p, const WarmStart* at, Solution& s) {
 
 // Into `s`, fresh (reset).
 template <int K>
-void FastSimplex<K>::solve(const Problem& p, WarmOffers& warm, Solution& s) {
+inline void FastSimplex<K>::solve(const Problem& p, WarmOffers& warm, Solution& s) {
   iteration_limit_ = false;
   p_ = &p;
   fresh_.new_problem();  // y_ and reduced_ belong to the previous problem
@@ -119,7 +119,7 @@ void FastSimplex<K>::solve(const Problem& p, WarmOffers& warm, Solution& s) {
 
 // A failed start: only the pivots it spent are kept.
 template <int K>
-void FastSimplex<K>::start_over(Solution& s) {
+inline void FastSimplex<K>::start_over(Solution& s) {
   const int spent = s.iterations;
   s.reset();
   s.iterations = spent;
@@ -129,7 +129,7 @@ void FastSimplex<K>::start_over(Solution& s) {
 // composite column (the kernel distribution, which alone reproduces the moments), so x = e_i is
 // a basic feasible solution next to the old basis; the primal simplex goes on from there.
 template <int K>
-bool FastSimplex<K>::repair_with_composite(Solution& s) {
+inline bool FastSimplex<K>::repair_with_composite(Solution& s) {
   if (p_->start_support.empty() || is_basic(composite_)) return false;
   const int worst = most_negative();
   basis_[worst] = composite_;
@@ -139,7 +139,7 @@ bool FastSimplex<K>::repair_with_composite(Solution& s) {
 }
 
 template <int K>
-void FastSimplex<K>::unstable(Solution& s) const {
+inline void FastSimplex<K>::unstable(Solution& s) const {
   s.status = iteration_limit_ ? ProblemStatus::IterationLimit : ProblemStatus::Unstable;
 }
 
@@ -149,7 +149,7 @@ void FastSimplex<K>::unstable(Solution& s) const {
 // brings it in: the double iterations could not have found it, and such LPs used to end unstable
 // (477 of a power4 sweep's 2.4M, then GLPK's answer or "lit"; now 1).
 template <int K>
-bool FastSimplex<K>::solve_phase2(Solution& s) {
+inline bool FastSimplex<K>::solve_phase2(Solution& s) {
   int guided = 0;
   for (int attempt = 0; attempt < 3; ++attempt) {
     if (!iterate(s)) return false;

@@ -6,13 +6,13 @@ namespace mb::lp::fast {
 
 // Point j of I (Problem::point without its vectors' bookkeeping, and selects, not a branch).
 template <int K>
-double FastSimplex<K>::point(int j) const {
+inline double FastSimplex<K>::point(int j) const {
   const bool on_grid = j < g_;
   return (on_grid ? grid_points_ : extra_points_)[on_grid ? j : j - g_];
 }
 
 template <int K>
-bool FastSimplex<K>::is_artificial(int j) const {
+inline bool FastSimplex<K>::is_artificial(int j) const {
   return j >= n_ && j < n_ + k_;
 }
 
@@ -22,7 +22,7 @@ bool FastSimplex<K>::is_artificial(int j) const {
 // are new). False (the caller factorises) when too many changed or an update would be (nearly)
 // singular. x_B from the new moments.
 template <int K>
-bool FastSimplex<K>::update_factors(const BasisState& factors) {
+inline bool FastSimplex<K>::update_factors(const BasisState& factors) {
   double a[kMaxRows][kMaxRows];
   int changed[kMaxRows], count = 0;
   for (int i = 0; i < k_; ++i) {
@@ -49,7 +49,7 @@ bool FastSimplex<K>::update_factors(const BasisState& factors) {
 }
 
 template <int K>
-void FastSimplex<K>::save_basis(BasisState& to) const {
+inline void FastSimplex<K>::save_basis(BasisState& to) const {
   std::copy(basis_, basis_ + k_, to.basis);
   lanes::copy_row<K>(x_, to.x);
   for (int i = 0; i < k_; ++i) {
@@ -60,7 +60,7 @@ void FastSimplex<K>::save_basis(BasisState& to) const {
 }
 
 template <int K>
-void FastSimplex<K>::restore_basis(const BasisState& from) {
+inline void FastSimplex<K>::restore_basis(const BasisState& from) {
   std::copy(from.basis, from.basis + k_, basis_);
   lanes::copy_row<K>(from.x, x_);
   for (int i = 0; i < k_; ++i) {
@@ -72,7 +72,7 @@ void FastSimplex<K>::restore_basis(const BasisState& from) {
 }
 
 template <int K>
-double FastSimplex<K>::column_entry(int j, int r) const {
+inline double FastSimplex<K>::column_entry(int j, int r) const {
   if (j < n_) return p_->at(r, j);
   if (j == composite_) return p_->rhs[r];
   return r == j - n_ ? artificial_sign_[r] : 0.0;
@@ -80,7 +80,7 @@ double FastSimplex<K>::column_entry(int j, int r) const {
 
 // values[0..n) when they are all the same (bit for bit), else NaN.
 template <int K>
-double FastSimplex<K>::constant_first_row(const double* values, int n) {
+inline double FastSimplex<K>::constant_first_row(const double* values, int n) {
   for (int j = 1; j < n; ++j)
     if (std::bit_cast<uint64_t>(values[j]) != std::bit_cast<uint64_t>(values[0]))
       return std::numeric_limits<double>::quiet_NaN();
@@ -89,7 +89,7 @@ double FastSimplex<K>::constant_first_row(const double* values, int n) {
 
 // Column j's k entries, with the block decided once.
 template <int K>
-void FastSimplex<K>::load_column(int j, double* a) const {
+inline void FastSimplex<K>::load_column(int j, double* a) const {
   if (j < g_) {
     const double* v = p_->grid->values.data() + j;
     for (int r = 0; r < k_; ++r) a[r] = v[size_t(r) * g_];
@@ -102,14 +102,14 @@ void FastSimplex<K>::load_column(int j, double* a) const {
 }
 
 template <int K>
-double FastSimplex<K>::cost(int j) const {
+inline double FastSimplex<K>::cost(int j) const {
   if (phase_ == 1) return is_artificial(j) ? 1.0 : 0.0;
   if (j < n_) return cost_[j];
   return j == composite_ ? composite_cost() : 0.0;
 }
 
 template <int K>
-bool FastSimplex<K>::refactor() {
+inline bool FastSimplex<K>::refactor() {
   double b[kMaxRows][kMaxRows], inv[kMaxRows][kMaxRows];
   for (int i = 0; i < k_; ++i) {
     load_column(basis_[i], basic_[i]);
@@ -126,7 +126,7 @@ bool FastSimplex<K>::refactor() {
 }
 
 template <int K>
-void FastSimplex<K>::dual_values(double* y) const {
+inline void FastSimplex<K>::dual_values(double* y) const {
   double basic_cost[kMaxRows], misfit[kMaxRows];
   for (int i = 0; i < k_; ++i) basic_cost[i] = cost(basis_[i]);
   for (int r = 0; r < k_; ++r) {
@@ -147,14 +147,14 @@ void FastSimplex<K>::dual_values(double* y) const {
 }
 
 template <int K>
-bool FastSimplex<K>::is_basic(int j) const {
+inline bool FastSimplex<K>::is_basic(int j) const {
   return basic_position(j) >= 0;
 }
 
 // The position of column j among basis_[0..among), or -1. Selects, no early exit: k is fixed,
 // and std::find is a call.
 template <int K>
-int FastSimplex<K>::basic_position(int j, int among) const {
+inline int FastSimplex<K>::basic_position(int j, int among) const {
   int at = -1;
   for (int i = 0; i < among; ++i) at = basis_[i] == j ? i : at;
   return at;
@@ -162,7 +162,7 @@ int FastSimplex<K>::basic_position(int j, int among) const {
 
 // u = B^{-1} a_j, the entering column in basis coordinates.
 template <int K>
-void FastSimplex<K>::column_in_basis(int j, double* u) const {
+inline void FastSimplex<K>::column_in_basis(int j, double* u) const {
   double a[kMaxRows];
   load_column(j, a);
   in_basis(a, u);
@@ -170,7 +170,7 @@ void FastSimplex<K>::column_in_basis(int j, double* u) const {
 
 // u = B^{-1} a for any k-vector a (a column, a residual, the moments).
 template <int K>
-void FastSimplex<K>::in_basis(const double* a, double* u) const {
+inline void FastSimplex<K>::in_basis(const double* a, double* u) const {
   for (int i = 0; i < k_; ++i) {
     double v = 0;
     for (int r = 0; r < k_; ++r) v += binv_[i][r] * a[r];
@@ -181,7 +181,7 @@ void FastSimplex<K>::in_basis(const double* a, double* u) const {
 // Whether u_i (u = B^{-1} a) is large enough, against the largest |u_q|, for a to replace basic
 // column i without a (nearly) singular basis (exchange, update_factors).
 template <int K>
-bool FastSimplex<K>::stable_pivot(const double* u, int i) const {
+inline bool FastSimplex<K>::stable_pivot(const double* u, int i) const {
   double largest = 0;
   for (int q = 0; q < k_; ++q) largest = std::max(largest, std::abs(u[q]));
   return std::abs(u[i]) > 1e-7 * largest;
@@ -189,7 +189,7 @@ bool FastSimplex<K>::stable_pivot(const double* u, int i) const {
 
 // Product-form update of the explicit inverse: column `entering` replaces basis row `leave`.
 template <int K>
-void FastSimplex<K>::pivot(int leave, int entering, const double* u) {
+inline void FastSimplex<K>::pivot(int leave, int entering, const double* u) {
   const double reciprocal = 1 / u[leave];  // one division, not k (8.8 exchanges and pivots an LP)
   lanes::update_inverse<K>(binv_, leave, u, reciprocal);
   basis_[leave] = entering;
@@ -200,12 +200,12 @@ void FastSimplex<K>::pivot(int leave, int entering, const double* u) {
 
 // |a_rj| <= column_bound() for every column.
 template <int K>
-double FastSimplex<K>::column_bound() const {
+inline double FastSimplex<K>::column_bound() const {
   return std::max(p_->grid->max_abs, p_->extra.max_abs);
 }
 
 template <int K>
-double FastSimplex<K>::composite_cost() const {
+inline double FastSimplex<K>::composite_cost() const {
   if (composite_cost_ != composite_cost_) {
     double sum = 0;
     for (size_t t = 0; t < p_->start_support.size(); ++t)
@@ -216,7 +216,7 @@ double FastSimplex<K>::composite_cost() const {
 }
 
 template <int K>
-int FastSimplex<K>::refactor_interval() const {
+inline int FastSimplex<K>::refactor_interval() const {
   return retrying_ ? settings_.careful_refactor_interval : settings_.refactor_interval;
 }
 

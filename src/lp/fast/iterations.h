@@ -6,7 +6,7 @@ namespace mb::lp::fast {
 
 // The basis position of the most negative weight (the first, on ties).
 template <int K>
-int FastSimplex<K>::most_negative() const {
+inline int FastSimplex<K>::most_negative() const {
   int worst = 0;
   double least = x_[0];
   for (int i = 1; i < k_; ++i) {  // selects, not branches (they mispredict)
@@ -19,7 +19,7 @@ int FastSimplex<K>::most_negative() const {
 
 // One simplex run to optimality for the current phase. False on numerical failure.
 template <int K>
-bool FastSimplex<K>::iterate(Solution& s) {
+inline bool FastSimplex<K>::iterate(Solution& s) {
   int degenerate = 0;
   // A node slides when the last two pivots left the same basis position, or the last one entered
   // an end of the grid, where Dantzig's steepest column often lies and from where a node of small
@@ -70,7 +70,7 @@ bool FastSimplex<K>::iterate(Solution& s) {
 // One primal simplex step: `entering` (u = B^{-1} a_entering) comes in, the ratio test picks the
 // leaving row. The step length, or -1 when no row may leave (numerical failure).
 template <int K>
-double FastSimplex<K>::step(int entering, const double* u, bool bland, Solution& s) {
+inline double FastSimplex<K>::step(int entering, const double* u, bool bland, Solution& s) {
   int leave = -1;
   if (!bland) {
     // Harris ratio test: a relaxed bound first, then the largest pivot within it.
@@ -114,7 +114,7 @@ double FastSimplex<K>::step(int entering, const double* u, bool bland, Solution&
 // negative basic variable leaves, the entering column keeps every reduced cost >= 0. Every step
 // starts from a fresh inverse, since x_B is judged at 1e-12.
 template <int K>
-bool FastSimplex<K>::dual_simplex(Solution& s) {
+inline bool FastSimplex<K>::dual_simplex(Solution& s) {
   alpha_.resize(n_);
   for (int step = 0; step < 4 * k_ + 16; ++step) {
     if (!refactor()) return false;
@@ -158,7 +158,7 @@ bool FastSimplex<K>::dual_simplex(Solution& s) {
 // One step of iterative refinement of x_B with a double-double residual (rhs - B x_B), rounded
 // back to double.
 template <int K>
-void FastSimplex<K>::refine_weights() {
+inline void FastSimplex<K>::refine_weights() {
   DoubleDouble x[kMaxRows];
   for (int i = 0; i < k_; ++i) x[i] = {x_[i], 0};
   refine_precisely<false>(x, p_->rhs.data(), binv_);

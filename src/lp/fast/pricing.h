@@ -8,14 +8,14 @@ namespace mb::lp::fast {
 // reduced costs of all structural columns, block by block (vectorised). The certificate computes
 // its y the same way, so at an optimal basis it finds these reduced costs already in place.
 template <int K>
-void FastSimplex<K>::price() {
+inline void FastSimplex<K>::price() {
   dual_values(y_);
   fresh_.duals_computed();
   reduced_costs();
 }
 
 template <int K>
-void FastSimplex<K>::reduced_costs() {
+inline void FastSimplex<K>::reduced_costs() {
   fresh_.smallest_reduced =
       subtract_row_combination(y_, phase_ == 1 ? nullptr : cost_.data(), reduced_.data());
   fresh_.reduced = true, fresh_.reduced_phase = phase_;
@@ -24,7 +24,7 @@ void FastSimplex<K>::reduced_costs() {
 
 // Whether reduced_ holds the reduced costs of these duals (in the current phase).
 template <int K>
-bool FastSimplex<K>::priced_with(const double* y) const {
+inline bool FastSimplex<K>::priced_with(const double* y) const {
   if (!fresh_.reduced || fresh_.reduced_phase != phase_) return false;
   for (int r = 0; r < k_; ++r)
     if (y[r] != fresh_.reduced_y[r]) return false;
@@ -37,8 +37,8 @@ bool FastSimplex<K>::priced_with(const double* y) const {
 // min(0, min_j out_j), found in the same pass: with it, a pricing pass that finds no entering
 // column (every LP ends with one) and the double certificate need no second pass over out.
 template <int K>
-double FastSimplex<K>::subtract_row_combination(const double* w, const double* base,
-                                                double* out) const {
+inline double FastSimplex<K>::subtract_row_combination(const double* w, const double* base,
+                                                       double* out) const {
   const double grid_smallest =
       lanes::combine<K>(w, p_->grid->values.data(), g_, base, out, g_, grid_first_row_);
   const double extra_smallest =
@@ -50,7 +50,7 @@ double FastSimplex<K>::subtract_row_combination(const double* w, const double* b
 // |y| ~ 1e8 (narrow kernels) reduced costs carry ~1e-16 |y| of rounding, and basic columns would
 // look attractive; the precise certificate, not this tolerance, decides optimality.
 template <int K>
-double FastSimplex<K>::entering_tolerance() const {
+inline double FastSimplex<K>::entering_tolerance() const {
   double largest_dual = 0;
   for (int r = 0; r < k_; ++r) largest_dual = std::max(largest_dual, std::abs(y_[r]));
   return std::max(settings_.optimality_tolerance, 1e-15 * largest_dual);
@@ -58,7 +58,7 @@ double FastSimplex<K>::entering_tolerance() const {
 
 // Dantzig (or Bland) over non-basic columns, with reduced_ fresh for y_.
 template <int K>
-int FastSimplex<K>::choose_entering(bool bland) {
+inline int FastSimplex<K>::choose_entering(bool bland) {
   const double tolerance = entering_tolerance();
   if (bland) {
     for (int j = 0; j < n_; ++j)
@@ -91,7 +91,7 @@ int FastSimplex<K>::choose_entering(bool bland) {
 // or for every pivot once a node slid, it needed more (the extras-first pricing is the better
 // guess elsewhere). reduced_ fresh for y_; -1 when no column qualifies.
 template <int K>
-int FastSimplex<K>::slide_entering() {
+inline int FastSimplex<K>::slide_entering() {
   const double tolerance = entering_tolerance();
   const BasicColumnsHidden hidden(*this);
   int chosen = -1;
@@ -115,7 +115,7 @@ int FastSimplex<K>::slide_entering() {
 // the basic points to the extras made it 2.75 at 256. y_ must be the current basis's duals.
 // reduced_ then holds stale values on the grid, so the next full pass or certificate prices afresh.
 template <int K>
-int FastSimplex<K>::enter_from_extras() {
+inline int FastSimplex<K>::enter_from_extras() {
   fresh_.reduced = false;
   return extra_holding(lanes::combine<K>(y_, p_->extra.values.data(), e_, cost_.data() + g_,
                                          reduced_.data() + g_, e_));
@@ -125,7 +125,7 @@ int FastSimplex<K>::enter_from_extras() {
 // iteration after a start prices every column first, since most warm starts are optimal already
 // (84 % of lp_bench's LPs need no pivot) and then a pass over the extras alone was wasted.
 template <int K>
-int FastSimplex<K>::enter_among_extras() const {
+inline int FastSimplex<K>::enter_among_extras() const {
   return extra_holding(lanes::smallest_of(reduced_.data() + g_, e_));
 }
 
@@ -133,7 +133,7 @@ int FastSimplex<K>::enter_among_extras() const {
 // reduced cost or 0: the first extra column holding it, or -1 when it is not below the entering
 // tolerance, or when that column is basic (rounding: the full pass then decides).
 template <int K>
-int FastSimplex<K>::extra_holding(double smallest) const {
+inline int FastSimplex<K>::extra_holding(double smallest) const {
   if (!(smallest < -entering_tolerance())) return -1;
   const int first = g_ + lanes::first_holding(reduced_.data() + g_, e_, smallest);
   return is_basic(first) ? -1 : first;

@@ -10,8 +10,8 @@ namespace mb::lp::fast {
 // leaves.
 template <int K>
 template <bool Transposed, class Inverse>
-void FastSimplex<K>::refine_precisely(DoubleDouble* v, const double* target,
-                                      const Inverse& inverse) const {
+inline void FastSimplex<K>::refine_precisely(DoubleDouble* v, const double* target,
+                                             const Inverse& inverse) const {
   double misfit[kMaxRows];
   misfit_of<Transposed>(v, target, misfit);
   correct_precisely<Transposed>(v, misfit, inverse);
@@ -20,8 +20,8 @@ void FastSimplex<K>::refine_precisely(DoubleDouble* v, const double* target,
 // v += B^{-1} misfit (Transposed: B^{-T} misfit): refine_precisely's step from its residual.
 template <int K>
 template <bool Transposed, class Inverse>
-void FastSimplex<K>::correct_precisely(DoubleDouble* v, const double* misfit,
-                                       const Inverse& inverse) const {
+inline void FastSimplex<K>::correct_precisely(DoubleDouble* v, const double* misfit,
+                                              const Inverse& inverse) const {
   using Real = std::remove_cvref_t<decltype(inverse[0][0])>;
   for (int i = 0; i < k_; ++i) {
     Real correction = 0;
@@ -37,7 +37,8 @@ void FastSimplex<K>::correct_precisely(DoubleDouble* v, const double* misfit,
 // a chain of dependent adds, and latency dominated.
 template <int K>
 template <bool Transposed>
-void FastSimplex<K>::misfit_of(const DoubleDouble* v, const double* target, double* misfit) const {
+inline void FastSimplex<K>::misfit_of(const DoubleDouble* v, const double* target,
+                                      double* misfit) const {
   lanes::misfit<K, Transposed>(basic_, v, target, misfit);
 }
 

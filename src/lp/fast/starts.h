@@ -5,7 +5,7 @@
 namespace mb::lp::fast {
 
 template <int K>
-void FastSimplex<K>::start_with_artificials() {
+inline void FastSimplex<K>::start_with_artificials() {
   for (int r = 0; r < k_; ++r) {
     artificial_sign_[r] = p_->rhs[r] >= 0 ? 1.0 : -1.0;
     basis_[r] = n_ + r;
@@ -24,7 +24,7 @@ void FastSimplex<K>::start_with_artificials() {
 // and with weight 1 it is a feasible basic solution. The other k - 1 basic columns are grid
 // columns spread over I, at level zero. No phase 1, no Carathéodory reduction.
 template <int K>
-bool FastSimplex<K>::start_from_distribution() {
+inline bool FastSimplex<K>::start_from_distribution() {
   // Where the mass and z_f are, on the grid: the optimal support lies around them, so the start
   // columns do too (spread over all of I, narrow kernels took ~100 pivots instead of ~10).
   double lo = p_->zf, hi = p_->zf;
@@ -51,7 +51,7 @@ bool FastSimplex<K>::start_from_distribution() {
 // After phase 1 every artificial left in the basis sits at zero; pivot each out on the
 // structural column with the largest entry in its row of B^{-1} A.
 template <int K>
-bool FastSimplex<K>::drive_out_artificials() {
+inline bool FastSimplex<K>::drive_out_artificials() {
   for (int i = 0; i < k_; ++i) {
     if (!is_artificial(basis_[i])) continue;
     int best = -1;

@@ -6,7 +6,7 @@ namespace mb::lp::fast {
 
 // Into `warm`; its z_f for run's selection, NaN when the basis cannot be carried over.
 template <int K>
-double FastSimplex<K>::remember_basis(const Solution& s, WarmBasis& warm) {
+inline double FastSimplex<K>::remember_basis(const Solution& s, WarmBasis& warm) {
   if (!(s.status == ProblemStatus::Optimal && s.call == CallStatus::Ok && phase_ == 2))
     return kNoBasis;
   warm.rows = k_;
@@ -32,8 +32,8 @@ double FastSimplex<K>::remember_basis(const Solution& s, WarmBasis& warm) {
 
 // `factors`: the basis's inverse as its own LP left it, when kept (a lane's own last basis).
 template <int K>
-bool FastSimplex<K>::start_from_previous_basis(const WarmBasis& warm, int rounds,
-                                               const BasisState* factors) {
+inline bool FastSimplex<K>::start_from_previous_basis(const WarmBasis& warm, int rounds,
+                                                      const BasisState* factors) {
   if (warm.rows != k_ || warm.grid != g_) return false;
   // Each position's column by its role, picked from the four candidates by index rather than by
   // a switch (see remember_basis); -1: none in this problem.
@@ -74,7 +74,7 @@ bool FastSimplex<K>::start_from_previous_basis(const WarmBasis& warm, int rounds
 // steps from bases whose old duals stayed feasible were tried: 24 pivots on average, half of
 // them failing; the repair takes ~20.)
 template <int K>
-bool FastSimplex<K>::solve_from_previous_basis(WarmOffers& warm, Solution& s) {
+inline bool FastSimplex<K>::solve_from_previous_basis(WarmOffers& warm, Solution& s) {
   phase_ = 2;
   int usable = -1;
   double least_infeasibility = 0;  // the usable try's sum of negative weights
@@ -108,7 +108,7 @@ bool FastSimplex<K>::solve_from_previous_basis(WarmOffers& warm, Solution& s) {
 }
 
 template <int K>
-int FastSimplex<K>::shift_rounds(int try_index) const {
+inline int FastSimplex<K>::shift_rounds(int try_index) const {
   return try_index == 0 ? 4 * k_ : settings_.later_try_rounds;
 }
 
