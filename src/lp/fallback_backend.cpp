@@ -10,21 +10,11 @@ namespace {
 // The residual a GLPK answer may leave (its weights, rounded to double, leave ~1e-16).
 constexpr double kFallbackResidual = 1e-14;
 
-class FallbackBackend : public Backend {
+class FallbackBackend : public IntoBackend {
  public:
   explicit FallbackBackend(std::unique_ptr<Backend> primary) : primary_(std::move(primary)) {}
   std::string name() const override { return primary_->name(); }
   int max_functions() const override { return primary_->max_functions(); }
-  Solution solve(const Problem& p) override {
-    Solution s;
-    solve_into(p, nullptr, s);
-    return s;
-  }
-  Solution solve_next(const Problem& p, const WarmStart& at) override {
-    Solution s;
-    solve_into(p, &at, s);
-    return s;
-  }
   void solve_into(const Problem& p, const WarmStart* at, Solution& s) override {
     primary_->solve_into(p, at, s);
     if (s.call != CallStatus::Ok || s.status == ProblemStatus::Optimal ||

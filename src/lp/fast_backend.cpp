@@ -23,23 +23,13 @@ namespace {
 
 using fast::FastSimplex;
 
-class FastBackend : public Backend {
+class FastBackend : public IntoBackend {
  public:
   explicit FastBackend(const fast::SimplexSettings& settings) {
     std::apply([&](auto&... simplex) { (simplex.use(settings), ...); }, simplices_);
   }
   std::string name() const override { return "fast"; }
   int max_functions() const override { return kMaxRows - 1; }
-  Solution solve(const Problem& p) override {
-    Solution s;
-    solve_into(p, nullptr, s);
-    return s;
-  }
-  Solution solve_next(const Problem& p, const WarmStart& at) override {
-    Solution s;
-    solve_into(p, &at, s);
-    return s;
-  }
   void solve_into(const Problem& p, const WarmStart* at, Solution& s) override {
     if (p.rows > kMaxRows) {
       s.reset();

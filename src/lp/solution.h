@@ -109,6 +109,22 @@ class Backend {
   }
 };
 
+// A backend that implements solve_into only (the loops' entry point); solve and solve_next call it.
+class IntoBackend : public Backend {
+ public:
+  Solution solve(const Problem& problem) override {
+    Solution s;
+    solve_into(problem, nullptr, s);
+    return s;
+  }
+  Solution solve_next(const Problem& problem, const WarmStart& at) override {
+    Solution s;
+    solve_into(problem, &at, s);
+    return s;
+  }
+  void solve_into(const Problem& problem, const WarmStart* at, Solution& out) override = 0;
+};
+
 // "fast" (our exact dense simplex) or "glpk" (the reference).
 std::unique_ptr<Backend> make_backend(const std::string& name);
 // InputError naming `what` when a basis of `functions` is beyond backend `name`'s row limit.

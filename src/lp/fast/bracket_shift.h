@@ -147,13 +147,10 @@ inline bool FastSimplex<K>::exchange(int i, int entering) {
   // basis's shifts in most of the starts that then failed (~85 k of the 119 k composite repairs
   // of a power4 sweep).
   if (updates_ >= refactor_interval() && !refactor()) return false;
-  double u[kMaxRows] = {};  // (GCC cannot see that column_in_basis fills k_ <= kMaxRows)
-  column_in_basis(entering, u);
+  double u[kMaxRows] = {};  // (GCC cannot see that ftran_column fills k_ <= kMaxRows)
+  ftran_column(entering, u);
   if (!stable_pivot(u, i)) return false;
-  const double theta = x_[i] / u[i];
-  for (int q = 0; q < k_; ++q) x_[q] -= theta * u[q];
-  x_[i] = theta;
-  pivot(i, entering, u);
+  move_along(i, entering, u, x_[i] / u[i]);
   return true;
 }
 

@@ -35,7 +35,7 @@ inline bool FastSimplex<K>::certify_in_double(Solution& s) {
   if (fresh_.duals)  // the iterations' last duals, of this very basis and inverse: the same bits
     std::copy(y_, y_ + k_, y);
   else
-    dual_values(y);
+    btran(y);
   const double reduced_cost_error = pricing_rounding(y);
   if (reduced_cost_error > 0.1 * kCertifyBound) return false;
   // One step of iterative refinement: x_B from the double inverse misses rhs by ~cond(B) eps;
@@ -46,7 +46,7 @@ inline bool FastSimplex<K>::certify_in_double(Solution& s) {
     for (int i = 0; i < k_; ++i) v -= basic_[i][r] * x_[i];
     misfit[r] = v;
   }
-  in_basis(misfit, correction);
+  ftran(misfit, correction);
   for (int i = 0; i < k_; ++i) x_[i] += correction[i];
   // A weight below what double-double would call zero is for the precise pass (and then the
   // dual simplex) to judge: the bound's terms would not notice it (settings_.certify_residual; a
@@ -188,7 +188,7 @@ inline bool FastSimplex<K>::certify_precisely(Solution& s) {
   return precise_bound(x, y, s);
 }
 
-// y_ (dual_values' of the current basis) refined by one double-double step into precise_y_, and
+// y_ (btran's duals of the current basis) refined by one double-double step into precise_y_, and
 // rounded back into y_ (iterate, for certify_precisely).
 template <int K>
 inline void FastSimplex<K>::refine_duals_for_certificate() {

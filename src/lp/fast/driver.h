@@ -156,8 +156,8 @@ inline bool FastSimplex<K>::solve_phase2(Solution& s) {
     if (certify(s)) return true;
     for (; certificate_entering_ >= 0 && guided < settings_.guided_steps; ++guided) {
       double u[kMaxRows];
-      column_in_basis(certificate_entering_, u);
-      if (!(step(certificate_entering_, u, false, s) >= 0) || !iterate(s)) return false;
+      ftran_column(certificate_entering_, u);
+      if (!(ratio_test_step(certificate_entering_, u, false, s) >= 0) || !iterate(s)) return false;
       if (certify(s)) return true;
     }
     if (!dual_simplex(s)) return false;

@@ -39,12 +39,12 @@ inline bool FastSimplex<K>::update_factors(const BasisState& factors) {
   fresh_.basis_changed();
   for (int c = 0; c < count; ++c) {
     const int i = changed[c];
-    double u[kMaxRows] = {};  // (GCC cannot see that in_basis fills k_ <= kMaxRows)
-    in_basis(a[i], u);
+    double u[kMaxRows] = {};  // (GCC cannot see that ftran fills k_ <= kMaxRows)
+    ftran(a[i], u);
     if (!stable_pivot(u, i)) return false;
     pivot(i, basis_[i], u);
   }
-  in_basis(p_->rhs.data(), x_);
+  ftran(p_->rhs.data(), x_);
   return true;
 }
 
@@ -119,14 +119,14 @@ inline bool FastSimplex<K>::refactor() {
   // ill-conditioned bases of tiny-valued columns, z^6 near 0, must still pass).
   if (!invert_fixed<double, K>(b, inv, 1e-13)) return false;
   for (int i = 0; i < k_; ++i) std::copy(inv[i], inv[i] + k_, binv_[i]);
-  in_basis(p_->rhs.data(), x_);
+  ftran(p_->rhs.data(), x_);
   updates_ = 0;
   fresh_.basis_changed();
   return true;
 }
 
 template <int K>
-inline void FastSimplex<K>::dual_values(double* y) const {
+inline void FastSimplex<K>::btran(double* y) const {
   double basic_cost[kMaxRows], misfit[kMaxRows];
   for (int i = 0; i < k_; ++i) basic_cost[i] = cost(basis_[i]);
   for (int r = 0; r < k_; ++r) {
@@ -162,15 +162,15 @@ inline int FastSimplex<K>::basic_position(int j, int among) const {
 
 // u = B^{-1} a_j, the entering column in basis coordinates.
 template <int K>
-inline void FastSimplex<K>::column_in_basis(int j, double* u) const {
+inline void FastSimplex<K>::ftran_column(int j, double* u) const {
   double a[kMaxRows];
   load_column(j, a);
-  in_basis(a, u);
+  ftran(a, u);
 }
 
 // u = B^{-1} a for any k-vector a (a column, a residual, the moments).
 template <int K>
-inline void FastSimplex<K>::in_basis(const double* a, double* u) const {
+inline void FastSimplex<K>::ftran(const double* a, double* u) const {
   for (int i = 0; i < k_; ++i) {
     double v = 0;
     for (int r = 0; r < k_; ++r) v += binv_[i][r] * a[r];

@@ -34,7 +34,7 @@ inline bool FastSimplex<K>::iterate(Solution& s) {
     // The extra columns first (phase 2 only, after the first iteration: see enter_among_extras):
     // only when none of them may enter does a full pass decide, so every run still ends with one,
     // and optimality is never judged on the extras alone.
-    dual_values(y_);  // once per iteration, for the extras and the full pass alike
+    btran(y_);  // once per iteration, for the extras and the full pass alike
     fresh_.duals_computed();
     const bool partial = phase_ == 2 && !bland && !retrying_;
     int entering = partial && guard > 0 && !sliding ? enter_from_extras() : -1;
@@ -54,8 +54,8 @@ inline bool FastSimplex<K>::iterate(Solution& s) {
     }
     if (entering < 0) return true;
     double u[kMaxRows];
-    column_in_basis(entering, u);
-    const double theta = step(entering, u, bland, s);
+    ftran_column(entering, u);
+    const double theta = ratio_test_step(entering, u, bland, s);
     if (!(theta >= 0)) return false;
     // Near-zero steps count as degenerate too: Harris steps of 1e-18 can cycle as well.
     degenerate = theta < 1e-12 ? degenerate + 1 : 0;
@@ -70,7 +70,8 @@ inline bool FastSimplex<K>::iterate(Solution& s) {
 // One primal simplex step: `entering` (u = B^{-1} a_entering) comes in, the ratio test picks the
 // leaving row. The step length, or -1 when no row may leave (numerical failure).
 template <int K>
-inline double FastSimplex<K>::step(int entering, const double* u, bool bland, Solution& s) {
+inline double FastSimplex<K>::ratio_test_step(int entering, const double* u, bool bland,
+                                              Solution& s) {
   int leave = -1;
   if (!bland) {
     // Harris ratio test: a relaxed bound first, then the largest pivot within it.
@@ -102,11 +103,18 @@ inline double FastSimplex<K>::step(int entering, const double* u, bool bland, So
   }
   if (leave < 0) return -1;
   const double theta = std::max(x_[leave], 0.0) / u[leave];
+  move_along(leave, entering, u, theta);
+  ++s.iterations;
+  return theta;
+}
+
+// x_B moves by theta along -u (u = B^-1 a_entering) and column `entering` takes basis position
+// `leave` with weight theta: the basis update of a primal or dual simplex step.
+template <int K>
+inline void FastSimplex<K>::move_along(int leave, int entering, const double* u, double theta) {
   for (int i = 0; i < k_; ++i) x_[i] -= theta * u[i];
   x_[leave] = theta;
   pivot(leave, entering, u);
-  ++s.iterations;
-  return theta;
 }
 
 // Dual simplex steps from a dual feasible but slightly primal infeasible basis, which
@@ -145,11 +153,8 @@ inline bool FastSimplex<K>::dual_simplex(Solution& s) {
         entering = j, best_alpha = alpha_[j];
     if (entering < 0) return false;
     double u[kMaxRows];
-    column_in_basis(entering, u);
-    double theta = x_[leave] / u[leave];
-    for (int i = 0; i < k_; ++i) x_[i] -= theta * u[i];
-    x_[leave] = theta;
-    pivot(leave, entering, u);
+    ftran_column(entering, u);
+    move_along(leave, entering, u, x_[leave] / u[leave]);
     ++s.iterations;
   }
   return false;

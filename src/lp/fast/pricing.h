@@ -9,7 +9,7 @@ namespace mb::lp::fast {
 // its y the same way, so at an optimal basis it finds these reduced costs already in place.
 template <int K>
 inline void FastSimplex<K>::price() {
-  dual_values(y_);
+  btran(y_);
   fresh_.duals_computed();
   reduced_costs();
 }

@@ -74,7 +74,8 @@ class FastSimplex {
   // iterations.h: primal simplex (pricing -> ratio test -> update), dual simplex
   int most_negative() const;
   bool iterate(Solution& s);
-  double step(int entering, const double* u, bool bland, Solution& s);
+  double ratio_test_step(int entering, const double* u, bool bland, Solution& s);
+  void move_along(int leave, int entering, const double* u, double theta);
   bool dual_simplex(Solution& s);
   void refine_weights();
 
@@ -101,11 +102,11 @@ class FastSimplex {
   void load_column(int j, double* a) const;
   double cost(int j) const;
   bool refactor();
-  void dual_values(double* y) const;
+  void btran(double* y) const;
   bool is_basic(int j) const;
   int basic_position(int j, int among = K) const;
-  void column_in_basis(int j, double* u) const;
-  void in_basis(const double* a, double* u) const;
+  void ftran_column(int j, double* u) const;
+  void ftran(const double* a, double* u) const;
   bool stable_pivot(const double* u, int i) const;
   void pivot(int leave, int entering, const double* u);
   double column_bound() const;
@@ -159,10 +160,10 @@ class FastSimplex {
   int certificate_entering_ = -1;  // set by a failed precise certificate (solve_phase2)
   // What the cached duals and reduced costs are still valid for, in one place: every change of
   // the basis or of its inverse (pivot, refactor, update_factors, restore_basis, a start) calls
-  // basis_changed(); BTRAN (dual_values into y_) calls duals_computed(); reduced_costs() records
+  // basis_changed(); btran (into y_) calls duals_computed(); reduced_costs() records
   // the duals and phase it priced with, and partial pricing marks reduced_ stale.
   struct Freshness {
-    bool duals = false;          // y_ is dual_values' of the current basis and inverse
+    bool duals = false;          // y_ is btran's duals of the current basis and inverse
     bool precise_duals = false;  // and refined into precise_y_ (refine_duals_for_certificate)
     bool reduced = false;        // reduced_ = c - A^T reduced_y for every column, in reduced_phase
     int reduced_phase = 0;
