@@ -206,7 +206,8 @@ int run_sweep(const SweepOptions& options) {
     bar.advance();
   }
   bar.finish();
-  if (!options.common.quiet) std::fprintf(stderr, "sweep: %s complete\n", (out / "results.sqlite").c_str());
+  if (!options.common.quiet)
+    std::fprintf(stderr, "sweep: %s complete\n", (out / "results.sqlite").c_str());
   return 0;
 }
 
