@@ -45,6 +45,12 @@ std::vector<OptionSpec> shadow_option_specs() {
        "G + beta * (weight at z_f): 0 lower bound, 1 upper (seed 004).", 0, 1},
       {"esm.c", OptionType::Number, "80", "ESM exponent c.", 1e-6, 700},
       {"vsm.min_variance", OptionType::Number, "0", "VSM variance clamp.", 0, 1},
+      {"evsm.c_positive", OptionType::Number, "40",
+       "EVSM exponent of the positive warp exp(c z) (exp(2 c z) must fit float32 for "
+       "evsm*_float: c <= 44).",
+       1e-6, 300},
+      {"evsm.c_negative", OptionType::Number, "5",
+       "EVSM4 exponent of the negative warp -exp(-c z).", 1e-6, 300},
       {"lp.grid", OptionType::Integer, "256", "LP techniques: uniform grid points on the interval.",
        2, 1e7},
       {"lp.lo", OptionType::Number, "0", "LP techniques: admissible interval, lower end."},
@@ -86,6 +92,8 @@ EvalSettings shadow_settings_from(const Config& config, int threads) {
   t.beta = config.number("hamburger.beta");
   t.esm_c = config.number("esm.c");
   t.vsm_min_variance = config.number("vsm.min_variance");
+  t.evsm_c_positive = config.number("evsm.c_positive");
+  t.evsm_c_negative = config.number("evsm.c_negative");
   t.lp = lp_discretization_from(config);
   t.lp_backend = config.string("lp.backend");
   s.threads = threads;

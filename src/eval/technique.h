@@ -31,6 +31,7 @@ struct TechniqueParams {
   double beta = 0;  // Hamburger: G + beta * (weight at z_f); 0 = lower bound, 1 = upper (seed 004)
   double esm_c = 80;
   double vsm_min_variance = 0;
+  double evsm_c_positive = 40, evsm_c_negative = 5;  // EVSM warps exp(c+ z), -exp(-c- z)
   lp::Discretization lp;
   std::string lp_backend = "fast";
 };
@@ -67,8 +68,9 @@ class Technique {
 };
 
 // "pcf", "oracle" (F_Z(z_f - delta_f), the bias's own error under the receiver-plane reference),
-// "vsm", "esm", "hamburger4", "hamburger4_float", "hamburger4_16bit", "hausdorff4", "hamburger6",
-// "tmsm", "tmsm_float", or "lp:<basis>" (a named set such as power4, or functions separated by
+// "vsm", "esm", "evsm2", "evsm4", "evsm2_float", "evsm4_float", "hamburger4", "hamburger4_float",
+// "hamburger4_16bit", "hausdorff4", "hamburger6", "tmsm", "tmsm_float", or "lp:<basis>" (a named
+// set such as power4, or functions separated by
 // ';'). Unknown names are an InputError listing the valid ones.
 std::unique_ptr<Technique> make_technique(const std::string& name, const TechniqueParams& params);
 std::vector<std::string> closed_form_technique_names();
