@@ -51,6 +51,12 @@ std::vector<OptionSpec> shadow_option_specs() {
        1e-6, 300},
       {"evsm.c_negative", OptionType::Number, "5",
        "EVSM4 exponent of the negative warp -exp(-c z).", 1e-6, 300},
+      {"lvsm.layers", OptionType::Integer, "4",
+       "LVSM depth layers: [0, 1] split evenly, a VSM per layer on the depth clamped to it.", 1, 8},
+      {"csm.terms", OptionType::Integer, "8",
+       "CSM Fourier terms M (2M channels: cos and sin of (2k - 1) pi z).", 1, 16},
+      {"csm.damping", OptionType::Number, "2",
+       "CSM ringing suppression: term k scaled by exp(-damping (k/M)^2).", 0, 100},
       {"lp.grid", OptionType::Integer, "256", "LP techniques: uniform grid points on the interval.",
        2, 1e7},
       {"lp.lo", OptionType::Number, "0", "LP techniques: admissible interval, lower end."},
@@ -94,6 +100,9 @@ EvalSettings shadow_settings_from(const Config& config, int threads) {
   t.vsm_min_variance = config.number("vsm.min_variance");
   t.evsm_c_positive = config.number("evsm.c_positive");
   t.evsm_c_negative = config.number("evsm.c_negative");
+  t.lvsm_layers = int(config.integer("lvsm.layers"));
+  t.csm_terms = int(config.integer("csm.terms"));
+  t.csm_damping = config.number("csm.damping");
   t.lp = lp_discretization_from(config);
   t.lp_backend = config.string("lp.backend");
   s.threads = threads;

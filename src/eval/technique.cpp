@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "eval/lp_technique.h"
 #include "moments/canonical.h"
@@ -94,6 +95,77 @@ class EvsmTechnique : public Technique {
   }
   bool four_, in_float_;
   double c_positive_, c_negative_;
+};
+
+// Layered VSM (seed 001 "Layered VSM"): [0, 1] split into L even layers; layer l keeps the depth
+// clamped to it, w_l(z) = clamp(L z - l, 0, 1), and a fragment is judged by Cantelli on the warped
+// depths of its own layer. The warp does not decrease, so w_l(Z) < w_l(z_f) implies Z < z_f and
+// the bound stays a lower bound; occluders in earlier layers warp to 0, and light leaking from
+// depths beyond z_f's layer is gone (seed 000 §2: Problem 1 if the layers' overlap is ignored).
+class LvsmTechnique : public Technique {
+ public:
+  LvsmTechnique(int layers, double min_variance)
+      : Technique("lvsm", lvsm_basis(layers), double_storage()),
+        layers_(layers),
+        min_variance_(min_variance) {}
+  double shadow(const FragmentInput& in) override {
+    const int layer = std::clamp(int(std::floor(layers_ * in.zf)), 0, layers_ - 1);
+    const double wf = std::clamp(layers_ * in.zf - layer, 0.0, 1.0);
+    return std::clamp(vsm_bound(in.moments.data() + 2 * layer, wf, min_variance_), 0.0, 1.0);
+  }
+
+ private:
+  static Basis lvsm_basis(int layers) {
+    std::vector<std::string> functions;
+    for (int l = 0; l < layers; ++l) {
+      const std::string warp =
+          "min(max(" + std::to_string(layers) + "*z-" + std::to_string(l) + ",0),1)";
+      functions.push_back(warp);
+      functions.push_back(warp + "^2");
+    }
+    return Basis::parse(functions);
+  }
+  int layers_;
+  double min_variance_;
+};
+
+// Convolution shadow maps (seed 001 "Convolution Shadow Maps", "CSM Ringing"): the shadow test
+// [z < z_f] as a Fourier series in t = z_f - z of period 2, 1/2 + 2 sum_k sin(c_k t) / c_k with
+// c_k = (2k - 1) pi, whose terms split into E[cos(c_k z)] and E[sin(c_k z)] (the map's 2M
+// channels); term k is damped by exp(-damping (k/M)^2) against ringing, and the slides' scaling
+// by 2 (G = saturate(2 S - 1) for the series' shadow S) makes a receiver at its own depth lit.
+// Not a lower bound: truncation rings (darkening_bound infinite; verify measures by how much).
+class CsmTechnique : public Technique {
+ public:
+  CsmTechnique(int terms, double damping)
+      : Technique("csm", csm_basis(terms), double_storage()), terms_(terms), damping_(damping) {}
+  double shadow(const FragmentInput& in) override {
+    double series = 0.5;
+    for (int k = 1; k <= terms_; ++k) {
+      const double c = (2 * k - 1) * std::numbers::pi;
+      const double weight = 2 / c * std::exp(-damping_ * double(k * k) / double(terms_ * terms_));
+      const double cos_term = in.moments[2 * (k - 1)], sin_term = in.moments[2 * (k - 1) + 1];
+      series += weight * (std::sin(c * in.zf) * cos_term - std::cos(c * in.zf) * sin_term);
+    }
+    return std::clamp(2 * series - 1, 0.0, 1.0);
+  }
+  double darkening_bound() const override { return std::numeric_limits<double>::infinity(); }
+  std::string darkening_reason() const override {
+    return "a truncated Fourier series of the shadow test rings (Gibbs)";
+  }
+
+ private:
+  static Basis csm_basis(int terms) {
+    std::vector<std::string> functions;
+    for (int k = 1; k <= terms; ++k) {
+      const std::string c = std::to_string(2 * k - 1) + "*_pi*z";
+      functions.push_back("cos(" + c + ")");
+      functions.push_back("sin(" + c + ")");
+    }
+    return Basis::parse(functions);
+  }
+  int terms_;
+  double damping_;
 };
 
 // The power-moment solvers share the bias towards b* = (1/2, .., 1/2) (REFERENCE.md §4: the
@@ -215,6 +287,8 @@ std::vector<std::string> closed_form_technique_names() {
           "evsm4",
           "evsm2_float",
           "evsm4_float",
+          "lvsm",
+          "csm",
           "hamburger4",
           "hamburger4_float",
           "hamburger4_16bit",
@@ -236,6 +310,8 @@ std::unique_ptr<Technique> make_technique(const std::string& name, const Techniq
   if (name == "oracle") return std::make_unique<OracleTechnique>();
   if (name == "vsm") return std::make_unique<VsmTechnique>(p.vsm_min_variance);
   if (name == "esm") return std::make_unique<EsmTechnique>(p.esm_c);
+  if (name == "lvsm") return std::make_unique<LvsmTechnique>(p.lvsm_layers, p.vsm_min_variance);
+  if (name == "csm") return std::make_unique<CsmTechnique>(p.csm_terms, p.csm_damping);
   if (name.rfind("evsm", 0) == 0 &&
       (name == "evsm2" || name == "evsm4" || name == "evsm2_float" || name == "evsm4_float"))
     return std::make_unique<EvsmTechnique>(name, name[4] == '4', name.size() > 5, p.evsm_c_positive,

@@ -32,6 +32,9 @@ struct TechniqueParams {
   double esm_c = 80;
   double vsm_min_variance = 0;
   double evsm_c_positive = 40, evsm_c_negative = 5;  // EVSM warps exp(c+ z), -exp(-c- z)
+  int lvsm_layers = 4;                               // LVSM depth layers
+  int csm_terms = 8;                                 // CSM Fourier terms M
+  double csm_damping = 2;                            // CSM ringing suppression
   lp::Discretization lp;
   std::string lp_backend = "fast";
 };
@@ -68,9 +71,9 @@ class Technique {
 };
 
 // "pcf", "oracle" (F_Z(z_f - delta_f), the bias's own error under the receiver-plane reference),
-// "vsm", "esm", "evsm2", "evsm4", "evsm2_float", "evsm4_float", "hamburger4", "hamburger4_float",
-// "hamburger4_16bit", "hausdorff4", "hamburger6", "tmsm", "tmsm_float", or "lp:<basis>" (a named
-// set such as power4, or functions separated by
+// "vsm", "esm", "evsm2", "evsm4", "evsm2_float", "evsm4_float", "lvsm", "csm", "hamburger4",
+// "hamburger4_float", "hamburger4_16bit", "hausdorff4", "hamburger6", "tmsm", "tmsm_float", or
+// "lp:<basis>" (a named set such as power4, or functions separated by
 // ';'). Unknown names are an InputError listing the valid ones.
 std::unique_ptr<Technique> make_technique(const std::string& name, const TechniqueParams& params);
 std::vector<std::string> closed_form_technique_names();
