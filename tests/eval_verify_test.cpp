@@ -114,3 +114,33 @@ TEST_F(Verify, TechniquesWithoutAnLpCounterpartAreRejected) {
 
 }  // namespace
 }  // namespace mb
+
+namespace mb {
+namespace {
+
+// EVSM is a valid lower bound but not the sharp one (seed 000 §2): verify judges it as such
+// against the LP of its own basis (exponent 5, verify.evsm_c's default). It passes although
+// |dG| is large, and EVSM shifted up by 0.02 is caught above the LP.
+TEST(VerifyLowerBound, EvsmPassesAsALowerBoundAndAShiftedOneFails) {
+  TechniqueParams params = verify_params(TechniqueParams{});
+  params.evsm_c_positive = 5;
+  const auto instances = random_verify_instances(300, 91);
+  for (const char* name : {"evsm2", "evsm4"}) {
+    const VerifyTarget target = verify_targets({name}, params).front();
+    ASSERT_TRUE(target.lower_bound);
+    const VerifySolverResult r = verify_solver(
+        target, [&] { return make_technique(name, params); }, instances, {256, 1024}, 5e-3, 3, 2);
+    EXPECT_TRUE(r.passed()) << name << ": " << r.above_finest << " above the LP, " << r.above_lp
+                            << " above a witness";
+    EXPECT_GT(r.grids.back().max_difference, 0.1) << name;  // not sharp, and not judged on |dG|
+    const VerifySolverResult shifted = verify_solver(
+        target,
+        [&] { return std::make_unique<WrongTechnique>(make_technique(name, params), 0.02); },
+        instances, {256, 1024}, 5e-3, 3, 2);
+    EXPECT_FALSE(shifted.passed()) << name;
+    EXPECT_GT(shifted.above_finest, 10u) << name;
+  }
+}
+
+}  // namespace
+}  // namespace mb

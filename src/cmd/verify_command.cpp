@@ -26,8 +26,8 @@ std::vector<OptionSpec> verify_specs() {
   for (auto& s : shadow_option_specs()) specs.push_back(s);
   specs.push_back({"verify.techniques", OptionType::StringList,
                    "[hamburger4, hausdorff4, tmsm, vsm, esm, hamburger6, hamburger4_float, "
-                   "hamburger4_16bit, tmsm_float]",
-                   "Closed forms to check (REFERENCE.md §6)."});
+                   "hamburger4_16bit, tmsm_float, evsm2, evsm4]",
+                   "Closed forms to check (REFERENCE.md §6; EVSM as a lower bound of its basis)."});
   specs.push_back({"verify.random", OptionType::Integer, "2000",
                    "Seeded random distributions (1-8 atoms, mixtures).", 0, 1e8});
   specs.push_back({"verify.fragments", OptionType::Integer, "2000",
@@ -42,6 +42,11 @@ std::vector<OptionSpec> verify_specs() {
                    "ESM exponent for verify: with c = 80 the LP cannot resolve E[e^{c(z-1)}] below "
                    "its 1e-9 tolerance.",
                    1e-6, 700});
+  specs.push_back(
+      {"verify.evsm_c", OptionType::Number, "5",
+       "EVSM's positive exponent for verify: with c = 40 its LP columns exp(80 (z - 1)) "
+       "vanish below the LP's tolerance over most of [0, 1].",
+       1e-6, 300});
   specs.push_back(
       {"verify.worst", OptionType::Integer, "5", "Worst cases listed per solver.", 0, 1000});
   return specs;
@@ -92,6 +97,7 @@ int run_verify(const CommonOptions& options) {
   EvalSettings settings = shadow_settings_from(config, threads);
   TechniqueParams params = verify_params(settings.technique);
   params.esm_c = config.number("verify.esm_c");
+  params.evsm_c_positive = config.number("verify.evsm_c");
   const auto targets = verify_targets(config.strings("verify.techniques"), params);
   std::vector<int> grids;
   for (const auto& g : config.strings("verify.grids")) {

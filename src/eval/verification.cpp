@@ -34,6 +34,14 @@ std::vector<VerifyTarget> verify_targets(const std::vector<std::string>& techniq
   // uses e^{c(z-1)}, the same span scaled by e^{-c}, whose values stay <= 1 (the LP recomputes the
   // moments from the distribution, so the scale of the closed form's moment does not matter).
   const std::string esm_basis = "exp(" + round_trip(params.esm_c) + "*(z-1))";
+  // EVSM's own basis on [0, 1], its warps scaled by their values at z = 1 like ESM's (the LP
+  // recomputes the moments from the distribution, so only the span of the functions matters).
+  const std::string p = round_trip(params.evsm_c_positive), n = round_trip(params.evsm_c_negative);
+  const std::string p2 = round_trip(2 * params.evsm_c_positive);
+  const std::vector<std::string> evsm2_basis{"exp(" + p + "*(z-1))", "exp(" + p2 + "*(z-1))"};
+  std::vector<std::string> evsm4_basis = evsm2_basis;
+  evsm4_basis.push_back("-exp(-" + n + "*z)");
+  evsm4_basis.push_back("exp(-" + round_trip(2 * params.evsm_c_negative) + "*z)");
   std::vector<VerifyTarget> all = {
       {"hamburger4", {"power4"}, -4, 5, true},
       {"hausdorff4", {"power4"}, 0, 1, true},
@@ -44,6 +52,8 @@ std::vector<VerifyTarget> verify_targets(const std::vector<std::string>& techniq
       {"hamburger4_float", {"power4"}, -4, 5, false},
       {"hamburger4_16bit", {"power4"}, -4, 5, false},
       {"tmsm_float", {"trig4"}, 0, 1, false},
+      {"evsm2", evsm2_basis, 0, 1, false, true},
+      {"evsm4", evsm4_basis, 0, 1, false, true},
   };
   std::vector<VerifyTarget> out;
   for (const auto& name : techniques) {
@@ -223,6 +233,7 @@ VerifySolverResult verify_solver(const VerifyTarget& target, const TechniqueMake
       excess.push_back({above_by, c.instance});
     }
     if (std::isfinite(c.lp.back())) {
+      result.above_finest += c.closed_form > c.lp.back() + kAboveLpSlack;
       const double d = std::abs(c.closed_form - c.lp.back());
       result.beyond_tolerance += d > tolerance;
       finest.push_back({d, c.instance});
