@@ -144,3 +144,28 @@ TEST(VerifyLowerBound, EvsmPassesAsALowerBoundAndAShiftedOneFails) {
 
 }  // namespace
 }  // namespace mb
+
+namespace mb {
+namespace {
+
+// VSM solves Problem 1 on R (Cantelli). With Cantelli's extremal support among the LP's points,
+// the LP on [-20, 21] is no longer grid- or interval-limited: it matches the closed form within
+// 1e-3 on every instance at every grid, where without it the far point left the interval.
+TEST(VerifyOnR, VsmMatchesTheLpWithCantellisSupport) {
+  const TechniqueParams params = verify_params(TechniqueParams{});
+  const auto instances = random_verify_instances(400, 5);
+  const VerifyTarget target = verify_targets({"vsm"}, params).front();
+  ASSERT_TRUE(target.cantelli_support);
+  const VerifySolverResult r = verify_solver(
+      target, [&] { return make_technique("vsm", params); }, instances, {64, 256}, 5e-3, 3, 2);
+  EXPECT_TRUE(r.passed());
+  for (const auto& g : r.grids) EXPECT_LT(g.max_difference, 1e-3) << "grid " << g.grid;
+  VerifyTarget without = target;
+  without.cantelli_support = false;
+  const VerifySolverResult limited = verify_solver(
+      without, [&] { return make_technique("vsm", params); }, instances, {64, 256}, 5e-3, 3, 2);
+  EXPECT_GT(limited.grids.front().max_difference, 1e-2);  // the test can fail without it
+}
+
+}  // namespace
+}  // namespace mb

@@ -23,6 +23,10 @@ struct VerifyTarget {
   // exceeds the LP on the finest grid (itself never below the sharp bound of the continuous
   // problem) nor an LP witness; |dG| is reported, not judged.
   bool lower_bound = false;
+  // VSM on R: Cantelli's extremal support for the instance's distribution and z_f joins the LP's
+  // points (within ten interval widths), so that an LP on a bounded interval can represent it
+  // where it lies beyond the interval (REFERENCE.md §6).
+  bool cantelli_support = false;
 };
 
 // The §6 table for the given technique names (InputError for names without an LP counterpart).

@@ -134,6 +134,28 @@ void put_column(const ProblemFactory& factory, double z, std::vector<double>& va
 
 }  // namespace
 
+void ProblemFactory::add_points(Problem& p, std::span<const double> points) const {
+  std::vector<double> added;
+  for (double z : points)
+    if (std::find(p.extra.points.begin(), p.extra.points.end(), z) == p.extra.points.end() &&
+        std::find(added.begin(), added.end(), z) == added.end())
+      added.push_back(z);
+  if (added.empty()) return;
+  const int old_size = p.extra.size(), size = old_size + int(added.size());
+  std::vector<double> values(size_t(rows_) * size), column_values(rows_);
+  for (int r = 0; r < rows_; ++r)
+    for (int e = 0; e < old_size; ++e)
+      values[size_t(r) * size + e] = p.extra.values[size_t(r) * old_size + e];
+  for (size_t a = 0; a < added.size(); ++a) {
+    column(added[a], column_values.data());
+    for (int r = 0; r < rows_; ++r) values[size_t(r) * size + old_size + a] = column_values[r];
+  }
+  p.extra.points.insert(p.extra.points.end(), added.begin(), added.end());
+  p.extra.values = std::move(values);
+  p.extra.max_abs = largest_magnitude(p.extra.values);
+  if (!p.extra_atom.empty()) p.extra_atom.resize(size, -1);
+}
+
 Problem ProblemFactory::from_moments(std::span<const double> moments, double zf,
                                      std::span<const double> extra_points) const {
   if (moments.size() != basis_.size())

@@ -103,6 +103,10 @@ class ProblemFactory {
   // False, with `p` unchanged, when z_f's column is not simply replaced (z_f on a kernel depth or
   // outside [lo, hi], before or now): then build anew.
   bool move_zf(double zf, Problem& p) const;
+  // Appends `points` (those not already among p's extra points) to p's extra columns, with no
+  // atom behind them: more of I, so G can only fall (REFERENCE.md §2). Verify adds a closed form's
+  // extremal support this way where it lies beyond the grid's interval.
+  void add_points(Problem& p, std::span<const double> points) const;
 
  private:
   Basis basis_;
