@@ -56,12 +56,6 @@ std::vector<OptionSpec> dataset_option_specs() {
   };
 }
 
-std::string format_number(double v, const char* format) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, format, v);
-  return buffer;
-}
-
 std::string run_plot_script(const std::string& script, const std::string& arguments,
                             const std::string& out_stem, const std::string& caption, bool quiet) {
   if (std::system("/usr/bin/python3 -c 'import matplotlib' >/dev/null 2>&1") != 0) {

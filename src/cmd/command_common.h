@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "util/config.h"
+#include "util/number_text.h"
 
 namespace mb {
 
@@ -39,9 +40,6 @@ void set_process_arguments(int argc, char** argv);
 
 // Option declarations shared by the commands that read a dataset.
 std::vector<OptionSpec> dataset_option_specs();
-
-// `v` as printf's `format` ("%.3g", "%.17g" for a round trip) prints it, for reports.
-std::string format_number(double v, const char* format);
 
 // Runs scripts/<script> with Debian's /usr/bin/python3 when matplotlib is there (DESIGN.md: plots
 // stay in Python). Returns the Markdown line for the report: the image `<out_stem>.png` (and

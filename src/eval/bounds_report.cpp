@@ -8,16 +8,6 @@
 
 namespace mb {
 
-namespace {
-
-std::string fixed(double v, const char* format) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, format, v);
-  return buffer;
-}
-
-}  // namespace
-
 BoundsReport render_bounds_report(const BoundCurveRequest& request, const BoundCurves& curves,
                                   const std::string& source, const BoundsRun& run) {
   std::ostringstream csv, dist, md;
@@ -39,11 +29,11 @@ BoundsReport render_bounds_report(const BoundCurveRequest& request, const BoundC
      << "Made by momentbench " << run.version << " (git " << run.git_sha << "), " << request.threads
      << " threads, " << run.started << ".\n\n"
      << "- Distribution: " << source << "\n"
-     << "- LP: I = " << request.lp.grid << "-point grid on [" << fixed(request.lp.lo, "%g") << ", "
-     << fixed(request.lp.hi, "%g")
+     << "- LP: I = " << request.lp.grid << "-point grid on [" << format_number(request.lp.lo, "%g")
+     << ", " << format_number(request.lp.hi, "%g")
      << "] ∪ the distribution's depths ∪ {z_f} (REFERENCE.md §2), backend " << request.backend
-     << "; " << request.samples << " values of z_f on [" << fixed(request.zf_lo, "%g") << ", "
-     << fixed(request.zf_hi, "%g") << "]\n"
+     << "; " << request.samples << " values of z_f on [" << format_number(request.zf_lo, "%g")
+     << ", " << format_number(request.zf_hi, "%g") << "]\n"
      << "- Gap = F_Z(z_f) − G(b, z_f) ≥ 0; its mean over z_f is the area between the CDF and the "
         "bound.\n\n"
      << "| basis | m | functions | mean gap | max gap | LPs not optimal "
@@ -52,8 +42,8 @@ BoundsReport render_bounds_report(const BoundCurveRequest& request, const BoundC
     std::string functions;
     for (const auto& f : s.functions) functions += (functions.empty() ? "" : ", ") + f;
     md << "| " << s.basis << " | " << s.m << " | " << functions << " | "
-       << fixed(s.mean_gap, "%.5f") << " | " << fixed(s.max_gap, "%.5f") << " | " << s.failures
-       << " |\n";
+       << format_number(s.mean_gap, "%.5f") << " | " << format_number(s.max_gap, "%.5f") << " | "
+       << s.failures << " |\n";
   }
   return {csv.str(), dist.str(), md.str()};
 }

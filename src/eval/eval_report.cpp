@@ -16,14 +16,13 @@ std::string number(double v) {
 }
 
 std::string table_row(const EvalRow& r) {
-  char max_text[32];
-  std::snprintf(max_text, sizeof max_text, "%.6g", r.stats.max);
   std::ostringstream s;
   s << "| " << r.technique << " | " << r.scene << (r.view.empty() ? "" : "/" + r.view) << " | "
     << r.stats.count << " | " << percent_text(r.stats.mean()) << " | "
     << percent_text(r.stats.leak()) << " | "
-    << darkening_text(r.stats.dark(), r.stats.max_dark, r.darkening_bound) << " | " << max_text
-    << " | " << percent_text(r.stats.share_over_tenth()) << " | " << r.stats.failures << " |";
+    << darkening_text(r.stats.dark(), r.stats.max_dark, r.darkening_bound) << " | "
+    << format_number(r.stats.max, "%.6g") << " | " << percent_text(r.stats.share_over_tenth())
+    << " | " << r.stats.failures << " |";
   return s.str();
 }
 

@@ -10,9 +10,7 @@ namespace mb {
 namespace {
 
 std::string num(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.3g", v);
-  return buffer;
+  return format_number(v, "%.3g");
 }
 std::string full(double v) {
   return round_trip(v);

@@ -40,7 +40,6 @@ class FastBackend : public IntoBackend {
     }
     with_row_count<kMaxRows>(p.rows,
                              [&](auto rows) { std::get<rows() - 1>(simplices_).run(p, at, s); });
-    s.engine = Engine::Fast;  // `s` may hold an earlier fallback answer's tag
   }
 
   // One simplex per row count (each keeps the warm bases of its own problems).
