@@ -56,19 +56,30 @@ ProblemFactory::ProblemFactory(const Basis& basis, const Discretization& disc)
   // CPU. In double, the QR's vectorised sums followed the SIMD width, and an AVX2 build's grid
   // columns (and so its answers, in their last bits) differed from an AVX-512 build's.
   using Matrix = Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>;
-  Matrix at(n, k);
-  at.col(0).setOnes();
-  std::vector<double> values(n);
-  for (int j = 0; j + 1 < k; ++j) {
-    basis[j].evaluate(grid->points, values);
-    for (int i = 0; i < n; ++i) {
-      if (!std::isfinite(values[i]))
-        throw InputError("basis function '" + basis[j].name() +
-                         "' is not finite at z = " + round_trip(grid->points[i]));
-      at(i, j + 1) = values[i];
+  // (1, b(z)) at the given points, one row per point.
+  const auto sample = [&](const std::vector<double>& points) {
+    Matrix a(points.size(), k);
+    a.col(0).setOnes();
+    std::vector<double> values(points.size());
+    for (int j = 0; j + 1 < k; ++j) {
+      basis[j].evaluate(points, values);
+      for (size_t i = 0; i < points.size(); ++i) {
+        if (!std::isfinite(values[i]))
+          throw InputError("basis function '" + basis[j].name() +
+                           "' is not finite at z = " + round_trip(points[i]));
+        a(i, j + 1) = values[i];
+      }
     }
-  }
-  Eigen::HouseholderQR<Matrix> qr(at);
+    return a;
+  };
+  Matrix at = sample(grid->points);
+  // A window orthonormalises the rows where the distributions live (REFERENCE.md §2: a narrow
+  // kernel's columns differ only in digits a transform over all of [lo, hi] rounds away).
+  const bool windowed = disc.window_lo < disc.window_hi;
+  Matrix window_at;
+  if (windowed)
+    window_at = sample(grid_points(Discretization{disc.window_lo, disc.window_hi, std::max(n, 64)}));
+  Eigen::HouseholderQR<Matrix> qr(windowed ? window_at : at);
   Matrix r_upper = qr.matrixQR().topRows(k).triangularView<Eigen::Upper>();
   const long double largest = r_upper.diagonal().cwiseAbs().maxCoeff();
   for (int r = 0; r < k; ++r)
@@ -98,6 +109,13 @@ void ProblemFactory::transform(const double* v, double* out) const {
     for (int c = 0; c <= r; ++c) s = std::fma(transform_[size_t(r) * rows_ + c], v[c], s);
     out[r] = s;
   }
+}
+
+std::vector<long double> ProblemFactory::raw_coefficients(std::span<const long double> y) const {
+  std::vector<long double> c(rows_, 0.0L);
+  for (int r = 0; r < rows_; ++r)
+    for (int k = 0; k <= r; ++k) c[k] += y[r] * (long double)transform_[size_t(r) * rows_ + k];
+  return c;
 }
 
 void ProblemFactory::column(double z, double* out) const {

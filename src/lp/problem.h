@@ -28,6 +28,10 @@ struct Discretization {
   // false: I = grid ∪ extra points (the kernel's depths) ∪ {z_f}. true: depths are rounded to
   // the grid before moments are taken, and I = grid ∪ {z_f}.
   bool quantize = false;
+  // When window_lo < window_hi, the rows are orthonormalised over a grid on this window instead of
+  // the grid on [lo, hi] (the feasible set is the same): verify's local coordinates put a kernel's
+  // scale there, so that its columns keep their digits.
+  double window_lo = 0, window_hi = 0;
   bool operator==(const Discretization&) const = default;
 };
 
@@ -84,6 +88,9 @@ class ProblemFactory {
   void column(double z, double* out) const;
   // T v for an untransformed (1, b) vector.
   void transform(const double* untransformed, double* out) const;
+  // The coefficients c of y . T (1, b(z)) = c_0 + sum_j c_j b_j(z): a dual vector of the
+  // transformed rows as a function of z (T^T y, in long double).
+  std::vector<long double> raw_coefficients(std::span<const long double> y) const;
 
   // From a given moment vector b (m values), e.g. from `solve --moments`.
   Problem from_moments(std::span<const double> moments, double zf,

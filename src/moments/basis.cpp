@@ -8,6 +8,7 @@
 #include <mutex>
 #include <numbers>
 
+#include "moments/basis_derivatives.h"
 #include "util/error.h"
 #include "util/number_text.h"
 
@@ -104,6 +105,7 @@ BasisFunction BasisFunction::parse(const std::string& text) {
     if (normalized(name) == normalized(text)) {
       f.name_ = name;
       f.scalar_ = function;
+      f.analytic_ = analytic_form(name);
       return f;
     }
   }
@@ -140,6 +142,14 @@ void BasisFunction::evaluate(std::span<const double> z, std::span<double> out) c
     expression_->z = z[i];
     out[i] = expression_->parser.Eval();
   }
+}
+
+void BasisFunction::derivatives(long double z, int order, long double* out) const {
+  form_derivatives(*analytic_, z, order, out);
+}
+
+long double BasisFunction::derivative_bound(int order, long double a, long double b) const {
+  return form_derivative_bound(*analytic_, order, a, b);
 }
 
 Basis Basis::parse(const std::vector<std::string>& items) {

@@ -9,6 +9,8 @@
 
 namespace mb {
 
+struct AnalyticForm;  // moments/basis_derivatives.h
+
 class BasisFunction {
  public:
   // A catalog name ("z^2", "exp(-4z)", "sin(2 pi z)"; spaces and '*' are ignored when matching)
@@ -17,9 +19,16 @@ class BasisFunction {
   const std::string& name() const { return name_; }
   void evaluate(std::span<const double> z, std::span<double> out) const;
   double operator()(double z) const;
+  // Catalog functions have closed-form derivatives (moments/basis_derivatives.h); expressions not.
+  bool has_derivatives() const { return analytic_ != nullptr; }
+  // out[k] = b^(k)(z), k = 0..order, in long double (has_derivatives() only).
+  void derivatives(long double z, int order, long double* out) const;
+  // A proven bound of |b^(order)| on [a, b] (has_derivatives() only).
+  long double derivative_bound(int order, long double a, long double b) const;
 
  private:
   std::string name_;
+  const AnalyticForm* analytic_ = nullptr;
   std::function<double(double)> scalar_;
   std::shared_ptr<struct ExpressionEvaluator> expression_;
 };
