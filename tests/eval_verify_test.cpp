@@ -35,7 +35,7 @@ class Verify : public ::testing::Test {
   }
   VerifySolverResult run(const std::string& target_name, const TechniqueMaker& make) {
     const VerifyTarget target = verify_targets({target_name}, params_).front();
-    return verify_solver(target, make, instances_, {256, 1024, 4096}, 5e-3, 3, 2);
+    return verify_solver(target, make, instances_, {256, 1024, 4096}, false, 5e-3, 3, 2);
   }
   TechniqueParams params_;
   std::vector<VerifyInstance> instances_;
@@ -97,8 +97,8 @@ TEST_F(Verify, AWrongSolverIsCaughtTooLowAndTooHigh) {
 TEST_F(Verify, ResultsDoNotDependOnTheThreadCount) {
   const VerifyTarget target = verify_targets({"tmsm"}, params_).front();
   auto make = [&] { return make_technique("tmsm", params_); };
-  VerifySolverResult one = verify_solver(target, make, instances_, {64, 256}, 5e-3, 5, 1);
-  VerifySolverResult two = verify_solver(target, make, instances_, {64, 256}, 5e-3, 5, 2);
+  VerifySolverResult one = verify_solver(target, make, instances_, {64, 256}, false, 5e-3, 5, 1);
+  VerifySolverResult two = verify_solver(target, make, instances_, {64, 256}, false, 5e-3, 5, 2);
   for (size_t k = 0; k < 2; ++k) {
     EXPECT_EQ(one.grids[k].max_difference, two.grids[k].max_difference);
     EXPECT_EQ(one.grids[k].mean_difference, two.grids[k].mean_difference);
@@ -129,14 +129,14 @@ TEST(VerifyLowerBound, EvsmPassesAsALowerBoundAndAShiftedOneFails) {
     const VerifyTarget target = verify_targets({name}, params).front();
     ASSERT_TRUE(target.lower_bound);
     const VerifySolverResult r = verify_solver(
-        target, [&] { return make_technique(name, params); }, instances, {256, 1024}, 5e-3, 3, 2);
+        target, [&] { return make_technique(name, params); }, instances, {256, 1024}, false, 5e-3, 3, 2);
     EXPECT_TRUE(r.passed()) << name << ": " << r.above_finest << " above the LP, " << r.above_lp
                             << " above a witness";
     EXPECT_GT(r.grids.back().max_difference, 0.1) << name;  // not sharp, and not judged on |dG|
     const VerifySolverResult shifted = verify_solver(
         target,
         [&] { return std::make_unique<WrongTechnique>(make_technique(name, params), 0.02); },
-        instances, {256, 1024}, 5e-3, 3, 2);
+        instances, {256, 1024}, false, 5e-3, 3, 2);
     EXPECT_FALSE(shifted.passed()) << name;
     EXPECT_GT(shifted.above_finest, 10u) << name;
   }
@@ -157,14 +157,64 @@ TEST(VerifyOnR, VsmMatchesTheLpWithCantellisSupport) {
   const VerifyTarget target = verify_targets({"vsm"}, params).front();
   ASSERT_TRUE(target.cantelli_support);
   const VerifySolverResult r = verify_solver(
-      target, [&] { return make_technique("vsm", params); }, instances, {64, 256}, 5e-3, 3, 2);
+      target, [&] { return make_technique("vsm", params); }, instances, {64, 256}, false, 5e-3, 3, 2);
   EXPECT_TRUE(r.passed());
   for (const auto& g : r.grids) EXPECT_LT(g.max_difference, 1e-3) << "grid " << g.grid;
   VerifyTarget without = target;
   without.cantelli_support = false;
   const VerifySolverResult limited = verify_solver(
-      without, [&] { return make_technique("vsm", params); }, instances, {64, 256}, 5e-3, 3, 2);
+      without, [&] { return make_technique("vsm", params); }, instances, {64, 256}, false, 5e-3, 3, 2);
   EXPECT_GT(limited.grids.front().max_difference, 1e-2);  // the test can fail without it
+}
+
+}  // namespace
+}  // namespace mb
+
+#include "eval/verify_report.h"
+
+namespace mb {
+namespace {
+
+// The continuous ground truth (REFERENCE.md §2; lp/continuous.h, lp/local_power.h): every exact
+// closed form is within 1e-6 of Problem 1 on its whole interval (R for Hamburger and VSM), beyond
+// the first-order effect of its moments' rounding, so verify passes at its default tolerance; a
+// closed form off by 1e-5 (too low, which no witness can catch) fails, and the report, whose
+// all_passed decides verify's exit status 5, says so.
+TEST(VerifyContinuous, ExactClosedFormsPassAndABrokenOneFails) {
+  const TechniqueParams params = verify_params(TechniqueParams{});
+  const auto instances = random_verify_instances(200, 4242);
+  std::vector<VerifySolverResult> results;
+  for (const char* name : {"hamburger4", "hausdorff4", "tmsm", "vsm", "esm", "hamburger6"}) {
+    TechniqueParams p = params;
+    p.esm_c = 10;
+    const VerifyTarget target = verify_targets({name}, p).front();
+    const VerifySolverResult r = verify_solver(
+        target, [&] { return make_technique(name, p); }, instances, {64}, true, 1e-6, 3, 2);
+    EXPECT_TRUE(r.passed()) << name << ": " << r.beyond_tolerance << " beyond, " << r.above_lp
+                            << " above";
+    ASSERT_EQ(r.grids.size(), 2u);
+    EXPECT_EQ(r.grids.back().grid, 0);  // the continuous column
+    const std::string n = name;
+    if (n != "hamburger6") EXPECT_LT(r.grids.back().max_difference, 1e-6) << name;
+    // The grid of 64 points is far coarser (VSM's grid has Cantelli's points, ESM's needs none):
+    // the continuous LP is what makes 1e-6 possible.
+    if (n == "hamburger4" || n == "hausdorff4" || n == "tmsm")
+      EXPECT_GT(r.grids.front().max_difference, 10 * r.grids.back().max_difference) << name;
+    results.push_back(r);
+  }
+  VerifyReportContext context;
+  context.grids = {64, 0};
+  EXPECT_TRUE(render_verify_report(context, results, instances).all_passed);
+
+  const VerifyTarget target = verify_targets({"hamburger4"}, params).front();
+  const VerifySolverResult broken = verify_solver(
+      target,
+      [&] { return std::make_unique<WrongTechnique>(make_technique("hamburger4", params), -1e-5); },
+      instances, {64}, true, 1e-6, 3, 2);
+  EXPECT_FALSE(broken.passed());
+  EXPECT_GT(broken.beyond_tolerance, 100u);
+  results.push_back(broken);
+  EXPECT_FALSE(render_verify_report(context, results, instances).all_passed);
 }
 
 }  // namespace

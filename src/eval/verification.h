@@ -27,6 +27,9 @@ struct VerifyTarget {
   // points (within ten interval widths), so that an LP on a bounded interval can represent it
   // where it lies beyond the interval (REFERENCE.md §6).
   bool cantelli_support = false;
+  // Problem 1 on all of R (Hamburger, VSM): the continuous ground truth uses I = R; [lo, hi]
+  // bounds the grid LPs only.
+  bool on_r = false;
 };
 
 // The §6 table for the given technique names (InputError for names without an LP counterpart).
@@ -53,6 +56,13 @@ struct VerifyCase {
   // max over grids of G_cf(moments of the LP's distribution) - (its mass below z_f): > 0 is
   // impossible for a correct infimum (see verification.cpp).
   double above_witness = -std::numeric_limits<double>::infinity();
+  // The continuous LP (last column of `lp` when verify runs it): its bracket's width, whether its
+  // certificate is a proof, and how far rounding the moments to double moves G to first order
+  // (sum_j |dG/db_j| E|b_j| 2^-49, dG/db_j the certificate's coefficients): the closed form reads
+  // rounded moments, so |dG| up to that is the moments' doing, not the closed form's.
+  double bracket = 0;
+  bool proven = true;
+  double rounding = 0;
 };
 
 struct VerifyGridStats {
@@ -68,6 +78,9 @@ struct VerifySolverResult {
   size_t beyond_tolerance = 0;          // |dG| > tolerance on the finest grid
   size_t above_lp = 0;                  // above_witness > 1e-6: impossible for a correct infimum
   size_t above_finest = 0;              // closed form > LP on the finest grid + 1e-6
+  // The continuous LP: its widest bracket and how many of its certificates are not proofs.
+  double widest_bracket = 0;
+  size_t unproven = 0;
   std::vector<VerifyCase> worst;        // by |dG| on the finest grid, largest first
   std::vector<VerifyCase> worst_above;  // above an LP witness, by how far (largest first)
   bool passed() const {
@@ -79,11 +92,12 @@ struct VerifySolverResult {
 
 using TechniqueMaker = std::function<std::unique_ptr<Technique>()>;
 
-// Compares `make()`'s technique with the LP on every instance and grid (grids ascending).
-// Deterministic for any thread count.
+// Compares `make()`'s technique with the LP on every instance and grid (grids ascending), then,
+// when `continuous`, with Problem 1 on the continuous interval (lp/continuous.h; power bases in
+// local coordinates, lp/local_power.h), which then decides. Deterministic for any thread count.
 VerifySolverResult verify_solver(const VerifyTarget& target, const TechniqueMaker& make,
                                  std::span<const VerifyInstance> instances,
-                                 const std::vector<int>& grids, double tolerance, int worst_count,
-                                 int threads);
+                                 const std::vector<int>& grids, bool continuous, double tolerance,
+                                 int worst_count, int threads);
 
 }  // namespace mb

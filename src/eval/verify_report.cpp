@@ -15,6 +15,10 @@ std::string num(double v) {
 std::string full(double v) {
   return round_trip(v);
 }
+// A ground truth's column name: a grid size, or 0 for the continuous interval.
+std::string ground_truth(int grid) {
+  return grid ? "grid " + std::to_string(grid) : std::string("continuous");
+}
 std::string joined(const std::vector<double>& v, const char* separator) {
   std::string s;
   for (size_t i = 0; i < v.size(); ++i) s += (i ? separator : "") + full(v[i]);
@@ -48,15 +52,17 @@ VerifyReport render_verify_report(const VerifyReportContext& ctx,
         "z_f by more than "
         "1e-6. Undefined: the closed form gave no number (singular moments at alpha = 0).\n\n"
      << "| technique | LP basis | interval | instances | undefined |";
-  for (int g : ctx.grids) md << " grid " << g << ": max / mean abs dG |";
+  for (int g : ctx.grids) md << " " << ground_truth(g) << ": max / mean abs dG |";
+  const bool continuous = !ctx.grids.empty() && ctx.grids.back() == 0;
+  if (continuous) md << " widest bracket | unproven |";
   md << " beyond tol. | above witness | verdict |\n|---|---|---|---|---|";
-  for (size_t k = 0; k < ctx.grids.size(); ++k) md << "---|";
+  for (size_t k = 0; k < ctx.grids.size() + (continuous ? 2 : 0); ++k) md << "---|";
   md << "---|---|---|\n";
   csv << "technique,lp_basis,lo,hi,grid,instances,undefined,compared,lp_failures,max_abs_dG,mean_"
          "abs_dG,beyond_tolerance,"
          "above_lp,exact,passed\n";
   worst << "technique,kind,rank,source,zf,moments,depths,weights,G_closed_form";
-  for (int g : ctx.grids) worst << ",G_lp_" << g;
+  for (int g : ctx.grids) worst << ",G_lp_" << (g ? std::to_string(g) : "continuous");
   worst << "\n";
   bool all_passed = true;
   for (const auto& r : results) {
@@ -66,6 +72,7 @@ VerifyReport render_verify_report(const VerifyReportContext& ctx,
        << num(r.target.hi) << "] | " << r.instances << " | " << r.undefined << " |";
     for (const auto& g : r.grids)
       md << " " << num(g.max_difference) << " / " << num(g.mean_difference) << " |";
+    if (continuous) md << " " << num(r.widest_bracket) << " | " << r.unproven << " |";
     md << " " << r.beyond_tolerance << " | " << r.above_lp << " | "
        << (r.judged()
                ? (r.passed() ? "pass" : "**FAIL**") +
@@ -93,7 +100,7 @@ VerifyReport render_verify_report(const VerifyReportContext& ctx,
     if (cases.empty()) return;
     md << "\n### " << r.target.technique << ": " << heading
        << "\n\n| rank | source | z_f | G closed form |";
-    for (int g : ctx.grids) md << " G LP " << g << " |";
+    for (int g : ctx.grids) md << " G LP " << ground_truth(g) << " |";
     md << "\n|---|---|---|---|";
     for (size_t k = 0; k < ctx.grids.size(); ++k) md << "---|";
     md << "\n";
@@ -118,7 +125,8 @@ VerifyReport render_verify_report(const VerifyReportContext& ctx,
     md << "\n```\nmomentbench solve --technique " << r.target.technique
        << (r.target.exact ? " --alpha 0" : "") << " --moments " << joined(c.moments, ",")
        << " --zf " << full(inst.zf) << "\nmomentbench solve --basis '" << basis << "' --interval "
-       << num(r.target.lo) << "," << num(r.target.hi) << " --grid " << ctx.grids.back() << " --zf "
+       << num(r.target.lo) << "," << num(r.target.hi) << " --grid "
+       << ctx.grids[ctx.grids.size() - (continuous && ctx.grids.size() > 1 ? 2 : 1)] << " --zf "
        << full(inst.zf) << " --points " << joined(inst.depths, ",")
        << " --moments <E[b] of those points>\n```\n";
   };

@@ -257,16 +257,20 @@ ContinuousSolution ContinuousSolver::solve(Problem& problem, Backend& backend,
   for (;;) {
     if (!out.ok()) return out;
     ++out.rounds;
-    const DualFunction phi(factory_.basis(), factory_.raw_coefficients(out.finite.duals));
-    // The seed cells: between the problem's own points inside [lo, hi], the ends and z_f.
-    std::vector<long double> breakpoints{lo, hi};
-    if (zf > lo && zf < hi) breakpoints.push_back(zf);
-    long double beyond = 0;  // phi - step at points of I outside [lo, hi] (verify adds some)
+    out.coefficients = factory_.raw_coefficients(out.finite.duals);
+    const DualFunction phi(factory_.basis(), out.coefficients);
+    // The cells cover [scan_lo, scan_hi]: [lo, hi] and the tails out to the probe limit. They
+    // start between the problem's own points there, the ends and z_f.
+    const long double scan_lo = std::min(lo, std::max<long double>(tail_lo_, -probe_limit_));
+    const long double scan_hi = std::max(hi, std::min<long double>(tail_hi_, probe_limit_));
+    std::vector<long double> breakpoints{scan_lo, scan_hi};
+    if (zf > scan_lo && zf < scan_hi) breakpoints.push_back(zf);
+    long double beyond = 0;  // phi - step at points of I outside the cells (verify adds some)
     for (int j = 0; j < problem.cols(); ++j) {
       const long double z = problem.point(j);
-      if (z > lo && z < hi) {
+      if (z > scan_lo && z < scan_hi) {
         breakpoints.push_back(z);
-      } else if (z < lo || z > hi) {
+      } else if (z < scan_lo || z > scan_hi) {
         long double magnitude;
         const long double v = phi.value(z, &magnitude) - (z < zf ? 1 : 0);
         beyond = std::max(beyond, v + kRounding * magnitude);
@@ -275,27 +279,15 @@ ContinuousSolution ContinuousSolver::solve(Problem& problem, Backend& backend,
     std::sort(breakpoints.begin(), breakpoints.end());
     breakpoints.erase(std::unique(breakpoints.begin(), breakpoints.end()), breakpoints.end());
     Scan found = scan(phi, breakpoints, zf, settings_);
-    // The tails of I beyond [lo, hi], if any.
+    // The tails of I beyond the cells, if any: bounded, never sampled (their columns would be
+    // too large for the LP).
     long double delta = 0;
-    for (const auto& [end, dir, far] : {std::tuple{lo, -1, tail_lo_}, std::tuple{hi, 1, tail_hi_}}) {
+    for (const auto& [end, dir, far] :
+         {std::tuple{scan_lo, -1, (long double)tail_lo_}, std::tuple{scan_hi, 1, (long double)tail_hi_}}) {
       if (far == end) continue;
       // The step's least value on the tail (sufficient for phi <= step there).
       const long double step = (dir < 0 ? end < zf : far < zf) ? 1 : 0;
-      const long double bound = tail_bound(phi, end, dir, far, step, even_degree_, delta);
-      beyond = std::max(beyond, bound);
-      if (bound > settings_.cell_tolerance || delta > 0) {
-        // Where phi may rise above the step: out from the end by fractions of the interval's
-        // width, up to the tail's end.
-        for (long double reach : {0.25L, 1.0L, 4.0L}) {
-          long double probe = end + dir * reach * std::max(1.0L, hi - lo);
-          if (std::abs(probe - end) > std::abs(far - end)) probe = far;
-          const long double excess = phi.value(probe) - step;
-          if (excess > settings_.add_tolerance) {
-            found.violators.push_back({probe, excess});
-            break;
-          }
-        }
-      }
+      beyond = std::max(beyond, tail_bound(phi, end, dir, far, step, even_degree_, delta));
     }
     out.cells = found.cells;
     out.proven = found.proven;
@@ -346,17 +338,28 @@ ContinuousSolution ContinuousSolver::solve(Problem& problem, Backend& backend,
       if (int(points.size()) >= per_round) break;
       points.push_back(double(v.z));
     }
+    const Problem saved = problem;
     const int before = problem.extra.size();
     factory_.add_points(problem, points);
     if (problem.extra.size() == before) return out;  // nothing new: the finite LP decides
-    out.points_added += problem.extra.size() - before;
     Solution next = backend.solve(problem);
-    // A finite LP the backends cannot certify ends the exchange with the last certified round:
-    // its bracket is still valid, as it is (the points added since only extend I).
-    if (next.call != CallStatus::Ok || next.status != ProblemStatus::Optimal) {
+    // Several new points close together can leave the finite LP too ill-conditioned to certify:
+    // then the worst violator alone. If that fails too, the exchange ends with the last certified
+    // round, whose bracket is still valid (points added since only extend I).
+    const auto failed = [](const Solution& s) {
+      return s.call != CallStatus::Ok || s.status != ProblemStatus::Optimal;
+    };
+    if (failed(next) && points.size() > 1) {
+      problem = saved;
+      factory_.add_points(problem, std::span<const double>(points.data(), 1));
+      next = backend.solve(problem);
+    }
+    if (failed(next)) {
+      problem = saved;
       out.stalled = true;
       return out;
     }
+    out.points_added += problem.extra.size() - before;
     out.finite = std::move(next);
   }
 }

@@ -12,6 +12,7 @@
 // an allowance for rounding (libm's long-double functions assumed accurate to a few ulps). For
 // user expressions nothing is proven: phi is sampled (8 points per grid cell, violations refined
 // by golden section) and `proven` is false.
+#include <limits>
 #include <span>
 
 #include "lp/problem.h"
@@ -42,6 +43,9 @@ struct ContinuousSolution {
   int rounds = 0, points_added = 0;
   bool stalled = false;  // a later round's finite LP failed: the bracket is the last round's
   long cells = 0;  // cells bounded in the last certificate pass
+  // phi = c_0 + sum_j c_j b_j(z) of the last round (the factory's basis): G's first-order
+  // sensitivity to the moments (dG/db_j = c_j where G is differentiable).
+  std::vector<long double> coefficients;
   double width() const { return upper - lower; }
   bool ok() const { return finite.call == CallStatus::Ok && finite.status == ProblemStatus::Optimal; }
 };
@@ -58,8 +62,11 @@ class ContinuousSolver {
   // only a polynomial basis can certify): the certificate bounds phi there from its Taylor
   // coefficients at the interval's ends.
   // `even_degree`: the basis is z, .., z^n with n even (infinite tails need it).
-  void set_tails(double tail_lo, double tail_hi, int even_degree = 0) {
-    tail_lo_ = tail_lo, tail_hi_ = tail_hi, even_degree_ = even_degree;
+  // `probe_limit`: how far out (|z|) the exchange may add points (the certificate's cells reach
+  // there; beyond, only the tail bound).
+  void set_tails(double tail_lo, double tail_hi, int even_degree = 0,
+                 double probe_limit = std::numeric_limits<double>::infinity()) {
+    tail_lo_ = tail_lo, tail_hi_ = tail_hi, even_degree_ = even_degree, probe_limit_ = probe_limit;
   }
   // Solves `problem` (built by the factory; the exchange appends its points to the problem's
   // extra columns) on the factory's interval [lo, hi] plus any of the problem's points beyond it.
@@ -74,6 +81,7 @@ class ContinuousSolver {
   double lo_, hi_;
   double tail_lo_ = 0, tail_hi_ = 0;
   int even_degree_ = 0;
+  double probe_limit_ = std::numeric_limits<double>::infinity();
 };
 
 }  // namespace mb::lp

@@ -25,7 +25,7 @@ LocalPowerSolution solve_power_locally(const LocalPowerProblem& problem,
   // The seed grid covers the distribution's scale (|u| <= kSeedReach) within [lo, hi]; the ends of
   // [lo, hi] join as points, and the exchange adds what lies between where phi needs it. A grid
   // over all of a wide [lo, hi] would give the LP columns of size (hi / 4)^n for no gain.
-  constexpr double kSeedReach = 8, kReach = 64;
+  constexpr double kSeedReach = 8;
   const double u_lo = to_u(problem.lo), u_hi = to_u(problem.hi);
   Discretization disc{std::max(u_lo, -kSeedReach), std::min(u_hi, kSeedReach), problem.seed_grid,
                       false};
@@ -37,9 +37,12 @@ LocalPowerSolution solve_power_locally(const LocalPowerProblem& problem,
   Problem p = factory.from_distribution(u, weights, to_u(zf));
   std::vector<double> extra(problem.extra_points.size());
   std::transform(problem.extra_points.begin(), problem.extra_points.end(), extra.begin(), to_u);
-  // Beyond |u| = kReach (or z_f's distance, if further) columns grow past (kReach / 4)^n: the
-  // exchange works inside, and the certificate covers the rest as tails.
-  const double reach = std::max(kReach, 2 * std::abs(to_u(zf)));
+  // The exchange works on |u| <= reach (the seed grid, the atoms and z_f); the certificate covers
+  // the rest as tails, and where phi rises above the step there, the exchange adds points out to
+  // where columns reach ~1e8 ((u / 4)^n, rows being orthonormal on [-4, 4]). The LP's optimality
+  // tolerance scales with its largest column, so columns are kept as small as the answer allows.
+  double reach = std::max(kSeedReach, std::abs(to_u(zf)));
+  for (double z : u) reach = std::max(reach, std::abs(z));
   const double inner_lo = std::max(u_lo, -reach), inner_hi = std::min(u_hi, reach);
   extra.push_back(inner_lo);
   extra.push_back(inner_hi);
@@ -47,8 +50,20 @@ LocalPowerSolution solve_power_locally(const LocalPowerProblem& problem,
   LocalPowerSolution out;
   ContinuousSolver solver(factory, settings);
   solver.set_interval(inner_lo, inner_hi);
-  solver.set_tails(u_lo, u_hi, problem.degree % 2 == 0 ? problem.degree : 0);
+  solver.set_tails(u_lo, u_hi, problem.degree % 2 == 0 ? problem.degree : 0,
+                   4 * std::pow(10.0, 8.0 / problem.degree));
   out.solution = solver.solve(p, backend, u, weights);
+  // phi(u) = sum_k c_k ((z - mean) / scale)^k, expanded in powers of z.
+  const std::vector<long double>& c = out.solution.coefficients;
+  out.coefficients.assign(c.size(), 0.0L);
+  for (size_t k = 0; k < c.size(); ++k) {
+    long double binomial = 1;  // binom(k, j) (-mean)^(k - j) / scale^k, for j = k down to 0
+    const long double inverse = 1.0L / std::pow((long double)scale, (long double)k);
+    for (size_t j = k + 1; j-- > 0;) {
+      out.coefficients[j] += c[k] * binomial * std::pow(-(long double)mean, (long double)(k - j)) * inverse;
+      binomial = binomial * j / (k - j + 1);
+    }
+  }
   for (size_t j = 0; j < out.solution.finite.support.size(); ++j) {
     out.support.push_back(mean + scale * p.point(out.solution.finite.support[j]));
     out.weights.push_back(out.solution.finite.weights[j]);

@@ -23,6 +23,8 @@ struct LocalPowerProblem {
 struct LocalPowerSolution {
   ContinuousSolution solution;  // G's bracket (the same in z and in u)
   std::vector<double> support, weights;  // the finite optimum's distribution, in z
+  // phi as a polynomial in z: sum_k coefficients[k] z^k (k = 0..n), in long double.
+  std::vector<long double> coefficients;
 };
 
 LocalPowerSolution solve_power_locally(const LocalPowerProblem& problem,
