@@ -129,7 +129,8 @@ TEST(VerifyLowerBound, EvsmPassesAsALowerBoundAndAShiftedOneFails) {
     const VerifyTarget target = verify_targets({name}, params).front();
     ASSERT_TRUE(target.lower_bound);
     const VerifySolverResult r = verify_solver(
-        target, [&] { return make_technique(name, params); }, instances, {256, 1024}, false, 5e-3, 3, 2);
+        target, [&] { return make_technique(name, params); }, instances, {256, 1024}, false, 5e-3,
+        3, 2);
     EXPECT_TRUE(r.passed()) << name << ": " << r.above_finest << " above the LP, " << r.above_lp
                             << " above a witness";
     EXPECT_GT(r.grids.back().max_difference, 0.1) << name;  // not sharp, and not judged on |dG|
@@ -157,13 +158,15 @@ TEST(VerifyOnR, VsmMatchesTheLpWithCantellisSupport) {
   const VerifyTarget target = verify_targets({"vsm"}, params).front();
   ASSERT_TRUE(target.cantelli_support);
   const VerifySolverResult r = verify_solver(
-      target, [&] { return make_technique("vsm", params); }, instances, {64, 256}, false, 5e-3, 3, 2);
+      target, [&] { return make_technique("vsm", params); }, instances, {64, 256}, false, 5e-3, 3,
+      2);
   EXPECT_TRUE(r.passed());
   for (const auto& g : r.grids) EXPECT_LT(g.max_difference, 1e-3) << "grid " << g.grid;
   VerifyTarget without = target;
   without.cantelli_support = false;
   const VerifySolverResult limited = verify_solver(
-      without, [&] { return make_technique("vsm", params); }, instances, {64, 256}, false, 5e-3, 3, 2);
+      without, [&] { return make_technique("vsm", params); }, instances, {64, 256}, false, 5e-3, 3,
+      2);
   EXPECT_GT(limited.grids.front().max_difference, 1e-2);  // the test can fail without it
 }
 

@@ -88,8 +88,8 @@ std::vector<HP> hp_weights(const std::vector<HP>& nodes, const std::vector<HP>& 
 HP hamburger4_hp(const Kernel& k, double zf_double, std::vector<HP>* nodes = nullptr) {
   const std::vector<HP> m = hp_moments(k, 4);
   const HP zf = zf_double;
-  const std::vector<HP> c = hp_solve({{m[0], m[1], m[2]}, {m[1], m[2], m[3]}, {m[2], m[3], m[4]}},
-                                     {HP(1), zf, zf * zf});
+  const std::vector<HP> c =
+      hp_solve({{m[0], m[1], m[2]}, {m[1], m[2], m[3]}, {m[2], m[3], m[4]}}, {HP(1), zf, zf * zf});
   const HP root = sqrt(c[1] * c[1] - 4 * c[2] * c[0]);
   const std::vector<HP> all{zf, (-c[1] - root) / (2 * c[2]), (-c[1] + root) / (2 * c[2])};
   const std::vector<HP> w = hp_weights(all, m);
@@ -142,9 +142,8 @@ TEST(Continuous, NarrowKernelsMatchFiftyDigitHausdorffAndHamburger) {
       const Kernel k = sloped_kernel(centre, step);
       for (double offset : {-6.0, -2.5, -0.7, 0.3, 1.9, 7.0}) {
         const double zf = centre + offset * step;
-        const std::string where =
-            "step " + std::to_string(step) + " centre " + std::to_string(centre) + " zf " +
-            std::to_string(zf);
+        const std::string where = "step " + std::to_string(step) + " centre " +
+                                  std::to_string(centre) + " zf " + std::to_string(zf);
         expect_exact(solve_locally({4, 0, 1, 64}, k, zf).solution, double(hausdorff4_hp(k, zf)),
                      "Hausdorff " + where);
         expect_exact(solve_locally({4, -kInf, kInf, 64}, k, zf).solution,
@@ -173,8 +172,8 @@ TEST(Continuous, HausdorffDiffersFromHamburgerNearTheEnds) {
 TEST(Continuous, BoundaryMomentVectorsOfOneAndTwoAtoms) {
   // Moments of one or two atoms determine the distribution (REFERENCE.md §2): G is its mass
   // strictly below z_f, on every interval that contains the atoms.
-  const std::vector<Kernel> kernels = {{{0.37}, {1.0}}, {{0.3, 0.7}, {0.4, 0.6}},
-                                       {{0.5, 0.5004}, {0.25, 0.75}}};
+  const std::vector<Kernel> kernels = {
+      {{0.37}, {1.0}}, {{0.3, 0.7}, {0.4, 0.6}}, {{0.5, 0.5004}, {0.25, 0.75}}};
   // On R, one atom leaves the LP a choice of optimal duals, and the one it returns may rise again
   // beyond |u| ~ 500 deviations, where the exchange does not place points (their columns reach
   // 1e10): the bracket is then ~6e-6 wide, so R is checked from two atoms on.

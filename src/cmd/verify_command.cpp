@@ -37,11 +37,15 @@ std::vector<OptionSpec> verify_specs() {
   specs.push_back({"verify.grids", OptionType::StringList, "[256, 1024, 4096]",
                    "LP grid sizes, ascending; the last decides unless the discretization is "
                    "continuous."});
-  specs.push_back({"verify.discretization", OptionType::String, "continuous",
+  specs.push_back({"verify.discretization",
+                   OptionType::String,
+                   "continuous",
                    "continuous: Problem 1 on the whole interval (R for Hamburger and VSM) by the "
                    "exchange method with a certificate decides (REFERENCE.md §2); grid: the "
                    "finest grid decides.",
-                   0, 0, {"continuous", "grid"}});
+                   0,
+                   0,
+                   {"continuous", "grid"}});
   specs.push_back({"verify.tolerance", OptionType::Number, "1e-6",
                    "Largest |G_closed_form - G_LP| beyond the instance's own rounding allowance "
                    "(the first-order effect of moments rounded to double): the closed forms' "

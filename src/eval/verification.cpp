@@ -37,9 +37,8 @@ int power_degree(const std::vector<std::string>& lp_basis) {
 // The continuous LP for one instance into the case's last column and witness: power bases in
 // local coordinates (on R for Hamburger and VSM), others by the exchange in depth coordinates.
 void solve_continuous(const VerifyTarget& target, const Basis& basis, int degree,
-                      const lp::ProblemFactory& seed,
-                      const VerifyInstance& inst, lp::Backend& backend, VerifyCase& c,
-                      Witness& witness) {
+                      const lp::ProblemFactory& seed, const VerifyInstance& inst,
+                      lp::Backend& backend, VerifyCase& c, Witness& witness) {
   lp::ContinuousSolution s;
   std::vector<long double> coefficients;  // phi in the LP basis: c_0 + sum_j c_j b_j
   if (degree > 0) {
@@ -92,8 +91,9 @@ std::vector<VerifyTarget> verify_targets(const std::vector<std::string>& techniq
   // worst cases (VSM: Cantelli's second point mu - sigma^2 / (z_f - mu) runs far out when z_f ~ mu,
   // hence its wider interval). ESM's e^{cz} needs points far enough below 0 that e^{cz} ~ 0
   // (Markov's extremal mass sits at -infinity; at z = -4, e^{c (z - z_f)} <= e^{-40} for c = 10,
-  // where [-1, 1] left |dG| up to 7e-6); the LP uses e^{c(z-1)}, the same span scaled by e^{-c}, whose values stay <= 1 (the LP recomputes the
-  // moments from the distribution, so the scale of the closed form's moment does not matter).
+  // where [-1, 1] left |dG| up to 7e-6); the LP uses e^{c(z-1)}, the same span scaled by e^{-c},
+  // whose values stay <= 1 (the LP recomputes the moments from the distribution, so the scale of
+  // the closed form's moment does not matter).
   const std::string esm_basis = "exp(" + round_trip(params.esm_c) + "*(z-1))";
   // EVSM's own basis on [0, 1], its warps scaled by their values at z = 1 like ESM's (the LP
   // recomputes the moments from the distribution, so only the span of the functions matters).

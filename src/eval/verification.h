@@ -75,9 +75,9 @@ struct VerifySolverResult {
   VerifyTarget target;
   size_t instances = 0, undefined = 0;  // undefined: the closed form returned no number
   std::vector<VerifyGridStats> grids;
-  size_t beyond_tolerance = 0;          // |dG| > tolerance on the finest grid
-  size_t above_lp = 0;                  // above_witness > 1e-6: impossible for a correct infimum
-  size_t above_finest = 0;              // closed form > LP on the finest grid + 1e-6
+  size_t beyond_tolerance = 0;  // |dG| > tolerance on the finest grid
+  size_t above_lp = 0;          // above_witness > 1e-6: impossible for a correct infimum
+  size_t above_finest = 0;      // closed form > LP on the finest grid + 1e-6
   // The continuous LP: its widest bracket and how many of its certificates are not proofs.
   double widest_bracket = 0;
   size_t unproven = 0;

@@ -112,7 +112,8 @@ CellBound bound_cell(const DualFunction& phi, long double a, long double b) {
 
 // The highest phi on [a, b] found by golden-section search (phi is unimodal on a cell small enough
 // to matter), compared with the ends and `guess`.
-long double highest_point(const DualFunction& phi, long double a, long double b, long double guess) {
+long double highest_point(const DualFunction& phi, long double a, long double b,
+                          long double guess) {
   constexpr long double kRatio = 0.6180339887498948482L;
   long double x = a, best = phi.value(a);
   for (long double z : {b, guess}) {
@@ -250,8 +251,8 @@ ContinuousSolution ContinuousSolver::solve(Problem& problem, Backend& backend,
                                            std::span<const double> depths,
                                            std::span<const double> weights) const {
   const long double lo = lo_, hi = hi_, zf = problem.zf;
-  const int per_round = settings_.points_per_round > 0 ? settings_.points_per_round
-                                                       : 2 * problem.rows;
+  const int per_round =
+      settings_.points_per_round > 0 ? settings_.points_per_round : 2 * problem.rows;
   ContinuousSolution out;
   out.finite = backend.solve(problem);
   for (;;) {
@@ -282,8 +283,8 @@ ContinuousSolution ContinuousSolver::solve(Problem& problem, Backend& backend,
     // The tails of I beyond the cells, if any: bounded, never sampled (their columns would be
     // too large for the LP).
     long double delta = 0;
-    for (const auto& [end, dir, far] :
-         {std::tuple{scan_lo, -1, (long double)tail_lo_}, std::tuple{scan_hi, 1, (long double)tail_hi_}}) {
+    for (const auto& [end, dir, far] : {std::tuple{scan_lo, -1, (long double)tail_lo_},
+                                        std::tuple{scan_hi, 1, (long double)tail_hi_}}) {
       if (far == end) continue;
       // The step's least value on the tail (sufficient for phi <= step there).
       const long double step = (dir < 0 ? end < zf : far < zf) ? 1 : 0;

@@ -29,32 +29,38 @@ struct ContinuousSettings {
   double cell_tolerance = 1e-10;
   // A point is added when phi exceeds the step there by more than this.
   double add_tolerance = 1e-11;
-  int max_depth = 48;         // bisections of one initial cell
-  long max_cells = 2000000;   // cells per certificate pass
-  int points_per_round = 0;   // 0: 2 (m + 1)
+  int max_depth = 48;        // bisections of one initial cell
+  long max_cells = 2000000;  // cells per certificate pass
+  int points_per_round = 0;  // 0: 2 (m + 1)
 };
 
 struct ContinuousSolution {
-  Solution finite;     // the last finite LP's answer (its support indexes the extended problem)
-  double upper = 0;    // its optimum: a distribution on I with the given moments
-  double lower = 0;    // E[phi] - violation (proven when `proven`)
+  Solution finite;       // the last finite LP's answer (its support indexes the extended problem)
+  double upper = 0;      // its optimum: a distribution on I with the given moments
+  double lower = 0;      // E[phi] - violation (proven when `proven`)
   double violation = 0;  // the bound of max over I of phi - step (>= 0)
   bool proven = false;   // the basis has closed-form derivatives and every cell was bounded
   int rounds = 0, points_added = 0;
   bool stalled = false;  // a later round's finite LP failed: the bracket is the last round's
-  long cells = 0;  // cells bounded in the last certificate pass
+  long cells = 0;        // cells bounded in the last certificate pass
   // phi = c_0 + sum_j c_j b_j(z) of the last round (the factory's basis): G's first-order
   // sensitivity to the moments (dG/db_j = c_j where G is differentiable).
   std::vector<long double> coefficients;
   double width() const { return upper - lower; }
-  bool ok() const { return finite.call == CallStatus::Ok && finite.status == ProblemStatus::Optimal; }
+  bool ok() const {
+    return finite.call == CallStatus::Ok && finite.status == ProblemStatus::Optimal;
+  }
 };
 
 class ContinuousSolver {
  public:
   explicit ContinuousSolver(const ProblemFactory& factory, ContinuousSettings settings = {})
-      : factory_(factory), settings_(settings), lo_(factory.discretization().lo),
-        hi_(factory.discretization().hi), tail_lo_(lo_), tail_hi_(hi_) {}
+      : factory_(factory),
+        settings_(settings),
+        lo_(factory.discretization().lo),
+        hi_(factory.discretization().hi),
+        tail_lo_(lo_),
+        tail_hi_(hi_) {}
   // The continuous interval, when it is not the factory's grid interval (a seed grid may cover
   // only part of it; its ends must then be among the problem's points).
   void set_interval(double lo, double hi) { lo_ = tail_lo_ = lo, hi_ = tail_hi_ = hi; }

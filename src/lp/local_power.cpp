@@ -8,8 +8,8 @@ namespace mb::lp {
 
 LocalPowerSolution solve_power_locally(const LocalPowerProblem& problem,
                                        std::span<const double> depths,
-                                       std::span<const double> weights, double zf,
-                                       Backend& backend, const ContinuousSettings& settings) {
+                                       std::span<const double> weights, double zf, Backend& backend,
+                                       const ContinuousSettings& settings) {
   double total = 0, mean = 0, second = 0;
   for (size_t i = 0; i < depths.size(); ++i) total += weights[i], mean += weights[i] * depths[i];
   mean /= total;
@@ -21,7 +21,8 @@ LocalPowerSolution solve_power_locally(const LocalPowerProblem& problem,
     scale = zf != mean ? std::abs(zf - mean) : 1.0;
   const auto to_u = [&](double z) { return (z - mean) / scale; };
   std::vector<std::string> powers;
-  for (int k = 1; k <= problem.degree; ++k) powers.push_back(k == 1 ? "z" : "z^" + std::to_string(k));
+  for (int k = 1; k <= problem.degree; ++k)
+    powers.push_back(k == 1 ? "z" : "z^" + std::to_string(k));
   // The seed grid covers the distribution's scale (|u| <= kSeedReach) within [lo, hi]; the ends of
   // [lo, hi] join as points, and the exchange adds what lies between where phi needs it. A grid
   // over all of a wide [lo, hi] would give the LP columns of size (hi / 4)^n for no gain.
@@ -60,7 +61,8 @@ LocalPowerSolution solve_power_locally(const LocalPowerProblem& problem,
     long double binomial = 1;  // binom(k, j) (-mean)^(k - j) / scale^k, for j = k down to 0
     const long double inverse = 1.0L / std::pow((long double)scale, (long double)k);
     for (size_t j = k + 1; j-- > 0;) {
-      out.coefficients[j] += c[k] * binomial * std::pow(-(long double)mean, (long double)(k - j)) * inverse;
+      out.coefficients[j] +=
+          c[k] * binomial * std::pow(-(long double)mean, (long double)(k - j)) * inverse;
       binomial = binomial * j / (k - j + 1);
     }
   }

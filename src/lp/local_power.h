@@ -14,14 +14,14 @@
 namespace mb::lp {
 
 struct LocalPowerProblem {
-  int degree = 4;          // n: the basis z, .., z^n
-  double lo = 0, hi = 1;   // the admissible interval, in z
-  int seed_grid = 64;      // the finite set the exchange starts from: a uniform grid on [lo, hi]
+  int degree = 4;         // n: the basis z, .., z^n
+  double lo = 0, hi = 1;  // the admissible interval, in z
+  int seed_grid = 64;     // the finite set the exchange starts from: a uniform grid on [lo, hi]
   std::vector<double> extra_points;  // more points of I, in z (e.g. beyond [lo, hi])
 };
 
 struct LocalPowerSolution {
-  ContinuousSolution solution;  // G's bracket (the same in z and in u)
+  ContinuousSolution solution;           // G's bracket (the same in z and in u)
   std::vector<double> support, weights;  // the finite optimum's distribution, in z
   // phi as a polynomial in z: sum_k coefficients[k] z^k (k = 0..n), in long double.
   std::vector<long double> coefficients;
@@ -29,7 +29,7 @@ struct LocalPowerSolution {
 
 LocalPowerSolution solve_power_locally(const LocalPowerProblem& problem,
                                        std::span<const double> depths,
-                                       std::span<const double> weights, double zf,
-                                       Backend& backend, const ContinuousSettings& settings = {});
+                                       std::span<const double> weights, double zf, Backend& backend,
+                                       const ContinuousSettings& settings = {});
 
 }  // namespace mb::lp

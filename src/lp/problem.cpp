@@ -78,7 +78,8 @@ ProblemFactory::ProblemFactory(const Basis& basis, const Discretization& disc)
   const bool windowed = disc.window_lo < disc.window_hi;
   Matrix window_at;
   if (windowed)
-    window_at = sample(grid_points(Discretization{disc.window_lo, disc.window_hi, std::max(n, 64)}));
+    window_at =
+        sample(grid_points(Discretization{disc.window_lo, disc.window_hi, std::max(n, 64)}));
   Eigen::HouseholderQR<Matrix> qr(windowed ? window_at : at);
   Matrix r_upper = qr.matrixQR().topRows(k).triangularView<Eigen::Upper>();
   const long double largest = r_upper.diagonal().cwiseAbs().maxCoeff();

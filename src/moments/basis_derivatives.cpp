@@ -36,7 +36,7 @@ const std::map<std::string, AnalyticForm>& forms() {
     for (int n = 1; n <= 6; ++n)
       t[n == 1 ? "z" : "z^" + std::to_string(n)] = {Family::Power, 0, 0, 0, n};
     const std::pair<const char*, long double> exps[] = {
-        {"exp(z)", 1},  {"exp(-z)", -1}, {"exp(2z)", 2},  {"exp(-2z)", -2},
+        {"exp(z)", 1},  {"exp(-z)", -1},  {"exp(2z)", 2}, {"exp(-2z)", -2},
         {"exp(4z)", 4}, {"exp(-4z)", -4}, {"exp(8z)", 8}, {"exp(-8z)", -8}};
     for (const auto& [name, c] : exps) t[name] = {Family::Exp, 0, 0, c};
     for (int k = 1; k <= 4; ++k) {
@@ -71,7 +71,9 @@ long double falling(long double p, int k) {
   return f;
 }
 
-long double factorial(int k) { return falling(k, k); }
+long double factorial(int k) {
+  return falling(k, k);
+}
 
 // d^k/dz^k 1/(z - w) = (-1)^k k! / (z - w)^(k+1).
 complex pole_derivative(long double z, complex w, int k) {
@@ -143,7 +145,8 @@ void form_derivatives(const AnalyticForm& f, long double z, int order, long doub
     case Family::AffinePower: {
       const long double u = f.a + f.c * z;
       long double ck = 1;
-      for (int k = 0; k <= order; ++k, ck *= f.c) out[k] = falling(f.b, k) * ck * std::pow(u, f.b - k);
+      for (int k = 0; k <= order; ++k, ck *= f.c)
+        out[k] = falling(f.b, k) * ck * std::pow(u, f.b - k);
       return;
     }
     case Family::Log: {
@@ -201,7 +204,8 @@ void form_derivatives(const AnalyticForm& f, long double z, int order, long doub
 long double form_derivative_bound(const AnalyticForm& f, int K, long double a, long double b) {
   switch (f.family) {
     case Family::Power:
-      return K > f.n ? 0.0L : falling(f.n, K) * std::pow(std::max(std::abs(a), std::abs(b)), f.n - K);
+      return K > f.n ? 0.0L
+                     : falling(f.n, K) * std::pow(std::max(std::abs(a), std::abs(b)), f.n - K);
     case Family::Exp:
       return std::pow(std::abs(f.c), K) * std::exp(std::max(f.c * a, f.c * b));
     case Family::Sine:
@@ -209,9 +213,11 @@ long double form_derivative_bound(const AnalyticForm& f, int K, long double a, l
     case Family::AffinePower: {
       const long double m = affine_min_abs(f.a, f.c, a, b);
       const long double e = f.b - K;
-      if (e >= 0) return std::abs(falling(f.b, K)) * std::pow(std::abs(f.c), K) *
-                         std::pow(std::max(std::abs(f.a + f.c * a), std::abs(f.a + f.c * b)), e);
-      return m == 0 ? kInf : std::abs(falling(f.b, K)) * std::pow(std::abs(f.c), K) * std::pow(m, e);
+      if (e >= 0)
+        return std::abs(falling(f.b, K)) * std::pow(std::abs(f.c), K) *
+               std::pow(std::max(std::abs(f.a + f.c * a), std::abs(f.a + f.c * b)), e);
+      return m == 0 ? kInf
+                    : std::abs(falling(f.b, K)) * std::pow(std::abs(f.c), K) * std::pow(m, e);
     }
     case Family::Log: {
       const long double m = affine_min_abs(1, f.c, a, b);
