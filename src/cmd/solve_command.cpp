@@ -12,6 +12,7 @@
 #include "cmd/command_common.h"
 #include "cmd/commands.h"
 #include "eval/technique.h"
+#include "lp/discretized.h"
 #include "lp/kkt_checker.h"
 #include "lp/problem.h"
 #include "lp/solution.h"
@@ -33,6 +34,7 @@ struct SolveOptions {
   double alpha = -1;      // its moment bias (< 0: the technique's default)
   std::string input, output;
   bool check = false, quantize = false;
+  std::string discretization = "grid";
 };
 
 using nlohmann::json;
@@ -65,8 +67,10 @@ json solve_one(lp::Backend& backend, FactoryCache& factories,
                const std::vector<std::string>& basis_names, const lp::Discretization& disc,
                const std::vector<double>& moments, double zf, const std::vector<double>& points,
                bool check) {
-  lp::Problem problem = factories.get(basis_names, disc).from_moments(moments, zf, points);
-  lp::Solution s = backend.solve(problem);
+  const lp::ProblemFactory& factory = factories.get(basis_names, disc);
+  lp::Problem problem = factory.from_moments(moments, zf, points);
+  const lp::ContinuousSolution answer = lp::solve_discretized(factory, problem, backend);
+  const lp::Solution& s = answer.finite;
   json out;
   if (s.call == lp::CallStatus::Failed) {
     out["status"] = "call_failed";
@@ -76,6 +80,14 @@ json solve_one(lp::Backend& backend, FactoryCache& factories,
   out["status"] = lp::to_string(s.status);
   if (s.status == lp::ProblemStatus::Optimal) {
     out["G"] = s.G;
+    if (disc.continuous) {
+      // REFERENCE.md §2: G of all of [lo, hi] lies in [lower, G]; proven: the certificate is a
+      // proof (catalog functions), not a sampling (expressions).
+      out["lower"] = answer.lower;
+      out["bracket"] = answer.width();
+      out["proven"] = answer.proven;
+      out["exchange_rounds"] = answer.rounds;
+    }
     json support = json::array();
     for (size_t k = 0; k < s.support.size(); ++k)
       support.push_back({problem.point(s.support[k]), s.weights[k]});
@@ -183,8 +195,9 @@ struct Query {
   }
 };
 
-const std::vector<std::string> kQueryKeys = {"id",     "basis", "interval",  "grid", "moments",
-                                             "points", "zf",    "technique", "alpha"};
+const std::vector<std::string> kQueryKeys = {
+    "id",      "basis",  "interval", "grid",      "discretization",
+    "moments", "points", "zf",       "technique", "alpha"};
 
 json solve_line(const std::string& line, int number, const SolveOptions& o, lp::Backend& backend,
                 FactoryCache& factories) {
@@ -219,6 +232,12 @@ json solve_line(const std::string& line, int number, const SolveOptions& o, lp::
   if (interval.size() != 2) throw InputError("key 'interval': expected [lo, hi]");
   lp::Discretization d{interval[0], interval[1],
                        query.has("grid") ? query.integer("grid", 2, 1 << 24) : o.grid, o.quantize};
+  const std::string discretization =
+      query.has("discretization") ? query.string("discretization") : o.discretization;
+  if (discretization != "grid" && discretization != "continuous")
+    throw InputError("key 'discretization': expected grid or continuous, got '" + discretization +
+                     "'");
+  d.continuous = discretization == "continuous";
   out.update(solve_one(
       backend, factories, query.strings("basis"), d, query.numbers("moments"), query.number("zf"),
       query.has("points") ? query.numbers("points") : std::vector<double>{}, o.check));
@@ -229,6 +248,7 @@ int run_solve(const SolveOptions& o) {
   auto backend = lp::make_backend(o.backend);
   if (o.interval.size() != 2) throw InputError("--interval: expected lo,hi");
   lp::Discretization disc{o.interval[0], o.interval[1], o.grid, o.quantize};
+  disc.continuous = o.discretization == "continuous";
   if (o.input.empty()) {
     FactoryCache factories;
     json r = !o.technique.empty() ? solve_closed_form(o.technique, o.alpha, o.moments, o.zf)
@@ -294,6 +314,14 @@ std::vector<OptionSpec> solve_specs() {
        "JSON Lines results (written atomically); stdout if ''."},
       {"check", OptionType::Boolean, "false",
        "Run the independent KKT checker on every optimal answer."},
+      {"discretization",
+       OptionType::String,
+       "grid",
+       "grid: Problem 1 on the grid and points; continuous: on all of the interval (exchange "
+       "method; G, its certified lower end and their bracket; REFERENCE.md §2).",
+       0,
+       0,
+       {"grid", "continuous"}},
       {"quantize", OptionType::Boolean, "false",
        "Round extra points to the grid (REFERENCE.md §2)."},
   };
@@ -308,20 +336,22 @@ YAML::Node yaml_of(const T& value) {
 
 int run_solve_command(const CLI::App& command, const CommonOptions& common, SolveOptions flags) {
   Config config = resolve_config(solve_specs(), common);
-  apply_flags(command, config,
-              {{"--basis", "basis", [&] { return yaml_of(flags.basis); }},
-               {"--interval", "interval", [&] { return yaml_of(flags.interval); }},
-               {"--grid", "grid", [&] { return yaml_of(flags.grid); }},
-               {"--moments", "moments", [&] { return yaml_of(flags.moments); }},
-               {"--points", "points", [&] { return yaml_of(flags.points); }},
-               {"--zf", "zf", [&] { return yaml_of(flags.zf); }},
-               {"--backend", "backend", [&] { return yaml_of(flags.backend); }},
-               {"--technique", "technique", [&] { return yaml_of(flags.technique); }},
-               {"--alpha", "alpha", [&] { return yaml_of(flags.alpha); }},
-               {"--input", "input", [&] { return yaml_of(flags.input); }},
-               {"--output", "output", [&] { return yaml_of(flags.output); }},
-               {"--check", "check", [&] { return yaml_of(flags.check); }},
-               {"--quantize", "quantize", [&] { return yaml_of(flags.quantize); }}});
+  apply_flags(
+      command, config,
+      {{"--basis", "basis", [&] { return yaml_of(flags.basis); }},
+       {"--interval", "interval", [&] { return yaml_of(flags.interval); }},
+       {"--grid", "grid", [&] { return yaml_of(flags.grid); }},
+       {"--moments", "moments", [&] { return yaml_of(flags.moments); }},
+       {"--points", "points", [&] { return yaml_of(flags.points); }},
+       {"--zf", "zf", [&] { return yaml_of(flags.zf); }},
+       {"--backend", "backend", [&] { return yaml_of(flags.backend); }},
+       {"--technique", "technique", [&] { return yaml_of(flags.technique); }},
+       {"--alpha", "alpha", [&] { return yaml_of(flags.alpha); }},
+       {"--input", "input", [&] { return yaml_of(flags.input); }},
+       {"--output", "output", [&] { return yaml_of(flags.output); }},
+       {"--check", "check", [&] { return yaml_of(flags.check); }},
+       {"--quantize", "quantize", [&] { return yaml_of(flags.quantize); }},
+       {"--discretization", "discretization", [&] { return yaml_of(flags.discretization); }}});
   if (common.print_config) {
     std::fputs(config.to_yaml().c_str(), stdout);
     return 0;
@@ -340,6 +370,7 @@ int run_solve_command(const CLI::App& command, const CommonOptions& common, Solv
   o.output = config.string("output");
   o.check = config.boolean("check");
   o.quantize = config.boolean("quantize");
+  o.discretization = config.string("discretization");
   if (!o.input.empty())  // an instance comes from options or from input, never both
     for (const auto& changed : config.non_default())
       for (const char* key : {"basis", "interval", "moments", "points", "zf", "technique", "alpha"})
@@ -372,6 +403,8 @@ void register_solve_command(CLI::App& app, std::function<int()>& action) {
   c->add_option("--output", o->output, "= --set output=FILE");
   c->add_flag("--check", o->check, "= --set check=true");
   c->add_flag("--quantize", o->quantize, "= --set quantize=true");
+  c->add_option("--discretization", o->discretization, "= --set discretization=grid|continuous")
+      ->check(CLI::IsMember({"grid", "continuous"}));
   // An instance comes from flags or from --input, never both (flags beside a batch were ignored).
   for (const char* flag :
        {"--basis", "--interval", "--moments", "--points", "--zf", "--technique", "--alpha"})

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "eval/lp_technique.h"
+#include "lp/discretized.h"
 #include "lp/solution.h"
 #include "util/error.h"
 #include "util/number_text.h"
@@ -78,8 +79,9 @@ BoundCurves compute_bound_curves(const BoundCurveRequest& r) {
         for (size_t i = 0; i < out.zf.size(); ++i)
           errors.capture([&] {
             // The distribution's depths join I and fix the moments: feasible by construction (§2).
-            const lp::Problem problem = factory.from_distribution(r.depths, r.weights, out.zf[i]);
-            const lp::Solution s = backend->solve(problem);
+            lp::Problem problem = factory.from_distribution(r.depths, r.weights, out.zf[i]);
+            const lp::Solution s =
+                lp::solve_discretized(factory, problem, *backend, r.depths, r.weights).finite;
             if (s.call == lp::CallStatus::Ok && s.status == lp::ProblemStatus::Optimal)
               series.lower[i] = std::clamp(s.G, 0.0, 1.0);
             else

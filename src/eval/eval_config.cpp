@@ -61,6 +61,15 @@ std::vector<OptionSpec> shadow_option_specs() {
        2, 1e7},
       {"lp.lo", OptionType::Number, "0", "LP techniques: admissible interval, lower end."},
       {"lp.hi", OptionType::Number, "1", "LP techniques: admissible interval, upper end."},
+      {"lp.discretization",
+       OptionType::String,
+       "grid",
+       "LP techniques: grid (Problem 1 on the grid and the kernel's depths, warm-started) or "
+       "continuous (on all of [lp.lo, lp.hi], exchange method with a certificate; REFERENCE.md "
+       "§2).",
+       -kInf,
+       kInf,
+       {"grid", "continuous"}},
       {"lp.quantize", OptionType::Boolean, "false",
        "LP techniques: round depths to the grid instead of adding them."},
       {"lp.backend", OptionType::String, "fast", "LP backend.", -kInf, kInf, {"fast", "glpk"}},
@@ -77,6 +86,7 @@ lp::Discretization lp_discretization_from(const Config& config) {
   d.lo = config.number("lp.lo");
   d.hi = config.number("lp.hi");
   d.quantize = config.boolean("lp.quantize");
+  d.continuous = config.string("lp.discretization") == "continuous";
   if (!(d.lo < d.hi)) throw InputError("lp.lo, lp.hi: expected lo < hi");
   return d;
 }

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "eval/warm_runs.h"
+#include "lp/discretized.h"
 #include "lp/solution.h"
 #include "util/parallel_errors.h"
 
@@ -79,8 +80,15 @@ LpViewAnswers solve_lp_view(const ViewData& view, const std::vector<uint32_t>& l
             }
             factory.from_distribution(tap_depth, tap_weight, tap_column, zf, problem);
           }
-          const lp::WarmStart at = warm_start_at(view.fragments.layer[f], x, y, &atoms);
-          backend->solve_into(problem, i == run_begin[run] ? nullptr : &at, s);
+          if (disc.continuous) {
+            // The whole interval (REFERENCE.md §2): the exchange extends a copy, from scratch, so
+            // move_zf keeps working on `problem` and answers do not depend on the schedule.
+            lp::Problem work = problem;
+            s = lp::solve_discretized(factory, work, *backend, tap_depth, tap_weight).finite;
+          } else {
+            const lp::WarmStart at = warm_start_at(view.fragments.layer[f], x, y, &atoms);
+            backend->solve_into(problem, i == run_begin[run] ? nullptr : &at, s);
+          }
           if (s.call == lp::CallStatus::Ok && s.status == lp::ProblemStatus::Optimal) {
             g[f] = std::clamp(s.G, 0.0, 1.0);
             ++solved;

@@ -1,5 +1,6 @@
 #include "eval/lp_technique.h"
 
+#include "lp/discretized.h"
 #include "lp/solution.h"
 #include "util/error.h"
 
@@ -31,9 +32,14 @@ class LpTechnique : public Technique {
     // The kernel's own distribution fixes the moments, so the program is feasible by construction.
     // One fragment alone, from scratch: evaluate_technique solves whole views with warm starts
     // instead (solve_lp_view), to the same certified answers.
-    const lp::Problem problem =
-        factory_.from_distribution(in.kernel_depths, in.kernel_weights, in.zf);
-    backend_->solve_into(problem, nullptr, solution_);
+    lp::Problem problem = factory_.from_distribution(in.kernel_depths, in.kernel_weights, in.zf);
+    if (factory_.discretization().continuous) {
+      solution_ =
+          lp::solve_discretized(factory_, problem, *backend_, in.kernel_depths, in.kernel_weights)
+              .finite;
+    } else {
+      backend_->solve_into(problem, nullptr, solution_);
+    }
     const lp::Solution& s = solution_;
     if (s.call != lp::CallStatus::Ok || s.status != lp::ProblemStatus::Optimal) {
       ++failures_;

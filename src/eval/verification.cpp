@@ -337,6 +337,7 @@ VerifySolverResult verify_solver(const VerifyTarget& target, const TechniqueMake
       if (!std::isfinite(c.lp.back())) continue;
       result.widest_bracket = std::max(result.widest_bracket, c.bracket);
       result.unproven += !c.proven;
+      result.unresolved += c.bracket > 1e-6;
     }
   const auto largest_first = [](const auto& a, const auto& b) { return a.first > b.first; };
   std::stable_sort(finest.begin(), finest.end(), largest_first);

@@ -81,6 +81,9 @@ struct VerifySolverResult {
   // The continuous LP: its widest bracket and how many of its certificates are not proofs.
   double widest_bracket = 0;
   size_t unproven = 0;
+  // Instances whose bracket is wider than 1e-6 (the exchange stalled on an LP it could not
+  // certify): judged only from above there, against the bracket's lower end from below.
+  size_t unresolved = 0;
   std::vector<VerifyCase> worst;        // by |dG| on the finest grid, largest first
   std::vector<VerifyCase> worst_above;  // above an LP witness, by how far (largest first)
   bool passed() const {
