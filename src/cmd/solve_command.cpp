@@ -14,6 +14,7 @@
 #include "eval/technique.h"
 #include "lp/discretized.h"
 #include "lp/kkt_checker.h"
+#include "lp/moment_box.h"
 #include "lp/problem.h"
 #include "lp/solution.h"
 #include "util/error.h"
@@ -35,6 +36,7 @@ struct SolveOptions {
   std::string input, output;
   bool check = false, quantize = false;
   std::string discretization = "grid";
+  double moment_tolerance = 4;  // ulps of each moment (REFERENCE.md §2)
 };
 
 using nlohmann::json;
@@ -66,12 +68,35 @@ class FactoryCache {
 json solve_one(lp::Backend& backend, FactoryCache& factories,
                const std::vector<std::string>& basis_names, const lp::Discretization& disc,
                const std::vector<double>& moments, double zf, const std::vector<double>& points,
-               bool check) {
+               bool check, double tolerance_ulps) {
   const lp::ProblemFactory& factory = factories.get(basis_names, disc);
   lp::Problem problem = factory.from_moments(moments, zf, points);
   const lp::ContinuousSolution answer = lp::solve_discretized(factory, problem, backend);
   const lp::Solution& s = answer.finite;
   json out;
+  if (tolerance_ulps > 0 && s.call == lp::CallStatus::Ok &&
+      s.status != lp::ProblemStatus::Optimal) {
+    // REFERENCE.md §2, moments with a tolerance: a boundary vector rounded to double may lie just
+    // outside the moment cone. Problem 1 over every distribution whose moments are within the
+    // box of `tolerance_ulps` ulps answers it; a vector outside the box reports its distance.
+    const lp::Problem exact = factory.from_moments(moments, zf, points);
+    const lp::MomentBoxAnswer box =
+        lp::solve_moment_box(factory, exact, lp::ulp_box(factory, exact, tolerance_ulps));
+    out["exact_status"] = lp::to_string(s.status);
+    out["moment_box_ulps"] = tolerance_ulps;
+    out["status"] = lp::to_string(box.status);
+    out["backend"] = "glpk";
+    if (box.status == lp::ProblemStatus::Optimal) {
+      out["G"] = box.G;
+      json support = json::array();
+      for (size_t k = 0; k < box.support.size(); ++k)
+        support.push_back({box.support[k], box.weights[k]});
+      out["support"] = support;
+    } else if (box.status == lp::ProblemStatus::Infeasible) {
+      out["relative_distance"] = box.relative_distance;
+    }
+    return out;
+  }
   if (s.call == lp::CallStatus::Failed) {
     out["status"] = "call_failed";
     out["message"] = s.call_message;
@@ -240,7 +265,8 @@ json solve_line(const std::string& line, int number, const SolveOptions& o, lp::
   d.continuous = discretization == "continuous";
   out.update(solve_one(
       backend, factories, query.strings("basis"), d, query.numbers("moments"), query.number("zf"),
-      query.has("points") ? query.numbers("points") : std::vector<double>{}, o.check));
+      query.has("points") ? query.numbers("points") : std::vector<double>{}, o.check,
+      query.has("moment_tolerance") ? query.number("moment_tolerance") : o.moment_tolerance));
   return out;
 }
 
@@ -253,7 +279,7 @@ int run_solve(const SolveOptions& o) {
     FactoryCache factories;
     json r = !o.technique.empty() ? solve_closed_form(o.technique, o.alpha, o.moments, o.zf)
                                   : solve_one(*backend, factories, o.basis, disc, o.moments, o.zf,
-                                              o.points, o.check);
+                                              o.points, o.check, o.moment_tolerance);
     std::printf("%s\n", r.dump(2).c_str());
     return r["status"] == "optimal" ? 0 : 3;
   }
@@ -322,6 +348,11 @@ std::vector<OptionSpec> solve_specs() {
        0,
        0,
        {"grid", "continuous"}},
+      {"moment_tolerance", OptionType::Number, "4",
+       "When the moments admit no distribution on I: Problem 1 over the box of this many ulps "
+       "of each moment instead (REFERENCE.md §2; a boundary vector rounded to double), or the "
+       "vector's relative distance from the cone. 0: exact only.",
+       0, 1e15},
       {"quantize", OptionType::Boolean, "false",
        "Round extra points to the grid (REFERENCE.md §2)."},
   };
@@ -351,7 +382,9 @@ int run_solve_command(const CLI::App& command, const CommonOptions& common, Solv
        {"--output", "output", [&] { return yaml_of(flags.output); }},
        {"--check", "check", [&] { return yaml_of(flags.check); }},
        {"--quantize", "quantize", [&] { return yaml_of(flags.quantize); }},
-       {"--discretization", "discretization", [&] { return yaml_of(flags.discretization); }}});
+       {"--discretization", "discretization", [&] { return yaml_of(flags.discretization); }},
+       {"--moment-tolerance", "moment_tolerance",
+        [&] { return yaml_of(flags.moment_tolerance); }}});
   if (common.print_config) {
     std::fputs(config.to_yaml().c_str(), stdout);
     return 0;
@@ -371,6 +404,7 @@ int run_solve_command(const CLI::App& command, const CommonOptions& common, Solv
   o.check = config.boolean("check");
   o.quantize = config.boolean("quantize");
   o.discretization = config.string("discretization");
+  o.moment_tolerance = config.number("moment_tolerance");
   if (!o.input.empty())  // an instance comes from options or from input, never both
     for (const auto& changed : config.non_default())
       for (const char* key : {"basis", "interval", "moments", "points", "zf", "technique", "alpha"})
@@ -403,6 +437,8 @@ void register_solve_command(CLI::App& app, std::function<int()>& action) {
   c->add_option("--output", o->output, "= --set output=FILE");
   c->add_flag("--check", o->check, "= --set check=true");
   c->add_flag("--quantize", o->quantize, "= --set quantize=true");
+  c->add_option("--moment-tolerance", o->moment_tolerance, "= --set moment_tolerance=ULPS")
+      ->check(CLI::Range(0.0, 1e15));
   c->add_option("--discretization", o->discretization, "= --set discretization=grid|continuous")
       ->check(CLI::IsMember({"grid", "continuous"}));
   // An instance comes from flags or from --input, never both (flags beside a batch were ignored).
