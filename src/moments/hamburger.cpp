@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <cmath>
 
 #include "moments/canonical.h"
 
@@ -83,16 +84,77 @@ void hamburger4_lower_batch(const double* b, const double* zf, double* lower, si
   }
 }
 
+// Moments whose Hankel matrix is singular lie on the boundary of the moment space: only a
+// distribution with fewer atoms than the matrix's size has them, and it is unique (REFERENCE.md
+// §2), so G is its mass strictly below z_f. Its r atoms are the roots of the monic polynomial
+// z^r + a_{r-1} z^{r-1} + .. + a_0 with H_r a = -(m_r, .., m_{2r-1}), for the largest r whose
+// r x r Hankel matrix is regular. Used where the regular path gives no number (alpha = 0 on 1-3
+// atoms); node_count = 0 when no r fits.
+MsmBound<double> determinate_bound(const double* m, double zf, bool must_reproduce) {
+  MsmBound<double> r;
+  for (int size = 3; size >= 1; --size) {
+    Eigen::Matrix3d h = Eigen::Matrix3d::Identity();
+    Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+    for (int i = 0; i < size; ++i) {
+      for (int j = 0; j < size; ++j) h(i, j) = m[i + j];
+      rhs(i) = -m[size + i];
+    }
+    Eigen::FullPivLU<Eigen::Matrix3d> lu(h);
+    lu.setThreshold(1e-10);
+    if (lu.rank() < 3)
+      continue;  // the identity pads: rank 3 means the size x size block is regular
+    const Eigen::Vector3d a = lu.solve(rhs);
+    double nodes[3];
+    int count = size;
+    if (size == 1) {
+      nodes[0] = -a(0);
+    } else if (size == 2) {
+      quadratic_roots(1.0, a(1), a(0), nodes[0], nodes[1]);
+    } else {
+      count = cubic_roots(1.0, a(2), a(1), a(0), nodes);
+      if (count != 3) continue;
+    }
+    double lower = 0;
+    bool valid = true;
+    for (int i = 0; i < count; ++i) {
+      const double w = node_weight(m, nodes, count, i);
+      valid = valid && std::isfinite(w) && w > -1e-9;
+      if (nodes[i] < zf) lower += w;
+    }
+    // Near-singular but regular matrices (4 atoms, two of them close) also reach here: the
+    // determinate reading is taken only if its atoms reproduce all seven moments to rounding.
+    for (int k = 0; valid && must_reproduce && k <= 6; ++k) {
+      double moment = 0;
+      for (int i = 0; i < count; ++i)
+        moment += node_weight(m, nodes, count, i) * std::pow(nodes[i], k);
+      valid = std::abs(moment - m[k]) <= 1e-11 * std::max(1.0, std::abs(m[k]));
+    }
+    if (!valid) continue;
+    r.node_count = count;
+    for (int i = 0; i < count; ++i) r.nodes[i] = nodes[i];
+    r.lower = std::clamp(lower, 0.0, 1.0);
+    return r;
+  }
+  return r;
+}
+
 MsmBound<double> hamburger6(const double* b, double zf) {
   Eigen::Matrix4d hankel;
   const double m[7] = {1, b[0], b[1], b[2], b[3], b[4], b[5]};
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) hankel(i, j) = m[i + j];
-  const Eigen::Vector4d c = hankel.ldlt().solve(Eigen::Vector4d(1, zf, zf * zf, zf * zf * zf));
+  const auto ldlt = hankel.ldlt();
+  const Eigen::Vector4d c = ldlt.solve(Eigen::Vector4d(1, zf, zf * zf, zf * zf * zf));
   MsmBound<double> r;
   r.nodes[0] = zf;
   r.node_count = 1 + cubic_roots(c(3), c(2), c(1), c(0), r.nodes + 1);
   finish_bound(r, m, zf);
+  const bool undefined = !std::isfinite(r.lower) || !std::isfinite(r.at_zf) || !c.allFinite();
+  const Eigen::Vector4d pivots = ldlt.vectorD().cwiseAbs();
+  if (undefined || !(pivots.minCoeff() > 1e-8 * pivots.maxCoeff())) {
+    const MsmBound<double> determinate = determinate_bound(m, zf, !undefined);
+    if (determinate.node_count > 0) return determinate;
+  }
   return r;
 }
 
