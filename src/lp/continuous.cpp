@@ -89,6 +89,7 @@ class DualFunction {
 // exact maximum on [-r, r], the higher terms by magnitude, the remainder, and rounding.
 struct CellBound {
   long double upper, argmax;
+  long double rounding;  // phi's own rounding allowance at the midpoint: no bisection removes it
 };
 
 CellBound bound_cell(const DualFunction& phi, long double a, long double b) {
@@ -107,7 +108,7 @@ CellBound bound_cell(const DualFunction& phi, long double a, long double b) {
     rounding += magnitude[k] * rk;
   }
   tail += phi.remainder(a, b) * rk;  // rk = r^kOrder here
-  return {quadratic(best_t) + tail + kRounding * rounding, m + best_t};
+  return {quadratic(best_t) + tail + kRounding * rounding, m + best_t, kRounding * magnitude[0]};
 }
 
 // The highest phi on [a, b] found by golden-section search (phi is unimodal on a cell small enough
@@ -179,7 +180,8 @@ Scan scan(const DualFunction& phi, const std::vector<long double>& breakpoints, 
       if (excess > settings.add_tolerance) {
         out.violators.push_back({z, excess});
         out.violation = std::max(out.violation, gap);
-      } else if (cell.depth < settings.max_depth && can_split) {
+      } else if (cell.depth < settings.max_depth && can_split &&
+                 gap - bound.rounding > settings.cell_tolerance) {
         stack.push_back({mid, cell.b, cell.depth + 1});
         stack.push_back({cell.a, mid, cell.depth + 1});
       } else {

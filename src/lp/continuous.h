@@ -30,7 +30,7 @@ struct ContinuousSettings {
   // A point is added when phi exceeds the step there by more than this.
   double add_tolerance = 1e-11;
   int max_depth = 48;        // bisections of one initial cell
-  long max_cells = 2000000;  // cells per certificate pass
+  long max_cells = 200000;   // cells per certificate pass
   int points_per_round = 0;  // 0: 2 (m + 1)
 };
 
