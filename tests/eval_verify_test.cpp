@@ -220,6 +220,16 @@ TEST(VerifyContinuous, ExactClosedFormsPassAndABrokenOneFails) {
   EXPECT_GT(broken.beyond_tolerance, 100u);
   results.push_back(broken);
   EXPECT_FALSE(render_verify_report(context, results, instances).all_passed);
+
+  // The rounding allowance is capped (1e-2): hamburger6 off by 0.05 is caught although the
+  // first-order estimate for its near-singular instances is ~1.
+  const VerifyTarget six = verify_targets({"hamburger6"}, params).front();
+  const VerifySolverResult off = verify_solver(
+      six,
+      [&] { return std::make_unique<WrongTechnique>(make_technique("hamburger6", params), -0.05); },
+      instances, {64}, true, 1e-6, 3, 2);
+  EXPECT_FALSE(off.passed());
+  EXPECT_GT(off.beyond_tolerance, 50u);
 }
 
 }  // namespace
