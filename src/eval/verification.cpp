@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "lp/continuous.h"
+#include "lp/discretized.h"
 #include "lp/local_power.h"
 #include "lp/problem.h"
 #include "lp/solution.h"
@@ -27,15 +28,6 @@ namespace {
 struct Witness {
   std::vector<double> points, weights;
 };
-// n when the LP basis is z, .., z^n (a named power set), else 0.
-int power_degree(const std::vector<std::string>& lp_basis) {
-  if (lp_basis.size() != 1) return 0;
-  if (lp_basis[0] == "power2") return 2;
-  if (lp_basis[0] == "power4") return 4;
-  if (lp_basis[0] == "power6") return 6;
-  return 0;
-}
-
 // The continuous LP for one instance into the case's last column and witness: power bases in
 // local coordinates (on R for Hamburger and VSM), others by the exchange in depth coordinates.
 void solve_continuous(const VerifyTarget& target, const Basis& basis, int degree,
@@ -77,8 +69,7 @@ void solve_continuous(const VerifyTarget& target, const Basis& basis, int degree
   for (size_t j = 0; j < basis.size() && j + 1 < coefficients.size(); ++j) {
     long double scale = 0;
     for (size_t a = 0; a < inst.depths.size(); ++a)
-      scale += inst.weights[a] * std::abs(degree > 0 ? std::pow((long double)inst.depths[a], j + 1)
-                                                     : (long double)basis[j](inst.depths[a]));
+      scale += inst.weights[a] * std::abs((long double)basis[j](inst.depths[a]));
     rounding += std::abs(coefficients[j + 1]) * scale;
   }
   // Capped: the first-order estimate assumes every moment rounds the worst way, and with a narrow
@@ -206,7 +197,7 @@ VerifySolverResult verify_solver(const VerifyTarget& target, const TechniqueMake
     cases[i].lp.assign(grids.size() + (continuous ? 1 : 0),
                        std::numeric_limits<double>::quiet_NaN());
   }
-  const int degree = power_degree(target.lp_basis);
+  const int degree = lp::power_basis_degree(lp_basis);
   // The continuous LP's seed grid for bases other than powers (in depth coordinates).
   const lp::ProblemFactory seed_factory(lp_basis,
                                         lp::Discretization{target.lo, target.hi, 64, false});

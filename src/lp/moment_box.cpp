@@ -36,8 +36,8 @@ RawRows raw_rows(const ProblemFactory& factory, const Problem& problem) {
   return r;
 }
 
-// One GLPK problem: columns are the points' weights (and, for the distance, t as the last
-// column); row 1 is sum w = 1, rows 2.. the scaled moment rows.
+// One GLPK problem: columns are the points' weights; row 1 is sum w = 1, rows 2.. the scaled
+// moment rows (the distance model adds its own column and rows afterwards).
 class GlpkModel {
  public:
   GlpkModel() : lp_(glp_create_prob()) { glp_term_out(GLP_OFF); }
@@ -64,8 +64,8 @@ class GlpkModel {
   glp_prob* lp_;
 };
 
-void load(glp_prob* lp, const RawRows& raw, bool with_t, std::span<const double> t_column) {
-  const int n = raw.cols + (with_t ? 1 : 0);
+void load(glp_prob* lp, const RawRows& raw) {
+  const int n = raw.cols;
   glp_add_rows(lp, raw.rows + 1);
   glp_add_cols(lp, n);
   std::vector<int> ia{0}, ja{0};
@@ -76,9 +76,6 @@ void load(glp_prob* lp, const RawRows& raw, bool with_t, std::span<const double>
       ia.push_back(k + 2), ja.push_back(j + 1),
           ar.push_back(raw.values[size_t(k) * raw.cols + j] / raw.scale[k]);
   }
-  if (with_t)
-    for (int k = 0; k < raw.rows; ++k)
-      ia.push_back(k + 2), ja.push_back(n), ar.push_back(t_column[k]);
   glp_load_matrix(lp, int(ar.size()) - 1, ia.data(), ja.data(), ar.data());
   glp_set_row_bnds(lp, 1, GLP_FX, 1, 1);
   for (int j = 1; j <= n; ++j) glp_set_col_bnds(lp, j, GLP_LO, 0, 0);
@@ -102,7 +99,7 @@ MomentBoxAnswer solve_moment_box(const ProblemFactory& factory, const Problem& p
   {
     GlpkModel model;
     glp_prob* lp = model.get();
-    load(lp, raw, false, {});
+    load(lp, raw);
     glp_set_obj_dir(lp, GLP_MIN);
     for (int j = 0; j < raw.cols; ++j) glp_set_obj_coef(lp, j + 1, problem.cost(j));
     for (int k = 0; k < raw.rows; ++k) {
@@ -134,7 +131,10 @@ MomentBoxAnswer solve_moment_box(const ProblemFactory& factory, const Problem& p
   std::vector<double> unit(raw.rows);
   for (int k = 0; k < raw.rows; ++k)
     unit[k] = std::max(std::abs(problem.moments[k]), tolerance[k]) / raw.scale[k];
-  load(lp, raw, true, unit);
+  // Weights and bounds as for the box; then t, the extra rows and the whole matrix anew.
+  load(lp, raw);
+  glp_add_cols(lp, 1);
+  glp_set_col_bnds(lp, raw.cols + 1, GLP_LO, 0, 0);
   const int lower_rows = glp_add_rows(lp, raw.rows);
   std::vector<int> all_i{0}, all_j{0};
   std::vector<double> all_a{0};
