@@ -249,52 +249,83 @@ long double tail_bound(const DualFunction& phi, long double end, int dir, long d
 
 }  // namespace
 
+long double DualCertificate::rounding() {
+  return kRounding;
+}
+
+long double dual_value(const Basis& basis, const std::vector<long double>& coefficients,
+                       long double z, long double* magnitude) {
+  return DualFunction(basis, coefficients).value(z, magnitude);
+}
+
+DualCertificate certify_dual(const Basis& basis, const std::vector<long double>& coefficients,
+                             double zf_in, std::span<const double> points,
+                             const ContinuousDomain& domain, const ContinuousSettings& settings) {
+  const DualFunction phi(basis, coefficients);
+  const long double lo = domain.lo, hi = domain.hi, zf = zf_in;
+  // The cells cover [scan_lo, scan_hi]: [lo, hi] and the tails out to the probe limit. They
+  // start between the given points there, the ends and z_f.
+  const long double scan_lo =
+      std::min(lo, std::max<long double>(domain.tail_lo, -domain.probe_limit));
+  const long double scan_hi =
+      std::max(hi, std::min<long double>(domain.tail_hi, domain.probe_limit));
+  std::vector<long double> breakpoints{scan_lo, scan_hi};
+  if (zf > scan_lo && zf < scan_hi) breakpoints.push_back(zf);
+  long double beyond = 0;  // phi - step at points of I outside the cells (verify adds some)
+  for (const double point : points) {
+    const long double z = point;
+    if (z > scan_lo && z < scan_hi) {
+      breakpoints.push_back(z);
+    } else if (z < scan_lo || z > scan_hi) {
+      long double magnitude;
+      const long double v = phi.value(z, &magnitude) - (z < zf ? 1 : 0);
+      beyond = std::max(beyond, v + kRounding * magnitude);
+    }
+  }
+  std::sort(breakpoints.begin(), breakpoints.end());
+  breakpoints.erase(std::unique(breakpoints.begin(), breakpoints.end()), breakpoints.end());
+  Scan found = scan(phi, breakpoints, zf, settings);
+  DualCertificate out;
+  // The tails of I beyond the cells, if any: bounded, never sampled (their columns would be
+  // too large for the LP).
+  for (const auto& [end, dir, far] : {std::tuple{scan_lo, -1, (long double)domain.tail_lo},
+                                      std::tuple{scan_hi, 1, (long double)domain.tail_hi}}) {
+    if (far == end) continue;
+    // The step's least value on the tail (sufficient for phi <= step there).
+    const long double step = (dir < 0 ? end < zf : far < zf) ? 1 : 0;
+    beyond = std::max(beyond, tail_bound(phi, end, dir, far, step, domain.even_degree, out.delta));
+  }
+  out.cells = found.cells;
+  out.proven = found.proven;
+  out.violation = std::max(found.violation, beyond);
+  // The largest violations first.
+  std::sort(found.violators.begin(), found.violators.end(),
+            [](const Violator& x, const Violator& y) { return x.excess > y.excess; });
+  for (const Violator& v : found.violators) out.violators.push_back(double(v.z));
+  return out;
+}
+
 ContinuousSolution ContinuousSolver::solve(Problem& problem, Backend& backend,
                                            std::span<const double> depths,
                                            std::span<const double> weights) const {
-  const long double lo = lo_, hi = hi_, zf = problem.zf;
   const int per_round =
       settings_.points_per_round > 0 ? settings_.points_per_round : 2 * problem.rows;
   ContinuousSolution out;
   out.finite = backend.solve(problem);
+  std::vector<double> points;
   for (;;) {
     if (!out.ok()) return out;
     ++out.rounds;
     out.coefficients = factory_.raw_coefficients(out.finite.duals);
     const DualFunction phi(factory_.basis(), out.coefficients);
-    // The cells cover [scan_lo, scan_hi]: [lo, hi] and the tails out to the probe limit. They
-    // start between the problem's own points there, the ends and z_f.
-    const long double scan_lo = std::min(lo, std::max<long double>(tail_lo_, -probe_limit_));
-    const long double scan_hi = std::max(hi, std::min<long double>(tail_hi_, probe_limit_));
-    std::vector<long double> breakpoints{scan_lo, scan_hi};
-    if (zf > scan_lo && zf < scan_hi) breakpoints.push_back(zf);
-    long double beyond = 0;  // phi - step at points of I outside the cells (verify adds some)
-    for (int j = 0; j < problem.cols(); ++j) {
-      const long double z = problem.point(j);
-      if (z > scan_lo && z < scan_hi) {
-        breakpoints.push_back(z);
-      } else if (z < scan_lo || z > scan_hi) {
-        long double magnitude;
-        const long double v = phi.value(z, &magnitude) - (z < zf ? 1 : 0);
-        beyond = std::max(beyond, v + kRounding * magnitude);
-      }
-    }
-    std::sort(breakpoints.begin(), breakpoints.end());
-    breakpoints.erase(std::unique(breakpoints.begin(), breakpoints.end()), breakpoints.end());
-    Scan found = scan(phi, breakpoints, zf, settings_);
-    // The tails of I beyond the cells, if any: bounded, never sampled (their columns would be
-    // too large for the LP).
-    long double delta = 0;
-    for (const auto& [end, dir, far] : {std::tuple{scan_lo, -1, (long double)tail_lo_},
-                                        std::tuple{scan_hi, 1, (long double)tail_hi_}}) {
-      if (far == end) continue;
-      // The step's least value on the tail (sufficient for phi <= step there).
-      const long double step = (dir < 0 ? end < zf : far < zf) ? 1 : 0;
-      beyond = std::max(beyond, tail_bound(phi, end, dir, far, step, even_degree_, delta));
-    }
+    points.resize(problem.cols());
+    for (int j = 0; j < problem.cols(); ++j) points[j] = problem.point(j);
+    const DualCertificate found =
+        certify_dual(factory_.basis(), out.coefficients, problem.zf, points, domain_, settings_);
+    const long double delta = found.delta;
     out.cells = found.cells;
     out.proven = found.proven;
-    out.violation = double(std::max(found.violation, beyond));
+    out.violation = double(found.violation);
     // Weak duality: for every distribution S on I with these moments,
     // P_S(z < z_f) >= E_S[phi] - violation. E_S[phi] from the atoms when known.
     long double dual = 0, magnitude = 0;
@@ -320,11 +351,11 @@ ContinuousSolution ContinuousSolver::solve(Problem& problem, Backend& backend,
       if (!depths.empty()) {
         long double total = 0;
         for (size_t i = 0; i < depths.size(); ++i)
-          power_mean += weights[i] * std::pow((long double)depths[i], even_degree_),
+          power_mean += weights[i] * std::pow((long double)depths[i], domain_.even_degree),
               total += weights[i];
         power_mean /= total;
       } else {
-        power_mean = problem.moments[even_degree_ - 1];
+        power_mean = problem.moments[domain_.even_degree - 1];
       }
       dual -= delta * (1 + power_mean);
     }
@@ -334,13 +365,8 @@ ContinuousSolution ContinuousSolver::solve(Problem& problem, Backend& backend,
         out.rounds >= settings_.max_rounds)
       return out;
     // The largest violations first, one point each.
-    std::sort(found.violators.begin(), found.violators.end(),
-              [](const Violator& x, const Violator& y) { return x.excess > y.excess; });
-    std::vector<double> points;
-    for (const Violator& v : found.violators) {
-      if (int(points.size()) >= per_round) break;
-      points.push_back(double(v.z));
-    }
+    points.assign(found.violators.begin(),
+                  found.violators.begin() + std::min<size_t>(per_round, found.violators.size()));
     const Problem saved = problem;
     const int before = problem.extra.size();
     factory_.add_points(problem, points);

@@ -14,6 +14,7 @@
 // by golden section) and `proven` is false.
 #include <limits>
 #include <span>
+#include <vector>
 
 #include "lp/problem.h"
 #include "lp/solution.h"
@@ -52,27 +53,58 @@ struct ContinuousSolution {
   }
 };
 
+// Where Problem 1's depths may lie: [lo, hi], and tails beyond it to tail_lo <= lo and
+// tail_hi >= hi (infinite: I = R, which only a polynomial basis can certify). The certificate
+// bounds phi on the tails from its Taylor coefficients at the interval's ends.
+struct ContinuousDomain {
+  double lo = 0, hi = 1;
+  double tail_lo = 0, tail_hi = 1;
+  int even_degree = 0;  // the basis is z, .., z^n with n even (infinite tails need it)
+  // How far out (|z|) the exchange may add points (the certificate's cells reach there; beyond,
+  // only the tail bound).
+  double probe_limit = std::numeric_limits<double>::infinity();
+  static ContinuousDomain interval(double lo, double hi) { return {lo, hi, lo, hi}; }
+};
+
+// The certificate of one dual function phi = c_0 + sum_j c_j b_j on a domain: a bound of
+// phi - step over all of it, and where phi rises above the step (the exchange's next points).
+struct DualCertificate {
+  long double violation = 0;  // bound of max over I of phi - delta (1 + z^n) - step (>= 0)
+  // Infinite tails: phi - delta (1 + z^n) is what is bounded (see continuous.cpp, tail_bound);
+  // a lower bound built from phi subtracts delta (1 + E[z^n]).
+  long double delta = 0;
+  bool proven = true;  // the basis has closed-form derivatives and every cell was bounded
+  long cells = 0;
+  std::vector<double> violators;  // points where phi exceeds the step, the largest excess first
+  // The rounding allowance of phi at a point, per unit of sum_j |c_j b_j(z)|.
+  static long double rounding();
+};
+
+// `points`: points of I known to matter (the finite LP's), the cells start between them; points
+// beyond the cells are checked one by one.
+DualCertificate certify_dual(const Basis& basis, const std::vector<long double>& coefficients,
+                             double zf, std::span<const double> points,
+                             const ContinuousDomain& domain, const ContinuousSettings& settings);
+
+// phi = c_0 + sum_j c_j b_j(z) in long double, and sum_j |c_j b_j(z)| in `magnitude`.
+long double dual_value(const Basis& basis, const std::vector<long double>& coefficients,
+                       long double z, long double* magnitude = nullptr);
+
 class ContinuousSolver {
  public:
   explicit ContinuousSolver(const ProblemFactory& factory, ContinuousSettings settings = {})
       : factory_(factory),
         settings_(settings),
-        lo_(factory.discretization().lo),
-        hi_(factory.discretization().hi),
-        tail_lo_(lo_),
-        tail_hi_(hi_) {}
+        domain_(
+            ContinuousDomain::interval(factory.discretization().lo, factory.discretization().hi)) {}
   // The continuous interval, when it is not the factory's grid interval (a seed grid may cover
   // only part of it; its ends must then be among the problem's points).
-  void set_interval(double lo, double hi) { lo_ = tail_lo_ = lo, hi_ = tail_hi_ = hi; }
-  // Tails of I beyond the interval, to tail_lo <= lo and tail_hi >= hi (infinite: I = R, which
-  // only a polynomial basis can certify): the certificate bounds phi there from its Taylor
-  // coefficients at the interval's ends.
-  // `even_degree`: the basis is z, .., z^n with n even (infinite tails need it).
-  // `probe_limit`: how far out (|z|) the exchange may add points (the certificate's cells reach
-  // there; beyond, only the tail bound).
+  void set_interval(double lo, double hi) { domain_ = ContinuousDomain::interval(lo, hi); }
+  // Tails of I beyond the interval (see ContinuousDomain).
   void set_tails(double tail_lo, double tail_hi, int even_degree = 0,
                  double probe_limit = std::numeric_limits<double>::infinity()) {
-    tail_lo_ = tail_lo, tail_hi_ = tail_hi, even_degree_ = even_degree, probe_limit_ = probe_limit;
+    domain_.tail_lo = tail_lo, domain_.tail_hi = tail_hi, domain_.even_degree = even_degree;
+    domain_.probe_limit = probe_limit;
   }
   // Solves `problem` (built by the factory; the exchange appends its points to the problem's
   // extra columns) on the factory's interval [lo, hi] plus any of the problem's points beyond it.
@@ -84,10 +116,7 @@ class ContinuousSolver {
  private:
   const ProblemFactory& factory_;
   ContinuousSettings settings_;
-  double lo_, hi_;
-  double tail_lo_ = 0, tail_hi_ = 0;
-  int even_degree_ = 0;
-  double probe_limit_ = std::numeric_limits<double>::infinity();
+  ContinuousDomain domain_;
 };
 
 }  // namespace mb::lp
