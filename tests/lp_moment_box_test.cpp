@@ -5,14 +5,18 @@
 // the distributions the box admits).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
+#include "lp/local_power.h"
 #include "lp/moment_box.h"
 #include "lp/problem.h"
 #include "lp/solution.h"
 #include "moments/basis.h"
+#include "moments/storage.h"
 
 namespace mb::lp {
 namespace {
@@ -75,6 +79,121 @@ TEST(MomentBox, BoundaryVectorsOfFewAtomsAreAnsweredAsLowerBounds) {
     }
   }
   EXPECT_GE(answered, total - 2);
+}
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// VSM's box on R has a closed answer: the box problem is the least of Cantelli's bound
+// (z_f - mu)^2 / (m_2 - 2 mu z_f + z_f^2) (0 where z_f <= mu) over the box's (mu, m_2) with
+// m_2 >= mu^2. A dense search of the box is the independent reference.
+TEST(MomentBoxContinuous, VsmOnRMatchesCantellisBoundMinimisedOverTheBox) {
+  const Basis basis = Basis::parse({"power2"});
+  ContinuousDomain r = ContinuousDomain::interval(-1, 2);
+  r.tail_lo = -kInf, r.tail_hi = kInf, r.even_degree = 2, r.probe_limit = 1e4;
+  struct Case {
+    double mu, variance, zf, eps;
+  };
+  for (const Case& k : {Case{0.4, 0.01, 0.5, 1e-4}, Case{0.4, 0.01, 0.45, 1e-3},
+                        Case{0.3, 0.002, 0.32, 5e-5}, Case{0.6, 0.05, 0.9, 1e-3}}) {
+    const double m2 = k.variance + k.mu * k.mu;
+    const MomentBox box = MomentBox::of_moments({k.mu, m2}, {k.eps, k.eps});
+    // The seed must admit a distribution in the box: mu -+ sigma, the two-atom one.
+    const double sigma = std::sqrt(k.variance);
+    const std::vector<double> seeds{0, k.mu - sigma, k.mu + sigma, 1};
+    const ContinuousBoxAnswer a = solve_moment_box_continuous(basis, box, k.zf, r, seeds);
+    ASSERT_TRUE(a.ok()) << k.mu << " " << k.zf;
+    EXPECT_TRUE(a.proven);
+    EXPECT_LE(a.width(), 1e-8);
+    double least = 1;
+    constexpr int kSteps = 2000;
+    for (int i = 0; i <= kSteps; ++i)
+      for (int j = 0; j <= kSteps; ++j) {
+        const double mu = k.mu - k.eps + 2 * k.eps * i / kSteps;
+        const double second = m2 - k.eps + 2 * k.eps * j / kSteps;
+        if (second < mu * mu) continue;
+        const double g =
+            k.zf > mu ? (k.zf - mu) * (k.zf - mu) / (second - 2 * mu * k.zf + k.zf * k.zf) : 0;
+        least = std::min(least, g);
+      }
+    // The search's own resolution: G moves by at most ~|grad G| eps / kSteps between samples.
+    EXPECT_NEAR(a.upper, least, 2e-6) << "mu " << k.mu << " zf " << k.zf;
+    EXPECT_LE(a.lower, least + 1e-9);
+    // The exact moments' G (eps = 0) is never below the box's.
+    const double exact =
+        (k.zf - k.mu) * (k.zf - k.mu) / (k.variance + (k.zf - k.mu) * (k.zf - k.mu));
+    EXPECT_LE(a.lower, exact + 1e-12);
+  }
+}
+
+// A zero box is Problem 1 itself: against the exact continuous LP in local coordinates (Hausdorff
+// on [0, 1] and Hamburger on R); and G never rises as the box widens.
+TEST(MomentBoxContinuous, AZeroBoxIsProblemOneAndWideningNeverRaisesG) {
+  const Basis basis = Basis::parse({"power4"});
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> depth(0.05, 0.95), weight(0.1, 1);
+  auto fast = make_backend("fast");
+  for (int i = 0; i < 12; ++i) {
+    std::vector<double> z, w;
+    double total = 0;
+    for (int a = 0; a < 6; ++a)
+      z.push_back(depth(rng)), w.push_back(weight(rng)), total += w.back();
+    for (double& x : w) x /= total;
+    const double zf = depth(rng);
+    const bool on_r = i % 2;
+    ContinuousDomain domain = ContinuousDomain::interval(0, 1);
+    if (on_r) domain = {-1, 2, -kInf, kInf, 4, 100};
+    const LocalPowerSolution exact =
+        solve_power_locally({4, on_r ? -kInf : 0.0, on_r ? kInf : 1.0, 64}, z, w, zf, *fast);
+    ASSERT_TRUE(exact.solution.ok());
+    const std::vector<double> b = moments_of(basis, z, w);
+    double previous = kInf;
+    for (double eps : {0.0, 1e-9, 1e-7, 1e-5, 1e-3}) {
+      const ContinuousBoxAnswer a = solve_moment_box_continuous(
+          basis, MomentBox::of_moments(b, std::vector<double>(4, eps)), zf, domain, z);
+      ASSERT_TRUE(a.ok()) << "instance " << i << " eps " << eps;
+      EXPECT_LE(a.width(), 1e-7) << "instance " << i << " eps " << eps;
+      if (eps == 0) EXPECT_NEAR(a.upper, exact.solution.upper, 1e-7) << "instance " << i;
+      EXPECT_LE(a.lower, previous + 1e-9) << "instance " << i << " eps " << eps;
+      previous = a.upper;
+    }
+  }
+}
+
+// The 16-bit map's box lives in theta_4's coordinates: the stored values of a distribution are
+// within the format's tolerance of the exact ones, so the box admits the distribution and its G
+// lies below the exact G (and below the mass in front of z_f).
+TEST(MomentBoxContinuous, TheSixteenBitBoxAdmitsTheDistributionThatWasStored) {
+  const Basis basis = Basis::parse({"power4"});
+  const MomentStorage storage = unorm16_power4_storage();
+  const std::vector<double> eps = storage_tolerance(storage, basis);
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> depth(0.02, 0.98), weight(0.1, 1);
+  ContinuousDomain r = {-1, 2, -kInf, kInf, 4, 100};
+  for (int i = 0; i < 10; ++i) {
+    std::vector<double> z, w, q(4, 0.0);
+    double total = 0;
+    for (int a = 0; a < 5; ++a)
+      z.push_back(depth(rng)), w.push_back(weight(rng)), total += w.back();
+    for (double& x : w) x /= total;
+    std::vector<double> exact_q(4, 0.0);
+    for (int a = 0; a < 5; ++a) {
+      std::vector<double> column(4), stored(4);
+      for (int j = 0; j < 4; ++j) column[j] = basis[j](z[a]);
+      const std::vector<double> s = stored_values(storage, column);
+      stored = column;
+      store_moments(storage, stored);
+      for (int j = 0; j < 4; ++j) q[j] += w[a] * stored[j], exact_q[j] += w[a] * s[j];
+    }
+    for (int j = 0; j < 4; ++j) EXPECT_LE(std::abs(q[j] - exact_q[j]), eps[j]);
+    const double zf = depth(rng);
+    double below = 0;
+    for (int a = 0; a < 5; ++a) below += z[a] < zf ? w[a] : 0;
+    const MomentBox box{q, eps, storage.transform, storage.offset};
+    const ContinuousBoxAnswer a = solve_moment_box_continuous(basis, box, zf, r, z);
+    ASSERT_TRUE(a.ok()) << "instance " << i;
+    EXPECT_LE(a.lower, below + 1e-9);
+    EXPECT_LE(a.width(), 1e-6);
+  }
 }
 
 }  // namespace

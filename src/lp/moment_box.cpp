@@ -5,167 +5,328 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace mb::lp {
 
 namespace {
 
-// The raw values b_j(z_i) of the problem's points, row-major, and each row's largest magnitude.
-struct RawRows {
-  int rows = 0, cols = 0;
-  std::vector<double> values, scale;
-};
-
-RawRows raw_rows(const ProblemFactory& factory, const Problem& problem) {
-  RawRows r;
-  const Basis& basis = factory.basis();
-  r.rows = int(basis.size());
-  r.cols = problem.cols();
-  r.values.resize(size_t(r.rows) * r.cols);
-  r.scale.assign(r.rows, 0.0);
-  std::vector<double> points(r.cols), values(r.cols);
-  for (int j = 0; j < r.cols; ++j) points[j] = problem.point(j);
-  for (int k = 0; k < r.rows; ++k) {
-    basis[k].evaluate(points, values);
-    for (int j = 0; j < r.cols; ++j) {
-      r.values[size_t(k) * r.cols + j] = values[j];
-      r.scale[k] = std::max(r.scale[k], std::abs(values[j]));
-    }
-    if (r.scale[k] == 0) r.scale[k] = 1;
+// The stored values s(z) = offset + transform * b(z) at each point, row-major by stored value.
+std::vector<double> stored_rows(const Basis& basis, const MomentBox& box,
+                                std::span<const double> points) {
+  const size_t m = basis.size(), n = points.size();
+  std::vector<double> b(m * n), values(n);
+  for (size_t j = 0; j < m; ++j) {
+    basis[j].evaluate(points, values);
+    std::copy(values.begin(), values.end(), b.begin() + j * n);
   }
-  return r;
+  if (box.transform.size() == 0) return b;
+  std::vector<double> s(m * n);
+  for (size_t i = 0; i < m; ++i)
+    for (size_t p = 0; p < n; ++p) {
+      double v = box.offset.size() ? box.offset(Eigen::Index(i)) : 0.0;
+      for (size_t j = 0; j < m; ++j)
+        v += box.transform(Eigen::Index(i), Eigen::Index(j)) * b[j * n + p];
+      s[i * n + p] = v;
+    }
+  return s;
 }
 
-// One GLPK problem: columns are the points' weights; row 1 is sum w = 1, rows 2.. the scaled
-// moment rows (the distance model adds its own column and rows afterwards).
-class GlpkModel {
+void check_box(const Basis& basis, const MomentBox& box) {
+  const size_t m = basis.size();
+  const bool shaped = box.transform.size() == 0 ||
+                      (size_t(box.transform.rows()) == m && size_t(box.transform.cols()) == m &&
+                       (box.offset.size() == 0 || size_t(box.offset.size()) == m));
+  if (box.center.size() != m || box.tolerance.size() != m || !shaped)
+    throw std::logic_error("moment box: " + std::to_string(box.center.size()) + " values and " +
+                           std::to_string(box.tolerance.size()) + " tolerances for a basis of " +
+                           std::to_string(m) + " functions");
+}
+
+// The box LP in GLPK: columns are the points' weights; row 1 is sum w = 1, row i + 2 the stored
+// value i scaled by 1 / scale_i (its largest magnitude over the first points). Points added later
+// enter as nonbasic columns at zero, so the last basis stays feasible: a warm start.
+class BoxLp {
  public:
-  GlpkModel() : lp_(glp_create_prob()) { glp_term_out(GLP_OFF); }
-  ~GlpkModel() { glp_delete_prob(lp_); }
-  glp_prob* get() { return lp_; }
-  int solve() {
+  BoxLp(const Basis& basis, const MomentBox& box, double zf, std::span<const double> points)
+      : basis_(basis), box_(box), zf_(zf), lp_(glp_create_prob()) {
+    check_box(basis, box);
+    glp_term_out(GLP_OFF);
+    const int m = int(basis.size());
+    const std::vector<double> s = stored_rows(basis, box, points);
+    scale_.assign(m, 0.0);
+    for (int i = 0; i < m; ++i) {
+      for (size_t p = 0; p < points.size(); ++p)
+        scale_[i] = std::max(scale_[i], std::abs(s[i * points.size() + p]));
+      if (!(scale_[i] > 0)) scale_[i] = 1;
+    }
+    glp_add_rows(lp_, m + 1);
+    glp_set_row_bnds(lp_, 1, GLP_FX, 1, 1);
+    for (int i = 0; i < m; ++i) {
+      const double c = box.center[i] / scale_[i], e = box.tolerance[i] / scale_[i];
+      glp_set_row_bnds(lp_, i + 2, e > 0 ? GLP_DB : GLP_FX, c - e, c + e);
+    }
+    glp_set_obj_dir(lp_, GLP_MIN);
+    add_points(points);
+  }
+  ~BoxLp() { glp_delete_prob(lp_); }
+  BoxLp(const BoxLp&) = delete;
+  BoxLp& operator=(const BoxLp&) = delete;
+
+  void add_points(std::span<const double> points) {
+    if (points.empty()) return;
+    const int m = int(basis_.size()), n = int(points.size());
+    const std::vector<double> s = stored_rows(basis_, box_, points);
+    const int first = glp_add_cols(lp_, n);
+    std::vector<int> rows(m + 2);
+    std::vector<double> values(m + 2);
+    for (int p = 0; p < n; ++p) {
+      rows[1] = 1, values[1] = 1;
+      for (int i = 0; i < m; ++i)
+        rows[i + 2] = i + 2, values[i + 2] = s[size_t(i) * n + p] / scale_[i];
+      glp_set_mat_col(lp_, first + p, m + 1, rows.data(), values.data());
+      glp_set_col_bnds(lp_, first + p, GLP_LO, 0, 0);
+      glp_set_obj_coef(lp_, first + p, points[p] < zf_ ? 1 : 0);
+      points_.push_back(points[p]);
+    }
+  }
+
+  // Optimal, Infeasible or Unstable (GLPK gave up).
+  ProblemStatus solve() {
     glp_smcp params;
     glp_init_smcp(&params);
     params.msg_lev = GLP_MSG_OFF;
     params.presolve = GLP_OFF;
     params.tol_bnd = 1e-12;
     params.tol_dj = 1e-10;
-    glp_std_basis(lp_);
+    if (!solved_) glp_std_basis(lp_);
+    solved_ = true;
     int rc = glp_simplex(lp_, &params);
     if (rc != 0 || glp_get_status(lp_) == GLP_UNDEF) {
       glp_adv_basis(lp_, 0);
       params.meth = GLP_DUALP;
       rc = glp_simplex(lp_, &params);
     }
-    return rc;
+    const int status = glp_get_status(lp_);
+    if (rc == 0 && status == GLP_OPT) return ProblemStatus::Optimal;
+    if (status == GLP_NOFEAS || rc == GLP_ENOPFS) return ProblemStatus::Infeasible;
+    return ProblemStatus::Unstable;
   }
+
+  MomentBoxAnswer answer(ProblemStatus status) const {
+    MomentBoxAnswer out;
+    out.status = status;
+    if (status != ProblemStatus::Optimal) return out;
+    out.G = std::clamp(glp_get_obj_val(lp_), 0.0, 1.0);
+    for (size_t j = 0; j < points_.size(); ++j) {
+      const double w = glp_get_col_prim(lp_, int(j) + 1);
+      if (w > 0) out.support.push_back(points_[j]), out.weights.push_back(w);
+    }
+    return out;
+  }
+
+  // The dual phi(z) = pi_1 + sum_i pi_i' s_i(z) (pi' = the row duals over the scales) in the
+  // basis: c_0 = pi_1 + pi' . offset, c_j = (transform^T pi')_j.
+  std::vector<long double> coefficients() const {
+    const int m = int(basis_.size());
+    std::vector<long double> c(m + 1, 0.0L), pi = scaled_duals();
+    c[0] = glp_get_row_dual(lp_, 1);
+    for (int i = 0; i < m; ++i) {
+      if (box_.transform.size() == 0) {
+        c[i + 1] = pi[i];
+        continue;
+      }
+      if (box_.offset.size()) c[0] += pi[i] * box_.offset(i);
+      for (int j = 0; j < m; ++j) c[j + 1] += pi[i] * box_.transform(i, j);
+    }
+    return c;
+  }
+
+  // min over the box of E[phi] = pi_1 + sum_i (pi_i' c_i - |pi_i'| eps_i), and the magnitude of
+  // its terms (for the rounding allowance).
+  long double dual_objective(long double* magnitude) const {
+    const std::vector<long double> pi = scaled_duals();
+    long double v = glp_get_row_dual(lp_, 1);
+    *magnitude = std::abs(v);
+    for (size_t i = 0; i < pi.size(); ++i) {
+      v += pi[i] * box_.center[i] - std::abs(pi[i]) * box_.tolerance[i];
+      *magnitude += std::abs(pi[i]) * (std::abs(box_.center[i]) + box_.tolerance[i]);
+    }
+    return v;
+  }
+
+  // The largest E[b_k] of a distribution in the box (for the tails' delta (1 + E[z^n])).
+  long double largest_moment(int k) const {
+    if (box_.transform.size() == 0) return box_.center[k] + box_.tolerance[k];
+    // Row k of the inverse transform: E[b_k] = row . (E[s] - offset).
+    const Eigen::MatrixXd transposed = box_.transform.transpose();
+    const Eigen::VectorXd row =
+        transposed.partialPivLu().solve(Eigen::VectorXd::Unit(box_.transform.rows(), k));
+    long double v = 0;
+    for (size_t i = 0; i < box_.center.size(); ++i) {
+      const double o = box_.offset.size() ? box_.offset(Eigen::Index(i)) : 0.0;
+      v += row(Eigen::Index(i)) * (box_.center[i] - o) +
+           std::abs(row(Eigen::Index(i))) * box_.tolerance[i];
+    }
+    return v;
+  }
+
+  const std::vector<double>& points() const { return points_; }
 
  private:
+  std::vector<long double> scaled_duals() const {
+    std::vector<long double> pi(basis_.size());
+    for (size_t i = 0; i < pi.size(); ++i)
+      pi[i] = (long double)glp_get_row_dual(lp_, int(i) + 2) / scale_[i];
+    return pi;
+  }
+
+  const Basis& basis_;
+  const MomentBox& box_;
+  double zf_;
   glp_prob* lp_;
+  bool solved_ = false;
+  std::vector<double> scale_, points_;
 };
 
-void load(glp_prob* lp, const RawRows& raw) {
-  const int n = raw.cols;
-  glp_add_rows(lp, raw.rows + 1);
-  glp_add_cols(lp, n);
+// How far outside the cone the box's centre lies: minimise t with
+// |E[s_i] - c_i| <= t max(|c_i|, eps_i) for every i, as two rows per value,
+// E + t u >= c and E - t u <= c; t is the last column.
+double relative_distance(const Basis& basis, const MomentBox& box, std::span<const double> points) {
+  const int m = int(basis.size()), n = int(points.size());
+  const std::vector<double> s = stored_rows(basis, box, points);
+  std::vector<double> scale(m, 0.0);
+  for (int i = 0; i < m; ++i) {
+    for (int p = 0; p < n; ++p) scale[i] = std::max(scale[i], std::abs(s[size_t(i) * n + p]));
+    if (!(scale[i] > 0)) scale[i] = 1;
+  }
+  glp_prob* lp = glp_create_prob();
+  glp_add_rows(lp, 2 * m + 1);
+  glp_add_cols(lp, n + 1);
   std::vector<int> ia{0}, ja{0};
   std::vector<double> ar{0};
-  for (int j = 0; j < raw.cols; ++j) {
-    ia.push_back(1), ja.push_back(j + 1), ar.push_back(1);
-    for (int k = 0; k < raw.rows; ++k)
-      ia.push_back(k + 2), ja.push_back(j + 1),
-          ar.push_back(raw.values[size_t(k) * raw.cols + j] / raw.scale[k]);
+  const auto put = [&](int r, int c, double a) {
+    ia.push_back(r), ja.push_back(c), ar.push_back(a);
+  };
+  for (int p = 0; p < n; ++p) {
+    put(1, p + 1, 1);
+    for (int i = 0; i < m; ++i) {
+      const double a = s[size_t(i) * n + p] / scale[i];
+      put(i + 2, p + 1, a);
+      put(m + i + 2, p + 1, a);
+    }
+    glp_set_col_bnds(lp, p + 1, GLP_LO, 0, 0);
   }
-  glp_load_matrix(lp, int(ar.size()) - 1, ia.data(), ja.data(), ar.data());
+  for (int i = 0; i < m; ++i) {
+    const double unit = std::max(std::abs(box.center[i]), box.tolerance[i]) / scale[i];
+    put(i + 2, n + 1, unit);
+    put(m + i + 2, n + 1, -unit);
+    glp_set_row_bnds(lp, i + 2, GLP_LO, box.center[i] / scale[i], 0);
+    glp_set_row_bnds(lp, m + i + 2, GLP_UP, 0, box.center[i] / scale[i]);
+  }
   glp_set_row_bnds(lp, 1, GLP_FX, 1, 1);
-  for (int j = 1; j <= n; ++j) glp_set_col_bnds(lp, j, GLP_LO, 0, 0);
+  glp_set_col_bnds(lp, n + 1, GLP_LO, 0, 0);
+  glp_load_matrix(lp, int(ar.size()) - 1, ia.data(), ja.data(), ar.data());
+  glp_set_obj_dir(lp, GLP_MIN);
+  glp_set_obj_coef(lp, n + 1, 1);
+  glp_smcp params;
+  glp_init_smcp(&params);
+  params.msg_lev = GLP_MSG_OFF;
+  params.presolve = GLP_OFF;
+  params.tol_bnd = 1e-12;
+  glp_adv_basis(lp, 0);
+  const int rc = glp_simplex(lp, &params);
+  const double t = rc == 0 && glp_get_status(lp) == GLP_OPT
+                       ? glp_get_obj_val(lp)
+                       : std::numeric_limits<double>::quiet_NaN();
+  glp_delete_prob(lp);
+  return t;
+}
+
+std::vector<double> problem_points(const Problem& problem) {
+  std::vector<double> points(problem.cols());
+  for (int j = 0; j < problem.cols(); ++j) points[j] = problem.point(j);
+  return points;
 }
 
 }  // namespace
 
-std::vector<double> ulp_box(const ProblemFactory& factory, const Problem& problem, double ulps) {
-  const RawRows raw = raw_rows(factory, problem);
-  std::vector<double> eps(problem.moments.size());
-  constexpr double kUlp = std::numeric_limits<double>::epsilon();
-  for (size_t k = 0; k < eps.size(); ++k)
-    eps[k] = ulps * kUlp * std::max(std::abs(problem.moments[k]), raw.scale[k]);
-  return eps;
+MomentBoxAnswer solve_moment_box(const Basis& basis, const MomentBox& box, double zf,
+                                 std::span<const double> points) {
+  BoxLp lp(basis, box, zf, points);
+  MomentBoxAnswer out = lp.answer(lp.solve());
+  if (out.status == ProblemStatus::Infeasible)
+    out.relative_distance = relative_distance(basis, box, points);
+  return out;
 }
 
 MomentBoxAnswer solve_moment_box(const ProblemFactory& factory, const Problem& problem,
                                  std::span<const double> tolerance) {
-  const RawRows raw = raw_rows(factory, problem);
-  MomentBoxAnswer out;
-  {
-    GlpkModel model;
-    glp_prob* lp = model.get();
-    load(lp, raw);
-    glp_set_obj_dir(lp, GLP_MIN);
-    for (int j = 0; j < raw.cols; ++j) glp_set_obj_coef(lp, j + 1, problem.cost(j));
-    for (int k = 0; k < raw.rows; ++k) {
-      const double b = problem.moments[k] / raw.scale[k], e = tolerance[k] / raw.scale[k];
-      if (e > 0)
-        glp_set_row_bnds(lp, k + 2, GLP_DB, b - e, b + e);
-      else
-        glp_set_row_bnds(lp, k + 2, GLP_FX, b, b);
-    }
-    const int rc = model.solve();
-    const int status = glp_get_status(lp);
-    if (rc == 0 && status == GLP_OPT) {
-      out.status = ProblemStatus::Optimal;
-      out.G = std::clamp(glp_get_obj_val(lp), 0.0, 1.0);
-      for (int j = 0; j < raw.cols; ++j) {
-        const double w = glp_get_col_prim(lp, j + 1);
-        if (w > 0) out.support.push_back(problem.point(j)), out.weights.push_back(w);
-      }
+  const MomentBox box = MomentBox::of_moments(
+      problem.moments, std::vector<double>(tolerance.begin(), tolerance.end()));
+  return solve_moment_box(factory.basis(), box, problem.zf, problem_points(problem));
+}
+
+std::vector<double> ulp_box(const ProblemFactory& factory, const Problem& problem, double ulps) {
+  const std::vector<double> points = problem_points(problem);
+  const MomentBox identity = MomentBox::of_moments(problem.moments, problem.moments);
+  const std::vector<double> s = stored_rows(factory.basis(), identity, points);
+  std::vector<double> eps(problem.moments.size());
+  constexpr double kUlp = std::numeric_limits<double>::epsilon();
+  for (size_t k = 0; k < eps.size(); ++k) {
+    double scale = 0;
+    for (size_t p = 0; p < points.size(); ++p)
+      scale = std::max(scale, std::abs(s[k * points.size() + p]));
+    eps[k] = ulps * kUlp * std::max(std::abs(problem.moments[k]), scale);
+  }
+  return eps;
+}
+
+ContinuousBoxAnswer solve_moment_box_continuous(const Basis& basis, const MomentBox& box, double zf,
+                                                const ContinuousDomain& domain,
+                                                std::span<const double> seed_points,
+                                                const ContinuousSettings& settings) {
+  std::vector<double> points(seed_points.begin(), seed_points.end());
+  for (double z : {domain.lo, domain.hi, zf})
+    if (z >= domain.tail_lo && z <= domain.tail_hi) points.push_back(z);
+  std::sort(points.begin(), points.end());
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  BoxLp lp(basis, box, zf, points);
+  const int per_round =
+      settings.points_per_round > 0 ? settings.points_per_round : 2 * int(basis.size() + 1);
+  ContinuousBoxAnswer out;
+  ProblemStatus status = lp.solve();
+  for (;;) {
+    if (out.rounds > 0 && status != ProblemStatus::Optimal) {
+      // The finite LP failed after new points: the last certified round's bracket stands (points
+      // added since only extend I).
+      out.stalled = true;
       return out;
     }
-    if (status != GLP_NOFEAS && rc != GLP_ENOPFS) return out;  // unstable
-  }
-  // How far outside: minimise t with |E[b_k] - b_k| <= t max(|b_k|, eps_k) for every k, as two
-  // rows per moment, E + t u >= b (rows 2..m+1) and E - t u <= b (rows m+2..2m+1); t is the last
-  // column.
-  out.status = ProblemStatus::Infeasible;
-  GlpkModel model;
-  glp_prob* lp = model.get();
-  std::vector<double> unit(raw.rows);
-  for (int k = 0; k < raw.rows; ++k)
-    unit[k] = std::max(std::abs(problem.moments[k]), tolerance[k]) / raw.scale[k];
-  // Weights and bounds as for the box; then t, the extra rows and the whole matrix anew.
-  load(lp, raw);
-  glp_add_cols(lp, 1);
-  glp_set_col_bnds(lp, raw.cols + 1, GLP_LO, 0, 0);
-  const int lower_rows = glp_add_rows(lp, raw.rows);
-  std::vector<int> all_i{0}, all_j{0};
-  std::vector<double> all_a{0};
-  const auto put = [&](int r, int c, double a) {
-    all_i.push_back(r), all_j.push_back(c), all_a.push_back(a);
-  };
-  for (int j = 0; j < raw.cols; ++j) {
-    put(1, j + 1, 1);
-    for (int k = 0; k < raw.rows; ++k) {
-      const double a = raw.values[size_t(k) * raw.cols + j] / raw.scale[k];
-      put(k + 2, j + 1, a);
-      put(lower_rows + k, j + 1, a);
+    out.finite = lp.answer(status);
+    if (!out.ok()) {
+      if (status == ProblemStatus::Infeasible)
+        out.finite.relative_distance = relative_distance(basis, box, lp.points());
+      return out;
     }
+    ++out.rounds;
+    const std::vector<long double> c = lp.coefficients();
+    const DualCertificate found = certify_dual(basis, c, zf, lp.points(), domain, settings);
+    long double magnitude = 0;
+    long double lower = lp.dual_objective(&magnitude) - found.violation;
+    if (found.delta > 0) lower -= found.delta * (1 + lp.largest_moment(domain.even_degree - 1));
+    out.lower = double(lower - DualCertificate::rounding() * magnitude);
+    out.upper = out.finite.G;
+    out.violation = double(found.violation);
+    out.proven = found.proven;
+    if (found.violators.empty() || out.width() <= settings.target_width ||
+        out.rounds >= settings.max_rounds)
+      return out;
+    const size_t add = std::min<size_t>(per_round, found.violators.size());
+    lp.add_points(std::span<const double>(found.violators.data(), add));
+    out.points_added += int(add);
+    status = lp.solve();
   }
-  for (int k = 0; k < raw.rows; ++k) {
-    put(k + 2, raw.cols + 1, unit[k]);
-    put(lower_rows + k, raw.cols + 1, -unit[k]);
-  }
-  glp_load_matrix(lp, int(all_a.size()) - 1, all_i.data(), all_j.data(), all_a.data());
-  for (int k = 0; k < raw.rows; ++k) {
-    const double b = problem.moments[k] / raw.scale[k];
-    glp_set_row_bnds(lp, k + 2, GLP_LO, b, 0);
-    glp_set_row_bnds(lp, lower_rows + k, GLP_UP, 0, b);
-  }
-  glp_set_obj_dir(lp, GLP_MIN);
-  glp_set_obj_coef(lp, raw.cols + 1, 1);
-  if (model.solve() == 0 && glp_get_status(lp) == GLP_OPT)
-    out.relative_distance = glp_get_obj_val(lp);
-  else
-    out.relative_distance = std::numeric_limits<double>::quiet_NaN();
-  return out;
 }
 
 }  // namespace mb::lp

@@ -1,35 +1,73 @@
 #pragma once
 // Problem 1 with moments known only to a tolerance (REFERENCE.md §2, "Moments with a tolerance"):
-// minimise the mass in front of z_f over all distributions on the problem's points whose moments
-// lie in the box |E[b_j] - b_j| <= eps_j. A boundary moment vector (few atoms) rounded to double
-// may lie just outside the moment cone, where the exact LP is infeasible; the box problem is
-// feasible whenever the true moments are within eps, and its G is a lower bound for every
-// distribution that could have produced the stored moments. Solved by GLPK on the raw rows,
-// each scaled by its largest value over the points (our simplex has no bounded rows).
+// minimise the mass in front of z_f over all distributions on I whose stored values lie in the
+// box |E[s_i] - c_i| <= eps_i, where s = offset + transform * b(z) is what a moment map stores
+// (the moments themselves, or the 16-bit map's theta_4 coordinates, REFERENCE.md §4). A boundary
+// moment vector (few atoms) rounded to double may lie just outside the moment cone, where the exact
+// LP is infeasible; the box problem is feasible whenever the true moments are within eps, and its G
+// is a lower bound for every distribution that could have produced the stored values. Solved by
+// GLPK on the raw rows, each scaled by its largest value over the points (our simplex has no
+// bounded rows); on the continuous interval by the exchange method of lp/continuous.h, whose
+// certificate serves unchanged: the box LP's dual is again a function phi <= step on I.
+#include <Eigen/Dense>
 #include <span>
 #include <vector>
 
+#include "lp/continuous.h"
 #include "lp/problem.h"
 #include "lp/solution.h"
 
 namespace mb::lp {
+
+struct MomentBox {
+  std::vector<double> center, tolerance;  // c_i and eps_i, one per stored value
+  Eigen::MatrixXd transform;              // s = offset + transform * b; empty: s = b
+  Eigen::VectorXd offset;
+  // The box of the moments themselves.
+  static MomentBox of_moments(std::vector<double> moments, std::vector<double> tolerance) {
+    return {std::move(moments), std::move(tolerance), {}, {}};
+  }
+};
 
 struct MomentBoxAnswer {
   ProblemStatus status = ProblemStatus::Unstable;
   double G = 0;
   std::vector<double> support, weights;  // the optimal distribution (points, weights)
   // Infeasible: the smallest t such that a distribution on the points has
-  // |E[b_j] - b_j| <= t max(|b_j|, eps_j) for every j, i.e. how far outside the cone b lies,
-  // relative to each moment (0 when feasible).
+  // |E[s_i] - c_i| <= t max(|c_i|, eps_i) for every i, i.e. how far outside the cone c lies,
+  // relative to each value (0 when feasible).
   double relative_distance = 0;
 };
 
-// `problem` from factory.from_moments (its points and untransformed moments are used).
+// On the given points of I.
+MomentBoxAnswer solve_moment_box(const Basis& basis, const MomentBox& box, double zf,
+                                 std::span<const double> points);
+// `problem` from factory.from_moments (its points and untransformed moments are the box's centre).
 MomentBoxAnswer solve_moment_box(const ProblemFactory& factory, const Problem& problem,
                                  std::span<const double> tolerance);
 
 // eps_j = ulps * ulp(|b_j|), at least ulps * ulp of b_j's largest value on the points (a zero
 // moment still has the rounding of the sums that made it).
 std::vector<double> ulp_box(const ProblemFactory& factory, const Problem& problem, double ulps);
+
+struct ContinuousBoxAnswer {
+  MomentBoxAnswer finite;  // the last round's LP on its points (an upper bound)
+  double upper = 0, lower = 0;
+  double violation = 0;
+  bool proven = false;  // as ContinuousSolution::proven
+  int rounds = 0, points_added = 0;
+  bool stalled = false;  // a later round's LP failed: the bracket is the last round's
+  bool ok() const { return finite.status == ProblemStatus::Optimal; }
+  double width() const { return upper - lower; }
+};
+
+// The box problem on the continuous domain, starting from `seed_points` (points of I that admit
+// a distribution in the box, e.g. the atoms of the one that was stored: the exchange has no
+// phase 1; z_f and the interval's ends join them). The bracket [lower, upper] holds the box problem's G; lower
+// is proven when `proven` (weak duality over every distribution on I in the box).
+ContinuousBoxAnswer solve_moment_box_continuous(const Basis& basis, const MomentBox& box, double zf,
+                                                const ContinuousDomain& domain,
+                                                std::span<const double> seed_points,
+                                                const ContinuousSettings& settings = {});
 
 }  // namespace mb::lp

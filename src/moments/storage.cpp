@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace mb {
 
@@ -63,6 +64,50 @@ void load_moments(const MomentStorage& storage, std::span<double> q) {
   Eigen::Map<Eigen::VectorXd> v(q.data(), Eigen::Index(q.size()));
   Eigen::VectorXd b = storage.transform.partialPivLu().solve(v - storage.offset);
   v = b;
+}
+
+std::vector<double> stored_values(const MomentStorage& storage, std::span<const double> moments) {
+  std::vector<double> q(moments.begin(), moments.end());
+  if (storage.kind != StorageKind::Unorm16) return q;
+  Eigen::Map<Eigen::VectorXd> v(q.data(), Eigen::Index(q.size()));
+  v = storage.transform * v + storage.offset;
+  return q;
+}
+
+namespace {
+
+// max over [0, 1] of |f|, from above.
+double largest_magnitude(const BasisFunction& f) {
+  constexpr int kSamples = 4096;
+  double largest = 0;
+  for (int i = 0; i <= kSamples; ++i)
+    largest = std::max(largest, std::abs(f(double(i) / kSamples)));
+  if (!f.has_derivatives()) return 1.01 * largest;
+  // Between samples |f| rises by at most half a spacing times max |f'|.
+  return largest + double(f.derivative_bound(1, 0, 1)) / (2 * kSamples);
+}
+
+}  // namespace
+
+std::vector<double> storage_tolerance(const MomentStorage& storage, const Basis& basis) {
+  constexpr double kUlp = std::numeric_limits<double>::epsilon();
+  std::vector<double> scale(basis.size());
+  for (size_t j = 0; j < basis.size(); ++j) scale[j] = largest_magnitude(basis[j]);
+  std::vector<double> eps(basis.size());
+  for (size_t j = 0; j < eps.size(); ++j) {
+    switch (storage.kind) {
+      case StorageKind::Double:
+        eps[j] = 8 * kUlp * scale[j];
+        break;
+      case StorageKind::Float32:
+        eps[j] = std::ldexp(scale[j], -24) + 8 * kUlp * scale[j];
+        break;
+      case StorageKind::Unorm16:
+        eps[j] = 0.5 / 65535.0 + 8 * kUlp;  // q lies in [0, 1]
+        break;
+    }
+  }
+  return eps;
 }
 
 }  // namespace mb

@@ -5,6 +5,9 @@
 #include <Eigen/Dense>
 #include <span>
 #include <string>
+#include <vector>
+
+#include "moments/basis.h"
 
 namespace mb {
 
@@ -28,5 +31,19 @@ MomentStorage unorm16_power2_storage();
 void store_moments(const MomentStorage& storage, std::span<double> b);
 // Filtered stored values -> moments, in place (inverse transform; identity otherwise).
 void load_moments(const MomentStorage& storage, std::span<double> q);
+
+// The values the map holds after filtering, before loading: transform * b + offset for 16-bit,
+// the moments themselves otherwise.
+std::vector<double> stored_values(const MomentStorage& storage, std::span<const double> moments);
+
+// How far a filtered stored value can lie from the one the exact moments would give, per stored
+// value, for depths in [0, 1] (REFERENCE.md §2 "Moments with a tolerance", §4): float32 rounds
+// each texel's b_j to the nearest float, within 2^-24 |b_j|, so the weighted sum is within
+// 2^-24 max over [0, 1] of |b_j|; 16-bit rounds each texel's q_i to the nearest of 65536 steps,
+// within 0.5 / 65535 (theta_4 keeps [0, 1] inside [0, 1]^4, so nothing is clamped). Both plus 8
+// double ulps of the value's scale for the filter's own sums and the transform's round trip. The
+// largest |b_j| is proven for catalog functions (samples plus half a spacing times the bound of
+// b_j'); sampled with a 1 % margin for expressions.
+std::vector<double> storage_tolerance(const MomentStorage& storage, const Basis& basis);
 
 }  // namespace mb
