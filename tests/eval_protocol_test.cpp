@@ -14,6 +14,7 @@
 #include "lp/problem.h"
 #include "lp/solution.h"
 #include "scene/procedural.h"
+#include "util/error.h"
 
 namespace mb {
 namespace {
@@ -197,6 +198,47 @@ TEST(Protocol, TwoOccludersGiveTheSameGInSweepEvalAndSolve) {
     EXPECT_LE(eval.shadow[k], f.pcf[k] + 1e-9);
   }
   EXPECT_GT(both, 20u);
+}
+
+// lp.moment_box (REFERENCE.md §2, "Moments with a tolerance"): the box around the kernel's stored
+// moments holds the kernel's own distribution, so its G never exceeds the exact LP's, fragment by
+// fragment; the view loop and the one-fragment path agree bit for bit, whatever the thread count;
+// unorm16 exists only where REFERENCE.md §4 defines a transform.
+TEST(Protocol, MomentBoxLpsSitBelowTheExactLp) {
+  EvalSettings settings = settings_for(Reference::Biased);
+  const auto views = prepare_views(load_dataset("tiny"), 0, settings, true);
+  const ViewData& view = views[0];
+  const TechniqueResult exact = evaluate_technique(view, "lp:power4", settings, nullptr);
+  for (const char* format : {"float32", "unorm16"}) {
+    settings.technique.lp_moment_box = format;
+    settings.threads = 2;
+    const TechniqueResult boxed = evaluate_technique(view, "lp:power4", settings, nullptr);
+    settings.threads = 1;
+    const TechniqueResult serial = evaluate_technique(view, "lp:power4", settings, nullptr);
+    ASSERT_EQ(boxed.shadow, serial.shadow) << format;
+    double lowered = 0;
+    for (size_t k = 0; k < exact.shadow.size(); ++k) {
+      ASSERT_LE(boxed.shadow[k], exact.shadow[k] + 1e-9) << format << " fragment " << k;
+      lowered += exact.shadow[k] - boxed.shadow[k];
+    }
+    EXPECT_GT(lowered, 0) << format;  // rounding costs sharpness somewhere
+    // One fragment through Technique::shadow, as `solve`-like callers use it.
+    auto technique = make_technique("lp:power4", settings.technique);
+    const int taps = settings.kernel.size * settings.kernel.size;
+    std::vector<double> depths(taps), weights(taps);
+    for (size_t k = 0; k < view.fragments.size(); k += 97) {
+      const Fragments& f = view.fragments;
+      kernel_distribution(view.map, settings.kernel, int(f.texel[k] % f.width),
+                          int(f.texel[k] / f.width), depths, weights);
+      FragmentInput in;
+      in.zf = f.ztest[k];
+      in.kernel_depths = depths;
+      in.kernel_weights = weights;
+      EXPECT_EQ(technique->shadow(in), boxed.shadow[k]) << format << " fragment " << k;
+    }
+  }
+  settings.technique.lp_moment_box = "unorm16";
+  EXPECT_THROW(make_technique("lp:trig4", settings.technique), InputError);
 }
 
 }  // namespace

@@ -73,6 +73,15 @@ std::vector<OptionSpec> shadow_option_specs() {
       {"lp.quantize", OptionType::Boolean, "false",
        "LP techniques: round depths to the grid instead of adding them."},
       {"lp.backend", OptionType::String, "fast", "LP backend.", -kInf, kInf, {"fast", "glpk"}},
+      {"lp.moment_box",
+       OptionType::String,
+       "none",
+       "LP techniques: none (the kernel's exact moments) or a storage format (double, float32, "
+       "unorm16 for power4/power2): Problem 1 over every distribution whose stored moments lie "
+       "within that format's rounding of the kernel's (REFERENCE.md §2; GLPK, no warm start).",
+       -kInf,
+       kInf,
+       {"none", "double", "float32", "unorm16"}},
   };
 }
 
@@ -115,6 +124,7 @@ EvalSettings shadow_settings_from(const Config& config, int threads) {
   t.csm_damping = config.number("csm.damping");
   t.lp = lp_discretization_from(config);
   t.lp_backend = config.string("lp.backend");
+  t.lp_moment_box = config.string("lp.moment_box");
   s.threads = threads;
   return s;
 }
@@ -132,15 +142,18 @@ std::string describe_settings(const EvalSettings& s) {
   std::snprintf(
       buffer, sizeof buffer,
       "kernel %dx%d Gaussian, sigma %g texels; reference %s; depth bias delta_f = %g + %g * %d * "
-      "(|dz/dx| + |dz/dy|) for the reference and every technique; LP grid %d on [%g, %g]%s, "
-      "backend %s",
+      "(|dz/dx| + |dz/dy|) for the reference and every technique; LP grid %d on [%g, %g]%s%s, "
+      "backend %s%s%s",
       s.kernel.size, s.kernel.size, s.kernel.sigma,
       s.bias.reference == Reference::Biased
           ? "biased (PCF = F_Z(z_f - delta_f))"
           : "receiver_plane (each tap against the fragment's plane)",
       s.bias.constant, s.bias.slope, s.kernel.radius(), s.technique.lp.grid, s.technique.lp.lo,
       s.technique.lp.hi, s.technique.lp.quantize ? " (quantized depths)" : "",
-      s.technique.lp_backend.c_str());
+      s.technique.lp.continuous ? " (seeding the continuous interval)" : "",
+      s.technique.lp_backend.c_str(),
+      s.technique.lp_moment_box == "none" ? "" : "; LP moment box of ",
+      s.technique.lp_moment_box == "none" ? "" : s.technique.lp_moment_box.c_str());
   return buffer;
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "eval/lp_technique.h"
 #include "eval/warm_runs.h"
 #include "lp/discretized.h"
 #include "lp/solution.h"
@@ -50,6 +51,8 @@ LpViewAnswers solve_lp_view(const ViewData& view, const std::vector<uint32_t>& l
       list.size(), map.width, [&](size_t i) { return view.fragments.texel[list[i]]; });
   const size_t runs = run_begin.size() - 1;
   const KernelAtomMap atoms(kernel.size);
+  // lp.moment_box: each fragment's box problem from scratch (GLPK; no warm start).
+  const std::optional<LpMomentBox> box = lp_moment_box(settings.technique.lp_moment_box, basis);
   std::vector<double> g(view.fragments.size(), 0.0);  // skipped fragments: G = 0 exactly
   ParallelErrors errors;  // each run captured: a throw must not leave the worksharing loop
 #pragma omp parallel num_threads(settings.threads) reduction(+ : solved, infeasible, unstable)
@@ -80,7 +83,13 @@ LpViewAnswers solve_lp_view(const ViewData& view, const std::vector<uint32_t>& l
             }
             factory.from_distribution(tap_depth, tap_weight, tap_column, zf, problem);
           }
-          if (disc.continuous) {
+          if (box) {
+            // The kernel's taps as they are, on their own (the box needs no problem columns).
+            kernel_distribution(map, kernel, x, y, tap_depth, tap_weight, tap_texel);
+            for (int n = 0; n < taps; ++n) tap_depth[n] = depth[tap_texel[n]];
+            s.call = lp::CallStatus::Ok;
+            s.status = solve_box_fragment(*box, basis, disc, tap_depth, tap_weight, zf, s.G);
+          } else if (disc.continuous) {
             // The whole interval (REFERENCE.md §2): the exchange extends a copy, from scratch, so
             // move_zf keeps working on `problem` and answers do not depend on the schedule.
             lp::Problem work = problem;

@@ -1,6 +1,7 @@
 #include "eval/lp_technique.h"
 
 #include "lp/discretized.h"
+#include "lp/moment_box.h"
 #include "lp/solution.h"
 #include "util/error.h"
 
@@ -10,14 +11,14 @@ namespace {
 
 class LpTechnique : public Technique {
  public:
-  LpTechnique(const std::string& name, Basis basis, const lp::Discretization& disc,
-              const std::string& backend)
+  LpTechnique(const std::string& name, Basis basis, const TechniqueParams& p)
       : Technique(name, std::move(basis), double_storage()),
-        factory_(
-            (lp::check_backend_rows(backend, int(this->basis().size()), "technique '" + name + "'"),
-             this->basis().check_independent(disc.lo, disc.hi), this->basis()),
-            disc),
-        backend_(lp::make_backend(backend)) {}
+        factory_((lp::check_backend_rows(p.lp_backend, int(this->basis().size()),
+                                         "technique '" + name + "'"),
+                  this->basis().check_independent(p.lp.lo, p.lp.hi), this->basis()),
+                 p.lp),
+        backend_(lp::make_backend(p.lp_backend)),
+        box_(lp_moment_box(p.lp_moment_box, this->basis())) {}
   bool needs_distribution() const override { return true; }
   double darkening_bound() const override { return kLpDarkeningBound; }
   const lp::ProblemFactory* lp_factory() const override { return &factory_; }
@@ -32,6 +33,15 @@ class LpTechnique : public Technique {
     // The kernel's own distribution fixes the moments, so the program is feasible by construction.
     // One fragment alone, from scratch: evaluate_technique solves whole views with warm starts
     // instead (solve_lp_view), to the same certified answers.
+    if (box_) {
+      double g = 0;
+      if (solve_box_fragment(*box_, basis(), factory_.discretization(), in.kernel_depths,
+                             in.kernel_weights, in.zf, g) != lp::ProblemStatus::Optimal) {
+        ++failures_;
+        return 0;
+      }
+      return g;
+    }
     lp::Problem problem = factory_.from_distribution(in.kernel_depths, in.kernel_weights, in.zf);
     if (factory_.discretization().continuous) {
       solution_ =
@@ -53,6 +63,7 @@ class LpTechnique : public Technique {
   lp::ProblemFactory factory_;
   std::unique_ptr<lp::Backend> backend_;
   lp::Solution solution_;  // reused: no allocation per LP
+  std::optional<LpMomentBox> box_;
   size_t failures_ = 0;
 };
 
@@ -75,10 +86,59 @@ std::vector<std::string> lp_technique_basis(const std::string& name) {
   return items;
 }
 
-std::unique_ptr<Technique> make_lp_technique(const std::string& name,
-                                             const lp::Discretization& disc,
-                                             const std::string& backend) {
-  return std::make_unique<LpTechnique>(name, Basis::parse(lp_technique_basis(name)), disc, backend);
+std::unique_ptr<Technique> make_lp_technique(const std::string& name, const TechniqueParams& p) {
+  return std::make_unique<LpTechnique>(name, Basis::parse(lp_technique_basis(name)), p);
+}
+
+std::optional<LpMomentBox> lp_moment_box(const std::string& setting, const Basis& basis) {
+  if (setting == "none") return std::nullopt;
+  MomentStorage storage;
+  if (setting == "double") {
+    storage = double_storage();
+  } else if (setting == "float32") {
+    storage = float32_storage();
+  } else if (setting == "unorm16") {
+    const std::vector<std::string> names = basis.names();
+    if (names == named_basis_set("power4"))
+      storage = unorm16_power4_storage();
+    else if (names == named_basis_set("power2"))
+      storage = unorm16_power2_storage();
+    else
+      throw InputError(
+          "lp.moment_box: unorm16 needs the basis power4 (theta_4) or power2 "
+          "(theta_2) of REFERENCE.md §4");
+  } else {
+    throw InputError("lp.moment_box: expected one of none, double, float32, unorm16; got '" +
+                     setting + "'");
+  }
+  return LpMomentBox{storage, storage_tolerance(storage, basis)};
+}
+
+lp::ProblemStatus solve_box_fragment(const LpMomentBox& box, const Basis& basis,
+                                     const lp::Discretization& disc, std::span<const double> depths,
+                                     std::span<const double> weights, double zf, double& G) {
+  // The stored values as the map holds them: each tap's rounded, then filtered.
+  const size_t m = basis.size();
+  std::vector<double> center(m, 0.0), column(m);
+  for (size_t t = 0; t < depths.size(); ++t) {
+    for (size_t j = 0; j < m; ++j) column[j] = basis[j](depths[t]);
+    store_moments(box.storage, column);
+    for (size_t j = 0; j < m; ++j) center[j] += weights[t] * column[j];
+  }
+  const lp::MomentBox moment_box{center, box.tolerance, box.storage.transform, box.storage.offset};
+  std::vector<double> points(depths.begin(), depths.end());
+  const int grid = disc.continuous ? std::min(disc.grid, 64) : disc.grid;
+  for (int k = 0; k < grid; ++k) points.push_back(disc.lo + (disc.hi - disc.lo) * k / (grid - 1));
+  if (disc.continuous) {
+    const lp::ContinuousBoxAnswer a = lp::solve_moment_box_continuous(
+        basis, moment_box, zf, lp::ContinuousDomain::interval(disc.lo, disc.hi), points);
+    G = std::clamp(a.upper, 0.0, 1.0);
+    return a.finite.status;
+  }
+  points.push_back(zf);
+  const lp::MomentBoxAnswer a = lp::solve_moment_box(basis, moment_box, zf, points);
+  G = a.G;
+  return a.status;
 }
 
 }  // namespace mb

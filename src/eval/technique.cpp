@@ -334,7 +334,7 @@ std::unique_ptr<Technique> make_technique(const std::string& name, const Techniq
   if (name == "tmsm") return std::make_unique<TmsmTechnique>(name, false, p.tmsm_alpha, p.beta);
   if (name == "tmsm_float")
     return std::make_unique<TmsmTechnique>(name, true, p.tmsm_float_alpha, p.beta);
-  if (name.rfind("lp:", 0) == 0) return make_lp_technique(name, p.lp, p.lp_backend);
+  if (name.rfind("lp:", 0) == 0) return make_lp_technique(name, p);
   std::string valid;
   for (const auto& n : closed_form_technique_names()) valid += n + ", ";
   std::string guess = closest_match(name, closed_form_technique_names());

@@ -37,6 +37,7 @@ struct TechniqueParams {
   double csm_damping = 2;                            // CSM ringing suppression
   lp::Discretization lp;
   std::string lp_backend = "fast";
+  std::string lp_moment_box = "none";  // lp_technique.h, lp_moment_box
 };
 
 class Technique {
