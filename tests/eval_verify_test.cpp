@@ -234,3 +234,53 @@ TEST(VerifyContinuous, ExactClosedFormsPassAndABrokenOneFails) {
 
 }  // namespace
 }  // namespace mb
+
+namespace mb {
+namespace {
+
+// Storage rows (float32, 16-bit) are judged as lower bounds of Problem 1 over their storage box on
+// [0, 1] (REFERENCE.md §2): with a bias strong enough (alpha = 3e-4, measured: results/FINDINGS.md
+// §7c) hamburger4_float and tmsm_float never exceed it; without bias hamburger4_float does, and so
+// does a test double shifted up by 1e-3. Exceeding is reported (verify exits 0) unless
+// verify.moment_box = strict, when the report's all_passed (exit status 5) turns false.
+TEST(VerifyStorageBox, StorageVariantsAreJudgedAgainstTheirBox) {
+  TechniqueParams params = verify_params(TechniqueParams{});
+  params.hamburger4_float_alpha = params.tmsm_float_alpha = 3e-4;
+  const auto instances = random_verify_instances(80, 31);
+  VerifyReportContext context;
+  context.grids = {64, 0};
+  for (const char* name : {"hamburger4_float", "tmsm_float"}) {
+    const VerifyTarget target = verify_targets({name}, params).front();
+    ASSERT_TRUE(target.storage_box);
+    const VerifySolverResult r = verify_solver(
+        target, [&] { return make_technique(name, params); }, instances, {64}, true, 1e-6, 3, 2);
+    EXPECT_TRUE(r.box_judged);
+    EXPECT_TRUE(r.passed()) << name << ": " << r.beyond_tolerance << " beyond its box (up to "
+                            << r.largest_excess << "), " << r.above_lp << " above a witness";
+    EXPECT_EQ(r.grids.back().compared, instances.size()) << name;  // every box LP answered
+  }
+  TechniqueParams unbiased = params;
+  unbiased.hamburger4_float_alpha = 0;
+  VerifyTarget target = verify_targets({"hamburger4_float"}, unbiased).front();
+  const VerifySolverResult bare = verify_solver(
+      target, [&] { return make_technique("hamburger4_float", unbiased); }, instances, {64}, true,
+      1e-6, 3, 2);
+  EXPECT_FALSE(bare.passed());
+  EXPECT_GT(bare.largest_excess, 1e-4);
+  const VerifySolverResult shifted = verify_solver(
+      verify_targets({"hamburger4_float"}, params).front(),
+      [&] {
+        return std::make_unique<WrongTechnique>(make_technique("hamburger4_float", params), 1e-3);
+      },
+      instances, {64}, true, 1e-6, 3, 2);
+  EXPECT_FALSE(shifted.passed());
+  EXPECT_GT(shifted.beyond_tolerance, 40u);
+  // Reported by default, failed when strict.
+  std::vector<VerifySolverResult> results{bare};
+  EXPECT_TRUE(render_verify_report(context, results, instances).all_passed);
+  results[0].target.storage_strict = true;
+  EXPECT_FALSE(render_verify_report(context, results, instances).all_passed);
+}
+
+}  // namespace
+}  // namespace mb

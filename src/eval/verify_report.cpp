@@ -1,5 +1,6 @@
 #include "eval/verify_report.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 
@@ -23,6 +24,19 @@ std::string joined(const std::vector<double>& v, const char* separator) {
   std::string s;
   for (size_t i = 0; i < v.size(); ++i) s += (i ? separator : "") + full(v[i]);
   return s;
+}
+
+std::string verdict(const VerifySolverResult& r) {
+  if (!r.judged()) return "reported (bias)";
+  if (r.box_judged) {
+    if (r.passed()) return "pass (below its storage box)";
+    return std::string(r.decides_exit() ? "**FAIL**" : "**exceeds its storage box**") +
+           " (by up to " + num(r.largest_excess) + ")";
+  }
+  return (r.passed() ? "pass" : "**FAIL**") +
+         (r.target.lower_bound
+              ? " (lower bound: " + std::to_string(r.above_finest) + " above the LP)"
+              : std::string());
 }
 
 }  // namespace
@@ -63,6 +77,17 @@ VerifyReport render_verify_report(const VerifyReportContext& ctx,
         "closed form evaluated on that distribution's own moments must not exceed its mass below "
         "z_f by more than "
         "1e-6. Undefined: the closed form gave no number (singular moments at alpha = 0).\n\n"
+     << (std::any_of(results.begin(), results.end(),
+                     [](const VerifySolverResult& r) { return r.box_judged; })
+             ? "- Storage rows (float32, 16-bit): their continuous column is Problem 1 over every "
+               "distribution on [0, 1] whose stored values lie within the format's rounding of "
+               "the ones the closed form read (REFERENCE.md §2 \"Moments with a tolerance\"; "
+               "float32: 2^-24 max |b_j|, 16-bit: half a step of theta_4's coordinates). A "
+               "storage variant passes when it never exceeds that box's G, nor an LP witness's "
+               "mass, by more than its bias alpha + 1e-6 (the biased moments are a mixture's). "
+               "Seed 000 §4.3 reports quantization noise at these alphas, so exceeding is "
+               "reported, not failed, unless verify.moment_box = strict.\n"
+             : "")
      << "| technique | LP basis | interval | instances | undefined |";
   for (int g : ctx.grids) md << " " << ground_truth(g) << ": max / mean abs dG |";
   if (continuous) md << " widest bracket | brackets > 1e-6 | unproven |";
@@ -80,26 +105,20 @@ VerifyReport render_verify_report(const VerifyReportContext& ctx,
     std::string basis;
     for (const auto& b : r.target.lp_basis) basis += (basis.empty() ? "" : ",") + b;
     md << "| " << r.target.technique << " | " << basis << " | [" << num(r.target.lo) << ", "
-       << num(r.target.hi) << "] | " << r.instances << " | " << r.undefined << " |";
+       << num(r.target.hi) << "]" << (r.box_judged ? "; box [0, 1]" : "") << " | " << r.instances
+       << " | " << r.undefined << " |";
     for (const auto& g : r.grids)
       md << " " << num(g.max_difference) << " / " << num(g.mean_difference) << " |";
     if (continuous)
       md << " " << num(r.widest_bracket) << " | " << r.unresolved << " | " << r.unproven << " |";
-    md << " " << r.beyond_tolerance << " | " << r.above_lp << " | "
-       << (r.judged()
-               ? (r.passed() ? "pass" : "**FAIL**") +
-                     (r.target.lower_bound
-                          ? " (lower bound: " + std::to_string(r.above_finest) + " above the LP)"
-                          : std::string())
-               : "reported (bias)")
-       << " |\n";
+    md << " " << r.beyond_tolerance << " | " << r.above_lp << " | " << verdict(r) << " |\n";
     for (const auto& g : r.grids)
       csv << r.target.technique << ",\"" << basis << "\"," << full(r.target.lo) << ","
           << full(r.target.hi) << "," << g.grid << "," << r.instances << "," << r.undefined << ","
           << g.compared << "," << g.lp_failures << "," << full(g.max_difference) << ","
           << full(g.mean_difference) << "," << r.beyond_tolerance << "," << r.above_lp << ","
           << (r.judged() ? 1 : 0) << "," << (r.passed() ? 1 : 0) << "\n";
-    all_passed = all_passed && r.passed();
+    all_passed = all_passed && (r.passed() || !r.decides_exit());
   }
   md << "\n## Worst cases\n\nPer solver: the largest |dG| on the finest grid, then (if any) the "
         "cases furthest above an "

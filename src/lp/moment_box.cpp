@@ -43,6 +43,8 @@ void check_box(const Basis& basis, const MomentBox& box) {
                            std::to_string(m) + " functions");
 }
 
+constexpr int kIterationLimit = 20000;
+
 // The box LP in GLPK: columns are the points' weights; row 1 is sum w = 1, row i + 2 the stored
 // value i scaled by 1 / scale_i (its largest magnitude over the first points). Points added later
 // enter as nonbasic columns at zero, so the last basis stays feasible: a warm start.
@@ -99,6 +101,12 @@ class BoxLp {
     params.presolve = GLP_OFF;
     params.tol_bnd = 1e-12;
     params.tol_dj = 1e-10;
+    // Far points (tails probed out to |z|^n ~ 1e8) make columns of very different sizes: GLPK's
+    // own row and column scaling, redone as points join. An LP that still does not settle counts
+    // as unstable (the exchange then keeps its last certified round) instead of running on; an
+    // iteration limit, not a time limit, so that answers do not depend on the machine load.
+    params.it_lim = kIterationLimit;
+    glp_scale_prob(lp_, GLP_SF_AUTO);
     if (!solved_) glp_std_basis(lp_);
     solved_ = true;
     int rc = glp_simplex(lp_, &params);
