@@ -9,6 +9,7 @@
 
 #include "cmd/command_common.h"
 #include "cmd/commands.h"
+#include "eval/camera_views.h"
 #include "eval/darkening.h"
 #include "eval/error_stats.h"
 #include "eval/eval_config.h"
@@ -33,6 +34,10 @@ std::vector<OptionSpec> eval_specs() {
        "Techniques to evaluate: closed forms, pcf, or lp:<basis> (e.g. lp:power4, lp:trig4)."});
   specs.push_back({"images", OptionType::Boolean, "true",
                    "Write shadow and error images per view and technique."});
+  specs.push_back(
+      {"camera_images", OptionType::Boolean, "false",
+       "For every camera a scene names and each of its light views: the camera's image with each "
+       "technique's shadow, its difference from PCF, and one contact sheet (cameras/)."});
   specs.push_back({"error_scale", OptionType::Number, "0.5",
                    "|PCF - G| at the top of the error colour bar.", 1e-6, 1});
   return specs;
@@ -106,6 +111,11 @@ int run_eval(const EvalOptions& options) {
                           histogram_csv(total.stats));
     overall.push_back(std::move(total));
   }
+
+  if (config.boolean("camera_images"))
+    write_dataset_camera_views(dataset, views, techniques, int(config.integer("resolution")),
+                               settings, config.number("error_scale"), out.staging() / "cameras",
+                               quiet);
 
   const RunMetadata meta = collect_run_metadata(threads, process_arguments());
   EvalReportContext context;

@@ -19,6 +19,12 @@ ViewData prepare_view(const Scene& scene, const LightViewDesc& view, const EvalS
                   collect_receivers(stack, settings.kernel, settings.bias, settings.threads)};
 }
 
+LightViewDesc as_rendered(LightViewDesc view, const DatasetDesc& dataset, int resolution) {
+  if (resolution == 0) resolution = dataset.resolution;
+  if (resolution > 0) view.resolution = resolution;
+  return view;
+}
+
 std::vector<ViewData> prepare_views(const DatasetDesc& dataset, int resolution,
                                     const EvalSettings& settings, bool quiet) {
   std::vector<Scene> scenes;
@@ -30,15 +36,13 @@ std::vector<ViewData> prepare_views(const DatasetDesc& dataset, int resolution,
                          "' is already used in dataset " + dataset.name +
                          " (outputs are named scene_view)");
   }
-  if (resolution == 0) resolution = dataset.resolution;
   std::vector<ViewData> views;
   size_t total = 0;
   for (const auto& scene : scenes) total += scene.views.size();
   ProgressBar bar("render", total, quiet);
   for (const auto& scene : scenes)
-    for (auto view : scene.views) {
-      if (resolution > 0) view.resolution = resolution;
-      views.push_back(prepare_view(scene, view, settings));
+    for (const auto& view : scene.views) {
+      views.push_back(prepare_view(scene, as_rendered(view, dataset, resolution), settings));
       bar.advance();
     }
   // A mean over no receivers would print 0 % for every technique (REFERENCE.md §3: receivers are

@@ -28,6 +28,9 @@ struct EvalSettings {
 
 // Renders one view of a scene and collects its receivers with their bias and reference.
 ViewData prepare_view(const Scene& scene, const LightViewDesc& view, const EvalSettings& settings);
+// A scene's light view as prepare_views renders it: `resolution` > 0 overrides the dataset's,
+// which (when > 0) overrides the scene's.
+LightViewDesc as_rendered(LightViewDesc view, const DatasetDesc& dataset, int resolution);
 // Renders every view of the dataset (resolution > 0 overrides the dataset's, which overrides the
 // scene's) and collects its receivers.
 std::vector<ViewData> prepare_views(const DatasetDesc& dataset, int resolution,

@@ -101,12 +101,10 @@ class BoxLp {
     params.presolve = GLP_OFF;
     params.tol_bnd = 1e-12;
     params.tol_dj = 1e-10;
-    // Far points (tails probed out to |z|^n ~ 1e8) make columns of very different sizes: GLPK's
-    // own row and column scaling, redone as points join. An LP that still does not settle counts
-    // as unstable (the exchange then keeps its last certified round) instead of running on; an
+    // An LP that does not settle (far points make columns of very different sizes) counts as
+    // unstable, and the exchange keeps its last certified round, instead of running on; an
     // iteration limit, not a time limit, so that answers do not depend on the machine load.
     params.it_lim = kIterationLimit;
-    glp_scale_prob(lp_, GLP_SF_AUTO);
     if (!solved_) glp_std_basis(lp_);
     solved_ = true;
     int rc = glp_simplex(lp_, &params);

@@ -63,8 +63,9 @@ struct ContinuousBoxAnswer {
 
 // The box problem on the continuous domain, starting from `seed_points` (points of I that admit
 // a distribution in the box, e.g. the atoms of the one that was stored: the exchange has no
-// phase 1; z_f and the interval's ends join them). The bracket [lower, upper] holds the box problem's G; lower
-// is proven when `proven` (weak duality over every distribution on I in the box).
+// phase 1; z_f and the interval's ends join them). The bracket [lower, upper] holds the box
+// problem's G; lower is proven when `proven` (weak duality over every distribution on I in the
+// box).
 ContinuousBoxAnswer solve_moment_box_continuous(const Basis& basis, const MomentBox& box, double zf,
                                                 const ContinuousDomain& domain,
                                                 std::span<const double> seed_points,

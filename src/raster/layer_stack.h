@@ -15,6 +15,7 @@ struct LayerStack {
   std::vector<uint8_t> facing;     // 1 if the surface faces the light (a receiver, REFERENCE §3)
   std::vector<double> dz_dx;       // depth gradient of the fragment's triangle, per texel along x
   std::vector<double> dz_dy;       // ... along y (raster rows, downwards)
+  std::vector<uint32_t> triangle;  // the fragment's triangle, when RasterInput::keep_triangles
   std::string scene, view, frame;  // provenance, written to the file header
 
   size_t texel_count() const { return size_t(width) * size_t(height); }

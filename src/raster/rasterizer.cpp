@@ -199,6 +199,7 @@ LayerStack rasterize(const RasterInput& in, int threads) {
   stack.facing.resize(total);
   stack.dz_dx.resize(total);
   stack.dz_dy.resize(total);
+  if (in.keep_triangles) stack.triangle.resize(total);
 #pragma omp parallel for schedule(dynamic) num_threads(threads)
   for (size_t tile = 0; tile < tile_count; ++tile) {
     int col0 = int(tile % tiles_x) * kTile, row0 = int(tile / tiles_x) * kTile;
@@ -212,6 +213,7 @@ LayerStack rasterize(const RasterInput& in, int threads) {
       stack.facing[slot] = in.facing[f.triangle];
       stack.dz_dx[slot] = s.gx;
       stack.dz_dy[slot] = s.gy;
+      if (in.keep_triangles) stack.triangle[slot] = f.triangle;
     }
     std::vector<TileFragment>().swap(tile_fragments[tile]);
   }

@@ -16,6 +16,7 @@ struct RasterInput {
   std::vector<Eigen::Vector3d> vertices;
   std::vector<std::array<uint32_t, 3>> triangles;
   std::vector<uint8_t> facing;  // per triangle
+  bool keep_triangles = false;  // fill LayerStack::triangle (camera images need the surface)
 };
 
 // Watertight: coverage is decided exactly (vertices snapped to 1/256 texel, integer edge

@@ -227,6 +227,26 @@ SceneDesc parse_scene(const std::string& file) {
     desc.views.push_back(v);
   }
   if (desc.views.empty()) root.fail("views", "a scene needs at least one light view");
+  for (auto& camera : root.maps("cameras")) {
+    CameraDesc c;
+    c.name = camera.string("name").value_or("camera" + std::to_string(desc.cameras.size()));
+    if (auto v = camera.numbers("position", 3)) c.position = {(*v)[0], (*v)[1], (*v)[2]};
+    if (auto v = camera.numbers("target", 3)) c.target = {(*v)[0], (*v)[1], (*v)[2]};
+    c.fov_deg = camera.number("fov", 45, 1, 170);
+    if (auto v = camera.numbers("resolution", 2)) {
+      for (double d : *v)
+        if (!(d >= 1 && d <= 8192 && d == std::floor(d)))
+          camera.fail("resolution", "expected [width, height], integers in [1, 8192]");
+      c.width = int((*v)[0]), c.height = int((*v)[1]);
+    }
+    if ((c.target - c.position).norm() <= 0)
+      camera.fail("target", "the target must differ from the camera's position");
+    for (const auto& other : desc.cameras)
+      if (other.name == c.name)
+        camera.fail("name", "camera name '" + c.name + "' is used twice in this scene");
+    camera.finish();
+    desc.cameras.push_back(c);
+  }
   root.finish();
   return desc;
 }
@@ -235,6 +255,7 @@ Scene build_scene(const SceneDesc& desc) {
   Scene scene;
   scene.name = desc.name;
   scene.views = desc.views;
+  scene.cameras = desc.cameras;
   for (const auto& part : desc.parts) {
     for (const auto& piece : build_part(part)) {
       for (const auto& v : piece.vertices)

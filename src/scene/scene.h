@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/camera.h"
 #include "scene/light_view.h"
 #include "scene/mesh.h"
 
@@ -31,6 +32,7 @@ struct SceneDesc {
   std::string file;
   std::vector<PartDesc> parts;
   std::vector<LightViewDesc> views;
+  std::vector<CameraDesc> cameras;  // optional: camera images of the techniques' shadows
 };
 
 struct Scene {
@@ -38,6 +40,7 @@ struct Scene {
   TriangleMesh mesh;               // all parts, world coordinates
   std::vector<uint8_t> two_sided;  // per triangle
   std::vector<LightViewDesc> views;
+  std::vector<CameraDesc> cameras;
 };
 
 // The generator names a part may use, with their parameters (for errors and docs).

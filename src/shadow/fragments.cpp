@@ -49,30 +49,37 @@ Fragments collect_receivers(const LayerStack& stack, const GaussianKernel& kerne
   f.oracle.resize(count);
   f.pcf.resize(count);
   const ShadowMap map = layer0_shadow_map(stack);
-  const int r = kernel.radius();
 #pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
   for (size_t k = 0; k < count; ++k) {
     const size_t t = f.texel[k];
     const uint64_t i = stack.offsets[t] + f.layer[k];
     const int x = int(t % stack.width), y = int(t / stack.width);
-    const double zf = stack.depth[i], gx = stack.dz_dx[i], gy = stack.dz_dy[i];
-    const double ztest = zf - fragment_bias(bias, r, gx, gy);
-    double oracle = 0, plane = 0;
-    for (int dy = -r; dy <= r; ++dy)
-      for (int dx = -r; dx <= r; ++dx) {
-        const double depth = map.at(x + dx, y + dy), w = kernel.weight(dx, dy);
-        if (depth < ztest) oracle += w;
-        // REFERENCE.md §3: the ideal filtered hard shadow tests each tap against the plane. The
-        // plane, extrapolated past a steep receiver's edge, can pass the far plane, where empty
-        // texels hold depth 1: nothing lies beyond it, so the test depth stops there.
-        if (depth < std::min(zf + dx * gx + dy * gy - bias.constant, 1.0)) plane += w;
-      }
-    f.zf[k] = zf;
-    f.ztest[k] = ztest;
-    f.oracle[k] = std::min(oracle, 1.0);
-    f.pcf[k] = bias.reference == Reference::Biased ? f.oracle[k] : std::min(plane, 1.0);
+    const ReceiverTest test =
+        receiver_test(map, kernel, bias, x, y, stack.depth[i], stack.dz_dx[i], stack.dz_dy[i]);
+    f.zf[k] = stack.depth[i];
+    f.ztest[k] = test.ztest;
+    f.oracle[k] = test.oracle;
+    f.pcf[k] = test.pcf;
   }
   return f;
+}
+
+ReceiverTest receiver_test(const ShadowMap& map, const GaussianKernel& kernel,
+                           const BiasParams& bias, int x, int y, double zf, double gx, double gy) {
+  const int r = kernel.radius();
+  const double ztest = zf - fragment_bias(bias, r, gx, gy);
+  double oracle = 0, plane = 0;
+  for (int dy = -r; dy <= r; ++dy)
+    for (int dx = -r; dx <= r; ++dx) {
+      const double depth = map.at(x + dx, y + dy), w = kernel.weight(dx, dy);
+      if (depth < ztest) oracle += w;
+      // REFERENCE.md §3: the ideal filtered hard shadow tests each tap against the plane. The
+      // plane, extrapolated past a steep receiver's edge, can pass the far plane, where empty
+      // texels hold depth 1: nothing lies beyond it, so the test depth stops there.
+      if (depth < std::min(zf + dx * gx + dy * gy - bias.constant, 1.0)) plane += w;
+    }
+  oracle = std::min(oracle, 1.0);
+  return {ztest, oracle, bias.reference == Reference::Biased ? oracle : std::min(plane, 1.0)};
 }
 
 void kernel_distribution(const ShadowMap& map, const GaussianKernel& kernel, int x, int y,

@@ -58,6 +58,14 @@ struct Fragments {
   size_t size() const { return zf.size(); }
 };
 
+// One receiver's test at texel (x, y) of `map`, its depth z_f and plane gradient (dz/dx, dz/dy
+// in texels): z_f - delta_f, F_Z there (the oracle) and the reference (REFERENCE.md §3).
+struct ReceiverTest {
+  double ztest, oracle, pcf;
+};
+ReceiverTest receiver_test(const ShadowMap& map, const GaussianKernel& kernel,
+                           const BiasParams& bias, int x, int y, double zf, double gx, double gy);
+
 // Receivers in texel order, then layer order; identical for every thread count.
 Fragments collect_receivers(const LayerStack& stack, const GaussianKernel& kernel,
                             const BiasParams& bias, int threads);
