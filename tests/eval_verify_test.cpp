@@ -284,3 +284,33 @@ TEST(VerifyStorageBox, StorageVariantsAreJudgedAgainstTheirBox) {
 
 }  // namespace
 }  // namespace mb
+
+namespace mb {
+namespace {
+
+// CSM is no lower bound (seed 001, "CSM Ringing"): verify reports how often and by how much it
+// exceeds the sharp bound of its own channels, and never fails on it. Measured: CSM with its
+// 2 S - 1 scaling and damping stays below the bound on these instances; a copy shifted up by 0.2
+// exceeds it on about half, by up to ~0.2.
+TEST(VerifyCsm, ExceedingTheSharpBoundIsCountedNotJudged) {
+  TechniqueParams params = verify_params(TechniqueParams{});
+  params.csm_terms = 3;
+  const auto instances = random_verify_instances(60, 8);
+  const VerifyTarget target = verify_targets({"csm"}, params).front();
+  ASSERT_TRUE(target.exceedance);
+  EXPECT_EQ(target.lp_basis.size(), 6u);
+  const VerifySolverResult csm = verify_solver(
+      target, [&] { return make_technique("csm", params); }, instances, {64}, true, 1e-6, 3, 2);
+  EXPECT_FALSE(csm.judged());
+  EXPECT_TRUE(csm.passed());
+  const VerifySolverResult shifted = verify_solver(
+      target, [&] { return std::make_unique<WrongTechnique>(make_technique("csm", params), 0.2); },
+      instances, {64}, true, 1e-6, 3, 2);
+  EXPECT_TRUE(shifted.passed());         // reported, never failed
+  EXPECT_GT(shifted.above_finest, 15u);  // 29 of 60: CSM usually sits far below the bound
+  EXPECT_GT(shifted.largest_excess, 0.15);
+  EXPECT_GT(shifted.largest_excess, csm.largest_excess + 0.1);
+}
+
+}  // namespace
+}  // namespace mb

@@ -26,7 +26,7 @@ std::vector<OptionSpec> verify_specs() {
   for (auto& s : shadow_option_specs()) specs.push_back(s);
   specs.push_back({"verify.techniques", OptionType::StringList,
                    "[hamburger4, hausdorff4, tmsm, vsm, esm, hamburger6, hamburger4_float, "
-                   "hamburger4_16bit, tmsm_float, evsm2, evsm4]",
+                   "hamburger4_16bit, tmsm_float, evsm2, evsm4, csm]",
                    "Closed forms to check (REFERENCE.md §6; EVSM as a lower bound of its basis)."});
   specs.push_back({"verify.random", OptionType::Integer, "2000",
                    "Seeded random distributions (1-8 atoms, mixtures).", 0, 1e8});
@@ -71,6 +71,10 @@ std::vector<OptionSpec> verify_specs() {
        "EVSM's positive exponent for verify: with c = 40 its LP columns exp(80 (z - 1)) "
        "vanish below the LP's tolerance over most of [0, 1].",
        1e-6, 300});
+  specs.push_back({"verify.csm_terms", OptionType::Integer, "3",
+                   "CSM's Fourier terms M for verify: M = 8 gives 16 channels, beyond the LP's 15 "
+                   "functions; M <= 3 keeps the fast backend, up to 7 runs on GLPK.",
+                   1, 7});
   specs.push_back(
       {"verify.worst", OptionType::Integer, "5", "Worst cases listed per solver.", 0, 1000});
   return specs;
@@ -122,6 +126,7 @@ int run_verify(const CommonOptions& options) {
   TechniqueParams params = verify_params(settings.technique);
   params.esm_c = config.number("verify.esm_c");
   params.evsm_c_positive = config.number("verify.evsm_c");
+  params.csm_terms = int(config.integer("verify.csm_terms"));
   auto targets = verify_targets(config.strings("verify.techniques"), params);
   const std::string moment_box = config.string("verify.moment_box");
   for (auto& t : targets) {

@@ -27,6 +27,10 @@ std::string joined(const std::vector<double>& v, const char* separator) {
 }
 
 std::string verdict(const VerifySolverResult& r) {
+  if (r.target.exceedance)
+    return "reported (not a lower bound: above the sharp bound on " +
+           std::to_string(r.above_finest) + " instances and " + std::to_string(r.above_lp) +
+           " LP witnesses, by up to " + num(std::max(0.0, r.largest_excess)) + ")";
   if (!r.judged()) return "reported (bias)";
   if (r.box_judged) {
     if (r.passed()) return "pass (below its storage box)";
