@@ -129,20 +129,6 @@ class LvsmTechnique : public Technique {
   double min_variance_;
 };
 
-}  // namespace
-
-std::vector<std::string> csm_functions(int terms) {
-  std::vector<std::string> functions;
-  for (int k = 1; k <= terms; ++k) {
-    const std::string c = std::to_string(2 * k - 1) + "*_pi*z";
-    functions.push_back("cos(" + c + ")");
-    functions.push_back("sin(" + c + ")");
-  }
-  return functions;
-}
-
-namespace {
-
 // Convolution shadow maps (seed 001 "Convolution Shadow Maps", "CSM Ringing"): the shadow test
 // [z < z_f] as a Fourier series in t = z_f - z of period 2, 1/2 + 2 sum_k sin(c_k t) / c_k with
 // c_k = (2k - 1) pi, whose terms split into E[cos(c_k z)] and E[sin(c_k z)] (the map's 2M
@@ -169,7 +155,7 @@ class CsmTechnique : public Technique {
   }
 
  private:
-  static Basis csm_basis(int terms) { return Basis::parse(csm_functions(terms)); }
+  static Basis csm_basis(int terms) { return Basis::parse(csm_channels(terms)); }
   int terms_;
   double damping_;
 };

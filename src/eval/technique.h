@@ -79,7 +79,4 @@ class Technique {
 std::unique_ptr<Technique> make_technique(const std::string& name, const TechniqueParams& params);
 std::vector<std::string> closed_form_technique_names();
 
-// CSM's 2M channels: cos and sin of (2k - 1) pi z, k = 1..M (expressions of z).
-std::vector<std::string> csm_functions(int terms);
-
 }  // namespace mb

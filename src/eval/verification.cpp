@@ -161,7 +161,7 @@ std::vector<VerifyTarget> verify_targets(const std::vector<std::string>& techniq
       {"tmsm_float", {"trig4"}, 0, 1, false, false, false, false, true, params.tmsm_float_alpha},
       // CSM is no lower bound: how often and by how much it exceeds the sharp bound of the same
       // channels (VerifyTarget::exceedance).
-      {"csm", csm_functions(params.csm_terms), 0, 1},
+      {"csm", csm_channels(params.csm_terms), 0, 1},
       {"evsm2", evsm2_basis, 0, 1, false, true},
       {"evsm4", evsm4_basis, 0, 1, false, true},
   };

@@ -87,6 +87,16 @@ const std::vector<std::string>& catalog_names() {
   return names;
 }
 
+std::vector<std::string> csm_channels(int terms) {
+  std::vector<std::string> functions;
+  for (int k = 1; k <= terms; ++k) {
+    const std::string c = std::to_string(2 * k - 1) + "*_pi*z";
+    functions.push_back("cos(" + c + ")");
+    functions.push_back("sin(" + c + ")");
+  }
+  return functions;
+}
+
 std::vector<std::string> named_basis_set(const std::string& name) {
   static const std::map<std::string, std::vector<std::string>> sets = {
       {"power4", {"z", "z^2", "z^3", "z^4"}},
@@ -96,7 +106,12 @@ std::vector<std::string> named_basis_set(const std::string& name) {
       {"trig2", {"sin(2 pi z)", "cos(2 pi z)"}},
   };
   auto it = sets.find(name);
-  return it == sets.end() ? std::vector<std::string>{} : it->second;
+  if (it != sets.end()) return it->second;
+  // csm1 .. csm7: so that lp:csm3 is the sharp bound of CSM's own information (M = 8 would
+  // need 16 functions, beyond the LP's 15).
+  if (name.size() == 4 && name.rfind("csm", 0) == 0 && name[3] >= '1' && name[3] <= '7')
+    return csm_channels(name[3] - '0');
+  return {};
 }
 
 BasisFunction BasisFunction::parse(const std::string& text) {

@@ -57,7 +57,11 @@ class Basis {
 
 // The 37 catalog names of REFERENCE.md §5, in catalog order (candidate ranks use this order).
 const std::vector<std::string>& catalog_names();
-// Named sets: "power4" -> {z, z^2, z^3, z^4}, ...; empty when `name` is not a set.
+// Convolution shadow maps' 2M channels (seed 001): cos and sin of (2k - 1) pi z, k = 1..M, as
+// expressions of z.
+std::vector<std::string> csm_channels(int terms);
+// Named sets: "power4" -> {z, z^2, z^3, z^4}, ..., "csm3" -> CSM's channels for M = 3; empty
+// when `name` is not a set.
 std::vector<std::string> named_basis_set(const std::string& name);
 
 }  // namespace mb
