@@ -69,6 +69,7 @@ int run_eval(const EvalOptions& options) {
     darkening_reason[name] = technique->darkening_reason();
   }
   DatasetDesc dataset = load_dataset(config.string("dataset"));
+  if (config.boolean("camera_images")) check_dataset_cameras(dataset);
   StagedOutputDir out(options.common.out, options.common.force);
   const bool quiet = options.common.quiet;
 

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <numeric>
+#include <stdexcept>
 
 #include "eval/eval_report.h"
 #include "scene/light_view.h"
@@ -179,21 +180,26 @@ void write_camera_images(const CameraView& view, const std::vector<std::string>&
   write_image(base + "_sheet.png", columns * cell_w, rows * cell_h, 3, pixels);
 }
 
+void check_dataset_cameras(const DatasetDesc& dataset) {
+  for (const auto& file : dataset.scene_files)
+    if (!parse_scene(file).cameras.empty()) return;
+  throw InputError("camera_images: no scene of dataset " + dataset.name +
+                   " names a camera (add `cameras:` with position, target, fov and resolution to "
+                   "a scene file)");
+}
+
 // Every camera of every scene, lit by each of the scene's light views (eval/camera_views.h).
 void write_dataset_camera_views(const DatasetDesc& dataset, const std::vector<ViewData>& views,
                                 const std::vector<std::string>& techniques, int resolution,
                                 const EvalSettings& settings, double scale,
                                 const std::filesystem::path& dir, bool quiet) {
+  check_dataset_cameras(dataset);
   std::vector<Scene> scenes;
   size_t total = 0;
   for (const auto& file : dataset.scene_files) {
     scenes.push_back(build_scene(parse_scene(file)));
     total += scenes.back().cameras.size() * scenes.back().views.size();
   }
-  if (total == 0)
-    throw InputError("camera_images: no scene of dataset " + dataset.name +
-                     " names a camera (add `cameras:` with position, target, fov and resolution "
-                     "to a scene file)");
   std::filesystem::create_directories(dir);
   ProgressBar bar("cameras", total, quiet);
   for (const auto& scene : scenes)
@@ -203,6 +209,9 @@ void write_dataset_camera_views(const DatasetDesc& dataset, const std::vector<Vi
         const auto it = std::find_if(views.begin(), views.end(), [&](const ViewData& v) {
           return v.scene == scene.name && v.view == light.name;
         });
+        if (it == views.end())
+          throw std::logic_error("camera views: light view " + scene.name + "/" + light.name +
+                                 " was not rendered");
         const CameraView view = camera_view(scene, light, *it, camera, settings);
         std::vector<std::vector<double>> shadows;
         for (const auto& name : techniques)

@@ -43,6 +43,8 @@ void write_camera_images(const CameraView& view, const std::vector<std::string>&
                          const std::vector<std::vector<double>>& shadows, const std::string& base,
                          double scale);
 
+// InputError unless some scene of `dataset` names a camera (checked before any work).
+void check_dataset_cameras(const DatasetDesc& dataset);
 // Every camera of every scene of `dataset`, lit by each of the scene's light views (`views` as
 // prepare_views rendered them at `resolution`), for `techniques`: write_camera_images into `dir`
 // as <scene>_<view>_<camera>_*.png. InputError when no scene names a camera.
