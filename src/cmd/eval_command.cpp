@@ -69,11 +69,12 @@ int run_eval(const EvalOptions& options) {
     darkening_reason[name] = technique->darkening_reason();
   }
   DatasetDesc dataset = load_dataset(config.string("dataset"));
-  if (config.boolean("camera_images")) check_dataset_cameras(dataset);
+  const std::vector<Scene> scenes = build_dataset_scenes(dataset);
+  if (config.boolean("camera_images")) check_dataset_cameras(scenes, dataset);
   StagedOutputDir out(options.common.out, options.common.force);
   const bool quiet = options.common.quiet;
 
-  auto views = prepare_views(dataset, int(config.integer("resolution")), settings, quiet);
+  auto views = prepare_views(scenes, dataset, int(config.integer("resolution")), settings, quiet);
   size_t receivers = 0;
   for (const auto& v : views) receivers += v.fragments.size();
   std::filesystem::create_directories(out.staging() / "histograms");
@@ -114,9 +115,9 @@ int run_eval(const EvalOptions& options) {
   }
 
   if (config.boolean("camera_images"))
-    write_dataset_camera_views(dataset, views, techniques, int(config.integer("resolution")),
-                               settings, config.number("error_scale"), out.staging() / "cameras",
-                               quiet);
+    write_dataset_camera_views(scenes, dataset, views, techniques,
+                               int(config.integer("resolution")), settings,
+                               config.number("error_scale"), out.staging() / "cameras", quiet);
 
   const RunMetadata meta = collect_run_metadata(threads, process_arguments());
   EvalReportContext context;

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "eval/eval_report.h"
+#include "raster/rasterizer.h"
 #include "scene/light_view.h"
 #include "util/error.h"
 #include "util/image_writer.h"
@@ -25,19 +26,6 @@ constexpr float kSky[3] = {0.62f, 0.74f, 0.88f};
 
 float to_srgb(float linear) {
   return std::pow(std::clamp(linear, 0.0f, 1.0f), 1.0f / 2.2f);
-}
-
-// dz/dx, dz/dy in light raster units of the plane through a triangle's projected vertices.
-bool light_gradient(const LightFrame& frame, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                    const Eigen::Vector3d& c, double& gx, double& gy) {
-  const Eigen::Vector3d p = frame.to_raster(a), q = frame.to_raster(b), r = frame.to_raster(c);
-  const double dx1 = q.x() - p.x(), dy1 = q.y() - p.y(), dz1 = q.z() - p.z();
-  const double dx2 = r.x() - p.x(), dy2 = r.y() - p.y(), dz2 = r.z() - p.z();
-  const double det = dx1 * dy2 - dx2 * dy1;
-  if (det == 0) return false;
-  gx = (dz1 * dy2 - dz2 * dy1) / det;
-  gy = (dx1 * dz2 - dx2 * dz1) / det;
-  return std::isfinite(gx) && std::isfinite(gy);
 }
 
 }  // namespace
@@ -72,11 +60,13 @@ CameraView camera_view(const Scene& scene, const LightViewDesc& light, const Vie
     out.diffuse[p] = float(std::max(0.0, lambert));
     // Receivers face the light (REFERENCE.md §3); the others are in their own shadow.
     if (!(lambert > 0)) continue;
-    double gx = 0, gy = 0;
-    if (!light_gradient(frame, a, b, c, gx, gy)) {
+    const std::optional<Eigen::Vector2d> gradient =
+        plane_gradient(frame.to_raster(a), frame.to_raster(b), frame.to_raster(c));
+    if (!gradient || !gradient->allFinite()) {
       out.diffuse[p] = 0;  // edge-on to the light: grazing, unlit
       continue;
     }
+    const double gx = gradient->x(), gy = gradient->y();
     const Eigen::Vector3d r = frame.to_raster(image.point[p]);
     const int x = std::clamp(int(std::floor(r.x())), 0, map.width - 1),
               y = std::clamp(int(std::floor(r.y())), 0, map.height - 1);
@@ -180,26 +170,22 @@ void write_camera_images(const CameraView& view, const std::vector<std::string>&
   write_image(base + "_sheet.png", columns * cell_w, rows * cell_h, 3, pixels);
 }
 
-void check_dataset_cameras(const DatasetDesc& dataset) {
-  for (const auto& file : dataset.scene_files)
-    if (!parse_scene(file).cameras.empty()) return;
+void check_dataset_cameras(const std::vector<Scene>& scenes, const DatasetDesc& dataset) {
+  for (const auto& scene : scenes)
+    if (!scene.cameras.empty()) return;
   throw InputError("camera_images: no scene of dataset " + dataset.name +
                    " names a camera (add `cameras:` with position, target, fov and resolution to "
                    "a scene file)");
 }
 
 // Every camera of every scene, lit by each of the scene's light views (eval/camera_views.h).
-void write_dataset_camera_views(const DatasetDesc& dataset, const std::vector<ViewData>& views,
+void write_dataset_camera_views(const std::vector<Scene>& scenes, const DatasetDesc& dataset,
+                                const std::vector<ViewData>& views,
                                 const std::vector<std::string>& techniques, int resolution,
                                 const EvalSettings& settings, double scale,
                                 const std::filesystem::path& dir, bool quiet) {
-  check_dataset_cameras(dataset);
-  std::vector<Scene> scenes;
   size_t total = 0;
-  for (const auto& file : dataset.scene_files) {
-    scenes.push_back(build_scene(parse_scene(file)));
-    total += scenes.back().cameras.size() * scenes.back().views.size();
-  }
+  for (const auto& scene : scenes) total += scene.cameras.size() * scene.views.size();
   std::filesystem::create_directories(dir);
   ProgressBar bar("cameras", total, quiet);
   for (const auto& scene : scenes)

@@ -44,11 +44,12 @@ void write_camera_images(const CameraView& view, const std::vector<std::string>&
                          double scale);
 
 // InputError unless some scene of `dataset` names a camera (checked before any work).
-void check_dataset_cameras(const DatasetDesc& dataset);
-// Every camera of every scene of `dataset`, lit by each of the scene's light views (`views` as
-// prepare_views rendered them at `resolution`), for `techniques`: write_camera_images into `dir`
-// as <scene>_<view>_<camera>_*.png. InputError when no scene names a camera.
-void write_dataset_camera_views(const DatasetDesc& dataset, const std::vector<ViewData>& views,
+void check_dataset_cameras(const std::vector<Scene>& scenes, const DatasetDesc& dataset);
+// Every camera of every scene (`scenes`, built from `dataset`), lit by each of the scene's light
+// views (`views` as prepare_views rendered them at `resolution`), for `techniques`:
+// write_camera_images into `dir` as <scene>_<view>_<camera>_*.png.
+void write_dataset_camera_views(const std::vector<Scene>& scenes, const DatasetDesc& dataset,
+                                const std::vector<ViewData>& views,
                                 const std::vector<std::string>& techniques, int resolution,
                                 const EvalSettings& settings, double scale,
                                 const std::filesystem::path& dir, bool quiet);

@@ -25,8 +25,7 @@ LightViewDesc as_rendered(LightViewDesc view, const DatasetDesc& dataset, int re
   return view;
 }
 
-std::vector<ViewData> prepare_views(const DatasetDesc& dataset, int resolution,
-                                    const EvalSettings& settings, bool quiet) {
+std::vector<Scene> build_dataset_scenes(const DatasetDesc& dataset) {
   std::vector<Scene> scenes;
   for (const auto& file : dataset.scene_files) {
     scenes.push_back(build_scene(parse_scene(file)));
@@ -36,6 +35,16 @@ std::vector<ViewData> prepare_views(const DatasetDesc& dataset, int resolution,
                          "' is already used in dataset " + dataset.name +
                          " (outputs are named scene_view)");
   }
+  return scenes;
+}
+
+std::vector<ViewData> prepare_views(const DatasetDesc& dataset, int resolution,
+                                    const EvalSettings& settings, bool quiet) {
+  return prepare_views(build_dataset_scenes(dataset), dataset, resolution, settings, quiet);
+}
+
+std::vector<ViewData> prepare_views(const std::vector<Scene>& scenes, const DatasetDesc& dataset,
+                                    int resolution, const EvalSettings& settings, bool quiet) {
   std::vector<ViewData> views;
   size_t total = 0;
   for (const auto& scene : scenes) total += scene.views.size();

@@ -35,6 +35,11 @@ LightViewDesc as_rendered(LightViewDesc view, const DatasetDesc& dataset, int re
 // scene's) and collects its receivers.
 std::vector<ViewData> prepare_views(const DatasetDesc& dataset, int resolution,
                                     const EvalSettings& settings, bool quiet);
+// The dataset's scenes, built (InputError for two scenes of one name: outputs are named
+// scene_view), and their views rendered from them, for callers that need the scenes too.
+std::vector<Scene> build_dataset_scenes(const DatasetDesc& dataset);
+std::vector<ViewData> prepare_views(const std::vector<Scene>& scenes, const DatasetDesc& dataset,
+                                    int resolution, const EvalSettings& settings, bool quiet);
 
 struct TechniqueResult {
   std::vector<double> shadow;  // G per fragment, in fragment order

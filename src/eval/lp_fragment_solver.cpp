@@ -73,7 +73,7 @@ LpViewAnswers solve_lp_view(const ViewData& view, const std::vector<uint32_t>& l
           // The fragments of one texel share its kernel (41 % of them follow one of their
           // texel's): then only z_f's column changes, and the problem is the same as built anew.
           const bool same_kernel = i > run_begin[run] && view.fragments.texel[list[i - 1]] == t;
-          if (!same_kernel || !factory.move_zf(zf, problem)) {
+          if (!same_kernel) {
             // The kernel's taps in kernel_distribution's order; the extra texel index picks the
             // column (the far plane's, one past the map, for taps outside it).
             kernel_distribution(map, kernel, x, y, tap_depth, tap_weight, tap_texel);
@@ -81,22 +81,23 @@ LpViewAnswers solve_lp_view(const ViewData& view, const std::vector<uint32_t>& l
               tap_depth[n] = depth[tap_texel[n]];  // quantized in quantize mode
               tap_column[n] = &columns[tap_texel[n] * k];
             }
-            factory.from_distribution(tap_depth, tap_weight, tap_column, zf, problem);
           }
           if (box) {
-            // The kernel's taps as they are, on their own (the box needs no problem columns).
-            kernel_distribution(map, kernel, x, y, tap_depth, tap_weight, tap_texel);
-            for (int n = 0; n < taps; ++n) tap_depth[n] = depth[tap_texel[n]];
+            // lp.moment_box: the box around the kernel's stored moments needs no problem columns.
             s.call = lp::CallStatus::Ok;
             s.status = solve_box_fragment(*box, basis, disc, tap_depth, tap_weight, zf, s.G);
-          } else if (disc.continuous) {
-            // The whole interval (REFERENCE.md §2): the exchange extends a copy, from scratch, so
-            // move_zf keeps working on `problem` and answers do not depend on the schedule.
-            lp::Problem work = problem;
-            s = lp::solve_discretized(factory, work, *backend, tap_depth, tap_weight).finite;
           } else {
-            const lp::WarmStart at = warm_start_at(view.fragments.layer[f], x, y, &atoms);
-            backend->solve_into(problem, i == run_begin[run] ? nullptr : &at, s);
+            if (!same_kernel || !factory.move_zf(zf, problem))
+              factory.from_distribution(tap_depth, tap_weight, tap_column, zf, problem);
+            if (disc.continuous) {
+              // The whole interval (REFERENCE.md §2): the exchange extends a copy, from scratch,
+              // so move_zf keeps working on `problem` and answers do not depend on the schedule.
+              lp::Problem work = problem;
+              s = lp::solve_discretized(factory, work, *backend, tap_depth, tap_weight).finite;
+            } else {
+              const lp::WarmStart at = warm_start_at(view.fragments.layer[f], x, y, &atoms);
+              backend->solve_into(problem, i == run_begin[run] ? nullptr : &at, s);
+            }
           }
           if (s.call == lp::CallStatus::Ok && s.status == lp::ProblemStatus::Optimal) {
             g[f] = std::clamp(s.G, 0.0, 1.0);

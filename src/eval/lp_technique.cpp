@@ -117,15 +117,8 @@ std::optional<LpMomentBox> lp_moment_box(const std::string& setting, const Basis
 lp::ProblemStatus solve_box_fragment(const LpMomentBox& box, const Basis& basis,
                                      const lp::Discretization& disc, std::span<const double> depths,
                                      std::span<const double> weights, double zf, double& G) {
-  // The stored values as the map holds them: each tap's rounded, then filtered.
-  const size_t m = basis.size();
-  std::vector<double> center(m, 0.0), column(m);
-  for (size_t t = 0; t < depths.size(); ++t) {
-    for (size_t j = 0; j < m; ++j) column[j] = basis[j](depths[t]);
-    store_moments(box.storage, column);
-    for (size_t j = 0; j < m; ++j) center[j] += weights[t] * column[j];
-  }
-  const lp::MomentBox moment_box{center, box.tolerance, box.storage.transform, box.storage.offset};
+  const lp::MomentBox moment_box{filtered_stored_values(box.storage, basis, depths, weights),
+                                 box.tolerance, box.storage.transform, box.storage.offset};
   std::vector<double> points(depths.begin(), depths.end());
   const int grid = disc.continuous ? std::min(disc.grid, 64) : disc.grid;
   for (int k = 0; k < grid; ++k) points.push_back(disc.lo + (disc.hi - disc.lo) * k / (grid - 1));

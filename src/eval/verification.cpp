@@ -132,39 +132,53 @@ std::vector<VerifyTarget> verify_targets(const std::vector<std::string>& techniq
   evsm4_basis.push_back("-exp(-" + n + "*z)");
   evsm4_basis.push_back("exp(-" + round_trip(2 * params.evsm_c_negative) + "*z)");
   std::vector<VerifyTarget> all = {
-      {"hamburger4", {"power4"}, -4, 5, true, false, false, true},
-      {"hausdorff4", {"power4"}, 0, 1, true},
-      {"tmsm", {"trig4"}, 0, 1, true},
-      {"vsm", {"power2"}, -20, 21, true, false, true, true},
-      {"esm", {esm_basis}, -4, 1, true},
-      {"hamburger6", {"power6"}, -2, 3, true, false, false, true},
-      {"hamburger4_float",
-       {"power4"},
-       -4,
-       5,
-       false,
-       false,
-       false,
-       true,
-       true,
-       params.hamburger4_float_alpha},
-      {"hamburger4_16bit",
-       {"power4"},
-       -4,
-       5,
-       false,
-       false,
-       false,
-       true,
-       true,
-       params.hamburger4_16bit_alpha},
-      {"tmsm_float", {"trig4"}, 0, 1, false, false, false, false, true, params.tmsm_float_alpha},
+      {.technique = "hamburger4",
+       .lp_basis = {"power4"},
+       .lo = -4,
+       .hi = 5,
+       .exact = true,
+       .on_r = true},
+      {.technique = "hausdorff4", .lp_basis = {"power4"}, .exact = true},
+      {.technique = "tmsm", .lp_basis = {"trig4"}, .exact = true},
+      {.technique = "vsm",
+       .lp_basis = {"power2"},
+       .lo = -20,
+       .hi = 21,
+       .exact = true,
+       .cantelli_support = true,
+       .on_r = true},
+      {.technique = "esm", .lp_basis = {esm_basis}, .lo = -4, .exact = true},
+      {.technique = "hamburger6",
+       .lp_basis = {"power6"},
+       .lo = -2,
+       .hi = 3,
+       .exact = true,
+       .on_r = true},
+      {.technique = "hamburger4_float",
+       .lp_basis = {"power4"},
+       .lo = -4,
+       .hi = 5,
+       .on_r = true,
+       .storage_box = true,
+       .alpha = params.hamburger4_float_alpha},
+      {.technique = "hamburger4_16bit",
+       .lp_basis = {"power4"},
+       .lo = -4,
+       .hi = 5,
+       .on_r = true,
+       .storage_box = true,
+       .alpha = params.hamburger4_16bit_alpha},
+      {.technique = "tmsm_float",
+       .lp_basis = {"trig4"},
+       .storage_box = true,
+       .alpha = params.tmsm_float_alpha},
       // CSM is no lower bound: how often and by how much it exceeds the sharp bound of the same
-      // channels (VerifyTarget::exceedance).
-      {"csm", csm_channels(params.csm_terms), 0, 1},
-      {"evsm2", evsm2_basis, 0, 1, false, true},
-      {"evsm4", evsm4_basis, 0, 1, false, true},
+      // channels.
+      {.technique = "csm", .lp_basis = csm_channels(params.csm_terms), .exceedance = true},
+      {.technique = "evsm2", .lp_basis = evsm2_basis, .lower_bound = true},
+      {.technique = "evsm4", .lp_basis = evsm4_basis, .lower_bound = true},
   };
+
   std::vector<VerifyTarget> out;
   for (const auto& name : techniques) {
     auto it = std::find_if(all.begin(), all.end(),
@@ -176,7 +190,6 @@ std::vector<VerifyTarget> verify_targets(const std::vector<std::string>& techniq
                        "' has no LP ground truth in REFERENCE.md §6; valid: " + valid);
     }
     out.push_back(*it);
-    out.back().exceedance = name == "csm";
   }
   return out;
 }
@@ -232,14 +245,8 @@ VerifySolverResult verify_solver(const VerifyTarget& target, const TechniqueMake
   // filtered (the weighted sum), loaded. Serial: basis expressions are not thread-safe.
   const auto probe = make();
   const Basis& basis = probe->basis();
-  std::vector<double> column(basis.size());
   const auto stored_moments = [&](std::span<const double> depths, std::span<const double> weights) {
-    std::vector<double> moments(basis.size(), 0.0);
-    for (size_t k = 0; k < depths.size(); ++k) {
-      for (size_t j = 0; j < basis.size(); ++j) column[j] = basis[j](depths[k]);
-      store_moments(probe->storage(), column);
-      for (size_t j = 0; j < basis.size(); ++j) moments[j] += weights[k] * column[j];
-    }
+    std::vector<double> moments = filtered_stored_values(probe->storage(), basis, depths, weights);
     load_moments(probe->storage(), moments);
     return moments;
   };

@@ -253,11 +253,6 @@ long double DualCertificate::rounding() {
   return kRounding;
 }
 
-long double dual_value(const Basis& basis, const std::vector<long double>& coefficients,
-                       long double z, long double* magnitude) {
-  return DualFunction(basis, coefficients).value(z, magnitude);
-}
-
 DualCertificate certify_dual(const Basis& basis, const std::vector<long double>& coefficients,
                              double zf_in, std::span<const double> points,
                              const ContinuousDomain& domain, const ContinuousSettings& settings) {

@@ -86,10 +86,6 @@ DualCertificate certify_dual(const Basis& basis, const std::vector<long double>&
                              double zf, std::span<const double> points,
                              const ContinuousDomain& domain, const ContinuousSettings& settings);
 
-// phi = c_0 + sum_j c_j b_j(z) in long double, and sum_j |c_j b_j(z)| in `magnitude`.
-long double dual_value(const Basis& basis, const std::vector<long double>& coefficients,
-                       long double z, long double* magnitude = nullptr);
-
 class ContinuousSolver {
  public:
   explicit ContinuousSolver(const ProblemFactory& factory, ContinuousSettings settings = {})

@@ -32,6 +32,22 @@ std::vector<double> stored_rows(const Basis& basis, const MomentBox& box,
   return s;
 }
 
+// Each row's largest magnitude over the points (`s` row-major, n points a row).
+std::vector<double> largest_magnitudes(const std::vector<double>& s, size_t rows, size_t n) {
+  std::vector<double> largest(rows, 0.0);
+  for (size_t i = 0; i < rows; ++i)
+    for (size_t p = 0; p < n; ++p) largest[i] = std::max(largest[i], std::abs(s[i * n + p]));
+  return largest;
+}
+
+// The LP's row scales: the largest magnitudes, 1 for a row that is zero at every point.
+std::vector<double> row_scales(const std::vector<double>& s, size_t rows, size_t n) {
+  std::vector<double> scale = largest_magnitudes(s, rows, n);
+  for (double& x : scale)
+    if (!(x > 0)) x = 1;
+  return scale;
+}
+
 void check_box(const Basis& basis, const MomentBox& box) {
   const size_t m = basis.size();
   const bool shaped = box.transform.size() == 0 ||
@@ -55,13 +71,7 @@ class BoxLp {
     check_box(basis, box);
     glp_term_out(GLP_OFF);
     const int m = int(basis.size());
-    const std::vector<double> s = stored_rows(basis, box, points);
-    scale_.assign(m, 0.0);
-    for (int i = 0; i < m; ++i) {
-      for (size_t p = 0; p < points.size(); ++p)
-        scale_[i] = std::max(scale_[i], std::abs(s[i * points.size() + p]));
-      if (!(scale_[i] > 0)) scale_[i] = 1;
-    }
+    scale_ = row_scales(stored_rows(basis, box, points), size_t(m), points.size());
     glp_add_rows(lp_, m + 1);
     glp_set_row_bnds(lp_, 1, GLP_FX, 1, 1);
     for (int i = 0; i < m; ++i) {
@@ -201,11 +211,7 @@ class BoxLp {
 double relative_distance(const Basis& basis, const MomentBox& box, std::span<const double> points) {
   const int m = int(basis.size()), n = int(points.size());
   const std::vector<double> s = stored_rows(basis, box, points);
-  std::vector<double> scale(m, 0.0);
-  for (int i = 0; i < m; ++i) {
-    for (int p = 0; p < n; ++p) scale[i] = std::max(scale[i], std::abs(s[size_t(i) * n + p]));
-    if (!(scale[i] > 0)) scale[i] = 1;
-  }
+  const std::vector<double> scale = row_scales(s, size_t(m), size_t(n));
   glp_prob* lp = glp_create_prob();
   glp_add_rows(lp, 2 * m + 1);
   glp_add_cols(lp, n + 1);
@@ -276,15 +282,12 @@ MomentBoxAnswer solve_moment_box(const ProblemFactory& factory, const Problem& p
 std::vector<double> ulp_box(const ProblemFactory& factory, const Problem& problem, double ulps) {
   const std::vector<double> points = problem_points(problem);
   const MomentBox identity = MomentBox::of_moments(problem.moments, problem.moments);
-  const std::vector<double> s = stored_rows(factory.basis(), identity, points);
+  const std::vector<double> scale = largest_magnitudes(
+      stored_rows(factory.basis(), identity, points), problem.moments.size(), points.size());
   std::vector<double> eps(problem.moments.size());
   constexpr double kUlp = std::numeric_limits<double>::epsilon();
-  for (size_t k = 0; k < eps.size(); ++k) {
-    double scale = 0;
-    for (size_t p = 0; p < points.size(); ++p)
-      scale = std::max(scale, std::abs(s[k * points.size() + p]));
-    eps[k] = ulps * kUlp * std::max(std::abs(problem.moments[k]), scale);
-  }
+  for (size_t k = 0; k < eps.size(); ++k)
+    eps[k] = ulps * kUlp * std::max(std::abs(problem.moments[k]), scale[k]);
   return eps;
 }
 

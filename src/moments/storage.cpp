@@ -66,6 +66,19 @@ void load_moments(const MomentStorage& storage, std::span<double> q) {
   v = b;
 }
 
+std::vector<double> filtered_stored_values(const MomentStorage& storage, const Basis& basis,
+                                           std::span<const double> depths,
+                                           std::span<const double> weights) {
+  const size_t m = basis.size();
+  std::vector<double> sum(m, 0.0), column(m);
+  for (size_t k = 0; k < depths.size(); ++k) {
+    for (size_t j = 0; j < m; ++j) column[j] = basis[j](depths[k]);
+    store_moments(storage, column);
+    for (size_t j = 0; j < m; ++j) sum[j] += weights[k] * column[j];
+  }
+  return sum;
+}
+
 std::vector<double> stored_values(const MomentStorage& storage, std::span<const double> moments) {
   std::vector<double> q(moments.begin(), moments.end());
   if (storage.kind != StorageKind::Unorm16) return q;

@@ -32,6 +32,12 @@ void store_moments(const MomentStorage& storage, std::span<double> b);
 // Filtered stored values -> moments, in place (inverse transform; identity otherwise).
 void load_moments(const MomentStorage& storage, std::span<double> q);
 
+// A distribution's stored values as a map holds them after filtering, before loading: each
+// depth's b stored (rounded), then the weighted sum (load_moments turns them into moments).
+std::vector<double> filtered_stored_values(const MomentStorage& storage, const Basis& basis,
+                                           std::span<const double> depths,
+                                           std::span<const double> weights);
+
 // The values the map holds after filtering, before loading: transform * b + offset for 16-bit,
 // the moments themselves otherwise.
 std::vector<double> stored_values(const MomentStorage& storage, std::span<const double> moments);

@@ -72,14 +72,12 @@ TriangleSetup make_setup(const RasterInput& in, const std::array<uint32_t, 3>& t
   s.row1 = int(std::min<int64_t>(in.height - 1, floor_div(ymax - kHalf, kOne)));
   if (s.col0 > s.col1 || s.row0 > s.row1) return s;
   // The plane z = z0 + gx (x - x0) + gy (y - y0) of the unsnapped triangle.
-  double dx1 = p[1].x() - p[0].x(), dy1 = p[1].y() - p[0].y(), dz1 = p[1].z() - p[0].z();
-  double dx2 = p[2].x() - p[0].x(), dy2 = p[2].y() - p[0].y(), dz2 = p[2].z() - p[0].z();
-  double det = dx1 * dy2 - dx2 * dy1;
+  const std::optional<Eigen::Vector2d> gradient = plane_gradient(p[0], p[1], p[2]);
   s.x0 = p[0].x();
   s.y0 = p[0].y();
   s.z0 = p[0].z();
-  s.gx = det != 0 ? (dz1 * dy2 - dz2 * dy1) / det : 0;
-  s.gy = det != 0 ? (dx1 * dz2 - dx2 * dz1) / det : 0;
+  s.gx = gradient ? gradient->x() : 0;
+  s.gy = gradient ? gradient->y() : 0;
   // A nearly edge-on triangle has a steep plane; its depth is still bounded by its vertices'.
   s.z_min = std::min({p[0].z(), p[1].z(), p[2].z()});
   s.z_max = std::max({p[0].z(), p[1].z(), p[2].z()});
@@ -141,6 +139,15 @@ void sort_tile_fragments(std::vector<TileFragment>& fragments, std::vector<TileF
 }
 
 }  // namespace
+
+std::optional<Eigen::Vector2d> plane_gradient(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                              const Eigen::Vector3d& c) {
+  const double dx1 = b.x() - a.x(), dy1 = b.y() - a.y(), dz1 = b.z() - a.z();
+  const double dx2 = c.x() - a.x(), dy2 = c.y() - a.y(), dz2 = c.z() - a.z();
+  const double det = dx1 * dy2 - dx2 * dy1;
+  if (det == 0) return std::nullopt;
+  return Eigen::Vector2d((dz1 * dy2 - dz2 * dy1) / det, (dx1 * dz2 - dx2 * dz1) / det);
+}
 
 LayerStack rasterize(const RasterInput& in, int threads) {
   if (in.width <= 0 || in.height <= 0)

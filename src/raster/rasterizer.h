@@ -3,6 +3,7 @@
 // fragment, not only the nearest (REFERENCE.md §3).
 #include <Eigen/Core>
 #include <array>
+#include <optional>
 #include <vector>
 
 #include "raster/layer_stack.h"
@@ -18,6 +19,11 @@ struct RasterInput {
   std::vector<uint8_t> facing;  // per triangle
   bool keep_triangles = false;  // fill LayerStack::triangle (camera images need the surface)
 };
+
+// dz/dx and dz/dy of the plane through three raster-space points (the rasterizer's fragment
+// gradients); nullopt when the points are collinear in (x, y).
+std::optional<Eigen::Vector2d> plane_gradient(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                              const Eigen::Vector3d& c);
 
 // Watertight: coverage is decided exactly (vertices snapped to 1/256 texel, integer edge
 // functions, top-left tie rule), so an edge shared by two triangles covers each texel centre on it
