@@ -26,7 +26,7 @@ int run_merge(const MergeOptions& o) {
   std::vector<ResultsStore> inputs;
   for (const auto& s : o.shards) inputs.push_back(ResultsStore::open(results_database_path(s)));
   auto first = inputs[0].meta();
-  std::map<uint64_t, std::string> owner;
+  std::map<uint64_t, std::string> owner, screened;
   std::set<std::string> shard_names;
   for (size_t i = 0; i < inputs.size(); ++i) {
     auto meta = inputs[i].meta();
@@ -40,6 +40,13 @@ int run_merge(const MergeOptions& o) {
       if (!fresh)
         throw InputError("candidate " + std::to_string(id) + " is in both " + it->second + " and " +
                          o.shards[i] + ": overlapping shards");
+    }
+    // A screened sweep's estimates (sweep --screen) may overlap no more than its candidates.
+    for (uint64_t id : inputs[i].estimate_ids()) {
+      auto [it, fresh] = screened.emplace(id, o.shards[i]);
+      if (!fresh)
+        throw InputError("the estimate of candidate " + std::to_string(id) + " is in both " +
+                         it->second + " and " + o.shards[i] + ": overlapping shards");
     }
   }
   // Every shard of K/N must be there, or the merged sweep silently lacks candidates.
@@ -68,14 +75,18 @@ int run_merge(const MergeOptions& o) {
   {
     ResultsStore target = ResultsStore::create((out / "results.sqlite").string(), meta);
     for (const auto& r : inputs[0].references()) target.put_reference(r);
-    for (auto& input : inputs)
+    for (auto& input : inputs) {
       for (const auto& r : input.candidates()) target.put_candidate(r);
+      for (const auto& r : input.estimates()) target.put_estimate(r);
+    }
   }
   write_file_atomically(out / "config.yaml", first["config"]);
   out.commit();
-  std::printf("merged %zu shards (%s): %zu candidates -> %s%s\n", inputs.size(), merged.c_str(),
-              owner.size(), o.out.c_str(),
-              missing.empty() ? "" : ("; missing shards " + missing).c_str());
+  std::printf(
+      "merged %zu shards (%s): %zu candidates%s -> %s%s\n", inputs.size(), merged.c_str(),
+      owner.size(),
+      screened.empty() ? "" : (", " + std::to_string(screened.size()) + " screened").c_str(),
+      o.out.c_str(), missing.empty() ? "" : ("; missing shards " + missing).c_str());
   return 0;
 }
 

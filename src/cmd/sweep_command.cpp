@@ -18,6 +18,7 @@
 #include "eval/evaluation.h"
 #include "eval/lp_technique.h"
 #include "eval/results_store.h"
+#include "eval/screening.h"
 #include "eval/sweep_directory.h"
 #include "eval/sweep_plan.h"
 #include "eval/technique.h"
@@ -43,6 +44,24 @@ std::vector<OptionSpec> sweep_specs() {
   specs.push_back({"references", OptionType::StringList,
                    "[pcf, vsm, esm, hamburger4, hausdorff4, hamburger6, tmsm, lp:power4, lp:trig4]",
                    "Techniques evaluated once on the same dataset, for the report."});
+  specs.push_back({"screen.fraction", OptionType::Number, "0",
+                   "Screening: every candidate first on this share of each view's warm-start runs "
+                   "(the same runs for all), with a standard error; 0 = every candidate exactly.",
+                   0, 1});
+  specs.push_back({"screen.top", OptionType::Integer, "20",
+                   "Screening: candidates whose interval reaches the best K estimates are "
+                   "evaluated exactly.",
+                   1, 1e9});
+  specs.push_back({"screen.sigmas", OptionType::Number, "3",
+                   "Screening: standard errors of a candidate's paired difference from the K-th "
+                   "best estimate that still count as reaching it.",
+                   0, 100});
+  specs.push_back({"screen.margin", OptionType::Number, "0",
+                   "Screening: mean error (a fraction: 1e-4 = 0.01 %) by which a candidate may "
+                   "trail the K-th best estimate and still be evaluated exactly.",
+                   0, 1});
+  specs.push_back(
+      {"screen.seed", OptionType::Integer, "1", "Screening: seed of the sampled runs.", 0, 1e18});
   return specs;
 }
 
@@ -52,6 +71,8 @@ struct SweepOptions {
   CommonOptions common;
   bool resume = false;
   std::string shard = "1/1";
+  double screen = 0;
+  bool screen_given = false;  // --screen F: = --set screen.fraction=F
 };
 
 // FNV-1a of the effective config without `threads` (which never changes results): a resume or a
@@ -81,8 +102,148 @@ std::vector<std::pair<std::string, double>> view_errors(const std::vector<ViewDa
   return out;
 }
 
+// A candidate's committed row from its exact evaluation.
+ResultRow exact_row(const SweepPlan& plan, uint64_t id, const CandidateResult& result,
+                    const std::vector<ViewData>& views,
+                    std::chrono::steady_clock::time_point start) {
+  ResultRow row =
+      make_result_row(id, plan.name(id), result.overall, view_errors(views, result.per_view));
+  row.solved = result.solved;
+  row.skipped = result.skipped;
+  row.infeasible = result.infeasible;
+  row.unstable = result.unstable;
+  row.darkening_bound = kLpDarkeningBound;
+  row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return row;
+}
+
+std::string rate_note(uint64_t lps, std::chrono::steady_clock::time_point since) {
+  const double elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+  char note[64];
+  std::snprintf(note, sizeof note, "%.3g LP/s", lps / std::max(elapsed, 1e-9));
+  return note;
+}
+
+// Screening (issue 33, eval/screening.h): every candidate of this shard on the sample, one
+// committed estimate each; then, once the database holds every planned candidate's estimate (one
+// shard, or the merged shards resumed), the candidates that reach the best K exactly.
+template <class EvaluateExactly>
+void screen_and_confirm(const SweepOptions& options, const Config& config, const SweepPlan& plan,
+                        const std::vector<uint64_t>& mine, int shards,
+                        const CandidateEvaluator& evaluator, ResultsStore& store,
+                        EvaluateExactly& evaluate_exactly) {
+  const bool quiet = options.common.quiet;
+  // The pilot, the catalog's first combination (z; z^2; z^3; z^4 in REFERENCE.md §5's), exactly:
+  // its run errors are what every candidate's sampled runs are compared with (screening.h). When
+  // it is a planned candidate of this shard, its exact row is kept too.
+  const uint64_t pilot = 0;
+  std::vector<std::vector<double>> pilot_shadow;
+  {
+    if (!quiet)
+      std::fprintf(stderr, "sweep: the screen's pilot %s, exactly\n", plan.name(pilot).c_str());
+    const auto start = std::chrono::steady_clock::now();
+    const CandidateResult result =
+        evaluator.evaluate(Basis::parse(plan.functions(pilot)), &pilot_shadow);
+    if (std::binary_search(mine.begin(), mine.end(), pilot) && !store.candidate_ids().count(pilot))
+      store.put_candidate(exact_row(plan, pilot, result, evaluator.views(), start));
+  }
+  const ScreenSample sample =
+      make_screen_sample(evaluator.views(), evaluator.lp_lists(), pilot_shadow,
+                         config.number("screen.fraction"), uint64_t(config.integer("screen.seed")));
+  const auto screened = store.estimate_ids();
+  std::vector<uint64_t> todo;
+  for (uint64_t id : mine)
+    if (!screened.count(id)) todo.push_back(id);
+  if (!quiet)
+    std::fprintf(stderr,
+                 "sweep: screening %zu candidates in this shard (%zu done) on %zu of %zu "
+                 "warm-start runs, %llu of %llu LPs per candidate\n",
+                 mine.size(), mine.size() - todo.size(), sample.sampled_runs(), sample.runs(),
+                 (unsigned long long)sample.sampled_lps(),
+                 (unsigned long long)evaluator.lp_fragments());
+  {
+    ProgressBar bar("screen", todo.size(), quiet);
+    const auto start_all = std::chrono::steady_clock::now();
+    uint64_t lps = 0;
+    for (const uint64_t id : todo) {
+      const auto start = std::chrono::steady_clock::now();
+      EstimateRow row;
+      row.id = id;
+      row.name = plan.name(id);
+      CandidateResult counts;
+      try {
+        row.run_errors = evaluator.screen(Basis::parse(plan.functions(id)), sample, &counts);
+      } catch (const InputError& e) {
+        if (!quiet)
+          std::fprintf(stderr, "\ncandidate %llu: %s\n", (unsigned long long)id, e.what());
+        // As in the exact sweep: every LP fragment failed, shown lit (G = 0).
+        counts = {};
+        counts.unstable = sample.sampled_lps();
+        for (size_t v = 0; v < sample.strata.size(); ++v) {
+          const ScreenStratum& s = sample.strata[v];
+          for (size_t r = 0; r < s.sampled(); ++r) {
+            ErrorStats run;
+            for (size_t i = s.run_begin[r]; i < s.run_begin[r + 1]; ++i)
+              run.add(evaluator.views()[v].fragments.pcf[s.list[i]], 0.0);
+            row.run_errors.push_back(run.sum_abs);
+          }
+        }
+      }
+      const ScreenEstimate estimate = estimate_mean_error(sample, row.run_errors);
+      row.mean = estimate.mean;
+      row.se = estimate.se;
+      row.solved = counts.solved;
+      row.failed = counts.infeasible + counts.unstable;
+      row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      store.put_estimate(row);
+      lps += counts.solved + row.failed;
+      bar.set_note(rate_note(lps, start_all));
+      bar.advance();
+    }
+    bar.finish();
+  }
+  // The confirmation compares every planned candidate: it waits for all shards.
+  const std::vector<EstimateRow> estimates = store.estimates();
+  if (shards > 1 || estimates.size() < plan.ids.size()) {
+    if (!quiet)
+      std::fprintf(stderr,
+                   "sweep: screened %zu of %zu planned candidates; the exact confirmation runs "
+                   "when all are screened: merge the shards, then `sweep --resume` in the merged "
+                   "directory\n",
+                   estimates.size(), plan.ids.size());
+    return;
+  }
+  std::vector<std::vector<double>> run_errors;
+  for (const auto& e : estimates) {
+    if (e.run_errors.size() != sample.sampled_runs())
+      throw InputError("candidate " + std::to_string(e.id) + ": its estimate has " +
+                       std::to_string(e.run_errors.size()) + " run errors, this sample " +
+                       std::to_string(sample.sampled_runs()) +
+                       ": the database was screened on other views");
+    run_errors.push_back(e.run_errors);
+  }
+  ScreenRule rule;
+  rule.top = int(config.integer("screen.top"));
+  rule.sigmas = config.number("screen.sigmas");
+  rule.margin = config.number("screen.margin");
+  const auto exact_done = store.candidate_ids();
+  std::vector<uint64_t> confirm;
+  for (size_t c : candidates_to_confirm(sample, run_errors, rule))
+    if (!exact_done.count(estimates[c].id)) confirm.push_back(estimates[c].id);
+  if (!quiet)
+    std::fprintf(stderr,
+                 "sweep: %zu candidates reach the best %d estimates within %g standard errors "
+                 "and %g; %zu of them to evaluate exactly\n",
+                 confirm.size() + exact_done.size(), rule.top, rule.sigmas, rule.margin,
+                 confirm.size());
+  evaluate_exactly(confirm, "confirm");
+}
+
 int run_sweep(const SweepOptions& options) {
   Config config = resolve_config(sweep_specs(), options.common);
+  if (options.screen_given)
+    config.set_node("screen.fraction", YAML::Node(options.screen), "--screen");
   if (options.common.print_config) {
     std::fputs(config.to_yaml().c_str(), stdout);
     return 0;
@@ -156,56 +317,52 @@ int run_sweep(const SweepOptions& options) {
   }
 
   CandidateEvaluator evaluator(views, settings);
-  const auto done = store.candidate_ids();
-  std::vector<uint64_t> todo;
-  for (uint64_t id : shard_ids(plan, shard, shards))
-    if (!done.count(id)) todo.push_back(id);
-  if (!options.common.quiet)
-    std::fprintf(
-        stderr,
-        "sweep: %zu candidates in this shard, %zu done, %zu to go; %llu LPs per candidate\n",
-        todo.size() + done.size(), done.size(), todo.size(),
-        (unsigned long long)evaluator.lp_fragments());
-  ProgressBar bar("sweep", todo.size(), options.common.quiet);
-  const auto sweep_start = std::chrono::steady_clock::now();
-  uint64_t lps = 0;
-  for (size_t i = 0; i < todo.size(); ++i) {
-    const uint64_t id = todo[i];
-    auto start = std::chrono::steady_clock::now();
-    CandidateResult result;
-    try {
-      result = evaluator.evaluate(Basis::parse(plan.functions(id)));
-    } catch (const InputError& e) {
-      // A numerically dependent combination cannot be solved: recorded with every LP fragment
-      // failed (shown lit), flagged in the report, and the sweep goes on.
-      if (!options.common.quiet)
-        std::fprintf(stderr, "\ncandidate %llu: %s\n", (unsigned long long)id, e.what());
-      result.unstable = evaluator.lp_fragments();
-      for (const auto& view : views) {
-        ErrorStats s;
-        s.add_all(view.fragments.pcf, std::vector<double>(view.fragments.size(), 0.0));
-        result.overall.merge(s);
-        result.per_view.push_back(s);
+  // Candidates evaluated exactly, one committed row each (a numerically dependent combination is
+  // recorded with every LP failed, shown lit, and the sweep goes on).
+  auto evaluate_exactly = [&](const std::vector<uint64_t>& todo, const char* what) {
+    ProgressBar bar(what, todo.size(), options.common.quiet);
+    const auto sweep_start = std::chrono::steady_clock::now();
+    uint64_t lps = 0;
+    for (const uint64_t id : todo) {
+      auto start = std::chrono::steady_clock::now();
+      CandidateResult result;
+      try {
+        result = evaluator.evaluate(Basis::parse(plan.functions(id)));
+      } catch (const InputError& e) {
+        if (!options.common.quiet)
+          std::fprintf(stderr, "\ncandidate %llu: %s\n", (unsigned long long)id, e.what());
+        result.unstable = evaluator.lp_fragments();
+        for (const auto& view : views) {
+          ErrorStats s;
+          s.add_all(view.fragments.pcf, std::vector<double>(view.fragments.size(), 0.0));
+          result.overall.merge(s);
+          result.per_view.push_back(s);
+        }
       }
+      store.put_candidate(exact_row(plan, id, result, views, start));
+      lps += result.solved + result.infeasible + result.unstable;
+      bar.set_note(rate_note(lps, sweep_start));
+      bar.advance();
     }
-    ResultRow row =
-        make_result_row(id, plan.name(id), result.overall, view_errors(views, result.per_view));
-    row.solved = result.solved;
-    row.skipped = result.skipped;
-    row.infeasible = result.infeasible;
-    row.unstable = result.unstable;
-    row.darkening_bound = kLpDarkeningBound;
-    row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    store.put_candidate(row);
-    lps += result.solved + result.infeasible + result.unstable;
-    double elapsed =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - sweep_start).count();
-    char note[64];
-    std::snprintf(note, sizeof note, "%.3g LP/s", lps / std::max(elapsed, 1e-9));
-    bar.set_note(note);
-    bar.advance();
+    bar.finish();
+  };
+  const auto exact_done = store.candidate_ids();
+  const std::vector<uint64_t> mine = shard_ids(plan, shard, shards);
+  const double fraction = config.number("screen.fraction");
+  if (fraction <= 0) {
+    std::vector<uint64_t> todo;
+    for (uint64_t id : mine)
+      if (!exact_done.count(id)) todo.push_back(id);
+    if (!options.common.quiet)
+      std::fprintf(
+          stderr,
+          "sweep: %zu candidates in this shard, %zu done, %zu to go; %llu LPs per candidate\n",
+          mine.size(), mine.size() - todo.size(), todo.size(),
+          (unsigned long long)evaluator.lp_fragments());
+    evaluate_exactly(todo, "sweep");
+  } else {
+    screen_and_confirm(options, config, plan, mine, shards, evaluator, store, evaluate_exactly);
   }
-  bar.finish();
   if (!options.common.quiet)
     std::fprintf(stderr, "sweep: %s complete\n", (out / "results.sqlite").c_str());
   return 0;
@@ -221,7 +378,12 @@ void register_sweep_command(CLI::App& app, std::function<int()>& action) {
   command->add_flag("--resume", options->resume,
                     "Continue the sweep in --out (same config required)");
   command->add_option("--shard", options->shard, "Run shard K of N (K/N): every N-th candidate");
-  command->callback([options, &action] { action = [options] { return run_sweep(*options); }; });
+  CLI::Option* screen = command->add_option(
+      "--screen", options->screen, "= --set screen.fraction=F: screen, then confirm the best");
+  command->callback([options, screen, &action] {
+    options->screen_given = screen->count() > 0;
+    action = [options] { return run_sweep(*options); };
+  });
 }
 
 }  // namespace mb

@@ -8,6 +8,7 @@
 
 #include "eval/error_stats.h"
 #include "eval/evaluation.h"
+#include "eval/screening.h"
 #include "moments/basis.h"
 
 namespace mb {
@@ -26,6 +27,14 @@ class CandidateEvaluator {
   CandidateResult evaluate(const Basis& basis,
                            std::vector<std::vector<double>>* shadow = nullptr) const;
   uint64_t lp_fragments() const;  // LPs per candidate
+  // Per view, the fragments that need an LP (ascending): what a screening sample is drawn from.
+  const std::vector<std::vector<uint32_t>>& lp_lists() const { return needs_lp_; }
+  const std::vector<ViewData>& views() const { return views_; }
+  // The sampled runs' error sums, sum |PCF - G| of each (screening.h), strata in order; each run
+  // solved as evaluate() solves it, so the sums are the same bits as the full evaluation's.
+  // `outcome` (optional) gets the LP counts.
+  std::vector<double> screen(const Basis& basis, const ScreenSample& sample,
+                             CandidateResult* outcome = nullptr) const;
 
  private:
   const std::vector<ViewData>& views_;

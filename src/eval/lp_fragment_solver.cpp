@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <memory>
 
 #include "eval/lp_technique.h"
 #include "eval/warm_runs.h"
@@ -28,21 +29,38 @@ LpViewAnswers solve_lp_view(const ViewData& view, const std::vector<uint32_t>& l
   const int taps = kernel.size * kernel.size;
   uint64_t solved = 0, infeasible = 0, unstable = 0;
   const ShadowMap& map = view.map;
-  // Transformed columns T (1, b(z)) of every texel's layer-0 depth, and of the far plane.
-  std::vector<double> depth(map.depth);
-  if (disc.quantize)
-    for (double& z : depth) z = lp::quantize_to_grid(disc, z);
-  depth.push_back(disc.quantize ? lp::quantize_to_grid(disc, 1.0)
-                                : 1.0);  // outside: index = map size
-  const size_t texels = depth.size();
-  std::vector<double> raw(texels * k), columns(texels * k), values(texels);
-  for (size_t t = 0; t < texels; ++t) raw[t * k] = 1;
+  // Transformed columns T (1, b(z)) of the layer-0 depths the fragments' kernels reach (every
+  // texel of a full evaluation; a screen's sample reaches a few bands), and of the far plane.
+  // Columns of rows no kernel reaches are never read, nor written: the buffers stay uninitialised.
+  const int reach = kernel.radius();
+  std::vector<char> row_needed(map.height, 0);
+  for (size_t i = 0; i < list.size(); ++i) {
+    const int y = int(view.fragments.texel[list[i]] / map.width);
+    if (i > 0 && view.fragments.texel[list[i - 1]] / map.width == size_t(y)) continue;
+    for (int yy = std::max(0, y - reach); yy <= std::min(map.height - 1, y + reach); ++yy)
+      row_needed[yy] = 1;
+  }
+  std::vector<size_t> needed;  // texel indices, ascending, the far plane's (map size) last
+  for (int y = 0; y < map.height; ++y)
+    if (row_needed[y])
+      for (int x = 0; x < map.width; ++x) needed.push_back(size_t(y) * map.width + x);
+  needed.push_back(map.depth.size());
+  const size_t texels = map.depth.size() + 1;  // outside: index = map size
+  std::vector<double> depth(texels);
+  std::vector<double> picked(needed.size()), values(needed.size());
+  for (size_t n = 0; n < needed.size(); ++n) {
+    const double z = needed[n] < map.depth.size() ? map.depth[needed[n]] : 1.0;
+    picked[n] = depth[needed[n]] = disc.quantize ? lp::quantize_to_grid(disc, z) : z;
+  }
+  std::unique_ptr<double[]> raw(new double[needed.size() * k]), columns(new double[texels * k]);
+  for (size_t n = 0; n < needed.size(); ++n) raw[n * k] = 1;
   for (int j = 0; j < m; ++j) {
-    basis[j].evaluate(depth, values);
-    for (size_t t = 0; t < texels; ++t) raw[t * k + j + 1] = values[t];
+    basis[j].evaluate(picked, values);
+    for (size_t n = 0; n < needed.size(); ++n) raw[n * k + j + 1] = values[n];
   }
 #pragma omp parallel for schedule(static) num_threads(settings.threads)
-  for (size_t t = 0; t < texels; ++t) factory.transform(&raw[t * k], &columns[t * k]);
+  for (size_t n = 0; n < needed.size(); ++n)
+    factory.transform(&raw[n * k], &columns[needed[n] * k]);
 
   // Warm-start runs (bands of kWarmRunRows texel rows; fragments are in texel order): each
   // run is solved in order by one thread, first from scratch, so the answers do not depend on

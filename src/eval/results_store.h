@@ -26,6 +26,21 @@ struct ResultRow {
   std::string view_errors;       // JSON object: "scene/view" -> mean error
   std::string histogram;         // comma-separated counts of ErrorStats::kHistogramBins bins
   double seconds = 0;            // wall time (not part of the results' identity)
+  // A screened candidate that was not evaluated exactly (report only): `mean` is its estimate,
+  // `se` the estimate's standard error, and the other statistics are unknown.
+  bool estimated = false;
+  double se = 0;
+};
+
+// A screened candidate (eval/screening.h): its estimated mean error, the standard error, and the
+// sampled runs' error sums that the confirmation compares candidates by.
+struct EstimateRow {
+  uint64_t id = 0;
+  std::string name;
+  double mean = 0, se = 0;
+  uint64_t solved = 0, failed = 0;  // LPs of the sample: optimal; infeasible or unstable
+  std::vector<double> run_errors;   // stored as their bytes: the confirmation reads the same bits
+  double seconds = 0;
 };
 
 class ResultsStore {
@@ -43,6 +58,10 @@ class ResultsStore {
   void put_reference(const ResultRow& row);
   std::vector<ResultRow> candidates() const;  // by id
   std::vector<ResultRow> references() const;  // by name
+  // Screening (sweep --screen): one committed row per screened candidate.
+  std::set<uint64_t> estimate_ids() const;
+  void put_estimate(const EstimateRow& row);
+  std::vector<EstimateRow> estimates() const;  // by id
 
  private:
   ResultsStore(sqlite3* db, std::string path) : db_(db), path_(std::move(path)) {}

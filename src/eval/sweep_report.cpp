@@ -72,6 +72,12 @@ uint64_t planned_total(const SweepSeries& s) {
 
 std::string row_line(size_t rank, const ResultRow& r) {
   std::ostringstream s;
+  if (r.estimated) {  // an estimate: its standard error, and nothing the sample cannot tell
+    s << "| " << rank << " | " << r.id << " | " << r.name << " | ≈ " << percent_text(r.mean)
+      << " ± " << percent_text(r.se) << " (estimate) | - | - | " << r.solved << " of a sample | "
+      << r.unstable << " |";
+    return s.str();
+  }
   s << "| " << rank << " | " << r.id << " | " << r.name << " | " << percent_text(r.mean) << " | "
     << percent_text(r.leak) << " | " << darkening_text(r.dark, r.max_dark, r.darkening_bound)
     << " | " << r.solved << " | " << (r.infeasible + r.unstable) << " |";
@@ -276,11 +282,28 @@ std::vector<SweepSeries> load_sweep_series(const std::vector<std::string>& datab
     s.meta = store.meta();
     s.ranked = store.candidates();
     s.references = store.references();
+    s.exact = s.ranked.size();
+    // Screened candidates without an exact row join as estimates.
+    const std::set<uint64_t> exact = store.candidate_ids();
+    for (const EstimateRow& e : store.estimates()) {
+      if (exact.count(e.id)) continue;
+      ResultRow r;
+      r.id = e.id;
+      r.name = e.name;
+      r.mean = e.mean;
+      r.se = e.se;
+      r.solved = e.solved;
+      r.unstable = e.failed;
+      r.estimated = true;
+      s.ranked.push_back(std::move(r));
+      ++s.estimated;
+    }
     if (s.ranked.empty()) throw InputError(s.database + ": no candidates evaluated yet");
     std::stable_sort(s.ranked.begin(), s.ranked.end(),
                      [](const auto& a, const auto& b) { return a.mean < b.mean; });
     s.size = std::stoi(s.meta["combination_size"]);
     s.label = std::to_string(s.size) + (s.size == 1 ? " function" : " functions");
+    if (s.estimated) s.label += " (screened)";
     for (const char* key : kComparableKeys)
       if (!out.empty() && s.meta[key] != out.front().meta[key])
         throw InputError(s.database + ": " + key + " '" + s.meta[key] + "' differs from " +
@@ -308,7 +331,8 @@ SweepReportTables sweep_report_tables(const std::vector<SweepSeries>& series, in
   std::ostringstream candidates, histogram, summary, references;
   candidates << "series,rank,id,functions,mean_error,leak,over_darkening,max_over_darkening,max_"
                 "error,share_over_0.1,"
-                "fragments,solved,skipped,infeasible,unstable,view_errors\n";
+                "fragments,solved,skipped,infeasible,unstable,view_errors,exact,standard_"
+                "error\n";
   double lo = series.front().best(), hi = lo;
   for (const auto& s : series) {
     lo = std::min(lo, s.best());
@@ -321,8 +345,8 @@ SweepReportTables sweep_report_tables(const std::vector<SweepSeries>& series, in
                  << round_trip(r.mean) << "," << round_trip(r.leak) << "," << round_trip(r.dark)
                  << "," << round_trip(r.max_dark) << "," << round_trip(r.max) << ","
                  << round_trip(r.share_over_tenth) << "," << r.fragments << "," << r.solved << ","
-                 << r.skipped << "," << r.infeasible << "," << r.unstable << ",\"" << views
-                 << "\"\n";
+                 << r.skipped << "," << r.infeasible << "," << r.unstable << ",\"" << views << "\","
+                 << (r.estimated ? 0 : 1) << "," << round_trip(r.se) << "\n";
     }
   }
   hi = std::max(hi, lo + 1e-12);
@@ -391,7 +415,14 @@ std::string sweep_report_markdown(const std::vector<SweepSeries>& series,
        << "receiver-plane reference: the part of every candidate's error that is the bias's, not "
           "the moments'.\n\n";
 
-  md << "## Histogram\n\n" << histogram_note;
+  md << "## Histogram\n\n";
+  for (const auto& s : series)
+    if (s.estimated)
+      md << "Series \"" << s.label << "\" was screened (`sweep --screen`): its histogram shows "
+         << s.estimated << " screened estimates and " << s.exact
+         << " exact means (the candidates whose interval reached the best ones, and the pilot). "
+            "Estimates are marked ≈ with their standard error in the tables.\n\n";
+  md << histogram_note;
   findings(md, series);
 
   md << "## Reference techniques on the same dataset\n\n| technique | mean error % | leak % | "

@@ -15,9 +15,12 @@ struct SweepSeries {
   std::string database;                     // path of its results.sqlite
   std::string label;                        // "4 functions", unique within a report
   std::map<std::string, std::string> meta;  // ResultsStore::meta
-  std::vector<ResultRow> ranked;            // candidates by mean error, ties by id
-  std::vector<ResultRow> references;        // by name
-  int size = 0;                             // functions per candidate
+  // Candidates by mean error, ties by id. A screened sweep's (sweep --screen) holds every screened
+  // candidate: the exact row where it was evaluated exactly, its estimate (estimated) otherwise.
+  std::vector<ResultRow> ranked;
+  size_t exact = 0, estimated = 0;    // rows of each kind in `ranked`
+  std::vector<ResultRow> references;  // by name
+  int size = 0;                       // functions per candidate
   double best() const { return ranked.front().mean; }
   double median() const;
   // Candidates whose mean error is at most the best's plus `margin` (absolute, as a fraction).

@@ -1,0 +1,181 @@
+#include "eval/screening.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "eval/error_stats.h"
+#include "eval/warm_runs.h"
+
+namespace mb {
+
+namespace {
+
+// splitmix64: a seeded order of runs that does not depend on the standard library's shuffle.
+uint64_t mix(uint64_t x) {
+  x += 0x9e3779b97f4a7c15ull;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+  return x ^ (x >> 31);
+}
+
+// The variance of the estimated total sum_h (R_h / n_h) sum_i r_hi from the sampled residuals r
+// (run errors minus the pilot's, or one candidate's minus another's). Each of the n sampled runs
+// stands for z_i = n (R_h / n_h) r_i, and the variance is that of the mean of n independent draws
+// of z, s_z^2 / n, times the finite population correction 1 - n / R (Cochran, Sampling
+// Techniques, §9A.4). This ignores the strata, which can only overstate the variance, and it is
+// what makes the standard error honest here: a view has two or three sampled runs at F = 0.05,
+// too few for its own variance, and the run errors are heavy tailed.
+template <class Residual>
+double sample_variance(const ScreenSample& sample, Residual residual) {
+  const size_t n = sample.sampled_runs(), runs = sample.runs();
+  if (n < 2 || n == runs) return 0;
+  std::vector<double> z;
+  z.reserve(n);
+  size_t at = 0;
+  for (const auto& s : sample.strata) {
+    const size_t m = s.sampled();
+    if (m == s.runs) {  // a view sampled whole adds nothing uncertain
+      at += m;
+      continue;
+    }
+    for (size_t i = 0; i < m; ++i)
+      z.push_back(double(n) * double(s.runs) / double(m) * residual(at + i));
+    at += m;
+  }
+  if (z.size() < 2) return 0;
+  double mean = 0;
+  for (double v : z) mean += v;
+  mean /= double(z.size());
+  double squares = 0;
+  for (double v : z) squares += (v - mean) * (v - mean);
+  const double draws = double(z.size());
+  return (1 - double(n) / double(runs)) * squares / (draws * (draws - 1));
+}
+
+}  // namespace
+
+size_t ScreenSample::sampled_runs() const {
+  size_t n = 0;
+  for (const auto& s : strata) n += s.sampled();
+  return n;
+}
+
+uint64_t ScreenSample::sampled_lps() const {
+  uint64_t n = 0;
+  for (const auto& s : strata) n += s.list.size();
+  return n;
+}
+
+size_t ScreenSample::runs() const {
+  size_t n = 0;
+  for (const auto& s : strata) n += s.runs;
+  return n;
+}
+
+ScreenSample make_screen_sample(const std::vector<ViewData>& views,
+                                const std::vector<std::vector<uint32_t>>& needs_lp,
+                                const std::vector<std::vector<double>>& pilot_shadow,
+                                double fraction, uint64_t seed) {
+  ScreenSample sample;
+  sample.fraction = fraction;
+  for (size_t v = 0; v < views.size(); ++v) {
+    const Fragments& fragments = views[v].fragments;
+    const std::vector<uint32_t>& list = needs_lp[v];
+    sample.fragments += fragments.size();
+    // G = 0 for every candidate where no LP is needed: |PCF - 0| once, in fragment order.
+    std::vector<bool> lp(fragments.size(), false);
+    for (uint32_t f : list) lp[f] = true;
+    for (size_t f = 0; f < fragments.size(); ++f)
+      if (!lp[f]) sample.fixed_error += std::abs(fragments.pcf[f]);
+    // The runs exactly as solve_lp_view cuts them.
+    const std::vector<size_t> begins = warm_run_begins(
+        list.size(), views[v].map.width, [&](size_t i) { return fragments.texel[list[i]]; });
+    ScreenStratum s;
+    s.runs = begins.size() - 1;
+    s.lps = list.size();
+    std::vector<double> pilot(s.runs);
+    for (size_t r = 0; r < s.runs; ++r) {
+      ErrorStats run;  // as CandidateEvaluator::screen sums a run
+      for (size_t i = begins[r]; i < begins[r + 1]; ++i)
+        run.add(fragments.pcf[list[i]], pilot_shadow[v][list[i]]);
+      pilot[r] = run.sum_abs;
+      s.pilot_total += run.sum_abs;
+    }
+    const size_t want =
+        fraction >= 1 ? s.runs
+                      : std::min(s.runs, std::max<size_t>(std::min<size_t>(2, s.runs),
+                                                          size_t(std::ceil(fraction * s.runs))));
+    std::vector<std::pair<uint64_t, size_t>> keyed;
+    for (size_t r = 0; r < s.runs; ++r) {
+      const uint64_t band =
+          uint64_t(warm_run_of(fragments.texel[list[begins[r]]], views[v].map.width));
+      keyed.push_back({mix(mix(seed ^ (uint64_t(v) << 40)) ^ band), r});
+    }
+    std::partial_sort(keyed.begin(), keyed.begin() + want, keyed.end());
+    std::vector<size_t> chosen;
+    for (size_t i = 0; i < want; ++i) chosen.push_back(keyed[i].second);
+    std::sort(chosen.begin(), chosen.end());
+    for (size_t r : chosen) {
+      s.pilot.push_back(pilot[r]);
+      s.run_begin.push_back(s.list.size());
+      s.list.insert(s.list.end(), list.begin() + long(begins[r]),
+                    list.begin() + long(begins[r + 1]));
+    }
+    s.run_begin.push_back(s.list.size());
+    sample.strata.push_back(std::move(s));
+  }
+  return sample;
+}
+
+ScreenEstimate estimate_mean_error(const ScreenSample& sample,
+                                   const std::vector<double>& run_errors) {
+  double total = sample.fixed_error;
+  const double* y = run_errors.data();
+  std::vector<double> residual;  // run error minus the pilot's, strata in order
+  for (const auto& s : sample.strata) {
+    const size_t n = s.sampled();
+    if (n == s.runs) {  // every run: the exact sum
+      for (size_t i = 0; i < n; ++i) total += y[i];
+    } else if (n > 0) {
+      // The pilot's exact total plus the runs' mean difference from the pilot, scaled up.
+      double difference = 0;
+      for (size_t i = 0; i < n; ++i) difference += y[i] - s.pilot[i];
+      total += s.pilot_total + double(s.runs) * difference / double(n);
+    }
+    for (size_t i = 0; i < n; ++i) residual.push_back(y[i] - (n == s.runs ? 0.0 : s.pilot[i]));
+    y += n;
+  }
+  const double n = double(std::max<uint64_t>(sample.fragments, 1));
+  const double variance = sample_variance(sample, [&](size_t i) { return residual[i]; });
+  return {total / n, std::sqrt(variance) / n};
+}
+
+double paired_standard_error(const ScreenSample& sample, const std::vector<double>& a,
+                             const std::vector<double>& b) {
+  const double variance = sample_variance(sample, [&](size_t i) { return a[i] - b[i]; });
+  return std::sqrt(variance) / double(std::max<uint64_t>(sample.fragments, 1));
+}
+
+std::vector<size_t> candidates_to_confirm(const ScreenSample& sample,
+                                          const std::vector<std::vector<double>>& run_errors,
+                                          const ScreenRule& rule) {
+  const size_t count = run_errors.size();
+  std::vector<size_t> all(count);
+  std::iota(all.begin(), all.end(), size_t(0));
+  if (rule.top <= 0 || count <= size_t(rule.top)) return all;
+  std::vector<double> mean(count);
+  for (size_t c = 0; c < count; ++c) mean[c] = estimate_mean_error(sample, run_errors[c]).mean;
+  std::vector<size_t> order = all;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t a, size_t b) { return mean[a] < mean[b]; });
+  const size_t r = order[size_t(rule.top) - 1];
+  std::vector<size_t> confirm;
+  for (size_t c = 0; c < count; ++c) {
+    const double se = paired_standard_error(sample, run_errors[c], run_errors[r]);
+    if (mean[c] - mean[r] - rule.sigmas * se <= rule.margin) confirm.push_back(c);
+  }
+  return confirm;
+}
+
+}  // namespace mb
