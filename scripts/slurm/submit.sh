@@ -8,5 +8,9 @@ shift 3
 here=$(cd "$(dirname "$0")" && pwd)
 export MOMENTBENCH_REPO=${MOMENTBENCH_REPO:-$(cd "$here/../.." && pwd)}
 job=$(sbatch --parsable "$@" --array=1-"$n" "$here/sweep_array.sh" "$config" "$outroot")
-merge=$(sbatch --parsable "$@" --cpus-per-task=1 --dependency=afterok:"$job" "$here/merge_and_report.sh" "$outroot")
+# The merge needs one core, unless the sweep is screened: then it also confirms the best candidates
+# exactly, with the shards' cores.
+merge_cpus=(--cpus-per-task=1)
+grep -Eq "^screen(:|\.)" "$config" && merge_cpus=()
+merge=$(sbatch --parsable "$@" "${merge_cpus[@]}" --dependency=afterok:"$job" "$here/merge_and_report.sh" "$outroot")
 echo "submitted sweep array $job ($n shards) and its merge $merge"

@@ -74,11 +74,13 @@ int run_merge(const MergeOptions& o) {
   if (!missing.empty()) meta["missing_shards"] = missing;
   {
     ResultsStore target = ResultsStore::create((out / "results.sqlite").string(), meta);
-    for (const auto& r : inputs[0].references()) target.put_reference(r);
-    for (auto& input : inputs) {
-      for (const auto& r : input.candidates()) target.put_candidate(r);
-      for (const auto& r : input.estimates()) target.put_estimate(r);
-    }
+    target.batch([&] {
+      for (const auto& r : inputs[0].references()) target.put_reference(r);
+      for (auto& input : inputs) {
+        for (const auto& r : input.candidates()) target.put_candidate(r);
+        for (const auto& r : input.estimates()) target.put_estimate(r);
+      }
+    });
   }
   write_file_atomically(out / "config.yaml", first["config"]);
   out.commit();

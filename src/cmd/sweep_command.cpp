@@ -49,19 +49,20 @@ std::vector<OptionSpec> sweep_specs() {
                    "(the same runs for all), with a standard error; 0 = every candidate exactly.",
                    0, 1});
   specs.push_back({"screen.top", OptionType::Integer, "20",
-                   "Screening: candidates whose interval reaches the best K estimates are "
-                   "evaluated exactly.",
+                   "Screening: K. The best K estimates, and every candidate whose interval "
+                   "reaches the K-th (screen.sigmas, screen.margin), are evaluated exactly.",
                    1, 1e9});
   specs.push_back({"screen.sigmas", OptionType::Number, "3",
                    "Screening: standard errors of a candidate's paired difference from the K-th "
                    "best estimate that still count as reaching it.",
                    0, 100});
   specs.push_back({"screen.margin", OptionType::Number, "0",
-                   "Screening: mean error (a fraction: 1e-4 = 0.01 %) by which a candidate may "
-                   "trail the K-th best estimate and still be evaluated exactly.",
-                   0, 1});
+                   "Screening: mean error (a fraction: 1e-4 = 0.01 pp) by which a candidate's "
+                   "interval may miss the K-th best estimate and still be evaluated exactly; "
+                   "negative: differences below |margin| are ties.",
+                   -1, 1});
   specs.push_back(
-      {"screen.seed", OptionType::Integer, "1", "Screening: seed of the sampled runs.", 0, 1e18});
+      {"screen.seed", OptionType::Integer, "1", "Screening: seed of the sampled units.", 0, 1e18});
   return specs;
 }
 
@@ -163,10 +164,8 @@ void screen_and_confirm(const SweepOptions& options, const Config& config, const
                  (unsigned long long)sample.sampled_lps(),
                  (unsigned long long)evaluator.lp_fragments());
   {
-    ProgressBar bar("screen", todo.size(), quiet);
-    const auto start_all = std::chrono::steady_clock::now();
-    uint64_t lps = 0;
-    for (const uint64_t id : todo) {
+    // One candidate's estimate (a numerically dependent combination: every LP failed, lit).
+    auto screen_one = [&](uint64_t id) {
       const auto start = std::chrono::steady_clock::now();
       EstimateRow row;
       row.id = id;
@@ -177,18 +176,9 @@ void screen_and_confirm(const SweepOptions& options, const Config& config, const
       } catch (const InputError& e) {
         if (!quiet)
           std::fprintf(stderr, "\ncandidate %llu: %s\n", (unsigned long long)id, e.what());
-        // As in the exact sweep: every LP fragment failed, shown lit (G = 0).
         counts = {};
         counts.unstable = sample.sampled_lps();
-        for (size_t v = 0; v < sample.strata.size(); ++v) {
-          const ScreenStratum& s = sample.strata[v];
-          for (size_t r = 0; r < s.sampled(); ++r) {
-            ErrorStats run;
-            for (size_t i = s.run_begin[r]; i < s.run_begin[r + 1]; ++i)
-              run.add(evaluator.views()[v].fragments.pcf[s.list[i]], 0.0);
-            row.run_errors.push_back(run.sum_abs);
-          }
-        }
+        row.run_errors = lit_unit_errors(sample, evaluator.views());
       }
       const ScreenEstimate estimate = estimate_mean_error(sample, row.run_errors);
       row.mean = estimate.mean;
@@ -196,8 +186,15 @@ void screen_and_confirm(const SweepOptions& options, const Config& config, const
       row.solved = counts.solved;
       row.failed = counts.infeasible + counts.unstable;
       row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      return row;
+    };
+    ProgressBar bar("screen", todo.size(), quiet);
+    const auto start_all = std::chrono::steady_clock::now();
+    uint64_t lps = 0;
+    for (const uint64_t id : todo) {
+      const EstimateRow row = screen_one(id);
       store.put_estimate(row);
-      lps += counts.solved + row.failed;
+      lps += row.solved + row.failed;
       bar.set_note(rate_note(lps, start_all));
       bar.advance();
     }

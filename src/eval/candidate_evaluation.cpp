@@ -45,7 +45,8 @@ std::vector<double> CandidateEvaluator::screen(const Basis& basis, const ScreenS
   CandidateResult counts;
   for (size_t v = 0; v < views_.size(); ++v) {
     const ScreenStratum& stratum = sample.strata[v];
-    const LpViewAnswers answers = solve_lp_view(views_[v], stratum.list, basis, factory, settings_);
+    const LpViewAnswers answers = solve_lp_view(views_[v], stratum.list, basis, factory, settings_,
+                                                nullptr, &stratum.run_begin);
     counts.solved += answers.solved;
     counts.infeasible += answers.infeasible;
     counts.unstable += answers.unstable;

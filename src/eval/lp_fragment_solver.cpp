@@ -22,31 +22,44 @@ std::vector<uint32_t> fragments_needing_lp(const Fragments& fragments) {
 
 LpViewAnswers solve_lp_view(const ViewData& view, const std::vector<uint32_t>& list,
                             const Basis& basis, const lp::ProblemFactory& factory,
-                            const EvalSettings& settings, ProgressBar* progress) {
+                            const EvalSettings& settings, ProgressBar* progress,
+                            const std::vector<size_t>* runs_given) {
   const lp::Discretization& disc = settings.technique.lp;
   const int k = factory.rows(), m = int(basis.size());
   const GaussianKernel& kernel = settings.kernel;
   const int taps = kernel.size * kernel.size;
   uint64_t solved = 0, infeasible = 0, unstable = 0;
   const ShadowMap& map = view.map;
-  // Transformed columns T (1, b(z)) of the layer-0 depths the fragments' kernels reach (every
-  // texel of a full evaluation; a screen's sample reaches a few bands), and of the far plane.
-  // Columns of rows no kernel reaches are never read, nor written: the buffers stay uninitialised.
+  // Warm-start runs (bands of kWarmRunRows texel rows; fragments are in texel order): each
+  // run is solved in order by one thread, first from scratch, so the answers do not depend on
+  // the schedule.
+  const std::vector<size_t> run_begin =
+      runs_given ? *runs_given : warm_run_begins(list.size(), map.width, [&](size_t i) {
+        return view.fragments.texel[list[i]];
+      });
+  // Transformed columns T (1, b(z)) of the layer-0 depths the fragments' kernels reach: each
+  // run's bounding box grown by the kernel's radius (every texel of a full evaluation, a few
+  // blocks of a screen's sample), and the far plane's. Columns no kernel reaches are never read,
+  // nor written: the buffers stay uninitialised.
   const int reach = kernel.radius();
-  std::vector<char> row_needed(map.height, 0);
-  for (size_t i = 0; i < list.size(); ++i) {
-    const int y = int(view.fragments.texel[list[i]] / map.width);
-    if (i > 0 && view.fragments.texel[list[i - 1]] / map.width == size_t(y)) continue;
-    for (int yy = std::max(0, y - reach); yy <= std::min(map.height - 1, y + reach); ++yy)
-      row_needed[yy] = 1;
+  std::vector<char> reached(map.depth.size(), 0);
+  for (size_t run = 0; run + 1 < run_begin.size(); ++run) {
+    int x0 = map.width, x1 = -1, y0 = map.height, y1 = -1;
+    for (size_t i = run_begin[run]; i < run_begin[run + 1]; ++i) {
+      const size_t t = view.fragments.texel[list[i]];
+      const int x = int(t % map.width), y = int(t / map.width);
+      x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+    }
+    x0 = std::max(0, x0 - reach), x1 = std::min(map.width - 1, x1 + reach);
+    for (int y = std::max(0, y0 - reach); y <= std::min(map.height - 1, y1 + reach); ++y)
+      std::fill_n(reached.begin() + long(size_t(y) * map.width + x0), x1 - x0 + 1, char(1));
   }
   std::vector<size_t> needed;  // texel indices, ascending, the far plane's (map size) last
-  for (int y = 0; y < map.height; ++y)
-    if (row_needed[y])
-      for (int x = 0; x < map.width; ++x) needed.push_back(size_t(y) * map.width + x);
+  for (size_t t = 0; t < reached.size(); ++t)
+    if (reached[t]) needed.push_back(t);
   needed.push_back(map.depth.size());
   const size_t texels = map.depth.size() + 1;  // outside: index = map size
-  std::vector<double> depth(texels);
+  std::unique_ptr<double[]> depth(new double[texels]);
   std::vector<double> picked(needed.size()), values(needed.size());
   for (size_t n = 0; n < needed.size(); ++n) {
     const double z = needed[n] < map.depth.size() ? map.depth[needed[n]] : 1.0;
@@ -62,11 +75,6 @@ LpViewAnswers solve_lp_view(const ViewData& view, const std::vector<uint32_t>& l
   for (size_t n = 0; n < needed.size(); ++n)
     factory.transform(&raw[n * k], &columns[needed[n] * k]);
 
-  // Warm-start runs (bands of kWarmRunRows texel rows; fragments are in texel order): each
-  // run is solved in order by one thread, first from scratch, so the answers do not depend on
-  // the schedule.
-  const std::vector<size_t> run_begin = warm_run_begins(
-      list.size(), map.width, [&](size_t i) { return view.fragments.texel[list[i]]; });
   const size_t runs = run_begin.size() - 1;
   const KernelAtomMap atoms(kernel.size);
   // lp.moment_box: each fragment's box problem from scratch (GLPK; no warm start).

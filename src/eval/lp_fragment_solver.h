@@ -23,8 +23,11 @@ std::vector<uint32_t> fragments_needing_lp(const Fragments& fragments);
 
 // Solves the LPs of `needs_lp` (ascending fragment indices of `view`) with `factory`'s basis and
 // discretisation, the backend of `settings`; failed LPs are counted and shown lit (G = 0).
+// `runs`: where each warm-start run begins in `needs_lp`, its size appended, each run's fragments
+// in texel order (a screen's units); null: bands of kWarmRunRows rows, `needs_lp` ascending.
 LpViewAnswers solve_lp_view(const ViewData& view, const std::vector<uint32_t>& needs_lp,
                             const Basis& basis, const lp::ProblemFactory& factory,
-                            const EvalSettings& settings, ProgressBar* progress = nullptr);
+                            const EvalSettings& settings, ProgressBar* progress = nullptr,
+                            const std::vector<size_t>* runs = nullptr);
 
 }  // namespace mb

@@ -54,7 +54,7 @@ class ResultsStore {
 
   std::map<std::string, std::string> meta() const;
   std::set<uint64_t> candidate_ids() const;
-  void put_candidate(const ResultRow& row);  // one committed transaction
+  void put_candidate(const ResultRow& row);  // one committed transaction (outside batch)
   void put_reference(const ResultRow& row);
   std::vector<ResultRow> candidates() const;  // by id
   std::vector<ResultRow> references() const;  // by name
@@ -62,6 +62,19 @@ class ResultsStore {
   std::set<uint64_t> estimate_ids() const;
   void put_estimate(const EstimateRow& row);
   std::vector<EstimateRow> estimates() const;  // by id
+  // Runs `puts` (any of the put_ calls) as one transaction: one commit, not one per row (merge's
+  // 66 045 rows: one fsync instead of 66 045). Nothing of it is stored if it throws.
+  template <class Puts>
+  void batch(Puts puts) {
+    exec("BEGIN");
+    try {
+      puts();
+    } catch (...) {
+      exec("ROLLBACK");
+      throw;
+    }
+    exec("COMMIT");
+  }
 
  private:
   ResultsStore(sqlite3* db, std::string path) : db_(db), path_(std::move(path)) {}

@@ -88,17 +88,29 @@ ScreenSample make_screen_sample(const std::vector<ViewData>& views,
     for (uint32_t f : list) lp[f] = true;
     for (size_t f = 0; f < fragments.size(); ++f)
       if (!lp[f]) sample.fixed_error += std::abs(fragments.pcf[f]);
-    // The runs exactly as solve_lp_view cuts them.
-    const std::vector<size_t> begins = warm_run_begins(
-        list.size(), views[v].map.width, [&](size_t i) { return fragments.texel[list[i]]; });
+    // The units: each band of warm-start rows cut into blocks of kScreenUnitColumns columns, its
+    // fragments in texel order (a unit is a run of its own when screened).
+    const int width = views[v].map.width;
+    const uint64_t blocks = uint64_t(width + kScreenUnitColumns - 1) / kScreenUnitColumns;
+    auto unit_of = [&](uint32_t f) {
+      const size_t t = fragments.texel[f];
+      return uint64_t(warm_run_of(t, width)) * blocks + (t % size_t(width)) / kScreenUnitColumns;
+    };
+    std::vector<uint32_t> by_unit = list;  // stable: texel order within a unit
+    std::stable_sort(by_unit.begin(), by_unit.end(),
+                     [&](uint32_t a, uint32_t b) { return unit_of(a) < unit_of(b); });
+    std::vector<size_t> begins;
+    for (size_t i = 0; i < by_unit.size(); ++i)
+      if (i == 0 || unit_of(by_unit[i]) != unit_of(by_unit[i - 1])) begins.push_back(i);
+    begins.push_back(by_unit.size());
     ScreenStratum s;
     s.runs = begins.size() - 1;
     s.lps = list.size();
     std::vector<double> pilot(s.runs);
     for (size_t r = 0; r < s.runs; ++r) {
-      ErrorStats run;  // as CandidateEvaluator::screen sums a run
+      ErrorStats run;  // as CandidateEvaluator::screen sums a unit
       for (size_t i = begins[r]; i < begins[r + 1]; ++i)
-        run.add(fragments.pcf[list[i]], pilot_shadow[v][list[i]]);
+        run.add(fragments.pcf[by_unit[i]], pilot_shadow[v][by_unit[i]]);
       pilot[r] = run.sum_abs;
       s.pilot_total += run.sum_abs;
     }
@@ -107,25 +119,37 @@ ScreenSample make_screen_sample(const std::vector<ViewData>& views,
                       : std::min(s.runs, std::max<size_t>(std::min<size_t>(2, s.runs),
                                                           size_t(std::ceil(fraction * s.runs))));
     std::vector<std::pair<uint64_t, size_t>> keyed;
-    for (size_t r = 0; r < s.runs; ++r) {
-      const uint64_t band =
-          uint64_t(warm_run_of(fragments.texel[list[begins[r]]], views[v].map.width));
-      keyed.push_back({mix(mix(seed ^ (uint64_t(v) << 40)) ^ band), r});
-    }
-    std::partial_sort(keyed.begin(), keyed.begin() + want, keyed.end());
+    for (size_t r = 0; r < s.runs; ++r)
+      keyed.push_back({mix(mix(seed ^ (uint64_t(v) << 40)) ^ unit_of(by_unit[begins[r]])), r});
+    std::partial_sort(keyed.begin(), keyed.begin() + long(want), keyed.end());
     std::vector<size_t> chosen;
     for (size_t i = 0; i < want; ++i) chosen.push_back(keyed[i].second);
     std::sort(chosen.begin(), chosen.end());
     for (size_t r : chosen) {
       s.pilot.push_back(pilot[r]);
       s.run_begin.push_back(s.list.size());
-      s.list.insert(s.list.end(), list.begin() + long(begins[r]),
-                    list.begin() + long(begins[r + 1]));
+      s.list.insert(s.list.end(), by_unit.begin() + long(begins[r]),
+                    by_unit.begin() + long(begins[r + 1]));
     }
     s.run_begin.push_back(s.list.size());
     sample.strata.push_back(std::move(s));
   }
   return sample;
+}
+
+std::vector<double> lit_unit_errors(const ScreenSample& sample,
+                                    const std::vector<ViewData>& views) {
+  std::vector<double> errors;
+  for (size_t v = 0; v < sample.strata.size(); ++v) {
+    const ScreenStratum& s = sample.strata[v];
+    for (size_t r = 0; r < s.sampled(); ++r) {
+      ErrorStats unit;
+      for (size_t i = s.run_begin[r]; i < s.run_begin[r + 1]; ++i)
+        unit.add(views[v].fragments.pcf[s.list[i]], 0.0);
+      errors.push_back(unit.sum_abs);
+    }
+  }
+  return errors;
 }
 
 ScreenEstimate estimate_mean_error(const ScreenSample& sample,
@@ -170,10 +194,12 @@ std::vector<size_t> candidates_to_confirm(const ScreenSample& sample,
   std::stable_sort(order.begin(), order.end(),
                    [&](size_t a, size_t b) { return mean[a] < mean[b]; });
   const size_t r = order[size_t(rule.top) - 1];
+  std::vector<bool> best(count, false);
+  for (int k = 0; k < rule.top; ++k) best[order[size_t(k)]] = true;
   std::vector<size_t> confirm;
   for (size_t c = 0; c < count; ++c) {
     const double se = paired_standard_error(sample, run_errors[c], run_errors[r]);
-    if (mean[c] - mean[r] - rule.sigmas * se <= rule.margin) confirm.push_back(c);
+    if (best[c] || mean[c] - mean[r] - rule.sigmas * se <= rule.margin) confirm.push_back(c);
   }
   return confirm;
 }

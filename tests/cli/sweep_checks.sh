@@ -5,6 +5,8 @@
 #   shards   3 shards merged: same results as one run; overlapping or mismatched shards refused
 #   killloop kill -9 at 20 random instants (from the first milliseconds on), then --resume: the
 #            same results every time
+#   screen   --screen: shards screened, merged and confirmed by --resume give the one run's rows;
+#            a kill mid-screen resumes to the same; the report marks estimates apart
 #   series   sweeps of 2 and 4 functions in one report (the seed paper's Figure 3); sweeps measured
 #            against another reference refused; CSV numbers at full precision
 # Results are compared through `report`'s candidates.csv and references.csv (everything but time).
@@ -105,6 +107,37 @@ killloop)
   mkdir -p "$work/foreign" && echo keep > "$work/foreign/notes.txt"
   if "$mb" sweep -q "${small[@]}" --resume -o "$work/foreign" 2>"$work/err"; then exit 1; fi
   grep -q "not a sweep's" "$work/err" && [ "$(ls "$work/foreign")" = notes.txt ]
+  ;;
+screen)
+  screen=(--set dataset=tiny --set resolution=128 --set sample=40 --set sample_seed=3 --set "references=[vsm]" --set lp.grid=64 --screen 0.3 --set screen.top=3)
+  "$mb" sweep -q "${screen[@]}" -o "$work/screened"
+  results "$work/screened"
+  # Estimates and exact rows apart, in the report and its CSV.
+  grep -q "(estimate) |" "$work/screened.report/report.md"
+  grep -q "was screened (\`sweep --screen\`)" "$work/screened.report/report.md"
+  exact=$(/usr/bin/python3 -c "import csv,sys; print(sum(r['exact'] == '1' for r in csv.DictReader(open(sys.argv[1]))))" "$work/screened.report/candidates.csv")
+  [ "$exact" -ge 3 ] && [ "$exact" -lt 40 ] || { echo "sweep_checks: $exact exact rows of 40"; exit 1; }
+  # Shards screen their share; the confirmation waits for the merge, then --resume runs it.
+  "$mb" sweep -q "${screen[@]}" --shard 1/2 -o "$work/s1"
+  "$mb" sweep -q "${screen[@]}" --shard 2/2 -o "$work/s2"
+  [ "$(count "$work/s1")" -eq 0 ] && [ "$(count "$work/s2")" -eq 0 ]
+  "$mb" merge "$work/s1" "$work/s2" -o "$work/smerged" | grep -q "40 screened"
+  "$mb" sweep -q "${screen[@]}" --resume -o "$work/smerged"
+  results "$work/smerged"
+  same "$work/screened" "$work/smerged"
+  # Killed while screening, resumed: the same rows.
+  "$mb" sweep -q "${screen[@]}" --set threads=1 -o "$work/skilled" 2>/dev/null &
+  pid=$!
+  for _ in $(seq 1 600); do
+    n=$(/usr/bin/python3 -c "import sqlite3,sys; print(sqlite3.connect(sys.argv[1]).execute('select count(*) from estimates').fetchone()[0])" "$work/skilled/results.sqlite" 2>/dev/null || echo 0)
+    [ "$n" -ge 5 ] && break
+    sleep 0.05
+  done
+  kill -9 $pid
+  wait $pid 2>/dev/null || true
+  "$mb" sweep -q "${screen[@]}" --resume -o "$work/skilled"
+  results "$work/skilled"
+  same "$work/screened" "$work/skilled"
   ;;
 series)
   "$mb" sweep -q "${common[@]}" --set combination_size=2 -o "$work/two"
