@@ -143,21 +143,34 @@ TEST(Screening, ScreenedTopKIsTheExactTopK) {
     estimates.push_back(estimate_mean_error(sample, runs.back()));
   }
   const size_t n = exact.size();
+  // The sweep's second stage (screen.refine): the candidates in reach again on a larger sample.
+  const ScreenSample refine = f.sample(0.6, 8);
+  std::vector<std::vector<double>> refined;
+  for (uint64_t id : plan.ids)
+    refined.push_back(f.evaluator->screen(Basis::parse(plan.functions(id)), refine));
+  auto top_of = [&](std::vector<size_t> candidates, int top) {  // by exact mean
+    std::stable_sort(candidates.begin(), candidates.end(),
+                     [&](size_t a, size_t b) { return exact[a] < exact[b]; });
+    candidates.resize(std::min(candidates.size(), size_t(top)));
+    return candidates;
+  };
+  std::vector<size_t> all(n);
+  std::iota(all.begin(), all.end(), size_t(0));
   for (int top : {5, 10, 20}) {
     ScreenRule rule;
     rule.top = top;
     const std::vector<size_t> confirmed = candidates_to_confirm(sample, runs, rule);
     EXPECT_LT(confirmed.size(), n) << "top " << top << ": the screen kept every candidate";
-    std::vector<size_t> order(n);
-    std::iota(order.begin(), order.end(), size_t(0));
-    std::stable_sort(order.begin(), order.end(),
-                     [&](size_t a, size_t b) { return exact[a] < exact[b]; });
-    std::vector<size_t> exact_top(order.begin(), order.begin() + top);
-    std::vector<size_t> screened = confirmed;  // the confirmed ones, ranked by their exact means
-    std::stable_sort(screened.begin(), screened.end(),
-                     [&](size_t a, size_t b) { return exact[a] < exact[b]; });
-    screened.resize(size_t(top));
-    EXPECT_EQ(screened, exact_top) << "top " << top << " (" << confirmed.size() << " confirmed)";
+    const std::vector<size_t> exact_top = top_of(all, top);
+    EXPECT_EQ(top_of(confirmed, top), exact_top)
+        << "top " << top << " (" << confirmed.size() << " confirmed)";
+    std::vector<std::vector<double>> second;
+    for (size_t c : confirmed) second.push_back(refined[c]);
+    std::vector<size_t> twice;
+    for (size_t i : candidates_to_confirm(refine, second, rule)) twice.push_back(confirmed[i]);
+    EXPECT_LT(twice.size(), confirmed.size()) << "top " << top << ": the refining stage kept all";
+    EXPECT_EQ(top_of(twice, top), exact_top)
+        << "top " << top << " after refining (" << twice.size() << " confirmed)";
 
     // Ties below 0.01 pp (margin -1e-4): fewer confirmed, and no candidate left out beats the
     // K-th best confirmed one by more than the margin.

@@ -42,7 +42,7 @@ int run_merge(const MergeOptions& o) {
                          o.shards[i] + ": overlapping shards");
     }
     // A screened sweep's estimates (sweep --screen) may overlap no more than its candidates.
-    for (uint64_t id : inputs[i].estimate_ids()) {
+    for (uint64_t id : inputs[i].estimate_ids(1)) {
       auto [it, fresh] = screened.emplace(id, o.shards[i]);
       if (!fresh)
         throw InputError("the estimate of candidate " + std::to_string(id) + " is in both " +
@@ -78,7 +78,7 @@ int run_merge(const MergeOptions& o) {
       for (const auto& r : inputs[0].references()) target.put_reference(r);
       for (auto& input : inputs) {
         for (const auto& r : input.candidates()) target.put_candidate(r);
-        for (const auto& r : input.estimates()) target.put_estimate(r);
+        for (const auto& r : input.estimates(0)) target.put_estimate(r);
       }
     });
   }

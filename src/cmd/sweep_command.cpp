@@ -61,6 +61,10 @@ std::vector<OptionSpec> sweep_specs() {
                    "interval may miss the K-th best estimate and still be evaluated exactly; "
                    "negative: differences below |margin| are ties.",
                    -1, 1});
+  specs.push_back({"screen.refine", OptionType::Number, "0",
+                   "Screening: a second sample, this share of the units, for the candidates in "
+                   "reach after the first, before any is evaluated exactly; 0 = none.",
+                   0, 1});
   specs.push_back(
       {"screen.seed", OptionType::Integer, "1", "Screening: seed of the sampled units.", 0, 1e18});
   return specs;
@@ -149,31 +153,43 @@ void screen_and_confirm(const SweepOptions& options, const Config& config, const
     if (std::binary_search(mine.begin(), mine.end(), pilot) && !store.candidate_ids().count(pilot))
       store.put_candidate(exact_row(plan, pilot, result, evaluator.views(), start));
   }
-  const ScreenSample sample =
-      make_screen_sample(evaluator.views(), evaluator.lp_lists(), pilot_shadow,
-                         config.number("screen.fraction"), uint64_t(config.integer("screen.seed")));
-  const auto screened = store.estimate_ids();
-  std::vector<uint64_t> todo;
-  for (uint64_t id : mine)
-    if (!screened.count(id)) todo.push_back(id);
-  if (!quiet)
-    std::fprintf(stderr,
-                 "sweep: screening %zu candidates in this shard (%zu done) on %zu of %zu "
-                 "warm-start runs, %llu of %llu LPs per candidate\n",
-                 mine.size(), mine.size() - todo.size(), sample.sampled_runs(), sample.runs(),
-                 (unsigned long long)sample.sampled_lps(),
-                 (unsigned long long)evaluator.lp_fragments());
-  {
-    // One candidate's estimate (a numerically dependent combination: every LP failed, lit).
-    auto screen_one = [&](uint64_t id) {
+  ScreenRule rule;
+  rule.top = int(config.integer("screen.top"));
+  rule.sigmas = config.number("screen.sigmas");
+  rule.margin = config.number("screen.margin");
+  const uint64_t seed = uint64_t(config.integer("screen.seed"));
+  auto sample_of = [&](int stage) {
+    return make_screen_sample(evaluator.views(), evaluator.lp_lists(), pilot_shadow,
+                              config.number(stage == 1 ? "screen.fraction" : "screen.refine"),
+                              seed + uint64_t(stage - 1));
+  };
+  // Estimates of `ids` at `stage` on `sample`, one committed row each (resumable).
+  auto screen_stage = [&](int stage, const ScreenSample& sample, const std::vector<uint64_t>& ids) {
+    const auto done = store.estimate_ids(stage);
+    std::vector<uint64_t> todo;
+    for (uint64_t id : ids)
+      if (!done.count(id)) todo.push_back(id);
+    if (!quiet)
+      std::fprintf(stderr,
+                   "sweep: screening stage %d: %zu candidates (%zu done) on %zu of %zu units, "
+                   "%llu of %llu LPs per candidate\n",
+                   stage, ids.size(), ids.size() - todo.size(), sample.sampled_runs(),
+                   sample.runs(), (unsigned long long)sample.sampled_lps(),
+                   (unsigned long long)evaluator.lp_fragments());
+    ProgressBar bar(stage == 1 ? "screen" : "refine", todo.size(), quiet);
+    const auto start_all = std::chrono::steady_clock::now();
+    uint64_t lps = 0;
+    for (const uint64_t id : todo) {
       const auto start = std::chrono::steady_clock::now();
       EstimateRow row;
       row.id = id;
+      row.stage = stage;
       row.name = plan.name(id);
       CandidateResult counts;
       try {
         row.run_errors = evaluator.screen(Basis::parse(plan.functions(id)), sample, &counts);
       } catch (const InputError& e) {
+        // As in the exact sweep: every LP fragment failed, shown lit (G = 0).
         if (!quiet)
           std::fprintf(stderr, "\ncandidate %llu: %s\n", (unsigned long long)id, e.what());
         counts = {};
@@ -186,54 +202,61 @@ void screen_and_confirm(const SweepOptions& options, const Config& config, const
       row.solved = counts.solved;
       row.failed = counts.infeasible + counts.unstable;
       row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      return row;
-    };
-    ProgressBar bar("screen", todo.size(), quiet);
-    const auto start_all = std::chrono::steady_clock::now();
-    uint64_t lps = 0;
-    for (const uint64_t id : todo) {
-      const EstimateRow row = screen_one(id);
       store.put_estimate(row);
       lps += row.solved + row.failed;
       bar.set_note(rate_note(lps, start_all));
       bar.advance();
     }
     bar.finish();
-  }
-  // The confirmation compares every planned candidate: it waits for all shards.
-  const std::vector<EstimateRow> estimates = store.estimates();
-  if (shards > 1 || estimates.size() < plan.ids.size()) {
+  };
+  // The candidates of `ids` that reach the best (screening.h), from their estimates at `stage`.
+  auto reaching = [&](int stage, const ScreenSample& sample, const std::vector<uint64_t>& ids) {
+    std::map<uint64_t, std::vector<double>> by_id;
+    for (auto& e : store.estimates(stage)) by_id[e.id] = std::move(e.run_errors);
+    std::vector<std::vector<double>> run_errors;
+    for (uint64_t id : ids) {
+      auto& errors = by_id.at(id);
+      if (errors.size() != sample.sampled_runs())
+        throw InputError("candidate " + std::to_string(id) + ": its stage " +
+                         std::to_string(stage) + " estimate has " + std::to_string(errors.size()) +
+                         " unit errors, this sample " + std::to_string(sample.sampled_runs()) +
+                         ": the database was screened on other views");
+      run_errors.push_back(std::move(errors));
+    }
+    std::vector<uint64_t> out;
+    for (size_t c : candidates_to_confirm(sample, run_errors, rule)) out.push_back(ids[c]);
     if (!quiet)
       std::fprintf(stderr,
-                   "sweep: screened %zu of %zu planned candidates; the exact confirmation runs "
-                   "when all are screened: merge the shards, then `sweep --resume` in the merged "
+                   "sweep: stage %d: %zu of %zu candidates in reach of the %d-th best estimate "
+                   "(margin %g, %g standard errors)\n",
+                   stage, out.size(), ids.size(), rule.top, rule.margin, rule.sigmas);
+    return out;
+  };
+
+  const ScreenSample first = sample_of(1);
+  screen_stage(1, first, mine);
+  // The confirmation compares every planned candidate: it waits for all shards.
+  if (shards > 1 || store.estimate_ids(1).size() < plan.ids.size()) {
+    if (!quiet)
+      std::fprintf(stderr,
+                   "sweep: screened %zu of %zu planned candidates; the confirmation runs when "
+                   "all are screened: merge the shards, then `sweep --resume` in the merged "
                    "directory\n",
-                   estimates.size(), plan.ids.size());
+                   store.estimate_ids(1).size(), plan.ids.size());
     return;
   }
-  std::vector<std::vector<double>> run_errors;
-  for (const auto& e : estimates) {
-    if (e.run_errors.size() != sample.sampled_runs())
-      throw InputError("candidate " + std::to_string(e.id) + ": its estimate has " +
-                       std::to_string(e.run_errors.size()) + " run errors, this sample " +
-                       std::to_string(sample.sampled_runs()) +
-                       ": the database was screened on other views");
-    run_errors.push_back(e.run_errors);
+  std::vector<uint64_t> ids = reaching(1, first, plan.ids);
+  if (config.number("screen.refine") > 0) {
+    // The candidates in reach again, on a larger sample: cheaper than evaluating them exactly,
+    // and its smaller standard errors leave fewer in reach.
+    const ScreenSample refine = sample_of(2);
+    screen_stage(2, refine, ids);
+    ids = reaching(2, refine, ids);
   }
-  ScreenRule rule;
-  rule.top = int(config.integer("screen.top"));
-  rule.sigmas = config.number("screen.sigmas");
-  rule.margin = config.number("screen.margin");
   const auto exact_done = store.candidate_ids();
   std::vector<uint64_t> confirm;
-  for (size_t c : candidates_to_confirm(sample, run_errors, rule))
-    if (!exact_done.count(estimates[c].id)) confirm.push_back(estimates[c].id);
-  if (!quiet)
-    std::fprintf(stderr,
-                 "sweep: %zu candidates reach the best %d estimates within %g standard errors "
-                 "and %g; %zu of them to evaluate exactly\n",
-                 confirm.size() + exact_done.size(), rule.top, rule.sigmas, rule.margin,
-                 confirm.size());
+  for (uint64_t id : ids)
+    if (!exact_done.count(id)) confirm.push_back(id);
   evaluate_exactly(confirm, "confirm");
 }
 

@@ -28,8 +28,9 @@ const char* kSchema =
     "share_over_tenth REAL,"
     " max_dark REAL, darkening_bound REAL, darkening_reason TEXT, view_errors TEXT, histogram "
     "TEXT, seconds REAL);"
-    "CREATE TABLE estimates (id INTEGER PRIMARY KEY, name TEXT NOT NULL, mean REAL, se REAL,"
-    " solved INTEGER, failed INTEGER, run_errors BLOB, seconds REAL);";
+    "CREATE TABLE estimates (id INTEGER NOT NULL, stage INTEGER NOT NULL, name TEXT NOT NULL,"
+    " mean REAL, se REAL, solved INTEGER, failed INTEGER, run_errors BLOB, seconds REAL,"
+    " PRIMARY KEY (id, stage));";
 
 // Raised whenever the tables change (2: max_dark, darkening_bound, darkening_reason, the reference
 // and per-fragment bias of REFERENCE.md §3; 3: estimates, of a screened sweep): an older database
@@ -206,48 +207,54 @@ std::vector<ResultRow> ResultsStore::references() const {
   return rows("references_", "name");
 }
 
-std::set<uint64_t> ResultsStore::estimate_ids() const {
+std::set<uint64_t> ResultsStore::estimate_ids(int stage) const {
   std::set<uint64_t> out;
-  Statement st(db_, "SELECT id FROM estimates", path_);
+  Statement st(db_, "SELECT id FROM estimates WHERE stage = " + std::to_string(stage), path_);
   while (sqlite3_step(st.s) == SQLITE_ROW) out.insert(uint64_t(sqlite3_column_int64(st.s, 0)));
   return out;
 }
 
 void ResultsStore::put_estimate(const EstimateRow& row) {
-  Statement st(db_, "INSERT INTO estimates VALUES (?, ?, ?, ?, ?, ?, ?, ?)", path_);
+  Statement st(db_, "INSERT INTO estimates VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)", path_);
   sqlite3_bind_int64(st.s, 1, int64_t(row.id));
-  sqlite3_bind_text(st.s, 2, row.name.c_str(), -1, SQLITE_TRANSIENT);
-  sqlite3_bind_double(st.s, 3, row.mean);
-  sqlite3_bind_double(st.s, 4, row.se);
-  sqlite3_bind_int64(st.s, 5, int64_t(row.solved));
-  sqlite3_bind_int64(st.s, 6, int64_t(row.failed));
-  sqlite3_bind_blob(st.s, 7, row.run_errors.data(), int(row.run_errors.size() * sizeof(double)),
+  sqlite3_bind_int64(st.s, 2, row.stage);
+  sqlite3_bind_text(st.s, 3, row.name.c_str(), -1, SQLITE_TRANSIENT);
+  sqlite3_bind_double(st.s, 4, row.mean);
+  sqlite3_bind_double(st.s, 5, row.se);
+  sqlite3_bind_int64(st.s, 6, int64_t(row.solved));
+  sqlite3_bind_int64(st.s, 7, int64_t(row.failed));
+  sqlite3_bind_blob(st.s, 8, row.run_errors.data(), int(row.run_errors.size() * sizeof(double)),
                     SQLITE_TRANSIENT);
-  sqlite3_bind_double(st.s, 8, row.seconds);
+  sqlite3_bind_double(st.s, 9, row.seconds);
   if (sqlite3_step(st.s) != SQLITE_DONE)
     throw InputError(path_ + ": cannot store the estimate of '" + row.name +
                      "': " + sqlite3_errmsg(db_));
 }
 
-std::vector<EstimateRow> ResultsStore::estimates() const {
-  Statement st(db_, "SELECT * FROM estimates ORDER BY id", path_);
+std::vector<EstimateRow> ResultsStore::estimates(int stage) const {
+  Statement st(db_,
+               std::string("SELECT * FROM estimates") +
+                   (stage ? " WHERE stage = " + std::to_string(stage) : std::string()) +
+                   " ORDER BY id, stage",
+               path_);
   std::vector<EstimateRow> out;
   while (sqlite3_step(st.s) == SQLITE_ROW) {
     EstimateRow r;
     r.id = uint64_t(sqlite3_column_int64(st.s, 0));
-    r.name = reinterpret_cast<const char*>(sqlite3_column_text(st.s, 1));
-    r.mean = sqlite3_column_double(st.s, 2);
-    r.se = sqlite3_column_double(st.s, 3);
-    r.solved = uint64_t(sqlite3_column_int64(st.s, 4));
-    r.failed = uint64_t(sqlite3_column_int64(st.s, 5));
-    const auto* bytes = static_cast<const char*>(sqlite3_column_blob(st.s, 6));
-    const size_t size = size_t(sqlite3_column_bytes(st.s, 6));
+    r.stage = int(sqlite3_column_int64(st.s, 1));
+    r.name = reinterpret_cast<const char*>(sqlite3_column_text(st.s, 2));
+    r.mean = sqlite3_column_double(st.s, 3);
+    r.se = sqlite3_column_double(st.s, 4);
+    r.solved = uint64_t(sqlite3_column_int64(st.s, 5));
+    r.failed = uint64_t(sqlite3_column_int64(st.s, 6));
+    const auto* bytes = static_cast<const char*>(sqlite3_column_blob(st.s, 7));
+    const size_t size = size_t(sqlite3_column_bytes(st.s, 7));
     if (size % sizeof(double))
       throw InputError(path_ + ": the estimate of candidate " + std::to_string(r.id) +
                        " has a damaged run_errors blob");
     r.run_errors.resize(size / sizeof(double));
     if (size) std::memcpy(r.run_errors.data(), bytes, size);
-    r.seconds = sqlite3_column_double(st.s, 7);
+    r.seconds = sqlite3_column_double(st.s, 8);
     out.push_back(std::move(r));
   }
   return out;

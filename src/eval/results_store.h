@@ -36,6 +36,7 @@ struct ResultRow {
 // sampled runs' error sums that the confirmation compares candidates by.
 struct EstimateRow {
   uint64_t id = 0;
+  int stage = 1;  // 1: every candidate on the screen's sample; 2: the refining sample
   std::string name;
   double mean = 0, se = 0;
   uint64_t solved = 0, failed = 0;  // LPs of the sample: optimal; infeasible or unstable
@@ -59,9 +60,9 @@ class ResultsStore {
   std::vector<ResultRow> candidates() const;  // by id
   std::vector<ResultRow> references() const;  // by name
   // Screening (sweep --screen): one committed row per screened candidate.
-  std::set<uint64_t> estimate_ids() const;
+  std::set<uint64_t> estimate_ids(int stage) const;
   void put_estimate(const EstimateRow& row);
-  std::vector<EstimateRow> estimates() const;  // by id
+  std::vector<EstimateRow> estimates(int stage) const;  // by id; stage 0: every stage
   // Runs `puts` (any of the put_ calls) as one transaction: one commit, not one per row (merge's
   // 66 045 rows: one fsync instead of 66 045). Nothing of it is stored if it throws.
   template <class Puts>

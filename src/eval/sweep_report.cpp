@@ -285,8 +285,11 @@ std::vector<SweepSeries> load_sweep_series(const std::vector<std::string>& datab
     s.exact = s.ranked.size();
     // Screened candidates without an exact row join as estimates.
     const std::set<uint64_t> exact = store.candidate_ids();
-    for (const EstimateRow& e : store.estimates()) {
-      if (exact.count(e.id)) continue;
+    const std::vector<EstimateRow> estimates = store.estimates(0);  // by id, then stage
+    for (size_t i = 0; i < estimates.size(); ++i) {
+      const EstimateRow& e = estimates[i];
+      // The most precise estimate of each: its last stage.
+      if (exact.count(e.id) || (i + 1 < estimates.size() && estimates[i + 1].id == e.id)) continue;
       ResultRow r;
       r.id = e.id;
       r.name = e.name;

@@ -5,8 +5,8 @@
 #   shards   3 shards merged: same results as one run; overlapping or mismatched shards refused
 #   killloop kill -9 at 20 random instants (from the first milliseconds on), then --resume: the
 #            same results every time
-#   screen   --screen: shards screened, merged and confirmed by --resume give the one run's rows;
-#            a kill mid-screen resumes to the same; the report marks estimates apart
+#   screen   --screen (two stages): shards screened, merged and confirmed by --resume give the one
+#            run's rows; a kill mid-screen resumes to the same; the report marks estimates apart
 #   series   sweeps of 2 and 4 functions in one report (the seed paper's Figure 3); sweeps measured
 #            against another reference refused; CSV numbers at full precision
 # Results are compared through `report`'s candidates.csv and references.csv (everything but time).
@@ -109,7 +109,7 @@ killloop)
   grep -q "not a sweep's" "$work/err" && [ "$(ls "$work/foreign")" = notes.txt ]
   ;;
 screen)
-  screen=(--set dataset=tiny --set resolution=128 --set sample=40 --set sample_seed=3 --set "references=[vsm]" --set lp.grid=64 --screen 0.3 --set screen.top=3)
+  screen=(--set dataset=tiny --set resolution=128 --set sample=40 --set sample_seed=3 --set "references=[vsm]" --set lp.grid=64 --screen 0.3 --set screen.refine=0.6 --set screen.top=3)
   "$mb" sweep -q "${screen[@]}" -o "$work/screened"
   results "$work/screened"
   # Estimates and exact rows apart, in the report and its CSV.
