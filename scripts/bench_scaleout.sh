@@ -34,7 +34,7 @@ run_shards() {  # name shards threads
   wall[$name]=$(echo "$(now) - $start" | bc)
   start=$(now)
   "$mb" merge "$work/$name"/shard* -o "$work/$name/merged" > /dev/null
-  merge[$name]=$(echo "$(now) - $start" | bc)
+  merge[$name]=$(printf "%.2f" "$(echo "$(now) - $start" | bc)")
   core[$name]=$(query "$work/$name/merged/results.sqlite" "SELECT sum(seconds) FROM candidates")
 }
 run_shards one 1 "$cores"
