@@ -43,8 +43,10 @@ run_shards "x$((2 * cores))" "$((2 * cores))" 1
 rows=(one "x$cores" "x$((2 * cores))")
 if command -v sinfo > /dev/null && sinfo -h > /dev/null 2>&1; then
   start=$(now)
-  MOMENTBENCH="$mb" bash scripts/slurm/submit.sh "$config" "$work/slurm" "$cores" --cpus-per-task=1 \
-    --time=1:00:00 > /dev/null
+  # From the work directory: the jobs' logs (sbatch --output) land there, not in the checkout.
+  submit=$(realpath scripts/slurm/submit.sh)
+  (cd "$work" && MOMENTBENCH="$mb" bash "$submit" "$config" "$work/slurm" "$cores" \
+    --cpus-per-task=1 --time=1:00:00 > /dev/null)
   until [ -e "$work/slurm/report/report.md" ] || [ -z "$(squeue -h 2>/dev/null)" ]; do sleep 0.5; done
   until [ -z "$(squeue -h 2>/dev/null)" ]; do sleep 0.5; done
   [ -e "$work/slurm/report/report.md" ] || { echo "bench_scaleout: the Slurm jobs left no report" >&2; exit 1; }

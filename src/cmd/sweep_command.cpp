@@ -45,8 +45,8 @@ std::vector<OptionSpec> sweep_specs() {
                    "[pcf, vsm, esm, hamburger4, hausdorff4, hamburger6, tmsm, lp:power4, lp:trig4]",
                    "Techniques evaluated once on the same dataset, for the report."});
   specs.push_back({"screen.fraction", OptionType::Number, "0",
-                   "Screening: every candidate first on this share of each view's warm-start runs "
-                   "(the same runs for all), with a standard error; 0 = every candidate exactly.",
+                   "Screening: every candidate first on this share of each view's units (8 x 16 "
+                   "texels, the same for all), with a standard error; 0 = every candidate exactly.",
                    0, 1});
   specs.push_back({"screen.top", OptionType::Integer, "20",
                    "Screening: K. The best K estimates, and every candidate whose interval "

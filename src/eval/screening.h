@@ -28,7 +28,7 @@ namespace mb {
 // Columns of a screening unit (rows: kWarmRunRows, eval/warm_runs.h).
 constexpr int kScreenUnitColumns = 16;
 
-// One stratum: a view's warm-start runs that have LP fragments.
+// One stratum: a view's units that have LP fragments.
 struct ScreenStratum {
   std::vector<uint32_t> list;     // the LP fragments of the sampled units, unit by unit
   std::vector<size_t> run_begin;  // where each sampled unit begins in `list`, size appended
