@@ -41,6 +41,31 @@ const Fixture& fixture() {
   return f;
 }
 
+// The estimator by hand: a stratum of 4 units with 2 sampled (pilot 2 and 3 of a total 10), and a
+// stratum sampled whole (1 unit), 5 of error outside the LPs, 100 fragments.
+TEST(Screening, EstimateAndStandardErrorByHand) {
+  ScreenSample sample;
+  sample.fixed_error = 5;
+  sample.fragments = 100;
+  ScreenStratum part;
+  part.runs = 4;
+  part.run_begin = {0, 1, 2};
+  part.pilot_total = 10;
+  part.pilot = {2, 3};
+  ScreenStratum whole;
+  whole.runs = 1;
+  whole.run_begin = {0, 1};
+  sample.strata = {part, whole};
+  // Total 5 + 10 + 4 x mean(0.5, 1.0) + 7 = 25. The variance: z = 2 x (4 / 2) x (0.5, 1.0) =
+  // (2, 4), s_z^2 = 2, times (1 - 2 / 4) / 2 = 0.5; the whole stratum adds none.
+  const ScreenEstimate e = estimate_mean_error(sample, {2.5, 4.0, 7.0});
+  EXPECT_DOUBLE_EQ(e.mean, 0.25);
+  EXPECT_DOUBLE_EQ(e.se, std::sqrt(0.5) / 100);
+  // A difference of candidates: (2.5, 4, 7) - (2, 3, 1) = (0.5, 1, 6), the same variance.
+  EXPECT_DOUBLE_EQ(paired_standard_error(sample, {2.5, 4.0, 7.0}, {2.0, 3.0, 1.0}),
+                   std::sqrt(0.5) / 100);
+}
+
 TEST(Screening, EveryRunSampledIsTheExactMean) {
   const Fixture& f = fixture();
   const ScreenSample all = f.sample(1.0);

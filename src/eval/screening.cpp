@@ -11,7 +11,7 @@ namespace mb {
 
 namespace {
 
-// splitmix64: a seeded order of runs that does not depend on the standard library's shuffle.
+// splitmix64: a seeded order of units that does not depend on the standard library's shuffle.
 uint64_t mix(uint64_t x) {
   x += 0x9e3779b97f4a7c15ull;
   x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
@@ -20,37 +20,36 @@ uint64_t mix(uint64_t x) {
 }
 
 // The variance of the estimated total sum_h (R_h / n_h) sum_i r_hi from the sampled residuals r
-// (run errors minus the pilot's, or one candidate's minus another's). Each of the n sampled runs
-// stands for z_i = n (R_h / n_h) r_i, and the variance is that of the mean of n independent draws
-// of z, s_z^2 / n, times the finite population correction 1 - n / R (Cochran, Sampling
-// Techniques, §9A.4). This ignores the strata, which can only overstate the variance, and it is
-// what makes the standard error honest here: a view has two or three sampled runs at F = 0.05,
-// too few for its own variance, and the run errors are heavy tailed.
+// (unit errors minus the pilot's, or one candidate's minus another's), over the strata not sampled
+// whole (those are exact). Each of the d sampled units there stands for z_i = d (R_h / n_h) r_i,
+// whose mean is the total, and the variance is that of a mean of d independent draws, s_z^2 / d
+// (the Hansen-Hurwitz with-replacement estimator), times the finite population correction
+// 1 - d / (their units). This ignores the strata, which can only overstate the variance, and it is
+// what keeps the standard error honest here: a view has few sampled units, too few for its own
+// variance, and the unit errors are heavy tailed.
 template <class Residual>
 double sample_variance(const ScreenSample& sample, Residual residual) {
-  const size_t n = sample.sampled_runs(), runs = sample.runs();
-  if (n < 2 || n == runs) return 0;
+  size_t draws = 0, units = 0;
+  for (const auto& s : sample.strata)
+    if (s.sampled() < s.runs) draws += s.sampled(), units += s.runs;
+  if (draws < 2) return 0;
   std::vector<double> z;
-  z.reserve(n);
+  z.reserve(draws);
   size_t at = 0;
   for (const auto& s : sample.strata) {
     const size_t m = s.sampled();
-    if (m == s.runs) {  // a view sampled whole adds nothing uncertain
-      at += m;
-      continue;
-    }
-    for (size_t i = 0; i < m; ++i)
-      z.push_back(double(n) * double(s.runs) / double(m) * residual(at + i));
+    if (m < s.runs)
+      for (size_t i = 0; i < m; ++i)
+        z.push_back(double(draws) * double(s.runs) / double(m) * residual(at + i));
     at += m;
   }
-  if (z.size() < 2) return 0;
   double mean = 0;
   for (double v : z) mean += v;
-  mean /= double(z.size());
+  mean /= double(draws);
   double squares = 0;
   for (double v : z) squares += (v - mean) * (v - mean);
-  const double draws = double(z.size());
-  return (1 - double(n) / double(runs)) * squares / (draws * (draws - 1));
+  const double d = double(draws);
+  return (1 - d / double(units)) * squares / (d * (d - 1));
 }
 
 }  // namespace
