@@ -130,17 +130,9 @@ TEST(Screening, StandardErrorsCoverTheMissesOverSeeds) {
     const int seeds = 40;
     for (int seed = 1; seed <= seeds; ++seed) {
       const ScreenSample sample = f.sample(0.25, uint64_t(seed));
-      std::vector<double> runs;  // from the full evaluation: sampled runs are its bits
-      for (size_t v = 0; v < f.views.size(); ++v) {
-        const ScreenStratum& s = sample.strata[v];
-        for (size_t r = 0; r < s.sampled(); ++r) {
-          ErrorStats run;
-          for (size_t i = s.run_begin[r]; i < s.run_begin[r + 1]; ++i)
-            run.add(f.views[v].fragments.pcf[s.list[i]], shadow[v][s.list[i]]);
-          runs.push_back(run.sum_abs);
-        }
-      }
-      const ScreenEstimate e = estimate_mean_error(sample, runs);
+      // From the full evaluation: a sampled unit's answers are its optima.
+      const ScreenEstimate e =
+          estimate_mean_error(sample, sampled_unit_errors(sample, f.views, shadow));
       ASSERT_GT(e.se, 0.0);
       const double z = (e.mean - exact) / e.se;
       squares += z * z;

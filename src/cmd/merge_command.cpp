@@ -35,19 +35,18 @@ int run_merge(const MergeOptions& o) {
                        o.shards[0] + "'s " + first["config_hash"] + ": not shards of one sweep");
     if (!shard_names.insert(meta["shard"]).second)
       throw InputError(o.shards[i] + ": shard " + meta["shard"] + " is given twice");
-    for (uint64_t id : inputs[i].candidate_ids()) {
-      auto [it, fresh] = owner.emplace(id, o.shards[i]);
-      if (!fresh)
-        throw InputError("candidate " + std::to_string(id) + " is in both " + it->second + " and " +
-                         o.shards[i] + ": overlapping shards");
-    }
-    // A screened sweep's estimates (sweep --screen) may overlap no more than its candidates.
-    for (uint64_t id : inputs[i].estimate_ids(1)) {
-      auto [it, fresh] = screened.emplace(id, o.shards[i]);
-      if (!fresh)
-        throw InputError("the estimate of candidate " + std::to_string(id) + " is in both " +
-                         it->second + " and " + o.shards[i] + ": overlapping shards");
-    }
+    // Candidates, and a screened sweep's estimates (sweep --screen), each in one shard only.
+    auto claim = [&](std::map<uint64_t, std::string>& owners, const std::set<uint64_t>& ids,
+                     const char* what) {
+      for (uint64_t id : ids) {
+        auto [it, fresh] = owners.emplace(id, o.shards[i]);
+        if (!fresh)
+          throw InputError(what + std::to_string(id) + " is in both " + it->second + " and " +
+                           o.shards[i] + ": overlapping shards");
+      }
+    };
+    claim(owner, inputs[i].candidate_ids(), "candidate ");
+    claim(screened, inputs[i].estimate_ids(1), "the estimate of candidate ");
   }
   // Every shard of K/N must be there, or the merged sweep silently lacks candidates.
   const auto [first_k, total_shards] = parse_shard(first["shard"]);

@@ -76,8 +76,8 @@ struct SweepOptions {
   CommonOptions common;
   bool resume = false;
   std::string shard = "1/1";
-  double screen = 0;
-  bool screen_given = false;  // --screen F: = --set screen.fraction=F
+  double screen = 0;                  // --screen F
+  const CLI::App* command = nullptr;  // for apply_flags
 };
 
 // FNV-1a of the effective config without `threads` (which never changes results): a resume or a
@@ -122,12 +122,31 @@ ResultRow exact_row(const SweepPlan& plan, uint64_t id, const CandidateResult& r
   return row;
 }
 
-std::string rate_note(uint64_t lps, std::chrono::steady_clock::time_point since) {
-  const double elapsed =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
-  char note[64];
-  std::snprintf(note, sizeof note, "%.3g LP/s", lps / std::max(elapsed, 1e-9));
-  return note;
+// The ids of `ids` not in `done`, in order.
+std::vector<uint64_t> not_done(const std::vector<uint64_t>& ids, const std::set<uint64_t>& done) {
+  std::vector<uint64_t> out;
+  for (uint64_t id : ids)
+    if (!done.count(id)) out.push_back(id);
+  return out;
+}
+
+// Runs `one(id)` (which commits its row and returns the LPs it solved) for every id, under a
+// progress bar labelled `what` with the LP rate.
+template <class One>
+void for_each_candidate(const std::vector<uint64_t>& ids, const char* what, bool quiet, One one) {
+  ProgressBar bar(what, ids.size(), quiet);
+  const auto since = std::chrono::steady_clock::now();
+  uint64_t lps = 0;
+  for (const uint64_t id : ids) {
+    lps += one(id);
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+    char note[64];
+    std::snprintf(note, sizeof note, "%.3g LP/s", lps / std::max(elapsed, 1e-9));
+    bar.set_note(note);
+    bar.advance();
+  }
+  bar.finish();
 }
 
 // Screening (issue 33, eval/screening.h): every candidate of this shard on the sample, one
@@ -165,10 +184,7 @@ void screen_and_confirm(const SweepOptions& options, const Config& config, const
   };
   // Estimates of `ids` at `stage` on `sample`, one committed row each (resumable).
   auto screen_stage = [&](int stage, const ScreenSample& sample, const std::vector<uint64_t>& ids) {
-    const auto done = store.estimate_ids(stage);
-    std::vector<uint64_t> todo;
-    for (uint64_t id : ids)
-      if (!done.count(id)) todo.push_back(id);
+    const std::vector<uint64_t> todo = not_done(ids, store.estimate_ids(stage));
     if (!quiet)
       std::fprintf(stderr,
                    "sweep: screening stage %d: %zu candidates (%zu done) on %zu of %zu units, "
@@ -176,10 +192,7 @@ void screen_and_confirm(const SweepOptions& options, const Config& config, const
                    stage, ids.size(), ids.size() - todo.size(), sample.sampled_runs(),
                    sample.runs(), (unsigned long long)sample.sampled_lps(),
                    (unsigned long long)evaluator.lp_fragments());
-    ProgressBar bar(stage == 1 ? "screen" : "refine", todo.size(), quiet);
-    const auto start_all = std::chrono::steady_clock::now();
-    uint64_t lps = 0;
-    for (const uint64_t id : todo) {
+    for_each_candidate(todo, stage == 1 ? "screen" : "refine", quiet, [&](uint64_t id) {
       const auto start = std::chrono::steady_clock::now();
       EstimateRow row;
       row.id = id;
@@ -194,7 +207,7 @@ void screen_and_confirm(const SweepOptions& options, const Config& config, const
           std::fprintf(stderr, "\ncandidate %llu: %s\n", (unsigned long long)id, e.what());
         counts = {};
         counts.unstable = sample.sampled_lps();
-        row.run_errors = lit_unit_errors(sample, evaluator.views());
+        row.run_errors = sampled_unit_errors(sample, evaluator.views(), {});
       }
       const ScreenEstimate estimate = estimate_mean_error(sample, row.run_errors);
       row.mean = estimate.mean;
@@ -203,11 +216,8 @@ void screen_and_confirm(const SweepOptions& options, const Config& config, const
       row.failed = counts.infeasible + counts.unstable;
       row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       store.put_estimate(row);
-      lps += row.solved + row.failed;
-      bar.set_note(rate_note(lps, start_all));
-      bar.advance();
-    }
-    bar.finish();
+      return row.solved + row.failed;
+    });
   };
   // The candidates of `ids` that reach the best (screening.h), from their estimates at `stage`.
   auto reaching = [&](int stage, const ScreenSample& sample, const std::vector<uint64_t>& ids) {
@@ -253,17 +263,13 @@ void screen_and_confirm(const SweepOptions& options, const Config& config, const
     screen_stage(2, refine, ids);
     ids = reaching(2, refine, ids);
   }
-  const auto exact_done = store.candidate_ids();
-  std::vector<uint64_t> confirm;
-  for (uint64_t id : ids)
-    if (!exact_done.count(id)) confirm.push_back(id);
-  evaluate_exactly(confirm, "confirm");
+  evaluate_exactly(not_done(ids, store.candidate_ids()), "confirm");
 }
 
 int run_sweep(const SweepOptions& options) {
   Config config = resolve_config(sweep_specs(), options.common);
-  if (options.screen_given)
-    config.set_node("screen.fraction", YAML::Node(options.screen), "--screen");
+  apply_flags(*options.command, config,
+              {{"--screen", "screen.fraction", [&] { return YAML::Node(options.screen); }}});
   if (options.common.print_config) {
     std::fputs(config.to_yaml().c_str(), stdout);
     return 0;
@@ -340,10 +346,7 @@ int run_sweep(const SweepOptions& options) {
   // Candidates evaluated exactly, one committed row each (a numerically dependent combination is
   // recorded with every LP failed, shown lit, and the sweep goes on).
   auto evaluate_exactly = [&](const std::vector<uint64_t>& todo, const char* what) {
-    ProgressBar bar(what, todo.size(), options.common.quiet);
-    const auto sweep_start = std::chrono::steady_clock::now();
-    uint64_t lps = 0;
-    for (const uint64_t id : todo) {
+    for_each_candidate(todo, what, options.common.quiet, [&](uint64_t id) {
       auto start = std::chrono::steady_clock::now();
       CandidateResult result;
       try {
@@ -360,19 +363,12 @@ int run_sweep(const SweepOptions& options) {
         }
       }
       store.put_candidate(exact_row(plan, id, result, views, start));
-      lps += result.solved + result.infeasible + result.unstable;
-      bar.set_note(rate_note(lps, sweep_start));
-      bar.advance();
-    }
-    bar.finish();
+      return result.solved + result.infeasible + result.unstable;
+    });
   };
-  const auto exact_done = store.candidate_ids();
   const std::vector<uint64_t> mine = shard_ids(plan, shard, shards);
-  const double fraction = config.number("screen.fraction");
-  if (fraction <= 0) {
-    std::vector<uint64_t> todo;
-    for (uint64_t id : mine)
-      if (!exact_done.count(id)) todo.push_back(id);
+  if (config.number("screen.fraction") <= 0) {
+    const std::vector<uint64_t> todo = not_done(mine, store.candidate_ids());
     if (!options.common.quiet)
       std::fprintf(
           stderr,
@@ -398,12 +394,10 @@ void register_sweep_command(CLI::App& app, std::function<int()>& action) {
   command->add_flag("--resume", options->resume,
                     "Continue the sweep in --out (same config required)");
   command->add_option("--shard", options->shard, "Run shard K of N (K/N): every N-th candidate");
-  CLI::Option* screen = command->add_option(
-      "--screen", options->screen, "= --set screen.fraction=F: screen, then confirm the best");
-  command->callback([options, screen, &action] {
-    options->screen_given = screen->count() > 0;
-    action = [options] { return run_sweep(*options); };
-  });
+  command->add_option("--screen", options->screen,
+                      "= --set screen.fraction=F: screen, then confirm the best");
+  options->command = command;
+  command->callback([options, &action] { action = [options] { return run_sweep(*options); }; });
 }
 
 }  // namespace mb

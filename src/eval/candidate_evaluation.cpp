@@ -41,25 +41,19 @@ CandidateResult CandidateEvaluator::evaluate(const Basis& basis,
 std::vector<double> CandidateEvaluator::screen(const Basis& basis, const ScreenSample& sample,
                                                CandidateResult* outcome) const {
   const lp::ProblemFactory factory(basis, settings_.technique.lp);
-  std::vector<double> run_errors;
+  std::vector<std::vector<double>> shadow;
   CandidateResult counts;
   for (size_t v = 0; v < views_.size(); ++v) {
     const ScreenStratum& stratum = sample.strata[v];
-    const LpViewAnswers answers = solve_lp_view(views_[v], stratum.list, basis, factory, settings_,
-                                                nullptr, &stratum.run_begin);
+    LpViewAnswers answers = solve_lp_view(views_[v], stratum.list, basis, factory, settings_,
+                                          nullptr, &stratum.run_begin);
     counts.solved += answers.solved;
     counts.infeasible += answers.infeasible;
     counts.unstable += answers.unstable;
-    const std::vector<double>& pcf = views_[v].fragments.pcf;
-    for (size_t r = 0; r < stratum.sampled(); ++r) {
-      ErrorStats run;  // the same per-fragment error, summed in the same order, as evaluate()'s
-      for (size_t i = stratum.run_begin[r]; i < stratum.run_begin[r + 1]; ++i)
-        run.add(pcf[stratum.list[i]], answers.shadow[stratum.list[i]]);
-      run_errors.push_back(run.sum_abs);
-    }
+    shadow.push_back(std::move(answers.shadow));
   }
   if (outcome) *outcome = counts;
-  return run_errors;
+  return sampled_unit_errors(sample, views_, shadow);
 }
 
 }  // namespace mb

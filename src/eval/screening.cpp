@@ -107,11 +107,9 @@ ScreenSample make_screen_sample(const std::vector<ViewData>& views,
     s.lps = list.size();
     std::vector<double> pilot(s.runs);
     for (size_t r = 0; r < s.runs; ++r) {
-      ErrorStats run;  // as CandidateEvaluator::screen sums a unit
-      for (size_t i = begins[r]; i < begins[r + 1]; ++i)
-        run.add(fragments.pcf[by_unit[i]], pilot_shadow[v][by_unit[i]]);
-      pilot[r] = run.sum_abs;
-      s.pilot_total += run.sum_abs;
+      pilot[r] = unit_error(std::span(by_unit).subspan(begins[r], begins[r + 1] - begins[r]),
+                            fragments.pcf, &pilot_shadow[v]);
+      s.pilot_total += pilot[r];
     }
     const size_t want =
         fraction >= 1 ? s.runs
@@ -136,17 +134,23 @@ ScreenSample make_screen_sample(const std::vector<ViewData>& views,
   return sample;
 }
 
-std::vector<double> lit_unit_errors(const ScreenSample& sample,
-                                    const std::vector<ViewData>& views) {
+double unit_error(std::span<const uint32_t> fragments, const std::vector<double>& pcf,
+                  const std::vector<double>* shadow) {
+  ErrorStats unit;  // the per-fragment error of every table, summed in fragment-list order
+  for (uint32_t f : fragments) unit.add(pcf[f], shadow ? (*shadow)[f] : 0.0);
+  return unit.sum_abs;
+}
+
+std::vector<double> sampled_unit_errors(const ScreenSample& sample,
+                                        const std::vector<ViewData>& views,
+                                        const std::vector<std::vector<double>>& shadow) {
   std::vector<double> errors;
   for (size_t v = 0; v < sample.strata.size(); ++v) {
     const ScreenStratum& s = sample.strata[v];
-    for (size_t r = 0; r < s.sampled(); ++r) {
-      ErrorStats unit;
-      for (size_t i = s.run_begin[r]; i < s.run_begin[r + 1]; ++i)
-        unit.add(views[v].fragments.pcf[s.list[i]], 0.0);
-      errors.push_back(unit.sum_abs);
-    }
+    for (size_t r = 0; r < s.sampled(); ++r)
+      errors.push_back(
+          unit_error(std::span(s.list).subspan(s.run_begin[r], s.run_begin[r + 1] - s.run_begin[r]),
+                     views[v].fragments.pcf, shadow.empty() ? nullptr : &shadow[v]));
   }
   return errors;
 }

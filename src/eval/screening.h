@@ -19,6 +19,7 @@
 // (F_Z(z_f - delta_f) = 0, G = 0 for every candidate, REFERENCE.md §2) are summed exactly once and
 // never sampled.
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "eval/evaluation.h"
@@ -59,9 +60,16 @@ ScreenSample make_screen_sample(const std::vector<ViewData>& views,
                                 const std::vector<std::vector<double>>& pilot_shadow,
                                 double fraction, uint64_t seed);
 
-// The sampled units' error sums of a candidate that answers nothing (every fragment lit, G = 0):
-// how the sweep records a numerically dependent combination.
-std::vector<double> lit_unit_errors(const ScreenSample& sample, const std::vector<ViewData>& views);
+// Sum of |PCF - G| over `fragments` in their order, G from `shadow` (by fragment index; null:
+// every fragment lit, G = 0).
+double unit_error(std::span<const uint32_t> fragments, const std::vector<double>& pcf,
+                  const std::vector<double>* shadow);
+// Every sampled unit's error sum, strata in order, with `shadow` per view (G by fragment index);
+// no shadows: a candidate that answers nothing (G = 0), how the sweep records a numerically
+// dependent combination.
+std::vector<double> sampled_unit_errors(const ScreenSample& sample,
+                                        const std::vector<ViewData>& views,
+                                        const std::vector<std::vector<double>>& shadow);
 
 // A candidate's screened mean error: the estimate and its standard error.
 struct ScreenEstimate {

@@ -284,7 +284,8 @@ std::vector<SweepSeries> load_sweep_series(const std::vector<std::string>& datab
     s.references = store.references();
     s.exact = s.ranked.size();
     // Screened candidates without an exact row join as estimates.
-    const std::set<uint64_t> exact = store.candidate_ids();
+    std::set<uint64_t> exact;
+    for (const auto& r : s.ranked) exact.insert(r.id);
     const std::vector<EstimateRow> estimates = store.estimates(0);  // by id, then stage
     for (size_t i = 0; i < estimates.size(); ++i) {
       const EstimateRow& e = estimates[i];
