@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The continuous Problem 1 (lp.discretization=continuous, REFERENCE.md §2) against the grid (256
+# The continuous Problem 1 (lp.discretization=continuous, docs/reference.md §2) against the grid (256
 # points, warm-started) on the default dataset: per candidate, eval's wall time and mean error in
 # both modes, side by side in one run. Candidates: power4, trig4 and COUNT seeded random
 # 4-function combinations of the catalog. Prints a markdown table for results/BENCHMARKS.md.
@@ -12,7 +12,7 @@ threads=${4:-2}
 root=$(cd "$(dirname "$0")/.." && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-# The catalog in order, from the source (REFERENCE.md §5).
+# The catalog in order, from the source (docs/reference.md §5).
 mapfile -t catalog < <(grep -o '^      {"[^"]*", \[\]' "$root/src/moments/basis.cpp" | sed 's/^      {"//; s/", \[\]$//')
 candidates=(power4 trig4)
 mapfile -t -O 2 candidates < <(/usr/bin/python3 - "$count" "${catalog[@]}" <<'PY'

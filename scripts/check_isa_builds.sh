@@ -4,7 +4,7 @@
 #  - x86-64-v3 (AVX2 + FMA): the same answers hash, bit for bit, and the same pivots;
 #  - x86-64 (SSE2, no FMA): the compiler cannot contract a * b + c into one rounding as the other
 #    builds do, so single LPs differ in the last bits; every answer is still certified to 1e-9
-#    (REFERENCE.md §2), so the sums of G must agree to 2e-9 per LP, with no LP left unsolved.
+#    (docs/reference.md §2), so the sums of G must agree to 2e-9 per LP, with no LP left unsolved.
 #   bash scripts/check_isa_builds.sh [NATIVE_BUILD] [WORK_DIR]   (defaults build/release, build/isa)
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -1,19 +1,19 @@
-// The evaluation protocol of REFERENCE.md §3: one per-fragment bias delta_f for the reference and
-// every technique, so that exact techniques can only leak light. Each test here would have failed
-// under the old protocol (PCF against the receiver's plane, techniques at z_f - 1e-3), which made
-// every sloped receiver shadow itself.
+// The evaluation protocol of docs/reference.md §3: one per-fragment bias delta_f for the reference
+// and every technique, so that exact techniques can only leak light. Each test here would have
+// failed under the old protocol (PCF against the receiver's plane, techniques at z_f - 1e-3), which
+// made every sloped receiver shadow itself.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 
-#include "eval/candidate_evaluation.h"
-#include "eval/darkening.h"
 #include "eval/evaluation.h"
-#include "eval/technique.h"
 #include "lp/problem.h"
 #include "lp/solution.h"
+#include "report/darkening.h"
 #include "scene/procedural.h"
+#include "sweep/candidate_evaluation.h"
+#include "techniques/technique.h"
 #include "util/error.h"
 
 namespace mb {
@@ -200,10 +200,10 @@ TEST(Protocol, TwoOccludersGiveTheSameGInSweepEvalAndSolve) {
   EXPECT_GT(both, 20u);
 }
 
-// lp.moment_box (REFERENCE.md §2, "Moments with a tolerance"): the box around the kernel's stored
-// moments holds the kernel's own distribution, so its G never exceeds the exact LP's, fragment by
-// fragment; the view loop and the one-fragment path agree bit for bit, whatever the thread count;
-// unorm16 exists only where REFERENCE.md §4 defines a transform.
+// lp.moment_box (docs/reference.md §2, "Moments with a tolerance"): the box around the kernel's
+// stored moments holds the kernel's own distribution, so its G never exceeds the exact LP's,
+// fragment by fragment; the view loop and the one-fragment path agree bit for bit, whatever the
+// thread count; unorm16 exists only where docs/reference.md §4 defines a transform.
 TEST(Protocol, MomentBoxLpsSitBelowTheExactLp) {
   EvalSettings settings = settings_for(Reference::Biased);
   const auto views = prepare_views(load_dataset("tiny"), 0, settings, true);

@@ -1,4 +1,4 @@
-// Problem 1 as an LP (REFERENCE.md §2): tiny LPs with known answers, then both backends on
+// Problem 1 as an LP (docs/reference.md §2): tiny LPs with known answers, then both backends on
 // 100 000 seeded random instances, certified by the independent KKT checker.
 #include <gtest/gtest.h>
 
@@ -6,7 +6,6 @@
 #include <iomanip>
 
 #include "eval/evaluation.h"
-#include "eval/lp_technique.h"
 #include "eval/warm_runs.h"
 #include "lp/fallback_backend.h"
 #include "lp/fast_backend.h"
@@ -14,6 +13,7 @@
 #include "lp/problem.h"
 #include "lp/solution.h"
 #include "lp_test_instances.h"
+#include "techniques/lp_technique.h"
 #include "test_support.h"
 
 namespace mb::lp {

@@ -1,7 +1,8 @@
-// Problem 1 on the continuous interval (src/lp/continuous.h, REFERENCE.md §2): the exchange
-// method against a 50-digit reference of the Hamburger and Hausdorff closed forms (REFERENCE.md
-// §4) on kernels narrower than a grid cell and on boundary moment vectors; its bracket contains the
-// reference; refining the grid never raises G, and the grid can sit far above the continuous G.
+// Problem 1 on the continuous interval (src/lp/continuous.h, docs/reference.md §2): the exchange
+// method against a 50-digit reference of the Hamburger and Hausdorff closed forms
+// (docs/reference.md §4) on kernels narrower than a grid cell and on boundary moment vectors; its
+// bracket contains the reference; refining the grid never raises G, and the grid can sit far above
+// the continuous G.
 #include <gtest/gtest.h>
 
 #include <boost/multiprecision/cpp_bin_float.hpp>
@@ -83,7 +84,7 @@ std::vector<HP> hp_weights(const std::vector<HP>& nodes, const std::vector<HP>& 
   return hp_solve(v, std::vector<HP>(m.begin(), m.begin() + n));
 }
 
-// Hamburger 4MSM in 50 digits (REFERENCE.md §4): the canonical distribution through z_f.
+// Hamburger 4MSM in 50 digits (docs/reference.md §4): the canonical distribution through z_f.
 // `nodes` receives its other two nodes.
 HP hamburger4_hp(const Kernel& k, double zf_double, std::vector<HP>* nodes = nullptr) {
   const std::vector<HP> m = hp_moments(k, 4);
@@ -104,7 +105,7 @@ HP hamburger4_hp(const Kernel& k, double zf_double, std::vector<HP>* nodes = nul
 }
 
 // Hausdorff 4MSM in 50 digits: Hamburger's distribution when it lies in [0, 1], otherwise the
-// one on {0, z_f, z*, 1} (REFERENCE.md §4).
+// one on {0, z_f, z*, 1} (docs/reference.md §4).
 HP hausdorff4_hp(const Kernel& k, double zf_double) {
   std::vector<HP> nodes;
   const HP hamburger = hamburger4_hp(k, zf_double, &nodes);
@@ -170,7 +171,7 @@ TEST(Continuous, HausdorffDiffersFromHamburgerNearTheEnds) {
 }
 
 TEST(Continuous, BoundaryMomentVectorsOfOneAndTwoAtoms) {
-  // Moments of one or two atoms determine the distribution (REFERENCE.md §2): G is its mass
+  // Moments of one or two atoms determine the distribution (docs/reference.md §2): G is its mass
   // strictly below z_f, on every interval that contains the atoms.
   const std::vector<Kernel> kernels = {
       {{0.37}, {1.0}}, {{0.3, 0.7}, {0.4, 0.6}}, {{0.5, 0.5004}, {0.25, 0.75}}};

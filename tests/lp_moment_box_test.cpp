@@ -1,8 +1,8 @@
-// Problem 1 with moments known to a tolerance (src/lp/moment_box.h, REFERENCE.md §2): a boundary
-// moment vector pushed just outside the moment cone by rounding is answered within its box, a
-// vector far outside is infeasible with its distance from the cone, and on many boundary vectors
-// of few atoms the box's G never exceeds the atoms' own mass in front of z_f (the atoms are one of
-// the distributions the box admits).
+// Problem 1 with moments known to a tolerance (src/lp/moment_box.h, docs/reference.md §2): a
+// boundary moment vector pushed just outside the moment cone by rounding is answered within its
+// box, a vector far outside is infeasible with its distance from the cone, and on many boundary
+// vectors of few atoms the box's G never exceeds the atoms' own mass in front of z_f (the atoms are
+// one of the distributions the box admits).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -152,7 +152,9 @@ TEST(MomentBoxContinuous, AZeroBoxIsProblemOneAndWideningNeverRaisesG) {
           basis, MomentBox::of_moments(b, std::vector<double>(4, eps)), zf, domain, z);
       ASSERT_TRUE(a.ok()) << "instance " << i << " eps " << eps;
       EXPECT_LE(a.width(), 1e-7) << "instance " << i << " eps " << eps;
-      if (eps == 0) EXPECT_NEAR(a.upper, exact.solution.upper, 1e-7) << "instance " << i;
+      if (eps == 0) {
+        EXPECT_NEAR(a.upper, exact.solution.upper, 1e-7) << "instance " << i;
+      }
       EXPECT_LE(a.lower, previous + 1e-9) << "instance " << i << " eps " << eps;
       previous = a.upper;
     }

@@ -1,5 +1,5 @@
-// Trigonometric MSM (src/moments/tmsm.md) against the LP with the same basis (REFERENCE.md §6):
-// on a grid that also holds the closed form's support points the LP must reach the same G (the
+// Trigonometric MSM (src/moments/tmsm.md) against the LP with the same basis (docs/reference.md
+// §6): on a grid that also holds the closed form's support points the LP must reach the same G (the
 // closed form's distribution is feasible there, and nothing on any grid can go below the
 // infimum), and on a plain grid the LP can only be higher. Plus the quartic, float vs double,
 // G <= F_Z, and the special depths 0 and 1.

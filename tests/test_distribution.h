@@ -8,7 +8,7 @@ namespace mb::testing_support {
 
 struct Distribution {
   std::vector<double> z, w;
-  // F_Z(at) = Z(depth < at) (REFERENCE.md §1: strictly less).
+  // F_Z(at) = Z(depth < at) (docs/reference.md §1: strictly less).
   double cdf(double at) const {
     double s = 0;
     for (size_t i = 0; i < z.size(); ++i) s += z[i] < at ? w[i] : 0;

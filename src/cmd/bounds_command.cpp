@@ -6,15 +6,15 @@
 
 #include "cmd/command_common.h"
 #include "cmd/commands.h"
-#include "eval/bound_curves.h"
-#include "eval/bounds_report.h"
 #include "eval/eval_config.h"
 #include "eval/evaluation.h"
+#include "report/bounds_report.h"
 #include "scene/dataset.h"
 #include "util/error.h"
 #include "util/number_text.h"
 #include "util/output_dir.h"
 #include "util/run_metadata.h"
+#include "verify/bound_curves.h"
 
 namespace mb {
 
@@ -128,8 +128,8 @@ int run_bounds(const CommonOptions& options) {
   write_file_atomically(out / "distribution.csv", report.distribution_csv);
   const std::string plot =
       run_plot_script("plot_bounds.py",
-                      "--bounds '" + (out / "bounds.csv").string() + "' --distribution '" +
-                          (out / "distribution.csv").string() + "'",
+                      {"--bounds", (out / "bounds.csv").string(), "--distribution",
+                       (out / "distribution.csv").string()},
                       (out / "bounds").string(), "CDF and sharp lower bounds", options.quiet);
   const std::string text = report.markdown + "\n" + plot;
   write_file_atomically(out / "bounds.md", text);

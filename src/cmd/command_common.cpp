@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "util/error.h"
+#include "util/install_paths.h"
 
 namespace mb {
 
@@ -56,19 +57,25 @@ std::vector<OptionSpec> dataset_option_specs() {
   };
 }
 
-std::string run_plot_script(const std::string& script, const std::string& arguments,
+std::string run_plot_script(const std::string& script, std::vector<std::string> arguments,
                             const std::string& out_stem, const std::string& caption, bool quiet) {
-  if (std::system("/usr/bin/python3 -c 'import matplotlib' >/dev/null 2>&1") != 0) {
+  const std::string python = "/usr/bin/python3";
+  if (run_program(python, {"-c", "import matplotlib"}, true) != 0) {
     std::string note =
         "No plot: /usr/bin/python3 with matplotlib is not available (apt install "
         "python3-matplotlib).\n\n";
     if (!quiet) std::fprintf(stderr, "%s", note.c_str());
     return note;
   }
-  const std::string path = std::string(MOMENTBENCH_SOURCE_DIR) + "/scripts/" + script;
-  const std::string command = "/usr/bin/python3 '" + path + "' " + arguments + " --out '" +
-                              out_stem + "'" + (quiet ? " >/dev/null" : "");
-  if (std::system(command.c_str()) != 0) throw InputError("plot failed: " + command);
+  const std::string path = (data_root() / "scripts" / script).string();
+  arguments.insert(arguments.begin(), path);
+  arguments.push_back("--out");
+  arguments.push_back(out_stem);
+  if (run_program(python, arguments, quiet) != 0) {
+    std::string command = python;
+    for (const auto& a : arguments) command += " '" + a + "'";
+    throw InputError("plot failed: " + command);
+  }
   const std::string name = std::filesystem::path(out_stem).filename().string();
   return "![" + caption + "](" + name + ".png) (also " + name + ".pdf)\n\n";
 }

@@ -1,6 +1,6 @@
 #pragma once
 // What every subcommand shares: --config, --set, --print-config, --out, --force, --quiet, and
-// turning them into a validated Config (DESIGN.md §Command line).
+// turning them into a validated Config (docs/design.md §Commands).
 #include <CLI/CLI.hpp>
 #include <functional>
 #include <string>
@@ -41,10 +41,11 @@ void set_process_arguments(int argc, char** argv);
 // Option declarations shared by the commands that read a dataset.
 std::vector<OptionSpec> dataset_option_specs();
 
-// Runs scripts/<script> with Debian's /usr/bin/python3 when matplotlib is there (DESIGN.md: plots
+// Runs scripts/<script> (found by data_root(), util/install_paths.h) with its arguments, no shell,
+// with Debian's /usr/bin/python3 when matplotlib is there (docs/design.md §Style: plots
 // stay in Python). Returns the Markdown line for the report: the image `<out_stem>.png` (and
 // .pdf), or a note saying why there is no plot. InputError when the script itself fails.
-std::string run_plot_script(const std::string& script, const std::string& arguments,
+std::string run_plot_script(const std::string& script, std::vector<std::string> arguments,
                             const std::string& out_stem, const std::string& caption, bool quiet);
 
 }  // namespace mb

@@ -9,14 +9,14 @@
 
 #include "cmd/command_common.h"
 #include "cmd/commands.h"
-#include "eval/camera_views.h"
-#include "eval/darkening.h"
 #include "eval/error_stats.h"
 #include "eval/eval_config.h"
-#include "eval/eval_report.h"
 #include "eval/evaluation.h"
-#include "eval/shadow_images.h"
-#include "eval/technique.h"
+#include "report/camera_views.h"
+#include "report/darkening.h"
+#include "report/eval_report.h"
+#include "report/shadow_images.h"
+#include "techniques/technique.h"
 #include "util/error.h"
 #include "util/number_text.h"
 #include "util/output_dir.h"
@@ -97,8 +97,10 @@ int run_eval(const EvalOptions& options) {
       row.seconds = 0;
       row.stats.add_all(view.fragments.pcf, result.shadow);
       row.stats.failures = result.failures;
+      row.fallbacks = result.fallbacks;
       row.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       total.stats.merge(row.stats);
+      total.fallbacks += row.fallbacks;
       total.seconds += row.seconds;
       if (config.boolean("images")) {
         std::string base =

@@ -1,4 +1,4 @@
-// momentbench: one binary, one subcommand per pipeline stage (DESIGN.md §Command line).
+// momentbench: one binary, one subcommand per pipeline stage (docs/design.md §Commands).
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>

@@ -7,8 +7,9 @@
 
 #include "cmd/command_common.h"
 #include "cmd/commands.h"
-#include "eval/results_store.h"
-#include "eval/sweep_plan.h"
+#include "sweep/results_store.h"
+#include "sweep/run_identity.h"
+#include "sweep/sweep_plan.h"
 #include "util/error.h"
 #include "util/output_dir.h"
 
@@ -30,7 +31,7 @@ int run_merge(const MergeOptions& o) {
   std::set<std::string> shard_names;
   for (size_t i = 0; i < inputs.size(); ++i) {
     auto meta = inputs[i].meta();
-    if (meta["config_hash"] != first["config_hash"])
+    if (!same_config(meta, first["config"]))
       throw InputError(o.shards[i] + ": config hash " + meta["config_hash"] + " differs from " +
                        o.shards[0] + "'s " + first["config_hash"] + ": not shards of one sweep");
     if (!shard_names.insert(meta["shard"]).second)

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cmd/commands.h"
+#include "techniques/registry.h"
 #include "util/error.h"
 
 namespace mb {
@@ -22,8 +23,13 @@ std::vector<std::pair<std::string, std::vector<OptionSpec>>> command_option_tabl
 int run_options(const std::string& only) {
   bool found = false;
   std::string text;
+  if (only.empty() || only == "techniques") {
+    found = true;
+    text += "#### Techniques (`techniques`, sweep `references`, verify targets)\n\n" +
+            technique_table_markdown() + "\n";
+  }
   for (const auto& [command, specs] : command_option_tables()) {
-    if (!only.empty() && only != command) continue;
+    if (!only.empty() && only != command) continue;  // "techniques" prints the registry alone
     found = true;
     text += "#### `" + command + "`\n\n" + Config(specs).options_markdown() + "\n";
   }

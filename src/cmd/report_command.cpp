@@ -6,7 +6,7 @@
 
 #include "cmd/command_common.h"
 #include "cmd/commands.h"
-#include "eval/sweep_report.h"
+#include "report/sweep_report.h"
 #include "util/error.h"
 #include "util/output_dir.h"
 
@@ -33,10 +33,10 @@ int run_report(const ReportOptions& o) {
   if (o.plot)
     plot_note =
         run_plot_script("plot_histogram.py",
-                        "--histogram '" + (out.staging() / "histogram.csv").string() +
-                            "' --series '" + (out.staging() / "series.csv").string() +
-                            "' --references '" + (out.staging() / "references.csv").string() +
-                            "' --candidates '" + (out.staging() / "candidates.csv").string() + "'",
+                        {"--histogram", (out.staging() / "histogram.csv").string(), "--series",
+                         (out.staging() / "series.csv").string(), "--references",
+                         (out.staging() / "references.csv").string(), "--candidates",
+                         (out.staging() / "candidates.csv").string()},
                         (out.staging() / "histogram").string(), "candidate histogram", o.quiet);
   const std::string text = sweep_report_markdown(series, plot_note);
   write_file_atomically(out / "report.md", text);

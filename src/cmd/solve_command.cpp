@@ -1,5 +1,5 @@
-// `momentbench solve`: Problem 1 instances (REFERENCE.md §1-2) with a chosen LP backend, one from
-// flags or a JSON Lines batch; `--check` runs the independent KKT checker on every answer.
+// `momentbench solve`: Problem 1 instances (docs/reference.md §1-2) with a chosen LP backend, one
+// from flags or a JSON Lines batch; `--check` runs the independent KKT checker on every answer.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -11,12 +11,13 @@
 
 #include "cmd/command_common.h"
 #include "cmd/commands.h"
-#include "eval/technique.h"
 #include "lp/discretized.h"
 #include "lp/kkt_checker.h"
 #include "lp/moment_box.h"
 #include "lp/problem.h"
 #include "lp/solution.h"
+#include "techniques/registry.h"
+#include "techniques/technique.h"
 #include "util/error.h"
 #include "util/output_dir.h"
 
@@ -36,7 +37,7 @@ struct SolveOptions {
   std::string input, output;
   bool check = false, quantize = false;
   std::string discretization = "grid";
-  double moment_tolerance = 4;  // ulps of each moment (REFERENCE.md §2)
+  double moment_tolerance = 4;  // ulps of each moment (docs/reference.md §2)
 };
 
 using nlohmann::json;
@@ -76,8 +77,8 @@ json solve_one(lp::Backend& backend, FactoryCache& factories,
   json out;
   if (tolerance_ulps > 0 && s.call == lp::CallStatus::Ok &&
       s.status != lp::ProblemStatus::Optimal) {
-    // REFERENCE.md §2, moments with a tolerance: a boundary vector rounded to double may lie just
-    // outside the moment cone. Problem 1 over every distribution whose moments are within the
+    // docs/reference.md §2, moments with a tolerance: a boundary vector rounded to double may lie
+    // just outside the moment cone. Problem 1 over every distribution whose moments are within the
     // box of `tolerance_ulps` ulps answers it; a vector outside the box reports its distance.
     const lp::Problem exact = factory.from_moments(moments, zf, points);
     const lp::MomentBoxAnswer box =
@@ -106,7 +107,7 @@ json solve_one(lp::Backend& backend, FactoryCache& factories,
   if (s.status == lp::ProblemStatus::Optimal) {
     out["G"] = s.G;
     if (disc.continuous) {
-      // REFERENCE.md §2: G of all of [lo, hi] lies in [lower, G]; proven: the certificate is a
+      // docs/reference.md §2: G of all of [lo, hi] lies in [lower, G]; proven: the certificate is a
       // proof (catalog functions), not a sampling (expressions).
       out["lower"] = answer.lower;
       out["bracket"] = answer.width();
@@ -118,8 +119,8 @@ json solve_one(lp::Backend& backend, FactoryCache& factories,
       support.push_back({problem.point(s.support[k]), s.weights[k]});
     out["support"] = support;
   }
-  // Defined answers outside I (REFERENCE.md §1): every distribution on [lo, hi] lies below a z_f
-  // above hi (G = 1) and none strictly below a z_f at or under lo (G = 0).
+  // Defined answers outside I (docs/reference.md §1): every distribution on [lo, hi] lies below a
+  // z_f above hi (G = 1) and none strictly below a z_f at or under lo (G = 0).
   if (zf > disc.hi)
     out["note"] = "zf lies above the interval: every distribution on it is below zf, so G = 1";
   if (zf <= disc.lo)
@@ -132,19 +133,15 @@ json solve_one(lp::Backend& backend, FactoryCache& factories,
   return out;
 }
 
-// A closed-form technique (REFERENCE.md §4) on the given moments, e.g. to re-run a worst case of
-// `verify`; alpha >= 0 replaces every solver's default moment bias.
+// A closed-form technique (docs/reference.md §4) on the given moments, e.g. to re-run a worst case
+// of `verify`; alpha >= 0 replaces every solver's default moment bias.
 json solve_closed_form(const std::string& name, double alpha, const std::vector<double>& moments,
                        double zf) {
   if (name == "pcf" || name.rfind("lp:", 0) == 0)
     throw InputError("technique: '" + name +
                      "' is not a closed form of the moments (use basis for an LP)");
   TechniqueParams params;
-  if (alpha >= 0)
-    for (double* a : {&params.hamburger4_alpha, &params.hamburger4_float_alpha,
-                      &params.hamburger4_16bit_alpha, &params.hausdorff4_alpha,
-                      &params.hamburger6_alpha, &params.tmsm_alpha, &params.tmsm_float_alpha})
-      *a = alpha;
+  if (alpha >= 0) set_moment_bias(params, alpha);
   auto technique = make_technique(name, params);
   if (moments.size() != technique->basis().size())
     throw InputError("moments: technique '" + name + "' reads " +
@@ -162,7 +159,7 @@ json solve_closed_form(const std::string& name, double alpha, const std::vector<
   return out;
 }
 
-// A JSON Lines query, read strictly: every key known, every value of its type (REFERENCE.md §2
+// A JSON Lines query, read strictly: every key known, every value of its type (docs/reference.md §2
 // names; errors name the key and what was expected).
 struct Query {
   const json& q;
@@ -328,7 +325,7 @@ std::vector<OptionSpec> solve_specs() {
       {"moments", OptionType::NumberList, "[]", "Moment vector b_1..b_m of the instance."},
       {"points", OptionType::NumberList, "[]", "Extra points of I (e.g. the kernel's depths)."},
       {"zf", OptionType::Number, "0.5", "Fragment depth z_f."},
-      {"backend", OptionType::String, "fast", "LP backend.", 0, 0, {"fast", "glpk"}},
+      {"backend", OptionType::String, "fast", "LP backend.", 0, 0, lp::backend_names()},
       {"technique", OptionType::String, "''",
        "A closed form instead of the LP (hamburger4, hausdorff4, tmsm, vsm, esm, ...); basis is "
        "then ignored."},
@@ -344,17 +341,17 @@ std::vector<OptionSpec> solve_specs() {
        OptionType::String,
        "grid",
        "grid: Problem 1 on the grid and points; continuous: on all of the interval (exchange "
-       "method; G, its certified lower end and their bracket; REFERENCE.md §2).",
+       "method; G, its certified lower end and their bracket; docs/reference.md §2).",
        0,
        0,
        {"grid", "continuous"}},
       {"moment_tolerance", OptionType::Number, "4",
        "When the moments admit no distribution on I: Problem 1 over the box of this many ulps "
-       "of each moment instead (REFERENCE.md §2; a boundary vector rounded to double), or the "
+       "of each moment instead (docs/reference.md §2; a boundary vector rounded to double), or the "
        "vector's relative distance from the cone. 0: exact only.",
        0, 1e15},
       {"quantize", OptionType::Boolean, "false",
-       "Round extra points to the grid (REFERENCE.md §2)."},
+       "Round extra points to the grid (docs/reference.md §2)."},
   };
 }
 
@@ -430,7 +427,7 @@ void register_solve_command(CLI::App& app, std::function<int()>& action) {
   c->add_option("--points", o->points, "= --set points=[...]")->delimiter(',');
   c->add_option("--zf", o->zf, "= --set zf=Z");
   c->add_option("--backend", o->backend, "= --set backend=NAME")
-      ->check(CLI::IsMember({"fast", "glpk"}));
+      ->check(CLI::IsMember(lp::backend_names()));
   c->add_option("--technique", o->technique, "= --set technique=NAME");
   c->add_option("--alpha", o->alpha, "= --set alpha=A")->check(CLI::Range(0.0, 0.999999));
   CLI::Option* input = c->add_option("--input", o->input, "= --set input=FILE");

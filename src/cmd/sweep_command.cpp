@@ -13,16 +13,17 @@
 
 #include "cmd/command_common.h"
 #include "cmd/commands.h"
-#include "eval/candidate_evaluation.h"
 #include "eval/eval_config.h"
 #include "eval/evaluation.h"
-#include "eval/lp_technique.h"
-#include "eval/results_store.h"
-#include "eval/screening.h"
-#include "eval/sweep_directory.h"
-#include "eval/sweep_plan.h"
-#include "eval/technique.h"
 #include "lp/solution.h"
+#include "sweep/candidate_evaluation.h"
+#include "sweep/results_store.h"
+#include "sweep/run_identity.h"
+#include "sweep/screening.h"
+#include "sweep/sweep_directory.h"
+#include "sweep/sweep_plan.h"
+#include "techniques/lp_technique.h"
+#include "techniques/technique.h"
 #include "util/error.h"
 #include "util/output_dir.h"
 #include "util/run_metadata.h"
@@ -34,7 +35,7 @@ std::vector<OptionSpec> sweep_specs() {
   for (auto& s : shadow_option_specs()) specs.push_back(s);
   specs.push_back({"catalog", OptionType::StringList, "[]",
                    "Functions to combine (names or expressions); empty = the 37-function catalog "
-                   "of REFERENCE.md §5."});
+                   "of docs/reference.md §5."});
   specs.push_back({"combination_size", OptionType::Integer, "4", "Functions per candidate.", 1, 7});
   specs.push_back({"candidates", OptionType::StringList, "[]",
                    "Explicit candidates, each 'f1; f2; ...'; empty = all (or a sample)."});
@@ -79,25 +80,6 @@ struct SweepOptions {
   double screen = 0;                  // --screen F
   const CLI::App* command = nullptr;  // for apply_flags
 };
-
-// FNV-1a of the effective config without `threads` (which never changes results): a resume or a
-// merge with another hash is refused.
-std::string config_hash(const Config& config) {
-  std::string yaml = config.to_yaml(), kept;
-  size_t start = 0;
-  while (start < yaml.size()) {
-    size_t end = yaml.find('\n', start);
-    if (end == std::string::npos) end = yaml.size();
-    std::string line = yaml.substr(start, end - start);
-    if (line.rfind("threads:", 0) != 0) kept += line + "\n";
-    start = end + 1;
-  }
-  uint64_t h = 1469598103934665603ull;
-  for (unsigned char c : kept) h = (h ^ c) * 1099511628211ull;
-  char buffer[24];
-  std::snprintf(buffer, sizeof buffer, "%016llx", (unsigned long long)h);
-  return buffer;
-}
 
 std::vector<std::pair<std::string, double>> view_errors(const std::vector<ViewData>& views,
                                                         const std::vector<ErrorStats>& per_view) {
@@ -158,9 +140,9 @@ void screen_and_confirm(const SweepOptions& options, const Config& config, const
                         const CandidateEvaluator& evaluator, ResultsStore& store,
                         EvaluateExactly& evaluate_exactly) {
   const bool quiet = options.common.quiet;
-  // The pilot, the catalog's first combination (z; z^2; z^3; z^4 in REFERENCE.md §5's), exactly:
-  // its run errors are what every candidate's sampled runs are compared with (screening.h). When
-  // it is a planned candidate of this shard, its exact row is kept too.
+  // The pilot, the catalog's first combination (z; z^2; z^3; z^4 in docs/reference.md §5's),
+  // exactly: its run errors are what every candidate's sampled runs are compared with
+  // (screening.h). When it is a planned candidate of this shard, its exact row is kept too.
   const uint64_t pilot = 0;
   std::vector<std::vector<double>> pilot_shadow;
   {
@@ -305,7 +287,7 @@ int run_sweep(const SweepOptions& options) {
   // The output directory is the sweep's state: new unless resuming, then it must match.
   namespace fs = std::filesystem;
   const fs::path out = options.common.out;
-  const std::string hash = config_hash(config),
+  const std::string hash = config_hash(config.to_yaml()),
                     shard_text = std::to_string(shard) + "/" + std::to_string(shards);
   ResultsStore store = open_sweep_directory(out, {hash, shard_text, config.to_yaml()},
                                             {{"dataset", dataset.name},

@@ -1,4 +1,4 @@
-// `momentbench verify` (REFERENCE.md §6): each closed form against the LP with the matching
+// `momentbench verify` (docs/reference.md §6): each closed form against the LP with the matching
 // basis and interval, on seeded random distributions and on real kernels of a dataset, at three
 // LP grid sizes. Exit status 5 when a solver that must match (double, alpha = 0) does not.
 #include <cstdio>
@@ -9,8 +9,7 @@
 #include "eval/error_stats.h"
 #include "eval/eval_config.h"
 #include "eval/evaluation.h"
-#include "eval/verification.h"
-#include "eval/verify_report.h"
+#include "report/verify_report.h"
 #include "scene/dataset.h"
 #include "scene/procedural.h"
 #include "util/error.h"
@@ -18,16 +17,18 @@
 #include "util/output_dir.h"
 #include "util/progress.h"
 #include "util/run_metadata.h"
+#include "verify/verification.h"
 
 namespace mb {
 
 std::vector<OptionSpec> verify_specs() {
   auto specs = dataset_option_specs();
   for (auto& s : shadow_option_specs()) specs.push_back(s);
-  specs.push_back({"verify.techniques", OptionType::StringList,
-                   "[hamburger4, hausdorff4, tmsm, vsm, esm, hamburger6, hamburger4_float, "
-                   "hamburger4_16bit, tmsm_float, evsm2, evsm4, csm]",
-                   "Closed forms to check (REFERENCE.md §6; EVSM as a lower bound of its basis)."});
+  specs.push_back(
+      {"verify.techniques", OptionType::StringList,
+       "[hamburger4, hausdorff4, tmsm, vsm, esm, hamburger6, hamburger4_float, "
+       "hamburger4_16bit, tmsm_float, evsm2, evsm4, csm]",
+       "Closed forms to check (docs/reference.md §6; EVSM as a lower bound of its basis)."});
   specs.push_back({"verify.random", OptionType::Integer, "2000",
                    "Seeded random distributions (1-8 atoms, mixtures).", 0, 1e8});
   specs.push_back({"verify.fragments", OptionType::Integer, "2000",
@@ -41,7 +42,7 @@ std::vector<OptionSpec> verify_specs() {
                    OptionType::String,
                    "continuous",
                    "continuous: Problem 1 on the whole interval (R for Hamburger and VSM) by the "
-                   "exchange method with a certificate decides (REFERENCE.md §2); grid: the "
+                   "exchange method with a certificate decides (docs/reference.md §2); grid: the "
                    "finest grid decides.",
                    0,
                    0,
@@ -51,7 +52,7 @@ std::vector<OptionSpec> verify_specs() {
                    "storage",
                    "Float32 and 16-bit rows: storage = judged as lower bounds of Problem 1 over "
                    "every distribution on [0, 1] whose stored values lie within the format's "
-                   "rounding of theirs (REFERENCE.md §2), exceeding it reported; strict = "
+                   "rounding of theirs (docs/reference.md §2), exceeding it reported; strict = "
                    "exceeding it also fails verify; off = against the exact moments, reported as "
                    "bias.",
                    0,

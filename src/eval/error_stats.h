@@ -1,6 +1,6 @@
 #pragma once
-// The L1 error of a technique against PCF (REFERENCE.md §3): mean |PCF - G| over receivers, split
-// into light leaking (PCF > G) and over-darkening (G > PCF), with the maximum, the share of
+// The L1 error of a technique against PCF (docs/reference.md §3): mean |PCF - G| over receivers,
+// split into light leaking (PCF > G) and over-darkening (G > PCF), with the maximum, the share of
 // fragments off by more than 0.1, and a histogram of per-fragment errors.
 #include <cstdint>
 #include <span>

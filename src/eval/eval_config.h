@@ -15,7 +15,7 @@ lp::Discretization lp_discretization_from(const Config& config);
 // Validated settings from a resolved config (InputError naming the key on bad values).
 EvalSettings shadow_settings_from(const Config& config, int threads);
 // `techniques` with the `oracle` row added where the receiver-plane reference needs it
-// (REFERENCE.md §3: every table then shows the oracle floor, the bias's own error).
+// (docs/reference.md §3: every table then shows the oracle floor, the bias's own error).
 std::vector<std::string> with_oracle_row(std::vector<std::string> techniques,
                                          const BiasParams& bias);
 // One report line per setting that matters for reproducing numbers.

@@ -54,8 +54,8 @@ std::vector<ViewData> prepare_views(const std::vector<Scene>& scenes, const Data
       views.push_back(prepare_view(scene, as_rendered(view, dataset, resolution), settings));
       bar.advance();
     }
-  // A mean over no receivers would print 0 % for every technique (REFERENCE.md §3: receivers are
-  // the light-facing fragments).
+  // A mean over no receivers would print 0 % for every technique (docs/reference.md §3: receivers
+  // are the light-facing fragments).
   size_t receivers = 0;
   for (const auto& v : views) receivers += v.fragments.size();
   if (receivers == 0)
@@ -89,9 +89,9 @@ TechniqueResult evaluate_technique(const ViewData& view, const std::string& tech
   // Closed forms answer each fragment on its own: any split of the work gives the same bits.
   constexpr size_t kBlock = 4096;
   const size_t blocks = (f.size() + kBlock - 1) / kBlock;
-  size_t failures = 0;
+  size_t failures = 0, fallbacks = 0;
   ParallelErrors errors;  // each block captured: a throw must not leave the worksharing loop
-#pragma omp parallel num_threads(settings.threads) reduction(+ : failures)
+#pragma omp parallel num_threads(settings.threads) reduction(+ : failures, fallbacks)
   {
     auto technique = make_technique(technique_name, settings.technique);
     const bool needs_distribution = technique->needs_distribution();
@@ -118,9 +118,11 @@ TechniqueResult evaluate_technique(const ViewData& view, const std::string& tech
         if (progress) progress->advance(end - begin);
       });
     failures += technique->failures();
+    fallbacks += technique->fallbacks();
   }
   errors.rethrow();
   result.failures = failures;
+  result.fallbacks = fallbacks;
   return result;
 }
 

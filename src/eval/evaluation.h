@@ -1,13 +1,13 @@
 #pragma once
-// Technique x view -> one shadow intensity per receiver fragment (DESIGN.md data flow).
+// Technique x view -> one shadow intensity per receiver fragment (docs/design.md §Data flow).
 #include <string>
 #include <vector>
 
-#include "eval/technique.h"
 #include "scene/dataset.h"
 #include "scene/scene.h"
 #include "shadow/fragments.h"
 #include "shadow/gaussian_kernel.h"
+#include "techniques/technique.h"
 #include "util/progress.h"
 
 namespace mb {
@@ -21,7 +21,8 @@ struct ViewData {
 
 struct EvalSettings {
   GaussianKernel kernel = make_gaussian_kernel(9, 2.4);
-  BiasParams bias;  // delta_f and the reference: techniques see z_f - delta_f (REFERENCE.md §3)
+  BiasParams
+      bias;  // delta_f and the reference: techniques see z_f - delta_f (docs/reference.md §3)
   TechniqueParams technique;
   int threads = 1;
 };
@@ -44,6 +45,7 @@ std::vector<ViewData> prepare_views(const std::vector<Scene>& scenes, const Data
 struct TechniqueResult {
   std::vector<double> shadow;  // G per fragment, in fragment order
   size_t failures = 0;
+  size_t fallbacks = 0;  // Technique::fallbacks
 };
 
 // Runs `technique_name` on every receiver of `view` with one technique instance per thread.

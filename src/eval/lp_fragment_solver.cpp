@@ -5,10 +5,10 @@
 #include <algorithm>
 #include <memory>
 
-#include "eval/lp_technique.h"
 #include "eval/warm_runs.h"
 #include "lp/discretized.h"
 #include "lp/solution.h"
+#include "techniques/lp_technique.h"
 #include "util/parallel_errors.h"
 
 namespace mb {
@@ -95,7 +95,7 @@ LpViewAnswers solve_lp_view(const ViewData& view, const std::vector<uint32_t>& l
         for (size_t i = run_begin[run]; i < run_begin[run + 1]; ++i) {
           const size_t f = list[i], t = view.fragments.texel[f];
           const int x = int(t % map.width), y = int(t / map.width);
-          const double zf = view.fragments.ztest[f];  // z_f - delta_f (REFERENCE.md §3)
+          const double zf = view.fragments.ztest[f];  // z_f - delta_f (docs/reference.md §3)
           // The fragments of one texel share its kernel (41 % of them follow one of their
           // texel's): then only z_f's column changes, and the problem is the same as built anew.
           const bool same_kernel = i > run_begin[run] && view.fragments.texel[list[i - 1]] == t;
@@ -116,8 +116,9 @@ LpViewAnswers solve_lp_view(const ViewData& view, const std::vector<uint32_t>& l
             if (!same_kernel || !factory.move_zf(zf, problem))
               factory.from_distribution(tap_depth, tap_weight, tap_column, zf, problem);
             if (disc.continuous) {
-              // The whole interval (REFERENCE.md §2): the exchange extends a copy, from scratch,
-              // so move_zf keeps working on `problem` and answers do not depend on the schedule.
+              // The whole interval (docs/reference.md §2): the exchange extends a copy, from
+              // scratch, so move_zf keeps working on `problem` and answers do not depend on the
+              // schedule.
               lp::Problem work = problem;
               s = lp::solve_discretized(factory, work, *backend, tap_depth, tap_weight).finite;
             } else {

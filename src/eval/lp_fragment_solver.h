@@ -1,8 +1,8 @@
 #pragma once
-// The one loop that solves a view's receivers as LPs of Problem 1 (REFERENCE.md §2-3), shared by
-// eval's lp: techniques and the sweep, so the two cannot drift apart (DESIGN.md §Performance
-// shape): the basis columns of every texel's layer-0 depth once per view, the exact skip where
-// F_Z(z_f - delta_f) = 0, warm-start runs cut the same way for any thread count.
+// The one loop that solves a view's receivers as LPs of Problem 1 (docs/reference.md §2-3), shared
+// by eval's lp: techniques and the sweep, so the two cannot drift apart (docs/design.md
+// §Performance shape): the basis columns of every texel's layer-0 depth once per view, the exact
+// skip where F_Z(z_f - delta_f) = 0, warm-start runs cut the same way for any thread count.
 #include <cstdint>
 #include <vector>
 

@@ -1,5 +1,5 @@
 #pragma once
-// Problem 1 on the continuous interval [lo, hi] (REFERENCE.md §2, "The grid is an
+// Problem 1 on the continuous interval [lo, hi] (docs/reference.md §2, "The grid is an
 // approximation"): a semi-infinite LP, solved by an exchange method over the finite LP. Solve on
 // the finite set (grid ∪ the fragment's points), find where the dual function
 // phi(z) = y . T (1, b(z)) rises above the step [z < z_f] on [lo, z_f) and on [z_f, hi], add those
@@ -23,7 +23,8 @@ namespace mb::lp {
 
 struct ContinuousSettings {
   int max_rounds = 60;
-  // The exchange stops once upper - lower is within this (REFERENCE.md §2: the bracket's width).
+  // The exchange stops once upper - lower is within this (docs/reference.md §2: the bracket's
+  // width).
   double target_width = 1e-9;
   // A cell passes when phi's bound over it is within this of the step: most of target_width is
   // left to the finite LP's own certified error.

@@ -27,7 +27,7 @@ ContinuousSolution solve_discretized(const ProblemFactory& factory, Problem& pro
   }
   const int degree = power_basis_degree(factory.basis());
   if (degree > 0 && !depths.empty()) {
-    LocalPowerProblem local{degree, disc.lo, disc.hi, 64};
+    LocalPowerProblem local{degree, disc.lo, disc.hi, kContinuousSeedGrid};
     // The problem's own points beyond the distribution's depths and z_f (e.g. solve's --points).
     for (int j = problem.grid_size(); j < problem.cols(); ++j)
       if (problem.extra_atom.empty() || problem.extra_atom[j - problem.grid_size()] < 0)

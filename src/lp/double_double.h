@@ -1,13 +1,14 @@
 #pragma once
 // Double-double numbers (a + b, |b| <= ulp(a) / 2, ~106 bits) from error-free transformations
 // (Knuth's two-sum, an FMA for the product's rounding error), for the fast backend's certificate
-// (REFERENCE.md §2: G to 1e-9 needs reduced costs y.a accurate to ~1e-11 while |y| reaches 1e8).
-// Unlike x87 long double (64 bits) they live in SSE registers and pipeline like plain doubles.
-// Needs IEEE double arithmetic: no -ffast-math (reassociation would cancel the error terms).
+// (docs/reference.md §2: G to 1e-9 needs reduced costs y.a accurate to ~1e-11 while |y| reaches
+// 1e8). Unlike x87 long double (64 bits) they live in SSE registers and pipeline like plain
+// doubles. Needs IEEE double arithmetic: no -ffast-math (reassociation would cancel the error
+// terms).
 #include <cmath>
 
 #ifdef __AVX512F__
-#include <immintrin.h>
+#include "util/simd_intrinsics.h"
 #endif
 
 namespace mb::lp {

@@ -79,7 +79,9 @@ std::vector<std::string> backend_names() {
 std::unique_ptr<Backend> make_backend(const std::string& name) {
   if (name == "fast") return make_fallback_backend(make_fast_backend());
   if (name == "glpk") return make_glpk_backend();
-  throw InputError("unknown LP backend '" + name + "'; valid: fast, glpk");
+  std::string valid;
+  for (const auto& n : backend_names()) valid += (valid.empty() ? "" : ", ") + n;
+  throw InputError("unknown LP backend '" + name + "'; valid: " + valid);
 }
 
 void check_backend_rows(const std::string& name, int functions, const std::string& what) {

@@ -1,5 +1,5 @@
 #pragma once
-// Our exact backend: a dense revised simplex specialised to m + 1 <= 8 rows (REFERENCE.md §2).
+// Our exact backend: a dense revised simplex specialised to m + 1 <= 8 rows (docs/reference.md §2).
 // "Exact" means the same optimum as an exact solution to 1e-9 on every instance: every answer is
 // re-certified before it is returned, or reported as unstable or at its iteration limit.
 // The simplex itself lives in lp/fast/.

@@ -1,7 +1,7 @@
 #pragma once
-// An independent check of an LP solution from the solution alone (DESIGN.md §Style, after HiGHS):
-// primal feasibility, dual feasibility, complementarity and the duality gap, combined into a
-// bound on |G - G*| that the tolerance applies to.
+// An independent check of an LP solution from the solution alone (docs/design.md §Style, after
+// HiGHS): primal feasibility, dual feasibility, complementarity and the duality gap, combined into
+// a bound on |G - G*| that the tolerance applies to.
 #include <string>
 
 #include "lp/solution.h"
@@ -14,7 +14,7 @@ struct KktReport {
   double dual_infeasibility = 0;  // max(0, -min reduced cost) over all points
   double complementarity = 0;     // sum w_j |reduced cost_j| over the support
   double duality_gap = 0;         // |c.w - y.rhs|
-  // First-order bound on |G - G*| (REFERENCE.md §2 dual): sum_r |y_r| |residual_r| (what the
+  // First-order bound on |G - G*| (docs/reference.md §2 dual): sum_r |y_r| |residual_r| (what the
   // residual can move the optimum by) + dual infeasibility (weak duality with sum w = 1) +
   // complementarity. A residual of 1e-10 is harmless with |y| ~ 1, decisive with |y| ~ 1e8 (nearly
   // dependent bases on the boundary of the moment space).

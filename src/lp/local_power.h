@@ -1,9 +1,9 @@
 #pragma once
 // Problem 1 for the power basis (z, .., z^n) in local coordinates u = (z - mean) / deviation of
 // the distribution. The span of 1, z, .., z^n is that of 1, u, .., u^n, so the feasible
-// distributions and G are the same (REFERENCE.md §2); but in u a kernel spanning 0.01 in depth has
-// columns that differ in their leading digits, where in z (and in double) they differ only in the
-// eighth. Rows are orthonormalised over u in [-4, 4] (the distribution's own scale), and the
+// distributions and G are the same (docs/reference.md §2); but in u a kernel spanning 0.01 in depth
+// has columns that differ in their leading digits, where in z (and in double) they differ only in
+// the eighth. Rows are orthonormalised over u in [-4, 4] (the distribution's own scale), and the
 // continuous method (lp/continuous.h) solves on the whole interval. What verify's ground truth for
 // the Hamburger and Hausdorff closed forms is built on.
 #include <span>
@@ -16,7 +16,8 @@ namespace mb::lp {
 struct LocalPowerProblem {
   int degree = 4;         // n: the basis z, .., z^n
   double lo = 0, hi = 1;  // the admissible interval, in z
-  int seed_grid = 64;     // the finite set the exchange starts from: a uniform grid on [lo, hi]
+  int seed_grid =
+      kContinuousSeedGrid;  // the finite set the exchange starts from: a uniform grid on [lo, hi]
   std::vector<double> extra_points;  // more points of I, in z (e.g. beyond [lo, hi])
 };
 

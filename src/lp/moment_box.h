@@ -1,21 +1,21 @@
 #pragma once
-// Problem 1 with moments known only to a tolerance (REFERENCE.md §2, "Moments with a tolerance"):
-// minimise the mass in front of z_f over all distributions on I whose stored values lie in the
-// box |E[s_i] - c_i| <= eps_i, where s = offset + transform * b(z) is what a moment map stores
-// (the moments themselves, or the 16-bit map's theta_4 coordinates, REFERENCE.md §4). A boundary
-// moment vector (few atoms) rounded to double may lie just outside the moment cone, where the exact
-// LP is infeasible; the box problem is feasible whenever the true moments are within eps, and its G
-// is a lower bound for every distribution that could have produced the stored values. Solved by
-// GLPK on the raw rows, each scaled by its largest value over the points (our simplex has no
-// bounded rows); on the continuous interval by the exchange method of lp/continuous.h, whose
+// Problem 1 with moments known only to a tolerance (docs/reference.md §2, "Moments with a
+// tolerance"): minimise the mass in front of z_f over all distributions on I whose stored values
+// lie in the box |E[s_i] - c_i| <= eps_i, where s = offset + transform * b(z) is what a moment map
+// stores (the moments themselves, or the 16-bit map's theta_4 coordinates, docs/reference.md §4). A
+// boundary moment vector (few atoms) rounded to double may lie just outside the moment cone, where
+// the exact LP is infeasible; the box problem is feasible whenever the true moments are within eps,
+// and its G is a lower bound for every distribution that could have produced the stored values.
+// Solved by GLPK on the raw rows, each scaled by its largest value over the points (our simplex has
+// no bounded rows); on the continuous interval by the exchange method of lp/continuous.h, whose
 // certificate serves unchanged: the box LP's dual is again a function phi <= step on I.
-#include <Eigen/Dense>
 #include <span>
 #include <vector>
 
 #include "lp/continuous.h"
 #include "lp/problem.h"
 #include "lp/solution.h"
+#include "util/eigen.h"
 
 namespace mb::lp {
 

@@ -1,10 +1,10 @@
 #include "lp/problem.h"
 
-#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 
 #include "lp/row_count.h"
+#include "util/eigen.h"
 #include "util/error.h"
 #include "util/number_text.h"
 
@@ -73,7 +73,7 @@ ProblemFactory::ProblemFactory(const Basis& basis, const Discretization& disc)
     return a;
   };
   Matrix at = sample(grid->points);
-  // A window orthonormalises the rows where the distributions live (REFERENCE.md §2: a narrow
+  // A window orthonormalises the rows where the distributions live (docs/reference.md §2: a narrow
   // kernel's columns differ only in digits a transform over all of [lo, hi] rounds away).
   const bool windowed = disc.window_lo < disc.window_hi;
   Matrix window_at;

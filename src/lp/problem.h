@@ -1,5 +1,5 @@
 #pragma once
-// Problem 1 as a linear program on a finite depth set (REFERENCE.md §2, Algorithm 1):
+// Problem 1 as a linear program on a finite depth set (docs/reference.md §2, Algorithm 1):
 //   minimise sum_{z_i < z_f} w_i  subject to  sum_i w_i (1, b(z_i)) = (1, b),  w >= 0.
 // The m+1 equality rows are orthonormalised over the grid before any backend sees them: the
 // feasible set is unchanged by an invertible transform of the rows, and the transformed system
@@ -21,7 +21,7 @@ namespace mb::lp {
 // The most rows (basis functions plus the constant) a problem may have.
 constexpr int kMaxColumnRows = 16;
 
-// How the admissible set I is discretised (REFERENCE.md §2).
+// How the admissible set I is discretised (docs/reference.md §2).
 struct Discretization {
   double lo = 0, hi = 1;  // the admissible interval
   int grid = 1024;        // uniform grid points on [lo, hi]
@@ -73,7 +73,7 @@ struct Problem {
   double point(int j) const {
     return j < grid_size() ? grid->points[j] : extra.points[j - grid_size()];
   }
-  // The objective: 1 for mass strictly in front of z_f (REFERENCE.md §1).
+  // The objective: 1 for mass strictly in front of z_f (docs/reference.md §1).
   double cost(int j) const { return point(j) < zf ? 1.0 : 0.0; }
 };
 
@@ -99,7 +99,8 @@ class ProblemFactory {
                        std::span<const double> extra_points = {}) const;
   // From a depth distribution (the kernel's depths and weights): its depths join I, and the
   // moment vector is recomputed from them in the transformed coordinates, so that distribution
-  // is exactly feasible (REFERENCE.md §2: 0 <= G <= F_Z(z_f) then holds without rounding trouble).
+  // is exactly feasible (docs/reference.md §2: 0 <= G <= F_Z(z_f) then holds without rounding
+  // trouble).
   Problem from_distribution(std::span<const double> depths, std::span<const double> weights,
                             double zf) const;
   // The same, with the depths' transformed columns already known (the sweep computes them once per
@@ -113,8 +114,8 @@ class ProblemFactory {
   // outside [lo, hi], before or now): then build anew.
   bool move_zf(double zf, Problem& p) const;
   // Appends `points` (those not already among p's extra points) to p's extra columns, with no
-  // atom behind them: more of I, so G can only fall (REFERENCE.md §2). Verify adds a closed form's
-  // extremal support this way where it lies beyond the grid's interval.
+  // atom behind them: more of I, so G can only fall (docs/reference.md §2). Verify adds a closed
+  // form's extremal support this way where it lies beyond the grid's interval.
   void add_points(Problem& p, std::span<const double> points) const;
 
  private:

@@ -1,6 +1,6 @@
 #pragma once
 // The answer of an LP backend: a *call* status (did the solver run) kept apart from the
-// *problem* status (what the LP is), as in HiGHS (DESIGN.md §Types).
+// *problem* status (what the LP is), as in HiGHS (docs/design.md §Types).
 #include <memory>
 #include <string>
 #include <vector>
@@ -12,9 +12,13 @@ namespace mb::lp {
 // Unstable: numerical trouble (no basis could be certified); IterationLimit: the simplex stopped at
 // its iteration limit (a stalling, ill-conditioned LP). Neither is an answer.
 enum class ProblemStatus { Optimal, Infeasible, IterationLimit, Unstable };
-// Every Optimal answer's G is within this of the LP's optimum (REFERENCE.md §2): the fast backend
-// proves it with a certificate, and accepts a GLPK answer only with the KKT checker's.
+// Every Optimal answer's G is within this of the LP's optimum (docs/reference.md §2): the fast
+// backend proves it with a certificate, and accepts a GLPK answer only with the KKT checker's.
 constexpr double kCertifiedError = 1e-9;
+// The finite set the continuous exchange method starts from (docs/reference.md §2): a uniform grid
+// of this many points on the interval, with the kernel's depths. Fine enough that the first
+// separation steps find the extremal atoms' neighbourhoods, small enough to cost little per LP.
+constexpr int kContinuousSeedGrid = 64;
 enum class CallStatus { Ok, Failed };
 const char* to_string(ProblemStatus status);
 
@@ -129,6 +133,7 @@ class IntoBackend : public Backend {
 std::unique_ptr<Backend> make_backend(const std::string& name);
 // InputError naming `what` when a basis of `functions` is beyond backend `name`'s row limit.
 void check_backend_rows(const std::string& name, int functions, const std::string& what);
+// Every name make_backend takes: the one list option tables and errors print.
 std::vector<std::string> backend_names();
 
 }  // namespace mb::lp

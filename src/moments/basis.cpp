@@ -2,13 +2,13 @@
 
 #include <muParser.h>
 
-#include <Eigen/SVD>
 #include <cmath>
 #include <map>
 #include <mutex>
 #include <numbers>
 
 #include "moments/basis_derivatives.h"
+#include "util/eigen.h"
 #include "util/error.h"
 #include "util/number_text.h"
 
@@ -17,7 +17,7 @@ namespace mb {
 namespace {
 constexpr double kPi = std::numbers::pi;
 
-// REFERENCE.md §5. Built in (not parsed) so the sweep evaluates them at full speed and exactly
+// docs/reference.md §5. Built in (not parsed) so the sweep evaluates them at full speed and exactly
 // as written; their names are the stable identifiers stored in results.
 const std::vector<std::pair<std::string, std::function<double(double)>>>& catalog() {
   static const std::vector<std::pair<std::string, std::function<double(double)>>> table = {

@@ -1,5 +1,5 @@
 #pragma once
-// Basis functions b : I -> R^m (REFERENCE.md §1): the 37-function catalog of §5 under stable
+// Basis functions b : I -> R^m (docs/reference.md §1): the 37-function catalog of §5 under stable
 // names, and user-defined expressions (muparser, variable `z`). Evaluated on arrays.
 #include <functional>
 #include <memory>
@@ -55,7 +55,7 @@ class Basis {
   std::vector<BasisFunction> functions_;
 };
 
-// The 37 catalog names of REFERENCE.md §5, in catalog order (candidate ranks use this order).
+// The 37 catalog names of docs/reference.md §5, in catalog order (candidate ranks use this order).
 const std::vector<std::string>& catalog_names();
 // Convolution shadow maps' 2M channels (seed 001): cos and sin of (2k - 1) pi z, k = 1..M, as
 // expressions of z.

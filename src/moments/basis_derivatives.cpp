@@ -25,7 +25,7 @@ using complex = std::complex<long double>;
 constexpr long double kPi = std::numbers::pi_v<long double>;
 constexpr long double kInf = std::numeric_limits<long double>::infinity();
 
-// REFERENCE.md §5, by family:
+// docs/reference.md §5, by family:
 //   Power z^n (n); Exp e^{cz} (c); Sine sin(a z + b) (cos: b = pi/2);
 //   AffinePower (a + c z)^b; Log log(1 + c z); Pole Re (n = 0) or Im (n = 1) of 1/(z - (a + ib));
 //   Atan atan(c z), whose derivative is Im 1/(z - i/c); Tanh tanh(a (z - b));

@@ -1,6 +1,6 @@
 #pragma once
-// Derivatives of the catalog functions (REFERENCE.md §5) in long double, and proven bounds of
-// |b^(k)| on an interval: what the continuous Problem 1's certificate needs (REFERENCE.md §2:
+// Derivatives of the catalog functions (docs/reference.md §5) in long double, and proven bounds of
+// |b^(k)| on an interval: what the continuous Problem 1's certificate needs (docs/reference.md §2:
 // "phi(z) <= [z < z_f] + eps proven on all of I"). Each catalog function belongs to a family whose
 // k-th derivative has a closed form (powers, exponentials, sinusoids, powers of an affine
 // function, simple complex poles, tanh, Gaussians, z e^z); user expressions have none, and the

@@ -1,12 +1,12 @@
 #pragma once
-// Small pieces shared by the closed-form solvers (REFERENCE.md §4): moment bias, the weights of a
-// distribution on given nodes that reproduces given power moments, and real polynomial roots.
+// Small pieces shared by the closed-form solvers (docs/reference.md §4): moment bias, the weights
+// of a distribution on given nodes that reproduces given power moments, and real polynomial roots.
 #include <algorithm>
 #include <cmath>
 
 namespace mb {
 
-// b <- (1 - alpha) b + alpha b* (REFERENCE.md §4), for m values.
+// b <- (1 - alpha) b + alpha b* (docs/reference.md §4), for m values.
 template <class Real>
 void bias_moments(Real* b, int m, Real alpha, const Real* b_star) {
   for (int j = 0; j < m; ++j) b[j] = (1 - alpha) * b[j] + alpha * b_star[j];

@@ -1,5 +1,5 @@
 #pragma once
-// The one- and two-moment closed forms (REFERENCE.md §4): VSM's one-sided Chebyshev (Cantelli)
+// The one- and two-moment closed forms (docs/reference.md §4): VSM's one-sided Chebyshev (Cantelli)
 // bound for I = R, basis (z, z^2); ESM's Markov bound for basis e^{cz}.
 namespace mb {
 

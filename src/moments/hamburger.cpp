@@ -1,10 +1,10 @@
 #include "moments/hamburger.h"
 
-#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 
 #include "moments/canonical.h"
+#include "util/eigen.h"
 
 namespace mb {
 
@@ -85,11 +85,11 @@ void hamburger4_lower_batch(const double* b, const double* zf, double* lower, si
 }
 
 // Moments whose Hankel matrix is singular lie on the boundary of the moment space: only a
-// distribution with fewer atoms than the matrix's size has them, and it is unique (REFERENCE.md
-// §2), so G is its mass strictly below z_f. Its r atoms are the roots of the monic polynomial
-// z^r + a_{r-1} z^{r-1} + .. + a_0 with H_r a = -(m_r, .., m_{2r-1}), for the largest r whose
-// r x r Hankel matrix is regular. Used where the regular path gives no number (alpha = 0 on 1-3
-// atoms); node_count = 0 when no r fits.
+// distribution with fewer atoms than the matrix's size has them, and it is unique
+// (docs/reference.md §2), so G is its mass strictly below z_f. Its r atoms are the roots of the
+// monic polynomial z^r + a_{r-1} z^{r-1} + .. + a_0 with H_r a = -(m_r, .., m_{2r-1}), for the
+// largest r whose r x r Hankel matrix is regular. Used where the regular path gives no number
+// (alpha = 0 on 1-3 atoms); node_count = 0 when no r fits.
 MsmBound<double> determinate_bound(const double* m, double zf, bool must_reproduce) {
   MsmBound<double> r;
   for (int size = 3; size >= 1; --size) {

@@ -1,5 +1,5 @@
 #pragma once
-// Hamburger moment shadow mapping (REFERENCE.md §4; seed 000 Algorithm 3 with the authors'
+// Hamburger moment shadow mapping (docs/reference.md §4; seed 000 Algorithm 3 with the authors'
 // corrections, seed 004 for six moments): the sharp lower bound of Problem 1 for I = R and the
 // power basis, from the canonical distribution with a node at z_f.
 #include <cstddef>

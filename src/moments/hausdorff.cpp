@@ -11,7 +11,7 @@ MsmBound<double> hausdorff4(const double* b, double zf) {
   // The Hamburger canonical distribution is admissible when its nodes lie in [0, 1].
   if (r.nodes[1] >= 0 && r.nodes[2] <= 1) return r;
   // Otherwise the extremal distribution lives on {0, z_f, z*, 1} with
-  // E[z (z - z_f)(z - z*)(z - 1)] = 0 (REFERENCE.md §4).
+  // E[z (z - z_f)(z - z*)(z - 1)] = 0 (docs/reference.md §4).
   const double b1 = b[0], b2 = b[1], b3 = b[2], b4 = b[3];
   const double z_star = ((b3 - b2) * zf + b3 - b4) / ((b2 - b1) * zf + b2 - b3);
   MsmBound<double> h;

@@ -1,5 +1,6 @@
 #pragma once
-// Hausdorff moment shadow mapping (REFERENCE.md §4): Problem 1 for I = [0, 1] and the power basis.
+// Hausdorff moment shadow mapping (docs/reference.md §4): Problem 1 for I = [0, 1] and the power
+// basis.
 #include "moments/hamburger.h"
 
 namespace mb {

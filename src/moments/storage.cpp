@@ -27,7 +27,7 @@ MomentStorage float32_storage() {
 
 MomentStorage unorm16_power4_storage() {
   MomentStorage s{StorageKind::Unorm16, Eigen::MatrixXd(4, 4), Eigen::VectorXd::Zero(4)};
-  // REFERENCE.md §4 (seed 000, Section 4.3): maps [0,1] into [0,1]^4, gaining ~12.3 bits.
+  // docs/reference.md §4 (seed 000, Section 4.3): maps [0,1] into [0,1]^4, gaining ~12.3 bits.
   s.transform << -2.07224649, 32.23703778, -68.571074599, 39.3703274134,  //
       13.7948857237, -59.4683975703, 82.0359750338, -35.364903257,        //
       0.105877704, -1.9077466311, 9.3496555107, -6.6543490743,            //

@@ -1,13 +1,13 @@
 #pragma once
-// How a moment map is stored on a GPU, emulated (REFERENCE.md §4): exact double, float32, or
+// How a moment map is stored on a GPU, emulated (docs/reference.md §4): exact double, float32, or
 // 16-bit unorm after an optimised affine transform (theta_4 for the power moments, theta_2 for
 // VSM) that spreads the moments over [0,1]^m before rounding and is inverted after filtering.
-#include <Eigen/Dense>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "moments/basis.h"
+#include "util/eigen.h"
 
 namespace mb {
 
@@ -22,7 +22,7 @@ struct MomentStorage {
 
 MomentStorage double_storage();
 MomentStorage float32_storage();
-// theta_4 of REFERENCE.md §4 for b = (z, z^2, z^3, z^4).
+// theta_4 of docs/reference.md §4 for b = (z, z^2, z^3, z^4).
 MomentStorage unorm16_power4_storage();
 // theta_2 for VSM's b = (z, z^2): q = (z, 4z - 4z^2).
 MomentStorage unorm16_power2_storage();
@@ -43,7 +43,7 @@ std::vector<double> filtered_stored_values(const MomentStorage& storage, const B
 std::vector<double> stored_values(const MomentStorage& storage, std::span<const double> moments);
 
 // How far a filtered stored value can lie from the one the exact moments would give, per stored
-// value, for depths in [0, 1] (REFERENCE.md §2 "Moments with a tolerance", §4): float32 rounds
+// value, for depths in [0, 1] (docs/reference.md §2 "Moments with a tolerance", §4): float32 rounds
 // each texel's b_j to the nearest float, within 2^-24 |b_j|, so the weighted sum is within
 // 2^-24 max over [0, 1] of |b_j|; 16-bit rounds each texel's q_i to the nearest of 65536 steps,
 // within 0.5 / 65535 (theta_4 keeps [0, 1] inside [0, 1]^4, so nothing is clamped). Both plus 8

@@ -1,5 +1,5 @@
 #pragma once
-// Trigonometric moment shadow mapping (REFERENCE.md §4 "TMSM"): the sharp lower bound of
+// Trigonometric moment shadow mapping (docs/reference.md §4 "TMSM"): the sharp lower bound of
 // Problem 1 for I = [0, 1] and the basis (sin 2πz, cos 2πz, sin 4πz, cos 4πz), in closed form
 // (one quartic). The derivation is in tmsm.md beside this file.
 #include "moments/hamburger.h"

@@ -1,6 +1,6 @@
 #pragma once
-// Every surface crossing every texel centre of one light view, sorted by depth (REFERENCE.md §3:
-// the depth-layer stack; layer 0 is the ordinary shadow map). Stored as CSR over texels.
+// Every surface crossing every texel centre of one light view, sorted by depth (docs/reference.md
+// §3: the depth-layer stack; layer 0 is the ordinary shadow map). Stored as CSR over texels.
 #include <cstdint>
 #include <string>
 #include <vector>

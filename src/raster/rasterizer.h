@@ -1,12 +1,12 @@
 #pragma once
 // CPU rasterization of triangles into a LayerStack: every triangle covering a texel centre gives a
-// fragment, not only the nearest (REFERENCE.md §3).
-#include <Eigen/Core>
+// fragment, not only the nearest (docs/reference.md §3).
 #include <array>
 #include <optional>
 #include <vector>
 
 #include "raster/layer_stack.h"
+#include "util/eigen.h"
 
 namespace mb {
 

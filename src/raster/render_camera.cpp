@@ -1,10 +1,10 @@
 #include "raster/render_camera.h"
 
-#include <Eigen/Geometry>
 #include <array>
 #include <cmath>
 
 #include "raster/rasterizer.h"
+#include "util/eigen.h"
 
 namespace mb {
 

@@ -2,12 +2,12 @@
 // What a camera sees of a scene (issue 34's camera views): per pixel the nearest surface's scene
 // triangle and the exact world point where the pixel's ray meets it. The light views' rasterizer
 // is reused on the camera's projection, after clipping triangles at the camera's near plane.
-#include <Eigen/Core>
 #include <cstdint>
 #include <vector>
 
 #include "scene/camera.h"
 #include "scene/scene.h"
+#include "util/eigen.h"
 
 namespace mb {
 

@@ -2,12 +2,12 @@
 
 #include <sys/resource.h>
 
-#include <Eigen/Geometry>
 #include <cstdint>
 #include <fstream>
 #include <limits>
 
 #include "raster/rasterizer.h"
+#include "util/eigen.h"
 #include "util/error.h"
 
 namespace mb {

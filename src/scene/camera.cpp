@@ -1,8 +1,9 @@
 #include "scene/camera.h"
 
-#include <Eigen/Geometry>
 #include <cmath>
 #include <numbers>
+
+#include "util/eigen.h"
 
 namespace mb {
 

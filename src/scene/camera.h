@@ -3,8 +3,9 @@
 // World points map to raster coordinates (x right, y down, pixel (i, j) centred at (i + .5, j +
 // .5)) and a depth in [0, 1] that is affine in raster space (1 / distance, rescaled), so the light
 // views' rasterizer interpolates it exactly.
-#include <Eigen/Core>
 #include <string>
+
+#include "util/eigen.h"
 
 namespace mb {
 

@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "util/error.h"
+#include "util/install_paths.h"
 #include "util/yaml_reader.h"
 
 namespace mb {
@@ -14,8 +15,7 @@ std::string resolve_dataset_path(const std::string& name_or_path) {
   bool bare_name =
       name_or_path.find('/') == std::string::npos && fs::path(name_or_path).extension().empty();
   if (bare_name) {
-    fs::path builtin =
-        fs::path(MOMENTBENCH_SOURCE_DIR) / "configs" / "datasets" / (name_or_path + ".yaml");
+    fs::path builtin = data_root() / "configs" / "datasets" / (name_or_path + ".yaml");
     if (fs::exists(builtin)) return builtin.string();
     std::string names;
     for (const auto& entry : fs::directory_iterator(builtin.parent_path()))

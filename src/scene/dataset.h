@@ -1,5 +1,5 @@
 #pragma once
-// A dataset: the scenes (and so the light views) an evaluation runs on (REFERENCE.md §3: the
+// A dataset: the scenes (and so the light views) an evaluation runs on (docs/reference.md §3: the
 // paper used four views of three scenes).
 #include <string>
 #include <vector>

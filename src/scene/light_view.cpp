@@ -1,11 +1,12 @@
 #include "scene/light_view.h"
 
-#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <sstream>
+
+#include "util/eigen.h"
 
 namespace mb {
 

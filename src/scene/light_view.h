@@ -1,10 +1,11 @@
 #pragma once
 // A directional light's view of a scene: an orthographic projection fitted to the scene bounds,
 // mapping world points to raster coordinates (x right, y down, in texels) and depth in [0, 1]
-// (REFERENCE.md §3: depth normalized to [0,1], empty texels at the far plane 1).
-#include <Eigen/Core>
+// (docs/reference.md §3: depth normalized to [0,1], empty texels at the far plane 1).
 #include <string>
 #include <vector>
+
+#include "util/eigen.h"
 
 namespace mb {
 

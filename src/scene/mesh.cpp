@@ -1,6 +1,6 @@
 #include "scene/mesh.h"
 
-#include <Eigen/LU>
+#include "util/eigen.h"
 
 namespace mb {
 

@@ -1,11 +1,11 @@
 #pragma once
 // An indexed triangle mesh in world units. Winding is counter-clockwise seen from outside, so the
 // geometric normal (b-a)x(c-a) points out of closed solids; facing the light is read from it.
-#include <Eigen/Core>
-#include <Eigen/Geometry>
 #include <array>
 #include <cstdint>
 #include <vector>
+
+#include "util/eigen.h"
 
 namespace mb {
 

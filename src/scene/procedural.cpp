@@ -1,8 +1,9 @@
 #include "scene/procedural.h"
 
-#include <Eigen/Geometry>
 #include <cmath>
 #include <numbers>
+
+#include "util/eigen.h"
 
 namespace mb {
 

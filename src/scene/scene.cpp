@@ -1,6 +1,5 @@
 #include "scene/scene.h"
 
-#include <Eigen/Geometry>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -8,6 +7,7 @@
 
 #include "scene/mesh_loader.h"
 #include "scene/procedural.h"
+#include "util/eigen.h"
 #include "util/error.h"
 #include "util/yaml_reader.h"
 
@@ -197,12 +197,6 @@ std::vector<TriangleMesh> build_part(const PartDesc& part) {
 }
 
 }  // namespace
-
-std::vector<std::string> generator_names() {
-  std::vector<std::string> names;
-  for (const auto& [name, _] : generators()) names.push_back(name);
-  return names;
-}
 
 SceneDesc parse_scene(const std::string& file) {
   YamlMap root = YamlMap::load_file(file, "scene file");

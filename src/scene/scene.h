@@ -43,9 +43,6 @@ struct Scene {
   std::vector<CameraDesc> cameras;
 };
 
-// The generator names a part may use, with their parameters (for errors and docs).
-std::vector<std::string> generator_names();
-
 SceneDesc parse_scene(const std::string& file);
 // Builds triangles; fails on an empty scene or non-finite coordinates after transforms.
 Scene build_scene(const SceneDesc& desc);

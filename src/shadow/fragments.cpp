@@ -73,7 +73,7 @@ ReceiverTest receiver_test(const ShadowMap& map, const GaussianKernel& kernel,
     for (int dx = -r; dx <= r; ++dx) {
       const double depth = map.at(x + dx, y + dy), w = kernel.weight(dx, dy);
       if (depth < ztest) oracle += w;
-      // REFERENCE.md §3: the ideal filtered hard shadow tests each tap against the plane. The
+      // docs/reference.md §3: the ideal filtered hard shadow tests each tap against the plane. The
       // plane, extrapolated past a steep receiver's edge, can pass the far plane, where empty
       // texels hold depth 1: nothing lies beyond it, so the test depth stops there.
       if (depth < std::min(zf + dx * gx + dy * gy - bias.constant, 1.0)) plane += w;

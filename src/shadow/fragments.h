@@ -1,5 +1,5 @@
 #pragma once
-// The receivers of one light view and their PCF reference (REFERENCE.md §3): every fragment of
+// The receivers of one light view and their PCF reference (docs/reference.md §3): every fragment of
 // every layer that faces the light, each with its depth z_f, its own depth bias delta_f from its
 // triangle plane, and the reference shadow intensity over layer 0.
 #include <cstdint>
@@ -12,7 +12,7 @@
 
 namespace mb {
 
-// What the techniques are compared against (REFERENCE.md §3).
+// What the techniques are compared against (docs/reference.md §3).
 enum class Reference {
   // PCF = F_Z(z_f - delta_f), the paper's protocol: the same test every technique bounds, so an
   // exact technique's error is pure light leaking (what the moments do not know).
@@ -25,7 +25,7 @@ const char* reference_name(Reference reference);
 // "biased" or "receiver_plane"; InputError naming `key` otherwise.
 Reference parse_reference(const std::string& text, const std::string& key);
 
-// One depth bias for the reference and every technique (REFERENCE.md §3):
+// One depth bias for the reference and every technique (docs/reference.md §3):
 // delta_f = c + s * r * (|dz/dx| + |dz/dy|), r the kernel radius in texels. With s >= 1 the
 // receiver's own plane lies behind z_f - delta_f at every tap, so it never shadows itself. s = 0
 // with a constant c is the old constant bias (which lets sloped receivers shadow themselves).
@@ -40,7 +40,7 @@ double fragment_bias(const BiasParams& bias, int kernel_radius, double dz_dx, do
 struct ShadowMap {
   int width = 0, height = 0;
   std::vector<double> depth;
-  // Depth at (x, y); outside the map counts as the far plane (REFERENCE.md §3).
+  // Depth at (x, y); outside the map counts as the far plane (docs/reference.md §3).
   double at(int x, int y) const {
     return x < 0 || y < 0 || x >= width || y >= height ? 1.0 : depth[size_t(y) * width + x];
   }
@@ -53,13 +53,13 @@ struct Fragments {
   std::vector<uint16_t> layer;  // 0 = the shadow map's own surface
   std::vector<double> zf;       // fragment depth
   std::vector<double> ztest;    // z_f - delta_f: the depth every technique is evaluated at
-  std::vector<double> oracle;   // F_Z(z_f - delta_f); 0 means G = 0 exactly (REFERENCE.md §2)
+  std::vector<double> oracle;   // F_Z(z_f - delta_f); 0 means G = 0 exactly (docs/reference.md §2)
   std::vector<double> pcf;      // the reference shadow intensity in [0, 1] (= oracle if Biased)
   size_t size() const { return zf.size(); }
 };
 
 // One receiver's test at texel (x, y) of `map`, its depth z_f and plane gradient (dz/dx, dz/dy
-// in texels): z_f - delta_f, F_Z there (the oracle) and the reference (REFERENCE.md §3).
+// in texels): z_f - delta_f, F_Z there (the oracle) and the reference (docs/reference.md §3).
 struct ReceiverTest {
   double ztest, oracle, pcf;
 };

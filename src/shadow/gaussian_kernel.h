@@ -1,5 +1,5 @@
 #pragma once
-// The filter kernel shared by PCF and the moment maps (REFERENCE.md §3: 9x9 Gaussian,
+// The filter kernel shared by PCF and the moment maps (docs/reference.md §3: 9x9 Gaussian,
 // sigma = 2.4 texels, weights normalised). Separable: w(dx, dy) = w1(dx) * w1(dy).
 #include <vector>
 

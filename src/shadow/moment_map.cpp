@@ -6,7 +6,7 @@ MomentMap compute_moment_map(const ShadowMap& map, const Basis& basis, const Gau
                              const MomentStorage& storage, int threads) {
   const int m = int(basis.size()), r = kernel.radius();
   const int w = map.width, h = map.height, pw = w + 2 * r, ph = h + 2 * r;
-  // Padded stored values: outside the map is the far plane, depth 1 (REFERENCE.md §3).
+  // Padded stored values: outside the map is the far plane, depth 1 (docs/reference.md §3).
   std::vector<double> padded_depth(size_t(pw) * ph, 1.0);
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)

@@ -1,7 +1,8 @@
 #pragma once
-// A filtered moment map (DESIGN.md data flow): b(layer-0 depth) per texel, stored as the chosen
-// storage would hold it, filtered by the same normalised Gaussian as PCF (separably, in double),
-// then loaded back. The texel's value is b = E_Z[b] of its kernel distribution (REFERENCE.md §1).
+// A filtered moment map (docs/design.md §Data flow): b(layer-0 depth) per texel, stored as the
+// chosen storage would hold it, filtered by the same normalised Gaussian as PCF (separably, in
+// double), then loaded back. The texel's value is b = E_Z[b] of its kernel distribution
+// (docs/reference.md §1).
 #include <span>
 #include <vector>
 

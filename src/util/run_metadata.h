@@ -1,5 +1,5 @@
 #pragma once
-// What every report starts with: how it was made (DESIGN.md §Style, "reports that say how").
+// What every report starts with: how it was made (docs/design.md §Style, "reports that say how").
 #include <string>
 #include <vector>
 

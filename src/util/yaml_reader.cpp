@@ -143,12 +143,6 @@ std::optional<std::string> YamlMap::string(const std::string& key) {
   return v.Scalar();
 }
 
-std::string YamlMap::require_string(const std::string& key) {
-  auto s = string(key);
-  if (!s) fail("", "missing required key '" + key + "'");
-  return *s;
-}
-
 std::optional<std::vector<double>> YamlMap::numbers(const std::string& key, size_t count) {
   YAML::Node v = at(key);
   if (!v) return std::nullopt;

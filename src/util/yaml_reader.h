@@ -1,6 +1,6 @@
 #pragma once
 // Checked reading of YAML description files (scenes, datasets): every key must be read by the
-// parser or it is an error naming file, line and key (DESIGN.md §Style: "parse, then build").
+// parser or it is an error naming file, line and key (docs/design.md §Style: "parse, then build").
 #include <yaml-cpp/yaml.h>
 
 #include <cstdint>
@@ -34,7 +34,6 @@ class YamlMap {
   int64_t integer(const std::string& key, int64_t fallback, int64_t min, int64_t max);
   bool boolean(const std::string& key, bool fallback);
   std::optional<std::string> string(const std::string& key);
-  std::string require_string(const std::string& key);
   // A list of exactly `count` numbers (any length if count == 0).
   std::optional<std::vector<double>> numbers(const std::string& key, size_t count);
   std::vector<std::string> strings(const std::string& key);

@@ -18,7 +18,7 @@
 #include <utility>
 
 #ifdef __AVX2__
-#include <immintrin.h>
+#include "util/simd_intrinsics.h"
 #endif
 #ifdef __x86_64__
 #include <x86intrin.h>
@@ -61,7 +61,8 @@ const std::vector<lp::Problem>& problems(const std::string& basis_name, int grid
       if (index % stride) continue;
       const size_t t = v.fragments.texel[k];
       const int x = int(t % v.map.width), y = int(t / v.map.width);
-      // The LPs the sweep solves (REFERENCE.md §3): at z_f - delta_f, where F_Z of it is not 0.
+      // The LPs the sweep solves (docs/reference.md §3): at z_f - delta_f, where F_Z of it is not
+      // 0.
       const double zf = v.fragments.ztest[k];
       if (v.fragments.oracle[k] == 0) continue;  // skipped exactly in eval and sweep
       kernel_distribution(v.map, kernel, x, y, depths, weights);

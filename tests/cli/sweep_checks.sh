@@ -45,7 +45,7 @@ resume)
   echo "killed after $n of 24 candidates"
   [ "$n" -ge 1 ] && [ "$n" -lt 24 ] || { echo "sweep_checks: the kill did not land mid-way ($n)"; exit 1; }
   # A resume with a different config is refused, and changes nothing.
-  # The reference and both bias options are part of the config's hash (REFERENCE.md §3).
+  # The reference and both bias options are part of the config's hash (docs/reference.md §3).
   for other in bias.constant=0.002 bias.slope=2 reference=receiver_plane; do
     if "$mb" sweep -q "${common[@]}" --set $other --resume -o "$work/killed" 2>"$work/err"; then exit 1; fi
     grep -q "run with another config" "$work/err"
@@ -154,7 +154,7 @@ rows = [r for r in csv.DictReader(open(sys.argv[2])) if r["series"] == "4 functi
 assert len(rows) == 24 and all(float(r["mean_error"]) == db[int(r["id"])] for r in rows), "means lost precision"
 PY
   # The grid's bias, measured in the run against the continuous closed forms: a grid admits fewer
-  # distributions than [0, 1], so the LP's error can only be the smaller (REFERENCE.md §2).
+  # distributions than [0, 1], so the LP's error can only be the smaller (docs/reference.md §2).
   "$mb" sweep -q --set dataset=tiny --set sample=2 --set sample_seed=3 --set lp.grid=64 \
       --set "references=[lp:power4, hausdorff4, lp:trig4, tmsm]" -o "$work/bias"
   "$mb" report -q --no-plot "$work/bias" -o "$work/bias.report" >/dev/null

@@ -5,7 +5,7 @@
 namespace mb::lp::fast {
 
 // Basic column `i` (negative weight) and the basic point closest to it (its partner) stand for
-// one node of the distribution (a basic solution: at most m + 1 points of I, REFERENCE.md §2),
+// one node of the distribution (a basic solution: at most m + 1 points of I, docs/reference.md §2),
 // which moved past them since the previous fragment. The pair moves to the node's bracket when
 // bracket_node finds it; otherwise towards the node's estimate, the pair's weighted mean (an
 // extrapolation while one weight is negative): `i` to the nearest point of I beyond its partner,

@@ -3,7 +3,7 @@
 // reference (lanes_scalar.h, compiled in every build) and SIMD paths (lanes_avx2.h,
 // lanes_avx512.h) that must return the reference's bits exactly. This header picks the widest path
 // the build's instruction set has; tests/lp_lanes_test.cpp compares every path the build has with
-// the reference, so the answers do not depend on the instruction set (REFERENCE.md §2 promises
+// the reference, so the answers do not depend on the instruction set (docs/reference.md §2 promises
 // G to 1e-9; the project promises more: the same bits on every thread count and path).
 #include "lp/fast/lanes_avx2.h"
 #include "lp/fast/lanes_avx512.h"

@@ -5,13 +5,12 @@
 // (Masked forms with every lane set appear where GCC 12's unmasked ones warn of an uninitialised
 // variable.)
 #ifdef __AVX512F__
-#include <immintrin.h>
-
 #include <cstdint>
 #include <limits>
 
 #include "lp/double_double.h"
 #include "lp/fast/lanes_scalar.h"
+#include "util/simd_intrinsics.h"
 
 namespace mb::lp::fast::lanes::avx512 {
 

@@ -104,8 +104,8 @@ inline int FastSimplex<K>::slide_entering() {
   return chosen;
 }
 
-// Partial pricing over the extra columns (the kernel's depths and z_f, which REFERENCE.md §2 adds
-// to the grid): Dantzig among them first, and a full pass only when none of them may enter, so
+// Partial pricing over the extra columns (the kernel's depths and z_f, which docs/reference.md §2
+// adds to the grid): Dantzig among them first, and a full pass only when none of them may enter, so
 // optimality is never judged on them. The optimal support of a kernel's LP often lies on the
 // kernel's own depths (the distribution's atoms), while a grid column that enters next to a basic
 // point tends to walk a cell per pivot towards a node. On lp_bench's runs this needs fewer pivots

@@ -1,5 +1,5 @@
 #pragma once
-// The fast simplex's tolerances and limits, each with its reason (REFERENCE.md §2).
+// The fast simplex's tolerances and limits, each with its reason (docs/reference.md §2).
 #include "lp/solution.h"
 
 namespace mb::lp::fast {
@@ -33,7 +33,7 @@ struct SimplexSettings {
   double negligible_weight = 1e-18;
   // Rank-1 updates between fresh inverses. The updates carry over from LP to LP in a lane's
   // factors, and the certificates refine x_B and y against B itself. 32 instead of 16 (with
-  // kChangedColumns 3 instead of 2): 0.36 instead of 0.46 factorisations an LP on lp_bench's warm
+  // changed_columns 3 instead of 2): 0.36 instead of 0.46 factorisations an LP on lp_bench's warm
   // runs at grid 256, the same pivots, and the 100 000 random instances' and three sweeps' unstable
   // counts as they were. Only run's retry from scratch, the last resort of ill-conditioned LPs (70
   // pivots on a narrow kernel, |y| ~ 1e6), keeps 16: with 32 that LP stayed unstable
@@ -49,7 +49,7 @@ struct SimplexSettings {
   int guided_steps = 8;  // certificate-guided steps per LP (solve_phase2)
   int warm_tries = 5;    // warm bases tried before the composite repair
   // update_factors: product-form updates instead of a factorisation for up to this many changed
-  // columns (see kRefactorInterval).
+  // columns (see refactor_interval).
   int changed_columns = 3;
   double hopeless_weight = 10;  // a warm try with a weight below -10 is given up
   // Pivots of one simplex run before it gives up (ProblemStatus::IterationLimit): optimal bases

@@ -1,7 +1,7 @@
 #pragma once
-// FastSimplex<K>: the dense revised simplex for Problem 1 with K = m + 1 rows (REFERENCE.md §2).
-// The class holds the state; its members are defined, one concept per file, in the headers named
-// beside each group below, all included by lp/fast_backend.cpp.
+// FastSimplex<K>: the dense revised simplex for Problem 1 with K = m + 1 rows (docs/reference.md
+// §2). The class holds the state; its members are defined, one concept per file, in the headers
+// named beside each group below, all included by lp/fast_backend.cpp.
 #include <algorithm>
 #include <bit>
 #include <cmath>

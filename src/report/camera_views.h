@@ -1,0 +1,57 @@
+#pragma once
+// Camera views of the techniques' shadows (issue 34; the seed paper's Figures 1 and 6): what a
+// camera sees of a scene, lit by one light view, with each technique's shadow. Every visible point
+// that faces the light becomes a receiver of that light view: projected into its shadow map
+// (nearest texel), with its own depth z_f and bias delta_f from its triangle's plane
+// (docs/reference.md §3) and the evaluation's reference (shadow/fragments.h, receiver_test). The
+// techniques then run through evaluate_technique unchanged, and simple diffuse shading makes the
+// image.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "eval/evaluation.h"
+#include "raster/render_camera.h"
+#include "scene/scene.h"
+
+namespace mb {
+
+struct CameraView {
+  std::string camera;
+  int width = 0, height = 0;
+  // The light view's shadow map with the camera's receivers as its fragments (in texel order).
+  ViewData receivers;
+  std::vector<uint32_t> pixel;  // per receiver: its pixel
+  // Per pixel: max(0, n . l) of the surface seen (0 facing away from the light), -1 background.
+  std::vector<float> diffuse;
+};
+
+// `light`: the view as rendered for `light_view` (its resolution). The camera sees `scene`.
+CameraView camera_view(const Scene& scene, const LightViewDesc& light, const ViewData& light_view,
+                       const CameraDesc& camera, const EvalSettings& settings);
+
+// One technique's image: sRGB in [0, 1], 3 channels, row-major. `shadow` per receiver.
+std::vector<float> shade_camera_view(const CameraView& view, const std::vector<double>& shadow);
+// A technique's difference from PCF: red where it is darker (over-darkening), blue where lighter
+// (light leaking), full colour at |G - PCF| >= scale, over the PCF image in grey.
+std::vector<float> difference_image(const CameraView& view, const std::vector<double>& shadow,
+                                    double scale);
+
+// Writes `<base>_<stem>.png` and `<base>_<stem>_diff.png` per technique (PCF first, no
+// difference) and `<base>_sheet.png`: every technique's image above its difference, labelled.
+void write_camera_images(const CameraView& view, const std::vector<std::string>& names,
+                         const std::vector<std::vector<double>>& shadows, const std::string& base,
+                         double scale);
+
+// InputError unless some scene of `dataset` names a camera (checked before any work).
+void check_dataset_cameras(const std::vector<Scene>& scenes, const DatasetDesc& dataset);
+// Every camera of every scene (`scenes`, built from `dataset`), lit by each of the scene's light
+// views (`views` as prepare_views rendered them at `resolution`), for `techniques`:
+// write_camera_images into `dir` as <scene>_<view>_<camera>_*.png.
+void write_dataset_camera_views(const std::vector<Scene>& scenes, const DatasetDesc& dataset,
+                                const std::vector<ViewData>& views,
+                                const std::vector<std::string>& techniques, int resolution,
+                                const EvalSettings& settings, double scale,
+                                const std::filesystem::path& dir, bool quiet);
+
+}  // namespace mb

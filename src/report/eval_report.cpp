@@ -1,0 +1,115 @@
+#include "report/eval_report.h"
+
+#include <cctype>
+#include <cstdio>
+#include <sstream>
+
+#include "report/darkening.h"
+#include "util/number_text.h"
+
+namespace mb {
+
+namespace {
+
+std::string number(double v) {
+  return round_trip(v);
+}
+
+std::string table_row(const EvalRow& r) {
+  std::ostringstream s;
+  s << "| " << r.technique << " | " << r.scene << (r.view.empty() ? "" : "/" + r.view) << " | "
+    << r.stats.count << " | " << percent_text(r.stats.mean()) << " | "
+    << percent_text(r.stats.leak()) << " | "
+    << darkening_text(r.stats.dark(), r.stats.max_dark, r.darkening_bound) << " | "
+    << format_number(r.stats.max, "%.6g") << " | " << percent_text(r.stats.share_over_tenth())
+    << " | " << r.stats.failures << " |";
+  return s.str();
+}
+
+}  // namespace
+
+std::string file_stem(const std::string& name) {
+  std::string out;
+  for (char c : name)
+    out += std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' ? c : '_';
+  return out;
+}
+
+std::string histogram_csv(const ErrorStats& stats) {
+  std::ostringstream histogram;
+  histogram << "error_lo,error_hi,fragments\n";
+  for (int b = 0; b < ErrorStats::kHistogramBins; ++b)
+    histogram << number(double(b) / ErrorStats::kHistogramBins) << ","
+              << number(double(b + 1) / ErrorStats::kHistogramBins) << "," << stats.histogram[b]
+              << "\n";
+  return histogram.str();
+}
+
+EvalReport render_eval_report(const EvalReportContext& ctx, const std::vector<EvalRow>& overall,
+                              const std::vector<EvalRow>& per_view,
+                              const std::map<std::string, std::string>& darkening_reason) {
+  auto reason_of = [&](const std::string& technique) {
+    auto it = darkening_reason.find(technique);
+    return it == darkening_reason.end() ? std::string() : it->second;
+  };
+  const std::string header =
+      "| technique | views | receivers | mean error % | leak % | over-darkening % | max error | "
+      "share > 0.1 % | "
+      "failures |\n|---|---|---|---|---|---|---|---|---|\n";
+  std::ostringstream table, report, csv;
+  table << header;
+  for (const auto& r : overall) table << table_row(r) << "\n";
+  report << "# Shadow evaluation of dataset " << ctx.dataset << "\n\n"
+         << "Made by momentbench " << ctx.version << " (git " << ctx.git_sha << "), "
+         << ctx.compiler << ", " << ctx.threads << " threads, " << ctx.started << ".\n\n"
+         << "- " << ctx.settings_text << "\n"
+         << "- " << ctx.views << " views, " << ctx.receivers
+         << " receiver fragments (every light-facing fragment of "
+         << "every layer, docs/reference.md §3)\n";
+  for (const auto& line : ctx.non_default) report << "- option " << line << "\n";
+  report << "\n" << protocol_text(ctx.reference) << "\n\n";
+  for (const auto& r : overall)
+    if (r.technique == "oracle" && ctx.reference == Reference::ReceiverPlane)
+      report << "**Oracle floor: " << percent_text(r.stats.mean())
+             << " %.** The error of F_Z(z_f - delta_f) itself against the receiver-plane "
+                "reference: the part of every "
+                "technique's error that is the bias's, not the moments'.\n\n";
+  std::vector<DarkeningRow> darkening;
+  for (const auto& r : overall)
+    darkening.push_back(
+        {r.technique, r.stats.dark(), r.stats.max_dark, r.darkening_bound, reason_of(r.technique)});
+  report << darkening_notes(darkening) << "## All views\n\n"
+         << table.str() << "\n## Per view\n\n"
+         << header;
+  for (const auto& r : per_view) report << table_row(r) << "\n";
+  for (const auto& r : overall)
+    if (r.stats.failures)
+      report << "\n**" << r.technique << "**: " << r.stats.failures
+             << " fragments failed; raise the technique's alpha, or the LP grid, and re-run.\n";
+  for (const auto& r : overall)
+    if (r.fallbacks)
+      report << "\n**" << r.technique << "**: " << r.fallbacks << " of " << r.stats.count
+             << " fragments (" << percent_text(double(r.fallbacks) / double(r.stats.count))
+             << " %) were classified as failing and answered by the 2x2 custom PCF (seed 002 "
+                "§3.3).\n";
+  if (ctx.images)
+    report << "\nImages (images/): `<scene>_<view>_<technique>_shadow.exr` holds G of layer-0 "
+              "receivers, the PNG shows "
+              "1 - G (white = lit; dark blue = no layer-0 receiver); `_error.png` shows |PCF - G| "
+              "on a colour bar from "
+              "0 to "
+           << number(ctx.error_scale) << ".\n";
+  csv << "technique,scene,view,receivers,mean_error,leak,over_darkening,max_over_darkening,max_"
+         "error,share_over_0.1,"
+         "failures,reference\n";
+  for (const auto* rows : {&overall, &per_view})
+    for (const auto& r : *rows)
+      csv << '"' << r.technique << "\"," << r.scene << "," << (r.view.empty() ? "all" : r.view)
+          << "," << r.stats.count << "," << number(r.stats.mean()) << "," << number(r.stats.leak())
+          << "," << number(r.stats.dark()) << "," << number(r.stats.max_dark) << ","
+          << number(r.stats.max) << "," << number(r.stats.share_over_tenth()) << ","
+          << r.stats.failures << "," << reference_name(ctx.reference) << "\n";
+  return {table.str(), report.str(), csv.str()};
+}
+
+}  // namespace mb

@@ -1,0 +1,49 @@
+#pragma once
+// The report of `momentbench eval`: report.md (the error table of every technique against PCF,
+// overall and per view, with the protocol and over-darkening notes), errors.csv (full precision)
+// and each technique's error histogram CSV.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "eval/error_stats.h"
+#include "shadow/fragments.h"
+
+namespace mb {
+
+// One technique's errors over all views (scene "all") or one view.
+struct EvalRow {
+  std::string technique, scene, view;
+  ErrorStats stats;
+  double seconds = 0;
+  double darkening_bound = 0;  // Technique::darkening_bound
+  size_t fallbacks = 0;        // Technique::fallbacks
+};
+
+// What the report's header states about the run.
+struct EvalReportContext {
+  std::string dataset, version, git_sha, compiler, started, settings_text;
+  int threads = 0;
+  Reference reference = Reference::Biased;
+  size_t views = 0, receivers = 0;
+  std::vector<std::string> non_default;  // "key: value" of the options that differ
+  bool images = false;
+  double error_scale = 0;
+};
+
+struct EvalReport {
+  std::string table;  // the overall table (stdout)
+  std::string markdown, errors_csv;
+};
+
+EvalReport render_eval_report(const EvalReportContext& ctx, const std::vector<EvalRow>& overall,
+                              const std::vector<EvalRow>& per_view,
+                              const std::map<std::string, std::string>& darkening_reason);
+
+// A technique's error histogram (ErrorStats::kHistogramBins bins on [0, 1]) as CSV.
+std::string histogram_csv(const ErrorStats& stats);
+
+// A technique name as a file name: [A-Za-z0-9._-] kept, everything else '_' (lp:z;z^2 -> lp_z_z_2).
+std::string file_stem(const std::string& name);
+
+}  // namespace mb

@@ -1,0 +1,465 @@
+#include "report/sweep_report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <set>
+#include <sstream>
+
+#include "eval/error_stats.h"
+#include "moments/basis.h"
+#include "report/darkening.h"
+#include "shadow/fragments.h"
+#include "sweep/candidates.h"
+#include "techniques/lp_technique.h"
+#include "util/error.h"
+#include "util/number_text.h"
+
+namespace mb {
+
+namespace {
+
+// Margins of the "ties at the top" count: absolute differences of mean error, as fractions
+// (0.01 % = 1e-4), as Peters' dissertation counts candidates that realize the top performance.
+constexpr double kTieMargins[] = {1e-4, 5e-4, 1e-3};
+
+// The seed paper's numbers (seed 000 §3.2) that the findings compare against.
+constexpr double kPaperPower = 0.0219, kPaperTrig = 0.0193;
+
+// Meta keys that must agree for series to share a report: what the errors are measured against.
+// `settings` is describe_settings (kernel, reference, bias, LP grid and interval, backend).
+constexpr const char* kComparableKeys[] = {"dataset", "reference", "settings"};
+
+// A candidate's name as the sweep writes it ("f1; f2; ..."), for a named basis set.
+std::string candidate_name(const std::string& set) {
+  std::string name;
+  for (const auto& f : named_basis_set(set)) name += (name.empty() ? "" : "; ") + f;
+  return name;
+}
+
+const ResultRow* find_row(const std::vector<ResultRow>& rows, const std::string& name) {
+  auto it = std::find_if(rows.begin(), rows.end(), [&](const auto& r) { return r.name == name; });
+  return it == rows.end() ? nullptr : &*it;
+}
+
+// Candidates strictly better than `mean`.
+size_t better_than(const SweepSeries& s, double mean) {
+  return size_t(std::lower_bound(s.ranked.begin(), s.ranked.end(), mean,
+                                 [](const ResultRow& r, double m) { return r.mean < m; }) -
+                s.ranked.begin());
+}
+
+std::string pct(double fraction) {
+  return percent_text(fraction) + " %";
+}
+
+std::string rank_text(const SweepSeries& s, double mean) {
+  const size_t better = better_than(s, mean);
+  std::ostringstream out;
+  if (better == s.ranked.size()) {
+    out << "behind all " << s.ranked.size() << " candidates";
+    return out.str();
+  }
+  out << "rank " << better + 1 << " of " << s.ranked.size() << " (" << better << " better, "
+      << percent_text(double(better) / double(s.ranked.size())) << " %)";
+  return out.str();
+}
+
+uint64_t planned_total(const SweepSeries& s) {
+  const auto it = s.meta.find("catalog_size");
+  return it == s.meta.end() ? 0 : binomial(std::stoi(it->second), s.size);
+}
+
+std::string row_line(size_t rank, const ResultRow& r) {
+  std::ostringstream s;
+  if (r.estimated) {  // an estimate: its standard error, and nothing the sample cannot tell
+    s << "| " << rank << " | " << r.id << " | " << r.name << " | ≈ " << percent_text(r.mean)
+      << " ± " << percent_text(r.se) << " (estimate) | - | - | " << r.solved << " of a sample | "
+      << r.unstable << " |";
+    return s.str();
+  }
+  s << "| " << rank << " | " << r.id << " | " << r.name << " | " << percent_text(r.mean) << " | "
+    << percent_text(r.leak) << " | " << darkening_text(r.dark, r.max_dark, r.darkening_bound)
+    << " | " << r.solved << " | " << (r.infeasible + r.unstable) << " |";
+  return s.str();
+}
+
+void findings(std::ostringstream& md, const std::vector<SweepSeries>& series) {
+  const SweepSeries& main = main_series(series);
+  md << "## Findings of the seed paper, checked on this data\n\n"
+     << "Each claim of seed 000 §3.2 (docs/reference.md §3) next to what this report's databases "
+        "show. "
+        "The paper's own "
+        "scenes are not available, so absolute errors differ; orderings and shapes are what can "
+        "agree.\n\n";
+
+  // 1. Functions per candidate (the seed paper's Figure 3).
+  std::set<int> sizes;
+  for (const auto& s : series) sizes.insert(s.size);
+  md << "### Four functions against two or three\n\n";
+  if (sizes.size() < 2) {
+    md << "Only candidates of " << main.size
+       << " functions are in this report; give `report` sweeps of several "
+       << "`combination_size` values to compare (the paper: four clearly beat two or three, its "
+          "Figure 3).\n\n";
+  } else {
+    md << "| series | candidates | best % | median % | worst % | best candidate "
+          "|\n|---|---|---|---|---|---|\n";
+    for (const auto& s : series)
+      md << "| " << s.label << " | " << s.ranked.size() << " | " << percent_text(s.best()) << " | "
+         << percent_text(s.median()) << " | " << percent_text(s.ranked.back().mean) << " | "
+         << s.ranked.front().name << " |\n";
+    std::vector<const SweepSeries*> by_size;
+    for (const auto& s : series) by_size.push_back(&s);
+    std::stable_sort(by_size.begin(), by_size.end(),
+                     [](auto* a, auto* b) { return a->size < b->size; });
+    bool best_falls = true, median_falls = true;
+    for (size_t i = 1; i < by_size.size(); ++i) {
+      if (by_size[i]->size == by_size[i - 1]->size) continue;
+      best_falls = best_falls && by_size[i]->best() < by_size[i - 1]->best();
+      median_falls = median_falls && by_size[i]->median() < by_size[i - 1]->median();
+    }
+    md << "\nThe paper: four channels clearly outperform two or three (its Figure 3). Here: "
+       << (best_falls ? "the best error falls" : "the best error does **not** fall") << " and "
+       << (median_falls ? "the median error falls" : "the median error does **not** fall")
+       << " with every added function" << (best_falls && median_falls ? " — agrees" : " — differs")
+       << ".\n\n";
+  }
+
+  // 2. The power and trigonometric bases (the paper: 2.19 % and 1.93 %, the best).
+  md << "### Power and trigonometric moments (" << main.label << ")\n\n";
+  for (const auto& [label, set, paper] :
+       {std::tuple{"power moments", "power4", kPaperPower},
+        std::tuple{"trigonometric moments", "trig4", kPaperTrig}}) {
+    const ResultRow* candidate = find_row(main.ranked, candidate_name(set));
+    const ResultRow* reference = find_row(main.references, std::string("lp:") + set);
+    const ResultRow* row = candidate ? candidate : reference;
+    if (!row) {
+      md << "- " << label << ": neither among the candidates nor a reference (add `lp:" << set
+         << "` to `references`)\n";
+      continue;
+    }
+    md << "- " << label << " (" << candidate_name(set) << "): " << pct(row->mean) << ", "
+       << rank_text(main, row->mean) << (candidate ? "" : ", from the reference row")
+       << "; the paper: " << pct(paper) << "\n";
+  }
+  const ResultRow* power = find_row(main.references, "lp:power4");
+  const ResultRow* trig = find_row(main.references, "lp:trig4");
+  if (power && trig)
+    md << "\nThe paper found trigonometric moments best and power moments close behind. Here "
+       << (trig->mean < power->mean
+               ? "trigonometric moments are the better of the two"
+               : "power moments are the better of the two (the paper: trigonometric)")
+       << ", by " << percent_text(std::abs(trig->mean - power->mean))
+       << " percentage points; the best candidate is " << pct(main.best()) << ".\n";
+  md << "\n";
+
+  // The LP grid's bias (docs/reference.md §2): a grid admits fewer distributions than the interval,
+  // so every candidate's LP error is optimistic. Two bases have closed forms of the continuous
+  // Problem 1 on [0, 1] (Hausdorff 4MSM, trigonometric MSM), so this run measures the bias there.
+  {
+    int grid = 0;
+    double lo = 0, hi = 0;
+    const auto settings = main.meta.find("settings");
+    const size_t at =
+        settings == main.meta.end() ? std::string::npos : settings->second.find("LP grid ");
+    const bool parsed =
+        at != std::string::npos && std::sscanf(settings->second.c_str() + at,
+                                               "LP grid %d on [%lf, %lf]", &grid, &lo, &hi) == 3;
+    md << "### The LP grid's bias (" << main.label << ")\n\n";
+    if (!parsed) {
+      md << "- the database does not record its LP discretisation\n\n";
+    } else {
+      md << "Each candidate is judged by an LP on " << grid << " grid points of [" << round_trip(lo)
+         << ", " << round_trip(hi)
+         << "] plus the kernel's depths. A grid admits fewer distributions than the interval, so "
+            "every LP error is optimistic (docs/reference.md §2), by an amount that varies by "
+            "candidate. Measured in this run where the continuous problem has a closed form:\n\n";
+      bool measured = false;
+      for (const auto& [lp_name, closed, basis] :
+           {std::tuple{"lp:power4", "hausdorff4", "power moments"},
+            std::tuple{"lp:trig4", "tmsm", "trigonometric moments"}}) {
+        const ResultRow* lp_row = find_row(main.references, lp_name);
+        const ResultRow* exact = find_row(main.references, closed);
+        if (!lp_row || !exact || lo != 0 || hi != 1) continue;
+        measured = true;
+        md << "- " << basis << ": " << lp_name << " " << pct(lp_row->mean) << " on the grid, "
+           << closed << " " << pct(exact->mean) << " on [0, 1]: the grid understates the error by "
+           << percent_text(exact->mean - lp_row->mean) << " percentage points\n";
+      }
+      if (!measured)
+        md << "- not measured: it needs the references lp:power4 and hausdorff4 or lp:trig4 and "
+              "tmsm, and the LP on [0, 1]\n";
+      md << "\nDifferences between candidates smaller than this bias are not resolved by the LP "
+            "(compare the tie margins below); a finer `lp.grid` shrinks it.\n\n";
+    }
+  }
+
+  // 3. The classic techniques.
+  md << "### Classic techniques (" << main.label << ")\n\n";
+  const struct {
+    const char* name;
+    const char* expectation;
+  } classics[] = {
+      {"vsm", "two moments: far behind every four-function candidate (seed 000 Figure 4)"},
+      {"esm", "one exponential moment: far behind (seed 000 Figure 4)"},
+      {"hamburger4", "the power moments' closed form on R: slightly above lp:power4 on [0, 1]"},
+      {"hausdorff4",
+       "the power moments' closed form on [0, 1]: equal to lp:power4 up to the LP's grid"},
+      {"tmsm", "the trigonometric closed form: equal to lp:trig4 up to the LP's grid"},
+      {"hamburger6", "six moments: better than every four-function candidate (seed 004)"},
+  };
+  bool any = false;
+  for (const auto& c : classics) {
+    const ResultRow* r = find_row(main.references, c.name);
+    if (!r) continue;
+    any = true;
+    md << "- " << c.name << ": " << pct(r->mean) << ", " << rank_text(main, r->mean)
+       << "; expected: " << c.expectation << "\n";
+  }
+  if (!any) md << "- no classic technique among the references (option `references`)\n";
+  md << "\n";
+
+  // 4. Ties at the top (Peters' dissertation: ~15 000 of 66 045 once the LP was exact).
+  md << "### Candidates tied at the top\n\nCandidates whose mean error lies within an absolute "
+        "margin of the best. "
+        "Peters' dissertation (docs/reference.md §3) found about 15 000 of the 66 045 realizing "
+        "the top "
+        "performance once "
+        "the LP's tolerances were small. For a sample, the share projects to all combinations.\n\n"
+     << "| series | evaluated | best % |";
+  for (double m : kTieMargins) md << " within " << round_trip(100 * m) << " % |";
+  md << "\n|---|---|---|---|---|---|\n";
+  for (const auto& s : series) {
+    md << "| " << s.label << " | " << s.ranked.size() << " of " << planned_total(s) << " | "
+       << percent_text(s.best()) << " |";
+    for (double m : kTieMargins) {
+      const size_t n = s.within(m);
+      md << " " << n;
+      if (s.ranked.size() < planned_total(s))
+        md << " (~"
+           << uint64_t(std::llround(double(n) / double(s.ranked.size()) * double(planned_total(s))))
+           << " of all)";
+      md << " |";
+    }
+    md << "\n";
+  }
+
+  // 5. Over-darkening: the LP is exact, so no candidate may exceed its bound.
+  double worst = 0;
+  std::string worst_name;
+  for (const auto& s : series)
+    for (const auto& r : s.ranked)
+      if (r.max_dark > worst) worst = r.max_dark, worst_name = r.name;
+  md << "\n### Over-darkening\n\nEvery candidate is the exact LP of Problem 1 with the kernel's "
+        "own distribution "
+        "feasible, so G <= F_Z(z_f - delta_f) <= PCF at every fragment (docs/reference.md §3). "
+        "Largest "
+        "G - PCF at one "
+        "fragment over all candidates: "
+     << round_trip(worst) << (worst_name.empty() ? "" : " (" + worst_name + ")")
+     << (worst > kLpDarkeningBound + kDarkeningSlack ? " — **above the certified bound: a bug**"
+                                                     : " — as expected")
+     << ".\n\n";
+}
+
+}  // namespace
+
+double SweepSeries::median() const {
+  const size_t n = ranked.size();
+  return n % 2 ? ranked[n / 2].mean : 0.5 * (ranked[n / 2 - 1].mean + ranked[n / 2].mean);
+}
+
+size_t SweepSeries::within(double margin) const {
+  return better_than(*this, best() + margin * (1 + 1e-12));
+}
+
+std::vector<SweepSeries> load_sweep_series(const std::vector<std::string>& databases) {
+  if (databases.empty()) throw InputError("report: expected at least one results database");
+  std::vector<SweepSeries> out;
+  std::map<std::string, int> labels;
+  for (const auto& given : databases) {
+    SweepSeries s;
+    s.database = results_database_path(given);
+    ResultsStore store = ResultsStore::open(s.database);
+    s.meta = store.meta();
+    s.ranked = store.candidates();
+    s.references = store.references();
+    s.exact = s.ranked.size();
+    // Screened candidates without an exact row join as estimates.
+    std::set<uint64_t> exact;
+    for (const auto& r : s.ranked) exact.insert(r.id);
+    const std::vector<EstimateRow> estimates = store.estimates(0);  // by id, then stage
+    for (size_t i = 0; i < estimates.size(); ++i) {
+      const EstimateRow& e = estimates[i];
+      // The most precise estimate of each: its last stage.
+      if (exact.count(e.id) || (i + 1 < estimates.size() && estimates[i + 1].id == e.id)) continue;
+      ResultRow r;
+      r.id = e.id;
+      r.name = e.name;
+      r.mean = e.mean;
+      r.se = e.se;
+      r.solved = e.solved;
+      r.unstable = e.failed;
+      r.estimated = true;
+      s.ranked.push_back(std::move(r));
+      ++s.estimated;
+    }
+    if (s.ranked.empty()) throw InputError(s.database + ": no candidates evaluated yet");
+    std::stable_sort(s.ranked.begin(), s.ranked.end(),
+                     [](const auto& a, const auto& b) { return a.mean < b.mean; });
+    s.size = std::stoi(s.meta["combination_size"]);
+    s.label = std::to_string(s.size) + (s.size == 1 ? " function" : " functions");
+    if (s.estimated) s.label += " (screened)";
+    for (const char* key : kComparableKeys)
+      if (!out.empty() && s.meta[key] != out.front().meta[key])
+        throw InputError(s.database + ": " + key + " '" + s.meta[key] + "' differs from " +
+                         out.front().database + "'s '" + out.front().meta[key] +
+                         "': errors measured differently cannot share a report");
+    out.push_back(std::move(s));
+  }
+  // Two series of one size (two samples, say) are told apart by their position.
+  for (const auto& s : out) ++labels[s.label];
+  std::map<std::string, int> seen;
+  for (auto& s : out)
+    if (labels[s.label] > 1) s.label += " #" + std::to_string(++seen[s.label]);
+  return out;
+}
+
+const SweepSeries& main_series(const std::vector<SweepSeries>& series) {
+  const SweepSeries* main = &series.front();
+  for (const auto& s : series)
+    if (s.size > main->size) main = &s;
+  return *main;
+}
+
+SweepReportTables sweep_report_tables(const std::vector<SweepSeries>& series, int bins) {
+  SweepReportTables t;
+  std::ostringstream candidates, histogram, summary, references;
+  candidates << "series,rank,id,functions,mean_error,leak,over_darkening,max_over_darkening,max_"
+                "error,share_over_0.1,"
+                "fragments,solved,skipped,infeasible,unstable,view_errors,exact,standard_"
+                "error\n";
+  double lo = series.front().best(), hi = lo;
+  for (const auto& s : series) {
+    lo = std::min(lo, s.best());
+    hi = std::max(hi, s.ranked.back().mean);
+    for (size_t i = 0; i < s.ranked.size(); ++i) {
+      const ResultRow& r = s.ranked[i];
+      std::string views = r.view_errors;
+      std::replace(views.begin(), views.end(), '"', '\'');
+      candidates << '"' << s.label << "\"," << i + 1 << "," << r.id << ",\"" << r.name << "\","
+                 << round_trip(r.mean) << "," << round_trip(r.leak) << "," << round_trip(r.dark)
+                 << "," << round_trip(r.max_dark) << "," << round_trip(r.max) << ","
+                 << round_trip(r.share_over_tenth) << "," << r.fragments << "," << r.solved << ","
+                 << r.skipped << "," << r.infeasible << "," << r.unstable << ",\"" << views << "\","
+                 << (r.estimated ? 0 : 1) << "," << round_trip(r.se) << "\n";
+    }
+  }
+  hi = std::max(hi, lo + 1e-12);
+  histogram << "series,error_lo,error_hi,candidates\n";
+  summary << "series,size,database,evaluated,combinations,best,median,worst,best_candidate";
+  for (double m : kTieMargins) summary << ",within_" << round_trip(100 * m) << "pct";
+  summary << "\n";
+  for (const auto& s : series) {
+    std::vector<uint64_t> counts(bins, 0);
+    for (const auto& r : s.ranked)
+      counts[std::min(bins - 1, int((r.mean - lo) / (hi - lo) * bins))]++;
+    for (int b = 0; b < bins; ++b)
+      histogram << '"' << s.label << "\"," << round_trip(lo + (hi - lo) * b / bins) << ","
+                << round_trip(lo + (hi - lo) * (b + 1) / bins) << "," << counts[b] << "\n";
+    summary << '"' << s.label << "\"," << s.size << ",\"" << s.database << "\"," << s.ranked.size()
+            << "," << planned_total(s) << "," << round_trip(s.best()) << ","
+            << round_trip(s.median()) << "," << round_trip(s.ranked.back().mean) << ",\""
+            << s.ranked.front().name << "\"";
+    for (double m : kTieMargins) summary << "," << s.within(m);
+    summary << "\n";
+  }
+  references << "technique,mean_error,leak,over_darkening,max_over_darkening\n";
+  for (const auto& r : main_series(series).references)
+    references << '"' << r.name << "\"," << round_trip(r.mean) << "," << round_trip(r.leak) << ","
+               << round_trip(r.dark) << "," << round_trip(r.max_dark) << "\n";
+  t.candidates_csv = candidates.str();
+  t.histogram_csv = histogram.str();
+  t.series_csv = summary.str();
+  t.references_csv = references.str();
+  return t;
+}
+
+std::string sweep_report_markdown(const std::vector<SweepSeries>& series,
+                                  const std::string& histogram_note) {
+  const SweepSeries& main = main_series(series);
+  std::ostringstream md;
+  md << "# Sweep report\n\n";
+  for (const auto& s : series) {
+    auto meta = s.meta;
+    md << "- " << s.label << ": `" << s.database << "`, " << s.ranked.size() << " of "
+       << meta["planned"] << " planned candidates evaluated (combinations of " << s.size << " from "
+       << meta["catalog_size"] << " functions: " << planned_total(s) << "), config hash "
+       << meta["config_hash"] << ", shard " << meta["shard"]
+       << (meta.count("git_sha") ? ", momentbench git " + meta["git_sha"] : "")
+       << (meta.count("missing_shards")
+               ? "; **merged without shards " + meta["missing_shards"] + "**"
+               : "")
+       << "\n";
+  }
+  auto meta = main.meta;
+  md << "- dataset " << meta["dataset"] << "; " << meta["settings"] << "\n";
+  uint64_t failures = 0, lps = 0;
+  for (const auto& s : series)
+    for (const auto& r : s.ranked)
+      failures += r.infeasible + r.unstable, lps += r.solved + r.infeasible + r.unstable;
+  md << "- LPs: " << lps << ", of which infeasible or unstable: " << failures << " ("
+     << percent_text(lps ? double(failures) / double(lps) : 0)
+     << " %; these fragments count as lit)\n\n"
+     << protocol_text(meta["reference"] == "receiver_plane" ? Reference::ReceiverPlane
+                                                            : Reference::Biased)
+     << "\n\n";
+  if (const ResultRow* oracle = find_row(main.references, "oracle");
+      oracle && meta["reference"] == "receiver_plane")
+    md << "**Oracle floor: " << pct(oracle->mean)
+       << ".** The error of F_Z(z_f - delta_f) itself against the "
+       << "receiver-plane reference: the part of every candidate's error that is the bias's, not "
+          "the moments'.\n\n";
+
+  md << "## Histogram\n\n";
+  for (const auto& s : series)
+    if (s.estimated)
+      md << "Series \"" << s.label << "\" was screened (`sweep --screen`): its histogram shows "
+         << s.estimated << " screened estimates and " << s.exact
+         << " exact means (the candidates whose interval reached the best ones, and the pilot). "
+            "Estimates are marked ≈ with their standard error in the tables.\n\n";
+  md << histogram_note;
+  findings(md, series);
+
+  md << "## Reference techniques on the same dataset\n\n| technique | mean error % | leak % | "
+        "over-darkening % | "
+        "rank among "
+     << main.label << " |\n|---|---|---|---|---|\n";
+  std::vector<DarkeningRow> darkening;
+  for (const auto& r : main.references) {
+    md << "| " << r.name << " | " << percent_text(r.mean) << " | " << percent_text(r.leak) << " | "
+       << darkening_text(r.dark, r.max_dark, r.darkening_bound) << " | "
+       << (r.name == "pcf" ? std::string("-") : std::to_string(better_than(main, r.mean) + 1))
+       << " |\n";
+    darkening.push_back({r.name, r.dark, r.max_dark, r.darkening_bound, r.darkening_reason});
+  }
+  md << "\n" << darkening_notes(darkening);
+
+  const std::string header =
+      "| rank | id | functions | mean error % | leak % | over-darkening % | LPs solved | failed |\n"
+      "|---|---|---|---|---|---|---|---|\n";
+  for (const auto& s : series) {
+    const auto& ranked = s.ranked;
+    md << "## Best 50 candidates: " << s.label << "\n\n" << header;
+    for (size_t i = 0; i < std::min<size_t>(50, ranked.size()); ++i)
+      md << row_line(i + 1, ranked[i]) << "\n";
+    md << "\n## Worst 10 candidates: " << s.label << "\n\n" << header;
+    for (size_t i = ranked.size() > 10 ? ranked.size() - 10 : 0; i < ranked.size(); ++i)
+      md << row_line(i + 1, ranked[i]) << "\n";
+    md << "\n";
+  }
+  return md.str();
+}
+
+}  // namespace mb

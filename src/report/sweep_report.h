@@ -1,0 +1,46 @@
+#pragma once
+// Sweep results -> the report a researcher reads (docs/design.md §Data flow: report): ranked
+// tables, the reference techniques, the paper's findings checked on this data (docs/reference.md
+// §3), and CSVs at full precision for the plots. Several databases (e.g. sweeps of 2, 3 and 4
+// functions) become series of one report, compared in one histogram.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "sweep/results_store.h"
+
+namespace mb {
+
+struct SweepSeries {
+  std::string database;                     // path of its results.sqlite
+  std::string label;                        // "4 functions", unique within a report
+  std::map<std::string, std::string> meta;  // ResultsStore::meta
+  // Candidates by mean error, ties by id. A screened sweep's (sweep --screen) holds every screened
+  // candidate: the exact row where it was evaluated exactly, its estimate (estimated) otherwise.
+  std::vector<ResultRow> ranked;
+  size_t exact = 0, estimated = 0;    // rows of each kind in `ranked`
+  std::vector<ResultRow> references;  // by name
+  int size = 0;                       // functions per candidate
+  double best() const { return ranked.front().mean; }
+  double median() const;
+  // Candidates whose mean error is at most the best's plus `margin` (absolute, as a fraction).
+  size_t within(double margin) const;
+};
+
+// Opens each database (InputError for one with no candidates, or for series that are not
+// comparable: another dataset, reference, kernel, bias or LP discretisation).
+std::vector<SweepSeries> load_sweep_series(const std::vector<std::string>& databases);
+
+// The series the ranked tables and reference rows come from: the most functions per candidate.
+const SweepSeries& main_series(const std::vector<SweepSeries>& series);
+
+struct SweepReportTables {
+  std::string candidates_csv, histogram_csv, series_csv, references_csv;
+};
+// Candidates' mean errors binned on one common range for all series (the seed paper's Figure 4).
+SweepReportTables sweep_report_tables(const std::vector<SweepSeries>& series, int bins);
+// The Markdown report; `histogram_note` is what the plot step produced (an image link or why not).
+std::string sweep_report_markdown(const std::vector<SweepSeries>& series,
+                                  const std::string& histogram_note);
+
+}  // namespace mb

@@ -1,0 +1,106 @@
+#pragma once
+// Screening a sweep (issue 33): every candidate is evaluated on one stratified sample of the
+// dataset's fragments, the same sample for all of them, and its mean error is estimated with a
+// standard error; then the candidates whose interval reaches the best K are evaluated exactly.
+//
+// Units are blocks of kWarmRunRows shadow-map rows and kScreenUnitColumns columns (the warm-start
+// bands cut in pieces): a sampled unit is solved as a warm-start run of its own, so its answers
+// agree with the full evaluation's to the LP's tolerance, not always bit for bit. Small units make
+// the estimate precise: errors cluster (contact shadows, silhouettes), and a band-sized unit
+// carries a whole cluster in or out of the sample at once. Measured on the default dataset at
+// F = 0.05 over 40 candidates x 10 seeds: bands (30 units sampled) left 24 of 40 candidates in
+// reach of the best, blocks of 16 columns (272 units) 11, about the plateau of ties.
+//
+// The estimator is the stratified difference estimator of survey sampling: strata are views, and
+// the auxiliary variable is a pilot candidate's error sum of each unit, known for every unit from
+// one exact evaluation. Candidates find the same fragments hard, so a candidate's unit errors
+// follow the pilot's closely and only their differences are sampled: the standard error is that of
+// the differences, several times smaller than that of the errors. Fragments without an LP
+// (F_Z(z_f - delta_f) = 0, G = 0 for every candidate, docs/reference.md §2) are summed exactly once
+// and never sampled.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "eval/evaluation.h"
+
+namespace mb {
+
+// Columns of a screening unit (rows: kWarmRunRows, eval/warm_runs.h).
+constexpr int kScreenUnitColumns = 16;
+
+// One stratum: a view's units that have LP fragments.
+struct ScreenStratum {
+  std::vector<uint32_t> list;     // the LP fragments of the sampled units, unit by unit
+  std::vector<size_t> run_begin;  // where each sampled unit begins in `list`, size appended
+  size_t runs = 0;                // the view's units (with LP fragments)
+  uint64_t lps = 0;               // the view's LP fragments
+  double pilot_total = 0;         // the pilot's error sum over all the view's units
+  std::vector<double> pilot;      // the pilot's error sum of each sampled unit
+  size_t sampled() const { return run_begin.empty() ? 0 : run_begin.size() - 1; }
+};
+
+struct ScreenSample {
+  double fraction = 0;
+  std::vector<ScreenStratum> strata;  // one per view, in view order
+  double fixed_error = 0;             // sum of |PCF - 0| over the fragments without an LP
+  uint64_t fragments = 0;             // every receiver of every view
+  size_t sampled_runs() const;        // sampled units over all strata: a run-error vector's size
+  uint64_t sampled_lps() const;
+  size_t runs() const;
+};
+
+// The sample: in each view, ceil(fraction x its units) of them (at least 2 where it has 2, all
+// with fraction >= 1), chosen by a seeded hash of (seed, view, unit), identical for every
+// candidate. `needs_lp` per view: its LP fragments, ascending (CandidateEvaluator's lists);
+// `pilot_shadow` per view: the pilot's G of every fragment (CandidateEvaluator::evaluate's
+// `shadow`).
+ScreenSample make_screen_sample(const std::vector<ViewData>& views,
+                                const std::vector<std::vector<uint32_t>>& needs_lp,
+                                const std::vector<std::vector<double>>& pilot_shadow,
+                                double fraction, uint64_t seed);
+
+// Sum of |PCF - G| over `fragments` in their order, G from `shadow` (by fragment index; null:
+// every fragment lit, G = 0).
+double unit_error(std::span<const uint32_t> fragments, const std::vector<double>& pcf,
+                  const std::vector<double>* shadow);
+// Every sampled unit's error sum, strata in order, with `shadow` per view (G by fragment index);
+// no shadows: a candidate that answers nothing (G = 0), how the sweep records a numerically
+// dependent combination.
+std::vector<double> sampled_unit_errors(const ScreenSample& sample,
+                                        const std::vector<ViewData>& views,
+                                        const std::vector<std::vector<double>>& shadow);
+
+// A candidate's screened mean error: the estimate and its standard error.
+struct ScreenEstimate {
+  double mean = 0, se = 0;
+};
+// From the sampled units' error sums (sum of |PCF - G| over each unit's fragments, strata in
+// order).
+ScreenEstimate estimate_mean_error(const ScreenSample& sample,
+                                   const std::vector<double>& run_errors);
+// The estimate is linear in the run errors: the estimated difference of two candidates' mean
+// errors is the difference of their estimates, and this is its standard error, from the run-wise
+// differences a_i - b_i.
+double paired_standard_error(const ScreenSample& sample, const std::vector<double>& a,
+                             const std::vector<double>& b);
+
+// Which candidates to evaluate exactly (indices into `run_errors`, ascending): the `top` best
+// estimates, and with r the top-th, every candidate c with
+//   est_c - est_r - sigmas * SE(c - r) <= margin,
+// the standard error taken of the paired unit-wise differences (the same sample makes them far
+// less noisy than either mean). With margin = 0 the exact top K among them is the exact top K
+// unless an estimate missed by more than `sigmas` standard errors. A negative margin makes
+// differences smaller than |margin| ties: a candidate is then evaluated only if it may beat the
+// top-th estimate by more than that, which on a plateau of near-ties (docs/reference.md §5; ~10 000
+// candidates within 0.01 pp of the best on the default dataset) keeps the confirmations few.
+// Every candidate when there are at most `top`.
+struct ScreenRule {
+  int top = 20;
+  double sigmas = 3, margin = 0;
+};
+std::vector<size_t> candidates_to_confirm(const ScreenSample& sample,
+                                          const std::vector<std::vector<double>>& run_errors,
+                                          const ScreenRule& rule);
+
+}  // namespace mb

@@ -1,0 +1,108 @@
+#include "sweep/sweep_plan.h"
+
+#include <algorithm>
+#include <set>
+
+#include "moments/basis.h"
+#include "scene/procedural.h"
+#include "sweep/candidates.h"
+#include "util/error.h"
+
+namespace mb {
+
+uint64_t SweepPlan::total() const {
+  return binomial(int(catalog.size()), size);
+}
+
+std::vector<std::string> SweepPlan::functions(uint64_t id) const {
+  std::vector<std::string> out;
+  for (int i : combination_unrank(id, int(catalog.size()), size)) out.push_back(catalog[i]);
+  return out;
+}
+
+std::string SweepPlan::name(uint64_t id) const {
+  std::string out;
+  for (const auto& f : functions(id)) out += (out.empty() ? "" : "; ") + f;
+  return out;
+}
+
+SweepPlan make_sweep_plan(const std::vector<std::string>& catalog, int size,
+                          const std::vector<std::string>& explicit_candidates, uint64_t sample,
+                          uint64_t seed) {
+  SweepPlan plan;
+  plan.catalog = catalog.empty() ? catalog_names() : catalog;
+  plan.size = size;
+  std::set<std::string> seen;
+  for (auto& name : plan.catalog) {
+    name = BasisFunction::parse(name).name();  // validates, and canonical catalog spelling
+    if (!seen.insert(name).second)
+      throw InputError("catalog: function '" + name + "' appears twice");
+  }
+  if (size < 1 || size > int(plan.catalog.size()))
+    throw InputError("combination_size: " + std::to_string(size) +
+                     " functions cannot be drawn from a catalog of " +
+                     std::to_string(plan.catalog.size()));
+  const uint64_t total = plan.total();
+  if (!explicit_candidates.empty()) {
+    for (const auto& text : explicit_candidates) {
+      std::vector<int> indices;
+      size_t start = 0;
+      for (size_t i = 0; i <= text.size(); ++i)
+        if (i == text.size() || text[i] == ';') {
+          std::string item = text.substr(start, i - start);
+          start = i + 1;
+          item.erase(0, item.find_first_not_of(' '));
+          item.erase(item.find_last_not_of(' ') + 1);
+          if (item.empty()) continue;
+          std::string canonical = BasisFunction::parse(item).name();
+          auto it = std::find(plan.catalog.begin(), plan.catalog.end(), canonical);
+          if (it == plan.catalog.end())
+            throw InputError("candidates: '" + item + "' in '" + text + "' is not in the catalog");
+          indices.push_back(int(it - plan.catalog.begin()));
+        }
+      std::sort(indices.begin(), indices.end());
+      if (int(indices.size()) != size ||
+          std::adjacent_find(indices.begin(), indices.end()) != indices.end())
+        throw InputError("candidates: '" + text + "' must name " + std::to_string(size) +
+                         " distinct functions");
+      plan.ids.push_back(combination_rank(indices, int(plan.catalog.size())));
+    }
+  } else if (sample > total) {
+    throw InputError(
+        "sample: " + std::to_string(sample) + " candidates asked for, but there are only " +
+        std::to_string(total) + " combinations of " + std::to_string(size) + " from " +
+        std::to_string(plan.catalog.size()) + " functions (sample: 0 evaluates them all)");
+  } else if (sample > 0 && sample < total) {
+    // Floyd's algorithm: `sample` distinct ranks, deterministic for a seed.
+    SeededRandom random(seed);
+    std::set<uint64_t> chosen;
+    for (uint64_t j = total - sample; j < total; ++j) {
+      uint64_t t = uint64_t(random.uniform() * double(j + 1));
+      if (t > j) t = j;
+      if (!chosen.insert(t).second) chosen.insert(j);
+    }
+    plan.ids.assign(chosen.begin(), chosen.end());
+  } else {
+    for (uint64_t id = 0; id < total; ++id) plan.ids.push_back(id);
+  }
+  std::sort(plan.ids.begin(), plan.ids.end());
+  plan.ids.erase(std::unique(plan.ids.begin(), plan.ids.end()), plan.ids.end());
+  return plan;
+}
+
+std::vector<uint64_t> shard_ids(const SweepPlan& plan, int k, int n) {
+  std::vector<uint64_t> out;
+  for (size_t i = size_t(k - 1); i < plan.ids.size(); i += size_t(n)) out.push_back(plan.ids[i]);
+  return out;
+}
+
+std::pair<int, int> parse_shard(const std::string& text) {
+  int k = 0, n = 0;
+  char slash = 0, extra = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &k, &slash, &n, &extra) != 3 || slash != '/' || n < 1 ||
+      k < 1 || k > n)
+    throw InputError("--shard: expected K/N with 1 <= K <= N, got '" + text + "'");
+  return {k, n};
+}
+
+}  // namespace mb

@@ -1,0 +1,84 @@
+// ESM with failure classification and fall-back (seed 002 §3.3; docs/reference.md §4): where the
+// exponential test's assumption (no occluder of the kernel lies behind the receiver) fails, the
+// fragment is answered by the paper's 2x2 custom PCF instead of the filtered ESM value.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "moments/chebyshev.h"
+#include "techniques/technique.h"
+#include "util/number_text.h"
+
+namespace mb {
+
+namespace {
+
+enum class EsmClassifier { ZMax, Threshold };
+
+class EsmFallbackTechnique : public Technique {
+ public:
+  EsmFallbackTechnique(std::string name, EsmClassifier classifier, double c, double zmax_offset,
+                       double threshold)
+      : Technique(std::move(name), Basis::parse({"exp(" + round_trip(c) + "*z)"}),
+                  double_storage()),
+        classifier_(classifier),
+        c_(c),
+        zmax_offset_(zmax_offset),
+        threshold_(threshold) {}
+  bool needs_distribution() const override { return true; }
+  // The fall-back's 2x2 test is not the 9x9 reference's: it can be darker than PCF.
+  double darkening_bound() const override { return std::numeric_limits<double>::infinity(); }
+  std::string darkening_reason() const override {
+    return "the 2x2 custom PCF of fragments classified as failing is not the kernel's filter";
+  }
+  size_t fallbacks() const override { return fallbacks_; }
+
+  double shadow(const FragmentInput& in) override {
+    if (!fails(in)) return esm_bound(in.moments[0], in.zf, c_);
+    ++fallbacks_;
+    return custom_pcf(in);
+  }
+
+ private:
+  bool fails(const FragmentInput& in) const {
+    if (classifier_ == EsmClassifier::Threshold)
+      return in.moments[0] * std::exp(-c_ * in.zf) > 1 + threshold_;
+    // Z-max: the deepest texel the kernel touches (weight > 0) lies behind the receiver's depth
+    // plus the offset, which keeps lit receivers on their own sloped plane from being flagged.
+    double zmax = -std::numeric_limits<double>::infinity();
+    for (size_t t = 0; t < in.kernel_depths.size(); ++t)
+      if (in.kernel_weights[t] > 0) zmax = std::max(zmax, in.kernel_depths[t]);
+    return zmax > in.zf + zmax_offset_;
+  }
+  // The paper evaluates the unfiltered ESM test at the four nearest texels and interpolates the
+  // clamped results bilinearly. A receiver sits at its texel's centre, so the four nearest texels
+  // are ambiguous; momentbench takes the receiver's texel and its +x, +y and +x+y neighbours with
+  // weight 1/4 each (the bilinear weights half a texel towards +x+y). Taps are row by row.
+  double custom_pcf(const FragmentInput& in) const {
+    const int size = int(std::lround(std::sqrt(double(in.kernel_depths.size()))));
+    const int centre = (size / 2) * size + size / 2;
+    double lit = 0;
+    for (int offset : {0, 1, size, size + 1}) {
+      const double z = in.kernel_depths[size_t(centre + offset)];
+      lit += 0.25 * std::clamp(std::exp(c_ * (z - in.zf)), 0.0, 1.0);
+    }
+    return 1 - lit;
+  }
+
+  EsmClassifier classifier_;
+  double c_, zmax_offset_, threshold_;
+  size_t fallbacks_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<Technique> make_esm_zmax(const TechniqueParams& p) {
+  return std::make_unique<EsmFallbackTechnique>("esm_zmax", EsmClassifier::ZMax, p.esm_c,
+                                                p.esm_zmax_offset, p.esm_threshold);
+}
+std::unique_ptr<Technique> make_esm_threshold(const TechniqueParams& p) {
+  return std::make_unique<EsmFallbackTechnique>("esm_threshold", EsmClassifier::Threshold, p.esm_c,
+                                                p.esm_zmax_offset, p.esm_threshold);
+}
+
+}  // namespace mb

@@ -1,0 +1,35 @@
+// The reference itself as table rows: `pcf` (a sanity row, error 0 under the biased reference)
+// and `oracle` (F_Z(z_f - delta_f), the floor the bias sets under the receiver-plane reference).
+#include <algorithm>
+#include <cmath>
+
+#include "techniques/technique.h"
+
+namespace mb {
+
+namespace {
+
+class PcfTechnique : public Technique {
+ public:
+  PcfTechnique() : Technique("pcf", Basis(), double_storage()) {}
+  double shadow(const FragmentInput& in) override { return in.pcf; }
+};
+
+// F_Z(z_f - delta_f) itself: every valid lower bound lies below it, so under the receiver-plane
+// reference its error is the floor that no technique can go under (docs/reference.md §3).
+class OracleTechnique : public Technique {
+ public:
+  OracleTechnique() : Technique("oracle", Basis(), double_storage()) {}
+  double shadow(const FragmentInput& in) override { return in.oracle; }
+};
+
+}  // namespace
+
+std::unique_ptr<Technique> make_pcf(const TechniqueParams&) {
+  return std::make_unique<PcfTechnique>();
+}
+std::unique_ptr<Technique> make_oracle(const TechniqueParams&) {
+  return std::make_unique<OracleTechnique>();
+}
+
+}  // namespace mb

@@ -1,0 +1,86 @@
+#pragma once
+// A shadow technique (docs/design.md §Types): a name, the basis whose filtered moment map it reads,
+// how that map is stored, and shadow(b, z_f) -> G. Closed forms (moments/) and LPs (lp/) both
+// implement it, so they appear in the same error tables.
+#include <limits>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "lp/problem.h"
+#include "moments/basis.h"
+#include "moments/storage.h"
+
+namespace mb {
+
+struct FragmentInput {
+  std::span<const double> moments;  // the filtered moment map at the fragment's texel
+  double zf = 0;                    // the fragment depth, bias already applied (z_f - delta_f)
+  double pcf = 0;                   // the reference (for the `pcf` sanity row)
+  double oracle = 0;                // F_Z(z_f - delta_f) (the `oracle` row)
+  // The kernel's depth distribution (layer-0 depths and weights), for techniques that need it.
+  std::span<const double> kernel_depths, kernel_weights;
+};
+
+// Every technique parameter, with the defaults of the eval options table.
+struct TechniqueParams {
+  double hamburger4_alpha = 1e-10, hamburger4_float_alpha = 5e-6, hamburger4_16bit_alpha = 3e-5;
+  double hausdorff4_alpha = 1e-10, hamburger6_alpha = 1e-10;
+  double tmsm_alpha = 1e-10, tmsm_float_alpha = 5e-5;
+  double beta = 0;  // Hamburger: G + beta * (weight at z_f); 0 = lower bound, 1 = upper (seed 004)
+  double esm_c = 80;
+  double esm_zmax_offset = 0.01;  // esm_zmax: fail when the kernel's deepest texel > z_f + this
+  double esm_threshold = 0.01;    // esm_threshold: fail when the filtered ESM value > 1 + this
+  double vsm_min_variance = 0;
+  double evsm_c_positive = 40, evsm_c_negative = 5;  // EVSM warps exp(c+ z), -exp(-c- z)
+  int lvsm_layers = 4;                               // LVSM depth layers
+  int csm_terms = 8;                                 // CSM Fourier terms M
+  double csm_damping = 2;                            // CSM ringing suppression
+  lp::Discretization lp;
+  std::string lp_backend = "fast";
+  std::string lp_moment_box = "none";  // lp_technique.h, lp_moment_box
+};
+
+class Technique {
+ public:
+  virtual ~Technique() = default;
+  const std::string& name() const { return name_; }
+  const Basis& basis() const { return basis_; }
+  const MomentStorage& storage() const { return storage_; }
+  virtual bool needs_distribution() const { return false; }
+  // A proven bound on G - F_Z(z_f - delta_f) (docs/reference.md §3): 0 for a valid lower bound (the
+  // LP, VSM, ESM), alpha for a bias towards a distribution on I, infinity where storage rounding or
+  // the beta blend can over-darken. Reports show over-darkening only where this exceeds 1e-9.
+  virtual double darkening_bound() const { return 0; }
+  // Why a technique with an infinite darkening bound can over-darken, for reports.
+  virtual std::string darkening_reason() const { return ""; }
+  // Not thread-safe (LP backends keep state): make one instance per thread.
+  virtual double shadow(const FragmentInput& input) = 0;
+  // An LP technique's problem factory (basis and discretisation of I): evaluate_technique solves
+  // such a technique per view with warm starts (lp_fragment_solver.h); nullptr for closed forms.
+  virtual const lp::ProblemFactory* lp_factory() const { return nullptr; }
+  // Fragments the technique could not answer (LP infeasible or unstable), for the report.
+  virtual size_t failures() const { return 0; }
+  // Fragments answered by a fall-back instead of the technique's own test (esm_zmax,
+  // esm_threshold: seed 002's custom PCF), for the report.
+  virtual size_t fallbacks() const { return 0; }
+
+ protected:
+  Technique(std::string name, Basis basis, MomentStorage storage)
+      : name_(std::move(name)), basis_(std::move(basis)), storage_(std::move(storage)) {}
+
+ private:
+  std::string name_;
+  Basis basis_;
+  MomentStorage storage_;
+};
+
+// The technique `name` made by its registry row (techniques/registry.h): a name of that table or
+// "lp:<basis>" (a named set such as power4, or functions separated by ';'). Unknown names are an
+// InputError listing the valid ones.
+std::unique_ptr<Technique> make_technique(const std::string& name, const TechniqueParams& params);
+// Every registered name but the LP row (which takes a basis), in registry order.
+std::vector<std::string> closed_form_technique_names();
+
+}  // namespace mb

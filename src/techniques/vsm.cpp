@@ -1,0 +1,66 @@
+// Variance shadow maps and layered VSM: Cantelli's inequality on the depth, or on the depth
+// clamped into the receiver's layer (docs/reference.md §4).
+#include <algorithm>
+#include <cmath>
+
+#include "moments/chebyshev.h"
+#include "techniques/technique.h"
+
+namespace mb {
+
+namespace {
+
+class VsmTechnique : public Technique {
+ public:
+  explicit VsmTechnique(double min_variance)
+      : Technique("vsm", Basis::parse({"power2"}), double_storage()), min_variance_(min_variance) {}
+  double shadow(const FragmentInput& in) override {
+    return vsm_bound(in.moments.data(), in.zf, min_variance_);
+  }
+
+ private:
+  double min_variance_;
+};
+
+// Layered VSM (seed 001 "Layered VSM"): [0, 1] split into L even layers; layer l keeps the depth
+// clamped to it, w_l(z) = clamp(L z - l, 0, 1), and a fragment is judged by Cantelli on the warped
+// depths of its own layer. The warp does not decrease, so w_l(Z) < w_l(z_f) implies Z < z_f and
+// the bound stays a lower bound; occluders in earlier layers warp to 0, and light leaking from
+// depths beyond z_f's layer is gone (seed 000 §2: Problem 1 if the layers' overlap is ignored).
+class LvsmTechnique : public Technique {
+ public:
+  LvsmTechnique(int layers, double min_variance)
+      : Technique("lvsm", lvsm_basis(layers), double_storage()),
+        layers_(layers),
+        min_variance_(min_variance) {}
+  double shadow(const FragmentInput& in) override {
+    const int layer = std::clamp(int(std::floor(layers_ * in.zf)), 0, layers_ - 1);
+    const double wf = std::clamp(layers_ * in.zf - layer, 0.0, 1.0);
+    return std::clamp(vsm_bound(in.moments.data() + 2 * layer, wf, min_variance_), 0.0, 1.0);
+  }
+
+ private:
+  static Basis lvsm_basis(int layers) {
+    std::vector<std::string> functions;
+    for (int l = 0; l < layers; ++l) {
+      const std::string warp =
+          "min(max(" + std::to_string(layers) + "*z-" + std::to_string(l) + ",0),1)";
+      functions.push_back(warp);
+      functions.push_back(warp + "^2");
+    }
+    return Basis::parse(functions);
+  }
+  int layers_;
+  double min_variance_;
+};
+
+}  // namespace
+
+std::unique_ptr<Technique> make_vsm(const TechniqueParams& p) {
+  return std::make_unique<VsmTechnique>(p.vsm_min_variance);
+}
+std::unique_ptr<Technique> make_lvsm(const TechniqueParams& p) {
+  return std::make_unique<LvsmTechnique>(p.lvsm_layers, p.vsm_min_variance);
+}
+
+}  // namespace mb

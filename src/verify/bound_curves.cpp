@@ -1,0 +1,110 @@
+#include "verify/bound_curves.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "lp/discretized.h"
+#include "lp/solution.h"
+#include "techniques/lp_technique.h"
+#include "util/error.h"
+#include "util/number_text.h"
+#include "util/parallel_errors.h"
+
+namespace mb {
+
+namespace {
+
+// Validates the request; returns the distribution's total weight.
+double checked_total_weight(const BoundCurveRequest& r) {
+  if (r.depths.empty()) throw InputError("bounds.depths: expected at least one depth");
+  if (r.depths.size() != r.weights.size())
+    throw InputError("bounds.weights: expected one weight per depth (" +
+                     std::to_string(r.depths.size()) + "), got " +
+                     std::to_string(r.weights.size()));
+  double total = 0;
+  for (size_t t = 0; t < r.depths.size(); ++t) {
+    if (!std::isfinite(r.depths[t]))
+      throw InputError("bounds.depths: depth " + std::to_string(t + 1) + " is not finite");
+    if (!(r.weights[t] >= 0) || !std::isfinite(r.weights[t]))
+      throw InputError("bounds.weights: weight " + std::to_string(t + 1) +
+                       " is not a finite non-negative number");
+    if (r.depths[t] < r.lp.lo || r.depths[t] > r.lp.hi)
+      throw InputError("bounds.depths: depth " + round_trip(r.depths[t]) +
+                       " lies outside the LP interval [lo, hi]");
+    total += r.weights[t];
+  }
+  if (!(total > 0)) throw InputError("bounds.weights: expected a positive total weight");
+  if (r.samples < 2) throw InputError("bounds.samples: expected at least 2 z_f values");
+  if (!(r.zf_lo < r.zf_hi)) throw InputError("bounds.zf_range: expected lo < hi");
+  return total;
+}
+
+}  // namespace
+
+BoundCurves compute_bound_curves(const BoundCurveRequest& r) {
+  const double total = checked_total_weight(r);
+  BoundCurves out;
+  for (int i = 0; i < r.samples; ++i) {
+    const double zf = r.zf_lo + (r.zf_hi - r.zf_lo) * i / (r.samples - 1);
+    double cdf = 0;  // docs/reference.md §1: strictly less
+    for (size_t t = 0; t < r.depths.size(); ++t)
+      if (r.depths[t] < zf) cdf += r.weights[t] / total;
+    out.zf.push_back(zf);
+    out.cdf.push_back(cdf);
+  }
+  for (const auto& spec : r.bases) {
+    const std::vector<std::string> items = lp_technique_basis("lp:" + spec);
+    const Basis full = Basis::parse(items);
+    for (int m : r.sizes) {
+      if (m < 1 || size_t(m) > full.size())
+        throw InputError("bounds.sizes: m = " + std::to_string(m) + " needs " + std::to_string(m) +
+                         " functions, but basis '" + spec + "' has " + std::to_string(full.size()));
+      std::vector<BasisFunction> prefix;
+      for (int j = 0; j < m; ++j) prefix.push_back(full[j]);
+      Basis basis(prefix);
+      basis.check_independent(r.lp.lo, r.lp.hi);
+      const lp::ProblemFactory factory(basis, r.lp);
+      BoundSeries series;
+      series.basis = spec;
+      series.functions = basis.names();
+      series.m = m;
+      series.lower.assign(out.zf.size(), std::numeric_limits<double>::quiet_NaN());
+      size_t failures = 0;
+      ParallelErrors errors;
+#pragma omp parallel num_threads(r.threads) reduction(+ : failures)
+      {
+        auto backend = lp::make_backend(r.backend);
+#pragma omp for schedule(dynamic, 4)
+        for (size_t i = 0; i < out.zf.size(); ++i)
+          errors.capture([&] {
+            // The distribution's depths join I and fix the moments: feasible by construction (§2).
+            lp::Problem problem = factory.from_distribution(r.depths, r.weights, out.zf[i]);
+            const lp::Solution s =
+                lp::solve_discretized(factory, problem, *backend, r.depths, r.weights).finite;
+            if (s.call == lp::CallStatus::Ok && s.status == lp::ProblemStatus::Optimal)
+              series.lower[i] = std::clamp(s.G, 0.0, 1.0);
+            else
+              ++failures;
+          });
+      }
+      errors.rethrow();
+      series.failures = failures;
+      size_t solved = 0;
+      double gap_sum = 0;
+      for (size_t i = 0; i < out.zf.size(); ++i) {
+        if (std::isnan(series.lower[i])) continue;
+        const double gap = out.cdf[i] - series.lower[i];
+        gap_sum += gap;
+        series.max_gap = std::max(series.max_gap, gap);
+        ++solved;
+      }
+      series.mean_gap =
+          solved ? gap_sum / double(solved) : std::numeric_limits<double>::quiet_NaN();
+      out.series.push_back(std::move(series));
+    }
+  }
+  return out;
+}
+
+}  // namespace mb

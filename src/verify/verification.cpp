@@ -1,0 +1,434 @@
+#include "verify/verification.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "lp/continuous.h"
+#include "lp/discretized.h"
+#include "lp/local_power.h"
+#include "lp/moment_box.h"
+#include "lp/problem.h"
+#include "lp/solution.h"
+#include "scene/procedural.h"
+#include "util/error.h"
+#include "util/number_text.h"
+#include "util/parallel_errors.h"
+
+namespace mb {
+
+// How far a closed form may sit above an LP witness (below) before it counts as impossible: the
+// closed forms at alpha = 0 lose digits on near-singular moments.
+constexpr double kAboveLpSlack = 1e-6;
+// The largest rounding allowance an instance gets (see solve_continuous).
+constexpr double kMaxRoundingAllowance = 1e-2;
+
+namespace {
+struct Witness {
+  std::vector<double> points, weights;
+};
+// The continuous LP for one instance into the case's last column and witness: power bases in
+// local coordinates (on R for Hamburger and VSM), others by the exchange in depth coordinates.
+void solve_continuous(const VerifyTarget& target, const Basis& basis, int degree,
+                      const lp::ProblemFactory& seed, const VerifyInstance& inst,
+                      lp::Backend& backend, VerifyCase& c, Witness& witness) {
+  lp::ContinuousSolution s;
+  std::vector<long double> coefficients;  // phi in the LP basis: c_0 + sum_j c_j b_j
+  if (degree > 0) {
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    const lp::LocalPowerProblem problem{degree, target.on_r ? -kInf : target.lo,
+                                        target.on_r ? kInf : target.hi, lp::kContinuousSeedGrid};
+    lp::LocalPowerSolution local =
+        lp::solve_power_locally(problem, inst.depths, inst.weights, inst.zf, backend);
+    s = std::move(local.solution);
+    witness.points = std::move(local.support);
+    witness.weights = std::move(local.weights);
+    coefficients = std::move(local.coefficients);
+  } else {
+    lp::Problem problem = seed.from_distribution(inst.depths, inst.weights, inst.zf);
+    s = lp::ContinuousSolver(seed).solve(problem, backend, inst.depths, inst.weights);
+    for (size_t j = 0; j < s.finite.support.size(); ++j) {
+      witness.points.push_back(problem.point(s.finite.support[j]));
+      witness.weights.push_back(s.finite.weights[j]);
+    }
+    coefficients = s.coefficients;
+  }
+  if (!s.ok()) {
+    witness = {};
+    return;
+  }
+  double total = 0;
+  for (double& w : witness.weights) total += (w = std::max(0.0, w));
+  for (double& w : witness.weights) w /= total;
+  c.lp.back() = s.upper;
+  c.bracket = s.width();
+  c.proven = s.proven;
+  // First-order effect of rounding each moment sum E[b_j] to double: a few ulps of E|b_j|.
+  long double rounding = 0;
+  for (size_t j = 0; j < basis.size() && j + 1 < coefficients.size(); ++j) {
+    long double scale = 0;
+    for (size_t a = 0; a < inst.depths.size(); ++a)
+      scale += inst.weights[a] * std::abs((long double)basis[j](inst.depths[a]));
+    rounding += std::abs(coefficients[j + 1]) * scale;
+  }
+  // Capped: the first-order estimate assumes every moment rounds the worst way, and with a narrow
+  // kernel's dual coefficients (~1e12 in raw powers) it reaches ~1, where recomputing the bound in
+  // 60 digits from the double-rounded moments moves it by at most 8.0e-3 (hamburger6, garden/east
+  // texel (218,152); results/FINDINGS.md §7b); uncapped, a hamburger6 off by 0.57 passed.
+  c.rounding = std::min(kMaxRoundingAllowance, double(rounding * std::ldexp(1.0L, -49)));
+}
+
+// The box problem of the technique's storage format for one instance (VerifyTarget::storage_box)
+// into the case's last column and witness: the stored values the closed form read, the format's
+// tolerance, on [0, 1]. A map stores depths in [0, 1] (docs/reference.md §4), so the property a
+// storage variant must have is never to be darker than a distribution of depths there that could
+// have produced its stored values, whatever interval its closed form solves on (Hamburger's R
+// gives a lower G, and judging on it would ask more than the map's information implies).
+void solve_storage_box(const Basis& basis, const MomentStorage& storage,
+                       std::span<const double> tolerance, const VerifyInstance& inst, VerifyCase& c,
+                       Witness& witness) {
+  const lp::MomentBox box{stored_values(storage, c.moments),
+                          std::vector<double>(tolerance.begin(), tolerance.end()),
+                          storage.transform, storage.offset};
+  const lp::ContinuousDomain domain = lp::ContinuousDomain::interval(0, 1);
+  constexpr int kSeedGrid = lp::kContinuousSeedGrid;
+  std::vector<double> seeds(inst.depths.begin(), inst.depths.end());
+  for (int k = 0; k <= kSeedGrid; ++k)
+    seeds.push_back(domain.lo + (domain.hi - domain.lo) * k / kSeedGrid);
+  const lp::ContinuousBoxAnswer a =
+      lp::solve_moment_box_continuous(basis, box, inst.zf, domain, seeds);
+  if (!a.ok()) return;
+  c.lp.back() = a.upper;
+  c.bracket = a.width();
+  c.proven = a.proven;
+  c.rounding = 0;  // the box holds the moments' rounding
+  double total = 0;
+  for (double w : a.finite.weights) total += std::max(0.0, w);
+  witness.points = a.finite.support;
+  for (double w : a.finite.weights) witness.weights.push_back(std::max(0.0, w) / total);
+}
+
+}  // namespace
+
+std::vector<VerifyTarget> verify_targets(const std::vector<std::string>& techniques,
+                                         const TechniqueParams& params) {
+  // docs/reference.md §6. I = R is represented by a wide interval that contains the extremal nodes
+  // of nearly every instance; where it does not, the difference is "grid-limited" and shows up in
+  // the worst cases (VSM: Cantelli's second point mu - sigma^2 / (z_f - mu) runs far out when z_f ~
+  // mu, hence its wider interval). ESM's e^{cz} needs points far enough below 0 that e^{cz} ~ 0
+  // (Markov's extremal mass sits at -infinity; at z = -4, e^{c (z - z_f)} <= e^{-40} for c = 10,
+  // where [-1, 1] left |dG| up to 7e-6); the LP uses e^{c(z-1)}, the same span scaled by e^{-c},
+  // whose values stay <= 1 (the LP recomputes the moments from the distribution, so the scale of
+  // the closed form's moment does not matter).
+  const std::string esm_basis = "exp(" + round_trip(params.esm_c) + "*(z-1))";
+  // EVSM's own basis on [0, 1], its warps scaled by their values at z = 1 like ESM's (the LP
+  // recomputes the moments from the distribution, so only the span of the functions matters).
+  const std::string p = round_trip(params.evsm_c_positive), n = round_trip(params.evsm_c_negative);
+  const std::string p2 = round_trip(2 * params.evsm_c_positive);
+  const std::vector<std::string> evsm2_basis{"exp(" + p + "*(z-1))", "exp(" + p2 + "*(z-1))"};
+  std::vector<std::string> evsm4_basis = evsm2_basis;
+  evsm4_basis.push_back("-exp(-" + n + "*z)");
+  evsm4_basis.push_back("exp(-" + round_trip(2 * params.evsm_c_negative) + "*z)");
+  std::vector<VerifyTarget> all = {
+      {.technique = "hamburger4",
+       .lp_basis = {"power4"},
+       .lo = -4,
+       .hi = 5,
+       .exact = true,
+       .on_r = true},
+      {.technique = "hausdorff4", .lp_basis = {"power4"}, .exact = true},
+      {.technique = "tmsm", .lp_basis = {"trig4"}, .exact = true},
+      {.technique = "vsm",
+       .lp_basis = {"power2"},
+       .lo = -20,
+       .hi = 21,
+       .exact = true,
+       .cantelli_support = true,
+       .on_r = true},
+      {.technique = "esm", .lp_basis = {esm_basis}, .lo = -4, .exact = true},
+      {.technique = "hamburger6",
+       .lp_basis = {"power6"},
+       .lo = -2,
+       .hi = 3,
+       .exact = true,
+       .on_r = true},
+      {.technique = "hamburger4_float",
+       .lp_basis = {"power4"},
+       .lo = -4,
+       .hi = 5,
+       .on_r = true,
+       .storage_box = true,
+       .alpha = params.hamburger4_float_alpha},
+      {.technique = "hamburger4_16bit",
+       .lp_basis = {"power4"},
+       .lo = -4,
+       .hi = 5,
+       .on_r = true,
+       .storage_box = true,
+       .alpha = params.hamburger4_16bit_alpha},
+      {.technique = "tmsm_float",
+       .lp_basis = {"trig4"},
+       .storage_box = true,
+       .alpha = params.tmsm_float_alpha},
+      // CSM is no lower bound: how often and by how much it exceeds the sharp bound of the same
+      // channels.
+      {.technique = "csm", .lp_basis = csm_channels(params.csm_terms), .exceedance = true},
+      {.technique = "evsm2", .lp_basis = evsm2_basis, .lower_bound = true},
+      {.technique = "evsm4", .lp_basis = evsm4_basis, .lower_bound = true},
+  };
+
+  std::vector<VerifyTarget> out;
+  for (const auto& name : techniques) {
+    auto it = std::find_if(all.begin(), all.end(),
+                           [&](const VerifyTarget& t) { return t.technique == name; });
+    if (it == all.end()) {
+      std::string valid;
+      for (const auto& t : all) valid += (valid.empty() ? "" : ", ") + t.technique;
+      throw InputError("verify.techniques: '" + name +
+                       "' has no LP ground truth in docs/reference.md §6; valid: " + valid);
+    }
+    out.push_back(*it);
+  }
+  return out;
+}
+
+TechniqueParams verify_params(TechniqueParams p) {
+  p.hamburger4_alpha = p.hausdorff4_alpha = p.hamburger6_alpha = p.tmsm_alpha = 0;
+  p.beta = 0;
+  p.vsm_min_variance = 0;
+  return p;
+}
+
+std::vector<VerifyInstance> random_verify_instances(int count, uint64_t seed) {
+  SeededRandom rng(seed);
+  std::vector<VerifyInstance> out(count);
+  for (int i = 0; i < count; ++i) {
+    VerifyInstance& v = out[i];
+    double total = 0;
+    if (i % 10 < 8) {
+      const int atoms = 1 + i % 8;
+      for (int k = 0; k < atoms; ++k) {
+        v.depths.push_back(rng.uniform(0.001, 0.999));
+        v.weights.push_back(rng.uniform(0.05, 1));
+      }
+      v.source = "random:" + std::to_string(atoms) + " atoms";
+    } else {  // a continuous mixture of two bumps, 32 atoms each
+      for (int bump = 0; bump < 2; ++bump) {
+        const double centre = rng.uniform(0.1, 0.9), width = rng.uniform(0.01, 0.1),
+                     mass = rng.uniform(0.2, 1);
+        for (int k = 0; k < 32; ++k) {
+          v.depths.push_back(std::clamp(centre + width * (k - 15.5) / 16, 0.001, 0.999));
+          v.weights.push_back(mass * std::exp(-0.5 * std::pow((k - 15.5) / 8, 2)));
+        }
+      }
+      v.source = "random:mixture";
+    }
+    for (double w : v.weights) total += w;
+    for (double& w : v.weights) w /= total;
+    v.zf = rng.uniform(0.001, 0.999);
+  }
+  return out;
+}
+
+VerifySolverResult verify_solver(const VerifyTarget& target, const TechniqueMaker& make,
+                                 std::span<const VerifyInstance> instances,
+                                 const std::vector<int>& grids, bool continuous, double tolerance,
+                                 int worst_count, int threads) {
+  VerifySolverResult result;
+  result.target = target;
+  result.instances = instances.size();
+  const Basis lp_basis = Basis::parse(target.lp_basis);
+  lp_basis.check_independent(target.lo, target.hi);
+  // What the closed form reads: b(z) per depth, stored as its map would be (docs/reference.md §4),
+  // filtered (the weighted sum), loaded. Serial: basis expressions are not thread-safe.
+  const auto probe = make();
+  const Basis& basis = probe->basis();
+  const auto stored_moments = [&](std::span<const double> depths, std::span<const double> weights) {
+    std::vector<double> moments = filtered_stored_values(probe->storage(), basis, depths, weights);
+    load_moments(probe->storage(), moments);
+    return moments;
+  };
+  std::vector<VerifyCase> cases(instances.size());
+  for (size_t i = 0; i < instances.size(); ++i) {
+    cases[i].instance = i;
+    cases[i].moments = stored_moments(instances[i].depths, instances[i].weights);
+    cases[i].lp.assign(grids.size() + (continuous ? 1 : 0),
+                       std::numeric_limits<double>::quiet_NaN());
+  }
+  const int degree = lp::power_basis_degree(lp_basis);
+  const bool box_rows = continuous && target.storage_box;
+  result.box_judged = box_rows;
+  const std::vector<double> box_tolerance =
+      box_rows ? storage_tolerance(probe->storage(), basis) : std::vector<double>{};
+  // The continuous LP's seed grid for bases other than powers (in depth coordinates).
+  const lp::ProblemFactory seed_factory(
+      lp_basis, lp::Discretization{target.lo, target.hi, lp::kContinuousSeedGrid, false});
+  // The LP's optimal distribution per case and grid (its witness, see below).
+  std::vector<std::vector<Witness>> witnesses(instances.size(),
+                                              std::vector<Witness>(cases[0].lp.size()));
+  // One factory per grid, shared read-only (columns are computed up front).
+  std::vector<std::unique_ptr<lp::ProblemFactory>> factories;
+  for (int g : grids)
+    factories.push_back(std::make_unique<lp::ProblemFactory>(
+        lp_basis, lp::Discretization{target.lo, target.hi, g, false}));
+  // The LP sees the exact distribution (its depths join I), so it is feasible and G_LP <= F_Z.
+  ParallelErrors errors;
+#pragma omp parallel num_threads(threads)
+  {
+    auto technique = make();
+    auto glpk = lp::make_backend("glpk");
+    // More functions than the fast backend takes (CSM's channels): GLPK first as well.
+    auto fast = lp::make_backend(
+        int(lp_basis.size()) <= lp::make_backend("fast")->max_functions() ? "fast" : "glpk");
+#pragma omp for schedule(dynamic, 16)
+    for (size_t i = 0; i < instances.size(); ++i)
+      errors.capture([&] {
+        FragmentInput in;
+        in.moments = cases[i].moments;
+        in.zf = instances[i].zf;
+        in.kernel_depths = instances[i].depths;
+        in.kernel_weights = instances[i].weights;
+        const size_t before = technique->failures();
+        const double g = technique->shadow(in);
+        cases[i].closed_form =
+            technique->failures() > before ? std::numeric_limits<double>::quiet_NaN() : g;
+        for (size_t k = 0; k < grids.size(); ++k) {
+          lp::Problem problem = factories[k]->from_distribution(
+              instances[i].depths, instances[i].weights, instances[i].zf);
+          if (target.cantelli_support) {
+            // Cantelli's extremal two points keep mean and variance: z_f and
+            // mu - sigma^2 / (z_f - mu). Further out than ten interval widths the columns' size
+            // breaks the LP's scaling (and the weight there is tiny): the interval decides.
+            double mean = 0, second = 0;
+            for (size_t a = 0; a < instances[i].depths.size(); ++a) {
+              const double z = instances[i].depths[a], w = instances[i].weights[a];
+              mean += w * z, second += w * z * z;
+            }
+            const double zf = instances[i].zf, variance = std::max(0.0, second - mean * mean);
+            const double reach = 10 * (target.hi - target.lo);
+            const double far = zf != mean ? mean - variance / (zf - mean) : zf;
+            if (far >= target.lo - reach && far <= target.hi + reach) {
+              const double points[2] = {zf, far};
+              factories[k]->add_points(problem, points);
+            }
+          }
+          lp::Solution s = fast->solve(problem);
+          if (s.status != lp::ProblemStatus::Optimal) s = glpk->solve(problem);
+          if (s.call != lp::CallStatus::Ok || s.status != lp::ProblemStatus::Optimal) continue;
+          cases[i].lp[k] = s.G;
+          Witness& w = witnesses[i][k];
+          double total = 0;
+          for (size_t j = 0; j < s.support.size(); ++j) {
+            w.points.push_back(problem.point(s.support[j]));
+            w.weights.push_back(std::max(0.0, s.weights[j]));
+            total += w.weights.back();
+          }
+          for (double& weight : w.weights) weight /= total;
+        }
+        if (box_rows)
+          solve_storage_box(technique->basis(), technique->storage(), box_tolerance, instances[i],
+                            cases[i], witnesses[i].back());
+        else if (continuous)
+          solve_continuous(target, lp_basis, degree, seed_factory, instances[i], *fast, cases[i],
+                           witnesses[i].back());
+      });
+  }
+  errors.rethrow();
+  // The witness test (serial: the technique's basis). An LP solution is a distribution whose
+  // moments miss the instance's by the LP's tolerance; near the boundary of the moment space
+  // (Hankel determinants ~1e-17) that moves the optimum by far more than the tolerance, so G_LP
+  // itself is no bound on the closed form there. But the LP's distribution is an exact witness
+  // for its own moments: no correct infimum over I exceeds its mass below z_f (docs/reference.md
+  // §1).
+  for (size_t i = 0; i < instances.size(); ++i) {
+    if (!std::isfinite(cases[i].closed_form)) continue;
+    for (size_t k = 0; k < witnesses[i].size(); ++k) {
+      const Witness& w = witnesses[i][k];
+      if (w.points.empty()) continue;
+      // A map stores depths in [0, 1] only (16-bit clamps its theta_4 coordinates there): a
+      // storage row's witness must lie there to be a distribution the map could hold.
+      if (box_rows &&
+          std::any_of(w.points.begin(), w.points.end(), [](double z) { return z < 0 || z > 1; }))
+        continue;
+      const std::vector<double> moments = stored_moments(w.points, w.weights);
+      FragmentInput in;  // holds spans
+      in.moments = moments;
+      in.zf = instances[i].zf;
+      in.kernel_depths = w.points;
+      in.kernel_weights = w.weights;
+      double below = 0;
+      for (size_t j = 0; j < w.points.size(); ++j)
+        if (w.points[j] < in.zf) below += w.weights[j];
+      const size_t before = probe->failures();
+      const double g = probe->shadow(in);
+      if (probe->failures() == before)
+        cases[i].above_witness = std::max(cases[i].above_witness, g - below);
+    }
+  }
+  // Fixed-order reduction.
+  result.grids.resize(cases[0].lp.size());
+  for (size_t k = 0; k < grids.size(); ++k) result.grids[k].grid = grids[k];  // 0: continuous
+  std::vector<std::pair<double, size_t>> finest, excess;
+  for (const auto& c : cases) {
+    if (!std::isfinite(c.closed_form)) {
+      ++result.undefined;
+      continue;
+    }
+    for (size_t k = 0; k < c.lp.size(); ++k) {
+      VerifyGridStats& s = result.grids[k];
+      if (!std::isfinite(c.lp[k])) {
+        ++s.lp_failures;
+        continue;
+      }
+      const double d = std::abs(c.closed_form - c.lp[k]);
+      ++s.compared;
+      s.max_difference = std::max(s.max_difference, d);
+      s.mean_difference += d;
+    }
+    // Beyond the arithmetic slack, by the instance's rounding allowance: the witness's moments
+    // are the instance's to within the LP's tolerance, and the closed form reads both rounded.
+    // Storage rows: the biased moments are a mixture's, allowed alpha above (technique.cpp).
+    const double allowance = box_rows ? target.alpha : c.rounding;
+    const double above_by = c.above_witness - allowance;
+    if (above_by > kAboveLpSlack) {
+      ++result.above_lp;
+      excess.push_back({above_by, c.instance});
+    }
+    if (std::isfinite(c.lp.back())) {
+      result.above_finest += c.closed_form > c.lp.back() + kAboveLpSlack;
+      if (target.exceedance)
+        result.largest_excess =
+            std::max({result.largest_excess, c.closed_form - c.lp.back(), c.above_witness});
+      const double d = std::abs(c.closed_form - c.lp.back());
+      // The continuous LP's G lies in [upper - bracket, upper]: judged is the distance from there.
+      const double off = c.closed_form > c.lp.back() ? d : std::max(0.0, d - c.bracket);
+      if (box_rows)  // a lower bound of the box problem: judged from above only
+        result.beyond_tolerance += c.closed_form - c.lp.back() > kAboveLpSlack + target.alpha;
+      else
+        result.beyond_tolerance += off > tolerance + c.rounding;
+      finest.push_back({box_rows ? c.closed_form - c.lp.back() : d, c.instance});
+      if (box_rows) result.largest_excess = std::max(result.largest_excess, finest.back().first);
+    }
+  }
+  for (auto& s : result.grids)
+    if (s.compared) s.mean_difference /= double(s.compared);
+  if (continuous)
+    for (const auto& c : cases) {
+      if (!std::isfinite(c.lp.back())) continue;
+      result.widest_bracket = std::max(result.widest_bracket, c.bracket);
+      result.unproven += !c.proven;
+      result.unresolved += c.bracket > 1e-6;
+    }
+  const auto largest_first = [](const auto& a, const auto& b) { return a.first > b.first; };
+  std::stable_sort(finest.begin(), finest.end(), largest_first);
+  std::stable_sort(excess.begin(), excess.end(), largest_first);
+  for (size_t k = 0; k < finest.size() && int(k) < worst_count; ++k)
+    result.worst.push_back(cases[finest[k].second]);
+  for (size_t k = 0; k < excess.size() && int(k) < worst_count; ++k)
+    result.worst_above.push_back(cases[excess[k].second]);
+  return result;
+}
+
+}  // namespace mb

@@ -1,0 +1,123 @@
+// The technique registry and its first new rows, ESM with failure classification (seed 002 §3.3).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+#include <vector>
+
+#include "techniques/registry.h"
+#include "util/config.h"
+#include "util/error.h"
+
+namespace mb {
+namespace {
+
+TEST(TechniqueRegistry, EveryRowMakesATechniqueOfItsOwnName) {
+  const TechniqueParams params;
+  std::set<std::string> names;
+  for (const auto& row : technique_registry()) {
+    EXPECT_TRUE(names.insert(row.name).second) << row.name << " is registered twice";
+    const std::string name = row.name == "lp:" ? "lp:power4" : row.name;
+    EXPECT_EQ(make_technique(name, params)->name(), name);
+    EXPECT_EQ(find_technique(name), &row);
+  }
+  EXPECT_EQ(find_technique("esm_zmx"), nullptr);
+  EXPECT_THROW(make_technique("esm_zmx", params), InputError);
+}
+
+TEST(TechniqueRegistry, OptionsAreDeclaredOnceAndReadIntoTheirFields) {
+  std::set<std::string> keys;
+  for (const auto& spec : technique_option_specs())
+    EXPECT_TRUE(keys.insert(spec.name).second) << spec.name << " is declared twice";
+  for (const auto& row : technique_registry())
+    for (const TechniqueOption* o : row.options) EXPECT_TRUE(keys.count(o->spec.name)) << row.name;
+  Config config(technique_option_specs());
+  config.set("esm.c=33");
+  config.set("lvsm.layers=3");
+  config.set("esm.zmax_offset=0.25");
+  TechniqueParams params;
+  read_technique_options(config, params);
+  EXPECT_EQ(params.esm_c, 33);
+  EXPECT_EQ(params.lvsm_layers, 3);
+  EXPECT_EQ(params.esm_zmax_offset, 0.25);
+  EXPECT_EQ(params.hamburger4_alpha, 1e-10);  // the declared default
+}
+
+TEST(TechniqueRegistry, MomentBiasReplacesEveryAlphaAndIsChecked) {
+  TechniqueParams params;
+  set_moment_bias(params, 0.125);
+  EXPECT_EQ(params.hamburger4_alpha, 0.125);
+  EXPECT_EQ(params.hamburger4_16bit_alpha, 0.125);
+  EXPECT_EQ(params.tmsm_float_alpha, 0.125);
+  EXPECT_EQ(params.esm_c, TechniqueParams().esm_c);  // not an alpha
+  params.hamburger6_alpha = 1;
+  EXPECT_THROW(make_technique("vsm", params), InputError);
+}
+
+// A 9x9 kernel of equal weights: every tap at `far` but the 2x2 block the custom PCF reads.
+struct Kernel {
+  std::vector<double> depths = std::vector<double>(81, 0.3),
+                      weights = std::vector<double>(81, 1.0 / 81);
+  double moment = 0;
+  FragmentInput input(double zf, double c) {
+    moment = 0;
+    for (size_t t = 0; t < depths.size(); ++t) moment += weights[t] * std::exp(c * depths[t]);
+    FragmentInput in;
+    in.moments = {&moment, 1};
+    in.zf = zf;
+    in.kernel_depths = depths;
+    in.kernel_weights = weights;
+    return in;
+  }
+};
+
+TEST(EsmFallback, WithoutADeeperTexelBothAreEsm) {
+  TechniqueParams params;
+  Kernel k;  // every tap at 0.3, in front of z_f = 0.5: ESM's assumption holds
+  auto esm = make_technique("esm", params);
+  for (const char* name : {"esm_zmax", "esm_threshold"}) {
+    auto t = make_technique(name, params);
+    EXPECT_EQ(t->shadow(k.input(0.5, params.esm_c)), esm->shadow(k.input(0.5, params.esm_c)))
+        << name;
+    EXPECT_EQ(t->fallbacks(), 0u) << name;
+  }
+}
+
+TEST(EsmFallback, AFailingFragmentGetsTheTwoByTwoCustomPcf) {
+  TechniqueParams params;
+  const double c = params.esm_c, zf = 0.5;
+  Kernel k;
+  // The 2x2 block at the centre (taps 40, 41, 49, 50): two occluders at 0.2, two surfaces at 0.9
+  // behind the receiver; the rest of the kernel at 0.95, behind too, so both classifiers fail.
+  std::fill(k.depths.begin(), k.depths.end(), 0.95);
+  k.depths[40] = k.depths[50] = 0.2;
+  k.depths[41] = k.depths[49] = 0.9;
+  const double expected = 1 - 0.25 * (2 * std::exp(c * (0.2 - zf)) + 2 * 1.0);
+  for (const char* name : {"esm_zmax", "esm_threshold"}) {
+    auto t = make_technique(name, params);
+    EXPECT_NEAR(t->shadow(k.input(zf, c)), expected, 1e-15) << name;
+    EXPECT_EQ(t->fallbacks(), 1u) << name;
+  }
+  // Plain ESM clamps its Markov bound to 0 there: fully lit, the artefact the fall-back removes.
+  EXPECT_EQ(make_technique("esm", params)->shadow(k.input(zf, c)), 0);
+}
+
+TEST(EsmFallback, ZmaxOffsetAndThresholdDecide) {
+  TechniqueParams params;
+  Kernel k;
+  k.depths[0] = 0.505;  // one texel just behind z_f = 0.5, within the default offset 0.01
+  auto zmax = make_technique("esm_zmax", params);
+  zmax->shadow(k.input(0.5, params.esm_c));
+  EXPECT_EQ(zmax->fallbacks(), 0u);
+  params.esm_zmax_offset = 0.001;
+  zmax = make_technique("esm_zmax", params);
+  zmax->shadow(k.input(0.5, params.esm_c));
+  EXPECT_EQ(zmax->fallbacks(), 1u);
+  // Threshold: the filtered value (1/81) e^{80 * 0.005} + (80/81) e^{-16} is about 0.0184 < 1.01.
+  auto threshold = make_technique("esm_threshold", params);
+  threshold->shadow(k.input(0.5, params.esm_c));
+  EXPECT_EQ(threshold->fallbacks(), 0u);
+}
+
+}  // namespace
+}  // namespace mb
