@@ -33,5 +33,47 @@ TEST(RunIdentity, DatabasesWithTheOlderHashAreRecognisedByTheirValues) {
   EXPECT_FALSE(same_config(legacy, "dataset: default\nlp.grid: 256\n"));
 }
 
+TEST(RunIdentity, MeasurementKeysHoldExactValues) {
+  EvalSettings settings;
+  settings.technique.lp.grid = 300;
+  settings.technique.lp.lo = 0.1;
+  settings.technique.lp.hi = 0.30000000000000004;  // %g would print 0.3
+  auto meta = measurement_meta(settings);
+  meta["dataset"] = "tiny";
+  const auto grid = lp_grid_of(meta);
+  ASSERT_TRUE(grid);
+  EXPECT_EQ(grid->grid, 300);
+  EXPECT_EQ(grid->lo, 0.1);
+  EXPECT_EQ(grid->hi, 0.30000000000000004);
+  EXPECT_EQ(incomparable_key(meta, meta), "");
+  auto other = meta;
+  other["lp.hi"] = "0.3";
+  EXPECT_EQ(incomparable_key(meta, other), "lp.hi");
+  other = meta;
+  other["dataset"] = "default";
+  EXPECT_EQ(incomparable_key(meta, other), "dataset");
+}
+
+// Databases from before the measurement keys: the settings sentence decides, and the LP grid is
+// read back out of it.
+TEST(RunIdentity, OlderDatabasesAreReadFromTheirSettingsSentence) {
+  const std::map<std::string, std::string> old{
+      {"dataset", "tiny"},
+      {"reference", "biased"},
+      {"settings",
+       "kernel 9x9 Gaussian, sigma 2.4 texels; reference biased; LP grid 256 on [0, "
+       "1], backend fast"}};
+  const auto grid = lp_grid_of(old);
+  ASSERT_TRUE(grid);
+  EXPECT_EQ(grid->grid, 256);
+  EXPECT_EQ(grid->hi, 1);
+  EXPECT_EQ(incomparable_key(old, old), "");
+  auto other = old;
+  other["settings"] =
+      "kernel 9x9 Gaussian, sigma 2.4 texels; reference biased; LP grid 512 on [0, 1]";
+  EXPECT_EQ(incomparable_key(old, other), "settings");
+  EXPECT_FALSE(lp_grid_of({{"dataset", "tiny"}}));
+}
+
 }  // namespace
 }  // namespace mb

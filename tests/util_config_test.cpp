@@ -110,5 +110,26 @@ TEST(Config, PrintedConfigReadsBackToTheSameValues) {
   EXPECT_EQ(back.numbers("depths"), (std::vector<double>{0.1, 0.30000000000000004}));
 }
 
+// An integer list (e.g. verify.grids) reads integers only, each in range, names the bad item, and
+// prints back as integers.
+TEST(Config, IntegerListTakesIntegersInRange) {
+  Config config({{"grids", OptionType::IntegerList, "[256, 1024]", "Grid sizes.", 2, 1 << 24}});
+  EXPECT_EQ(config.integers("grids"), (std::vector<int64_t>{256, 1024}));
+  config.set("grids=[64, 4096]");
+  EXPECT_EQ(config.integers("grids"), (std::vector<int64_t>{64, 4096}));
+  EXPECT_NE(config.to_yaml().find("grids: [64, 4096]"), std::string::npos);
+  try {
+    config.set("grids=[64, 2.5]");
+    FAIL() << "a fraction was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("item 2 '2.5': expected an integer in [2, 16777216]"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(config.set("grids=[1]"), InputError);
+  EXPECT_THROW(config.set("grids=[abc]"), InputError);
+  EXPECT_THROW(config.numbers("grids"), std::logic_error);
+}
+
 }  // namespace
 }  // namespace mb

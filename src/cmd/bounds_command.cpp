@@ -90,10 +90,7 @@ std::string texel_distribution(const Config& config, BoundCurveRequest& request,
 
 int run_bounds(const CommonOptions& options) {
   Config config = resolve_config(bounds_specs(), options);
-  if (options.print_config) {
-    std::fputs(config.to_yaml().c_str(), stdout);
-    return 0;
-  }
+  if (print_config_if_asked(config, options)) return 0;
   BoundCurveRequest request;
   request.threads = resolve_thread_count(int(config.integer("threads")));
   request.lp = lp_discretization_from(config);

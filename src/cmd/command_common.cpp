@@ -42,6 +42,12 @@ Config resolve_config(std::vector<OptionSpec> specs, const CommonOptions& option
   return config;
 }
 
+bool print_config_if_asked(const Config& config, const CommonOptions& options) {
+  if (!options.print_config) return false;
+  std::fputs(config.to_yaml().c_str(), stdout);
+  return true;
+}
+
 void apply_flags(const CLI::App& command, Config& config, const std::vector<FlagKey>& flags) {
   for (const auto& f : flags)
     if (command.get_option(f.flag)->count() > 0) config.set_node(f.key, f.value(), f.flag);

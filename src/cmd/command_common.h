@@ -21,6 +21,9 @@ struct CommonOptions {
 };
 
 void add_common_options(CLI::App& command, CommonOptions& options, bool has_output = true);
+// --print-config: prints the effective config as YAML that --config reads back; true when it did
+// (the command then stops).
+bool print_config_if_asked(const Config& config, const CommonOptions& options);
 // Defaults, then the config file, then every --set in order.
 Config resolve_config(std::vector<OptionSpec> specs, const CommonOptions& options);
 // A command's own flags as shorthands of option keys: each flag given on the command line sets its

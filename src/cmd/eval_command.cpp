@@ -51,10 +51,7 @@ struct EvalOptions {
 
 int run_eval(const EvalOptions& options) {
   Config config = resolve_config(eval_specs(), options.common);
-  if (options.common.print_config) {
-    std::fputs(config.to_yaml().c_str(), stdout);
-    return 0;
-  }
+  if (print_config_if_asked(config, options.common)) return 0;
   const int threads = resolve_thread_count(int(config.integer("threads")));
   EvalSettings settings = shadow_settings_from(config, threads);
   if (config.strings("techniques").empty())

@@ -114,10 +114,7 @@ void register_merge_command(CLI::App& app, std::function<int()>& action) {
       Config config = resolve_config(merge_specs(), *common);
       apply_flags(*command, config,
                   {{"--partial", "partial", [&] { return YAML::Node(options->partial); }}});
-      if (common->print_config) {
-        std::fputs(config.to_yaml().c_str(), stdout);
-        return 0;
-      }
+      if (print_config_if_asked(config, *common)) return 0;
       MergeOptions o = *options;
       o.out = common->out, o.force = common->force;
       o.partial = config.boolean("partial");

@@ -30,10 +30,7 @@ struct RenderOptions {
 
 int run_render(const RenderOptions& options) {
   Config config = resolve_config(render_specs(), options.common);
-  if (options.common.print_config) {
-    std::fputs(config.to_yaml().c_str(), stdout);
-    return 0;
-  }
+  if (print_config_if_asked(config, options.common)) return 0;
   const int threads = resolve_thread_count(int(config.integer("threads")));
   DatasetDesc dataset = load_dataset(config.string("dataset"));
   int resolution = int(config.integer("resolution"));

@@ -72,10 +72,7 @@ void register_report_command(CLI::App& app, std::function<int()>& action) {
       apply_flags(*command, config,
                   {{"--no-plot", "plot", [&] { return YAML::Node(options->plot); }},
                    {"--bins", "bins", [&] { return YAML::Node(options->bins); }}});
-      if (common->print_config) {
-        std::fputs(config.to_yaml().c_str(), stdout);
-        return 0;
-      }
+      if (print_config_if_asked(config, *common)) return 0;
       ReportOptions o = *options;
       o.out = common->out, o.force = common->force, o.quiet = common->quiet;
       o.bins = int(config.integer("bins"));

@@ -1,358 +1,20 @@
 // `momentbench solve`: Problem 1 instances (docs/reference.md §1-2) with a chosen LP backend, one
 // from flags or a JSON Lines batch; `--check` runs the independent KKT checker on every answer.
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <memory>
-#include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "cmd/command_common.h"
 #include "cmd/commands.h"
-#include "lp/discretized.h"
-#include "lp/kkt_checker.h"
-#include "lp/moment_box.h"
-#include "lp/problem.h"
 #include "lp/solution.h"
-#include "techniques/registry.h"
-#include "techniques/technique.h"
+#include "solve/solve_query.h"
 #include "util/error.h"
 #include "util/output_dir.h"
 
 namespace mb {
 
-namespace {
-
-struct SolveOptions {
-  std::vector<std::string> basis{"power4"};
-  std::vector<double> interval{0, 1};
-  int grid = 1024;
-  std::vector<double> moments, points;
-  double zf = 0.5;
-  std::string backend = "fast";
-  std::string technique;  // a closed form instead of the LP
-  double alpha = -1;      // its moment bias (< 0: the technique's default)
-  std::string input, output;
-  bool check = false, quantize = false;
-  std::string discretization = "grid";
-  double moment_tolerance = 4;  // ulps of each moment (docs/reference.md §2)
-};
-
-using nlohmann::json;
-
-// The problem factory of the last LP line's basis and discretisation: a batch's lines mostly share
-// them, and building one (the basis checked, the grid orthonormalised in long double: ~0.15 ms at
-// 256 points, ~1.7 ms at 1024 with eight functions) costs more than solving the LP.
-class FactoryCache {
- public:
-  const lp::ProblemFactory& get(const std::vector<std::string>& basis_names,
-                                const lp::Discretization& disc) {
-    if (!factory_ || basis_names != names_ || disc != disc_) {
-      factory_.reset();  // a line that fails here must not leave the previous one's factory behind
-      Basis basis = Basis::parse(basis_names);
-      basis.check_independent(disc.lo, disc.hi);
-      factory_ = std::make_unique<lp::ProblemFactory>(basis, disc);
-      names_ = basis_names;
-      disc_ = disc;
-    }
-    return *factory_;
-  }
-
- private:
-  std::vector<std::string> names_;
-  lp::Discretization disc_;
-  std::unique_ptr<lp::ProblemFactory> factory_;
-};
-
-json solve_one(lp::Backend& backend, FactoryCache& factories,
-               const std::vector<std::string>& basis_names, const lp::Discretization& disc,
-               const std::vector<double>& moments, double zf, const std::vector<double>& points,
-               bool check, double tolerance_ulps) {
-  const lp::ProblemFactory& factory = factories.get(basis_names, disc);
-  lp::Problem problem = factory.from_moments(moments, zf, points);
-  const lp::ContinuousSolution answer = lp::solve_discretized(factory, problem, backend);
-  const lp::Solution& s = answer.finite;
-  json out;
-  if (tolerance_ulps > 0 && s.call == lp::CallStatus::Ok &&
-      s.status != lp::ProblemStatus::Optimal) {
-    // docs/reference.md §2, moments with a tolerance: a boundary vector rounded to double may lie
-    // just outside the moment cone. Problem 1 over every distribution whose moments are within the
-    // box of `tolerance_ulps` ulps answers it; a vector outside the box reports its distance.
-    const lp::Problem exact = factory.from_moments(moments, zf, points);
-    const lp::MomentBoxAnswer box =
-        lp::solve_moment_box(factory, exact, lp::ulp_box(factory, exact, tolerance_ulps));
-    out["exact_status"] = lp::to_string(s.status);
-    out["moment_box_ulps"] = tolerance_ulps;
-    out["status"] = lp::to_string(box.status);
-    out["backend"] = "glpk";
-    if (box.status == lp::ProblemStatus::Optimal) {
-      out["G"] = box.G;
-      json support = json::array();
-      for (size_t k = 0; k < box.support.size(); ++k)
-        support.push_back({box.support[k], box.weights[k]});
-      out["support"] = support;
-    } else if (box.status == lp::ProblemStatus::Infeasible) {
-      out["relative_distance"] = box.relative_distance;
-    }
-    return out;
-  }
-  if (s.call == lp::CallStatus::Failed) {
-    out["status"] = "call_failed";
-    out["message"] = s.call_message;
-    return out;
-  }
-  out["status"] = lp::to_string(s.status);
-  if (s.status == lp::ProblemStatus::Optimal) {
-    out["G"] = s.G;
-    if (disc.continuous) {
-      // docs/reference.md §2: G of all of [lo, hi] lies in [lower, G]; proven: the certificate is a
-      // proof (catalog functions), not a sampling (expressions).
-      out["lower"] = answer.lower;
-      out["bracket"] = answer.width();
-      out["proven"] = answer.proven;
-      out["exchange_rounds"] = answer.rounds;
-    }
-    json support = json::array();
-    for (size_t k = 0; k < s.support.size(); ++k)
-      support.push_back({problem.point(s.support[k]), s.weights[k]});
-    out["support"] = support;
-  }
-  // Defined answers outside I (docs/reference.md §1): every distribution on [lo, hi] lies below a
-  // z_f above hi (G = 1) and none strictly below a z_f at or under lo (G = 0).
-  if (zf > disc.hi)
-    out["note"] = "zf lies above the interval: every distribution on it is below zf, so G = 1";
-  if (zf <= disc.lo)
-    out["note"] = "zf lies at or below the interval's start: no mass is below it, so G = 0";
-  out["iterations"] = s.iterations;
-  out["backend"] = backend.name();
-  out["engine"] = lp::to_string(s.engine);  // "glpk" when the fast backend's fallback answered
-  if (check && s.status == lp::ProblemStatus::Optimal)
-    out["kkt"] = lp::check_kkt(problem, s).describe();
-  return out;
-}
-
-// A closed-form technique (docs/reference.md §4) on the given moments, e.g. to re-run a worst case
-// of `verify`; alpha >= 0 replaces every solver's default moment bias.
-json solve_closed_form(const std::string& name, double alpha, const std::vector<double>& moments,
-                       double zf) {
-  if (name == "pcf" || name.rfind("lp:", 0) == 0)
-    throw InputError("technique: '" + name +
-                     "' is not a closed form of the moments (use basis for an LP)");
-  TechniqueParams params;
-  if (alpha >= 0) set_moment_bias(params, alpha);
-  auto technique = make_technique(name, params);
-  if (moments.size() != technique->basis().size())
-    throw InputError("moments: technique '" + name + "' reads " +
-                     std::to_string(technique->basis().size()) + " moments, got " +
-                     std::to_string(moments.size()));
-  FragmentInput in;
-  in.moments = moments;
-  in.zf = zf;
-  const double g = technique->shadow(in);
-  json out;
-  out["status"] = technique->failures() ? "numerically_unstable" : "optimal";
-  if (!technique->failures()) out["G"] = g;
-  out["backend"] = "closed_form";
-  out["technique"] = name;
-  return out;
-}
-
-// A JSON Lines query, read strictly: every key known, every value of its type (docs/reference.md §2
-// names; errors name the key and what was expected).
-struct Query {
-  const json& q;
-  bool has(const char* key) const { return q.contains(key); }
-  const json& at(const char* key) const {
-    if (!q.contains(key)) throw InputError(std::string("key '") + key + "': missing");
-    return q.at(key);
-  }
-  double number(const char* key) const {
-    const json& v = at(key);
-    if (!v.is_number() || !std::isfinite(v.get<double>()))
-      throw InputError(std::string("key '") + key + "': expected a finite number, got " + v.dump());
-    return v.get<double>();
-  }
-  int integer(const char* key, int lo, int hi) const {
-    const json& v = at(key);
-    if (!v.is_number_integer() || v.get<double>() < lo || v.get<double>() > hi)
-      throw InputError(std::string("key '") + key + "': expected an integer in [" +
-                       std::to_string(lo) + ", " + std::to_string(hi) + "], got " + v.dump());
-    return v.get<int>();
-  }
-  std::vector<double> numbers(const char* key) const {
-    const json& v = at(key);
-    if (!v.is_array())
-      throw InputError(std::string("key '") + key + "': expected a list of numbers, got " +
-                       v.dump());
-    std::vector<double> out;
-    for (const auto& item : v) {
-      if (!item.is_number() || !std::isfinite(item.get<double>()))
-        throw InputError(std::string("key '") + key + "': expected finite numbers, got " +
-                         item.dump());
-      out.push_back(item.get<double>());
-    }
-    return out;
-  }
-  std::vector<std::string> strings(const char* key) const {
-    const json& v = at(key);
-    if (v.is_string()) return {v.get<std::string>()};
-    if (!v.is_array())
-      throw InputError(std::string("key '") + key + "': expected a list of strings, got " +
-                       v.dump());
-    std::vector<std::string> out;
-    for (const auto& item : v) {
-      if (!item.is_string())
-        throw InputError(std::string("key '") + key + "': expected strings, got " + item.dump());
-      out.push_back(item.get<std::string>());
-    }
-    return out;
-  }
-  std::string string(const char* key) const {
-    const json& v = at(key);
-    if (!v.is_string())
-      throw InputError(std::string("key '") + key + "': expected a string, got " + v.dump());
-    return v.get<std::string>();
-  }
-};
-
-const std::vector<std::string> kQueryKeys = {
-    "id",      "basis",  "interval", "grid",      "discretization",
-    "moments", "points", "zf",       "technique", "alpha"};
-
-json solve_line(const std::string& line, int number, const SolveOptions& o, lp::Backend& backend,
-                FactoryCache& factories) {
-  json q;
-  try {
-    q = json::parse(line);
-  } catch (const json::exception& e) {
-    // nlohmann's "[json.exception.parse_error.101] parse error at line 1, column 5: ..." without
-    // its internal tag: the batch line is named by the caller.
-    std::string what = e.what();
-    const size_t tag = what.find("] ");
-    throw InputError("JSON syntax: " + (tag == std::string::npos ? what : what.substr(tag + 2)));
-  }
-  if (!q.is_object()) throw InputError("expected a JSON object per line");
-  for (const auto& item : q.items())
-    if (std::find(kQueryKeys.begin(), kQueryKeys.end(), item.key()) == kQueryKeys.end()) {
-      const std::string guess = closest_match(item.key(), kQueryKeys);
-      throw InputError("unknown key '" + item.key() + "'" +
-                       (guess.empty() ? "" : " (did you mean '" + guess + "'?)"));
-    }
-  Query query{q};
-  json out;
-  out["id"] = q.value("id", json(number));
-  if (query.has("technique")) {
-    out.update(solve_closed_form(query.string("technique"),
-                                 query.has("alpha") ? query.number("alpha") : -1.0,
-                                 query.numbers("moments"), query.number("zf")));
-    return out;
-  }
-  std::vector<double> interval =
-      query.has("interval") ? query.numbers("interval") : std::vector<double>{0, 1};
-  if (interval.size() != 2) throw InputError("key 'interval': expected [lo, hi]");
-  lp::Discretization d{interval[0], interval[1],
-                       query.has("grid") ? query.integer("grid", 2, 1 << 24) : o.grid, o.quantize};
-  const std::string discretization =
-      query.has("discretization") ? query.string("discretization") : o.discretization;
-  if (discretization != "grid" && discretization != "continuous")
-    throw InputError("key 'discretization': expected grid or continuous, got '" + discretization +
-                     "'");
-  d.continuous = discretization == "continuous";
-  out.update(solve_one(
-      backend, factories, query.strings("basis"), d, query.numbers("moments"), query.number("zf"),
-      query.has("points") ? query.numbers("points") : std::vector<double>{}, o.check,
-      query.has("moment_tolerance") ? query.number("moment_tolerance") : o.moment_tolerance));
-  return out;
-}
-
-int run_solve(const SolveOptions& o) {
-  auto backend = lp::make_backend(o.backend);
-  if (o.interval.size() != 2) throw InputError("--interval: expected lo,hi");
-  lp::Discretization disc{o.interval[0], o.interval[1], o.grid, o.quantize};
-  disc.continuous = o.discretization == "continuous";
-  if (o.input.empty()) {
-    FactoryCache factories;
-    json r = !o.technique.empty() ? solve_closed_form(o.technique, o.alpha, o.moments, o.zf)
-                                  : solve_one(*backend, factories, o.basis, disc, o.moments, o.zf,
-                                              o.points, o.check, o.moment_tolerance);
-    std::printf("%s\n", r.dump(2).c_str());
-    return r["status"] == "optimal" ? 0 : 3;
-  }
-  if (std::filesystem::is_directory(o.input))
-    throw InputError(o.input + ": is a directory; --input needs a JSON Lines file");
-  std::ifstream in(o.input);
-  if (!in) throw InputError(o.input + ": cannot open");
-  std::ostringstream results;
-  std::string line;
-  int number = 0, failures = 0;
-  FactoryCache factories;
-  while (std::getline(in, line)) {
-    ++number;
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    json out;
-    try {
-      out = solve_line(line, number, o, *backend, factories);
-      // Every answer that is not a number (infeasible, unstable, a failed call) makes the batch's
-      // exit code 3, as for a single instance.
-      if (out.value("status", "") != "optimal") ++failures;
-    } catch (const std::exception& e) {
-      // A malformed line is reported with its number and does not stop the others.
-      ++failures;
-      out["status"] = "error";
-      out["message"] = o.input + ":" + std::to_string(number) + ": " + e.what();
-      std::fprintf(stderr, "momentbench: %s\n", out["message"].get<std::string>().c_str());
-    }
-    results << out.dump() << "\n";
-  }
-  if (o.output.empty()) {
-    std::fputs(results.str().c_str(), stdout);
-  } else {
-    write_file_atomically(o.output, results.str());
-  }
-  return failures ? 3 : 0;
-}
-
-}  // namespace
-
 std::vector<OptionSpec> solve_specs() {
-  return {
-      {"basis", OptionType::StringList, "[power4]",
-       "Basis functions: catalog names, expressions in z, or a set (power4, trig4)."},
-      {"interval", OptionType::NumberList, "[0, 1]", "Admissible interval [lo, hi]."},
-      {"grid", OptionType::Integer, "1024", "Uniform grid points on the interval.", 2, 1 << 24},
-      {"moments", OptionType::NumberList, "[]", "Moment vector b_1..b_m of the instance."},
-      {"points", OptionType::NumberList, "[]", "Extra points of I (e.g. the kernel's depths)."},
-      {"zf", OptionType::Number, "0.5", "Fragment depth z_f."},
-      {"backend", OptionType::String, "fast", "LP backend.", 0, 0, lp::backend_names()},
-      {"technique", OptionType::String, "''",
-       "A closed form instead of the LP (hamburger4, hausdorff4, tmsm, vsm, esm, ...); basis is "
-       "then ignored."},
-      {"alpha", OptionType::Number, "-1",
-       "Moment bias for technique; below 0: the technique's own.", -1, 0.999999},
-      {"input", OptionType::String, "''",
-       "JSON Lines file of instances (the instance options above are then refused)."},
-      {"output", OptionType::String, "''",
-       "JSON Lines results (written atomically); stdout if ''."},
-      {"check", OptionType::Boolean, "false",
-       "Run the independent KKT checker on every optimal answer."},
-      {"discretization",
-       OptionType::String,
-       "grid",
-       "grid: Problem 1 on the grid and points; continuous: on all of the interval (exchange "
-       "method; G, its certified lower end and their bracket; docs/reference.md §2).",
-       0,
-       0,
-       {"grid", "continuous"}},
-      {"moment_tolerance", OptionType::Number, "4",
-       "When the moments admit no distribution on I: Problem 1 over the box of this many ulps "
-       "of each moment instead (docs/reference.md §2; a boundary vector rounded to double), or the "
-       "vector's relative distance from the cone. 0: exact only.",
-       0, 1e15},
-      {"quantize", OptionType::Boolean, "false",
-       "Round extra points to the grid (docs/reference.md §2)."},
-  };
+  return solve_option_specs();
 }
 
 namespace {
@@ -362,7 +24,7 @@ YAML::Node yaml_of(const T& value) {
   return YAML::Node(value);
 }
 
-int run_solve_command(const CLI::App& command, const CommonOptions& common, SolveOptions flags) {
+int run_solve_command(const CLI::App& command, const CommonOptions& common, SolveSettings flags) {
   Config config = resolve_config(solve_specs(), common);
   apply_flags(
       command, config,
@@ -382,39 +44,29 @@ int run_solve_command(const CLI::App& command, const CommonOptions& common, Solv
        {"--discretization", "discretization", [&] { return yaml_of(flags.discretization); }},
        {"--moment-tolerance", "moment_tolerance",
         [&] { return yaml_of(flags.moment_tolerance); }}});
-  if (common.print_config) {
-    std::fputs(config.to_yaml().c_str(), stdout);
-    return 0;
+  if (print_config_if_asked(config, common)) return 0;
+  const SolveSettings o = solve_settings_from(config);
+  if (o.input.empty()) {
+    const nlohmann::json answer = solve_instance(o);
+    std::printf("%s\n", answer.dump(2).c_str());
+    return answer["status"] == "optimal" ? 0 : 3;
   }
-  SolveOptions o;
-  o.basis = config.strings("basis");
-  o.interval = config.numbers("interval");
-  o.grid = int(config.integer("grid"));
-  o.moments = config.numbers("moments");
-  o.points = config.numbers("points");
-  o.zf = config.number("zf");
-  o.backend = config.string("backend");
-  o.technique = config.string("technique");
-  o.alpha = config.number("alpha");
-  o.input = config.string("input");
-  o.output = config.string("output");
-  o.check = config.boolean("check");
-  o.quantize = config.boolean("quantize");
-  o.discretization = config.string("discretization");
-  o.moment_tolerance = config.number("moment_tolerance");
-  if (!o.input.empty())  // an instance comes from options or from input, never both
-    for (const auto& changed : config.non_default())
-      for (const char* key : {"basis", "interval", "moments", "points", "zf", "technique", "alpha"})
-        if (changed.rfind(std::string(key) + ":", 0) == 0)
-          throw InputError("solve: key '" + std::string(key) +
-                           "' beside 'input' (a batch's lines carry their own instances)");
-  return run_solve(o);
+  if (std::filesystem::is_directory(o.input))
+    throw InputError(o.input + ": is a directory; --input needs a JSON Lines file");
+  std::ifstream in(o.input);
+  if (!in) throw InputError(o.input + ": cannot open");
+  const SolveBatch batch = solve_batch(o, in, o.input);
+  if (o.output.empty())
+    std::fputs(batch.lines.c_str(), stdout);
+  else
+    write_file_atomically(o.output, batch.lines);
+  return batch.failures ? 3 : 0;
 }
 
 }  // namespace
 
 void register_solve_command(CLI::App& app, std::function<int()>& action) {
-  auto o = std::make_shared<SolveOptions>();
+  auto o = std::make_shared<SolveSettings>();
   auto common = std::make_shared<CommonOptions>();
   CLI::App* c = app.add_subcommand(
       "solve", "Solve Problem 1 instances as LPs (one from flags, or JSON Lines)");

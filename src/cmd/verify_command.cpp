@@ -35,9 +35,10 @@ std::vector<OptionSpec> verify_specs() {
                    "Real receiver kernels sampled from the dataset (0: none).", 0, 1e8});
   specs.push_back({"verify.seed", OptionType::Integer, "2015",
                    "Seed of the random instances and the fragment sample.", 0, 1e18});
-  specs.push_back({"verify.grids", OptionType::StringList, "[256, 1024, 4096]",
+  specs.push_back({"verify.grids", OptionType::IntegerList, "[256, 1024, 4096]",
                    "LP grid sizes, ascending; the last decides unless the discretization is "
-                   "continuous."});
+                   "continuous.",
+                   2, 1 << 24});
   specs.push_back({"verify.discretization",
                    OptionType::String,
                    "continuous",
@@ -83,45 +84,9 @@ std::vector<OptionSpec> verify_specs() {
 
 namespace {
 
-// Every receiver is equally likely; the sample is drawn with a seeded generator, in a fixed order.
-std::vector<VerifyInstance> dataset_instances(const std::vector<ViewData>& views,
-                                              const EvalSettings& settings, int count,
-                                              uint64_t seed) {
-  std::vector<VerifyInstance> out;
-  size_t total = 0;
-  for (const auto& v : views) total += v.fragments.size();
-  if (total == 0 || count == 0) return out;
-  SeededRandom rng(seed ^ 0x9e3779b97f4a7c15ull);
-  const int taps = settings.kernel.size * settings.kernel.size;
-  for (int i = 0; i < count; ++i) {
-    size_t index = size_t(rng.uniform() * double(total));
-    for (const auto& v : views) {
-      if (index >= v.fragments.size()) {
-        index -= v.fragments.size();
-        continue;
-      }
-      const int x = int(v.fragments.texel[index] % v.fragments.width),
-                y = int(v.fragments.texel[index] / v.fragments.width);
-      VerifyInstance inst;
-      inst.depths.resize(taps);
-      inst.weights.resize(taps);
-      kernel_distribution(v.map, settings.kernel, x, y, inst.depths, inst.weights);
-      inst.zf = v.fragments.ztest[index];
-      inst.source = "dataset:" + v.scene + "/" + v.view + " texel (" + std::to_string(x) + "," +
-                    std::to_string(y) + ") layer " + std::to_string(v.fragments.layer[index]);
-      out.push_back(std::move(inst));
-      break;
-    }
-  }
-  return out;
-}
-
 int run_verify(const CommonOptions& options) {
   Config config = resolve_config(verify_specs(), options);
-  if (options.print_config) {
-    std::fputs(config.to_yaml().c_str(), stdout);
-    return 0;
-  }
+  if (print_config_if_asked(config, options)) return 0;
   const int threads = resolve_thread_count(int(config.integer("threads")));
   EvalSettings settings = shadow_settings_from(config, threads);
   TechniqueParams params = verify_params(settings.technique);
@@ -135,15 +100,11 @@ int run_verify(const CommonOptions& options) {
     t.storage_strict = moment_box == "strict";
   }
   std::vector<int> grids;
-  for (const auto& g : config.strings("verify.grids")) {
-    int n = 0;
-    try {
-      n = std::stoi(g);
-    } catch (...) {
-    }
-    if (n < 2 || (!grids.empty() && n <= grids.back()))
-      throw InputError("verify.grids: expected ascending integers >= 2, got '" + g + "'");
-    grids.push_back(n);
+  for (const int64_t n : config.integers("verify.grids")) {
+    if (!grids.empty() && n <= grids.back())
+      throw InputError("verify.grids: expected ascending grid sizes, got " + std::to_string(n) +
+                       " after " + std::to_string(grids.back()));
+    grids.push_back(int(n));
   }
   if (grids.empty()) throw InputError("verify.grids: expected at least one grid size");
   const double tolerance = config.number("verify.tolerance");
@@ -164,7 +125,7 @@ int run_verify(const CommonOptions& options) {
     dataset_name = dataset.name;
     auto views = prepare_views(dataset, int(config.integer("resolution")), settings, options.quiet);
     for (auto& inst :
-         dataset_instances(views, settings, int(config.integer("verify.fragments")), seed))
+         dataset_verify_instances(views, settings, int(config.integer("verify.fragments")), seed))
       instances.push_back(std::move(inst));
   }
 

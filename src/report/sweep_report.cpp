@@ -11,6 +11,7 @@
 #include "report/darkening.h"
 #include "shadow/fragments.h"
 #include "sweep/candidates.h"
+#include "sweep/run_identity.h"
 #include "techniques/lp_technique.h"
 #include "util/error.h"
 #include "util/number_text.h"
@@ -25,10 +26,6 @@ constexpr double kTieMargins[] = {1e-4, 5e-4, 1e-3};
 
 // The seed paper's numbers (seed 000 §3.2) that the findings compare against.
 constexpr double kPaperPower = 0.0219, kPaperTrig = 0.0193;
-
-// Meta keys that must agree for series to share a report: what the errors are measured against.
-// `settings` is describe_settings (kernel, reference, bias, LP grid and interval, backend).
-constexpr const char* kComparableKeys[] = {"dataset", "reference", "settings"};
 
 // A candidate's name as the sweep writes it ("f1; f2; ..."), for a named basis set.
 std::string candidate_name(const std::string& set) {
@@ -158,14 +155,10 @@ void findings(std::ostringstream& md, const std::vector<SweepSeries>& series) {
   // so every candidate's LP error is optimistic. Two bases have closed forms of the continuous
   // Problem 1 on [0, 1] (Hausdorff 4MSM, trigonometric MSM), so this run measures the bias there.
   {
-    int grid = 0;
-    double lo = 0, hi = 0;
-    const auto settings = main.meta.find("settings");
-    const size_t at =
-        settings == main.meta.end() ? std::string::npos : settings->second.find("LP grid ");
-    const bool parsed =
-        at != std::string::npos && std::sscanf(settings->second.c_str() + at,
-                                               "LP grid %d on [%lf, %lf]", &grid, &lo, &hi) == 3;
+    const std::optional<LpGridIdentity> lp_grid = lp_grid_of(main.meta);
+    const bool parsed = lp_grid.has_value();
+    const int grid = parsed ? lp_grid->grid : 0;
+    const double lo = parsed ? lp_grid->lo : 0, hi = parsed ? lp_grid->hi : 0;
     md << "### The LP grid's bias (" << main.label << ")\n\n";
     if (!parsed) {
       md << "- the database does not record its LP discretisation\n\n";
@@ -311,11 +304,12 @@ std::vector<SweepSeries> load_sweep_series(const std::vector<std::string>& datab
     s.size = std::stoi(s.meta["combination_size"]);
     s.label = std::to_string(s.size) + (s.size == 1 ? " function" : " functions");
     if (s.estimated) s.label += " (screened)";
-    for (const char* key : kComparableKeys)
-      if (!out.empty() && s.meta[key] != out.front().meta[key])
-        throw InputError(s.database + ": " + key + " '" + s.meta[key] + "' differs from " +
-                         out.front().database + "'s '" + out.front().meta[key] +
-                         "': errors measured differently cannot share a report");
+    // What the errors are measured with must agree (sweep/run_identity.h).
+    if (const std::string key = out.empty() ? "" : incomparable_key(s.meta, out.front().meta);
+        !key.empty())
+      throw InputError(s.database + ": " + key + " '" + s.meta[key] + "' differs from " +
+                       out.front().database + "'s '" + out.front().meta[key] +
+                       "': errors measured differently cannot share a report");
     out.push_back(std::move(s));
   }
   // Two series of one size (two samples, say) are told apart by their position.

@@ -45,11 +45,12 @@ std::string verdict(const VerifySolverResult& r) {
 
 }  // namespace
 
-VerifyReport render_verify_report(const VerifyReportContext& ctx,
-                                  std::span<const VerifySolverResult> results,
-                                  std::span<const VerifyInstance> instances) {
-  std::ostringstream md, csv, worst;
-  const bool continuous = !ctx.grids.empty() && ctx.grids.back() == 0;
+namespace {
+
+// What was run and how it is judged.
+void write_header(std::ostream& md, const VerifyReportContext& ctx,
+                  std::span<const VerifySolverResult> results,
+                  std::span<const VerifyInstance> instances, bool continuous) {
   md << "# Closed forms against the LP (docs/reference.md §6)\n\n"
      << "Made by momentbench " << ctx.version << " (git " << ctx.git_sha << "), " << ctx.threads
      << " threads, " << ctx.started << ".\n\n"
@@ -78,10 +79,11 @@ VerifyReport render_verify_report(const VerifyReportContext& ctx,
         "distribution on "
         "I (its moments "
         "miss the instance's by the LP tolerance, which near singular moments moves G by more than "
-        "1e-6), so the "
-        "closed form evaluated on that distribution's own moments must not exceed its mass below "
-        "z_f by more than "
-        "1e-6. Undefined: the closed form gave no number (singular moments at alpha = 0).\n\n"
+     << round_trip(kAboveLpSlack)
+     << "), so the closed form evaluated on that distribution's own moments must not exceed its "
+        "mass below z_f by more than "
+     << round_trip(kAboveLpSlack)
+     << ". Undefined: the closed form gave no number (singular moments at alpha = 0).\n\n"
      << (std::any_of(results.begin(), results.end(),
                      [](const VerifySolverResult& r) { return r.box_judged; })
              ? "- Storage rows (float32, 16-bit): their continuous column is Problem 1 over every "
@@ -89,11 +91,19 @@ VerifyReport render_verify_report(const VerifyReportContext& ctx,
                "the ones the closed form read (docs/reference.md §2 \"Moments with a tolerance\"; "
                "float32: 2^-24 max |b_j|, 16-bit: half a step of theta_4's coordinates). A "
                "storage variant passes when it never exceeds that box's G, nor an LP witness's "
-               "mass, by more than its bias alpha + 1e-6 (the biased moments are a mixture's). "
-               "Seed 000 §4.3 reports quantization noise at these alphas, so exceeding is "
-               "reported, not failed, unless verify.moment_box = strict.\n"
-             : "")
-     << "| technique | LP basis | interval | instances | undefined |";
+               "mass, by more than its bias alpha + " +
+                   round_trip(kAboveLpSlack) +
+                   " (the biased moments are a mixture's). "
+                   "Seed 000 §4.3 reports quantization noise at these alphas, so exceeding is "
+                   "reported, not failed, unless verify.moment_box = strict.\n"
+             : "");
+}
+
+// One row per solver in verify.md and one per solver and grid in verify.csv; true when every
+// solver that decides the exit status passed.
+bool write_summary(std::ostream& md, std::ostream& csv, const VerifyReportContext& ctx,
+                   std::span<const VerifySolverResult> results, bool continuous) {
+  md << "| technique | LP basis | interval | instances | undefined |";
   for (int g : ctx.grids) md << " " << ground_truth(g) << ": max / mean abs dG |";
   if (continuous) md << " widest bracket | brackets > 1e-6 | unproven |";
   md << " beyond tol. | above witness | verdict |\n|---|---|---|---|---|";
@@ -102,9 +112,6 @@ VerifyReport render_verify_report(const VerifyReportContext& ctx,
   csv << "technique,lp_basis,lo,hi,grid,instances,undefined,compared,lp_failures,max_abs_dG,mean_"
          "abs_dG,beyond_tolerance,"
          "above_lp,exact,passed\n";
-  worst << "technique,kind,rank,source,zf,moments,depths,weights,G_closed_form";
-  for (int g : ctx.grids) worst << ",G_lp_" << (g ? std::to_string(g) : "continuous");
-  worst << "\n";
   bool all_passed = true;
   for (const auto& r : results) {
     std::string basis;
@@ -125,6 +132,16 @@ VerifyReport render_verify_report(const VerifyReportContext& ctx,
           << (r.judged() ? 1 : 0) << "," << (r.passed() ? 1 : 0) << "\n";
     all_passed = all_passed && (r.passed() || !r.decides_exit());
   }
+  return all_passed;
+}
+
+// The worst cases per solver in verify.md (with `solve` commands to re-run them) and worst.csv.
+void write_worst_cases(std::ostream& md, std::ostream& worst, const VerifyReportContext& ctx,
+                       std::span<const VerifySolverResult> results,
+                       std::span<const VerifyInstance> instances, bool continuous) {
+  worst << "technique,kind,rank,source,zf,moments,depths,weights,G_closed_form";
+  for (int g : ctx.grids) worst << ",G_lp_" << (g ? std::to_string(g) : "continuous");
+  worst << "\n";
   md << "\n## Worst cases\n\nPer solver: the largest |dG| on the finest grid, then (if any) the "
         "cases furthest above an "
         "LP. Re-run one with the printed `solve` commands (closed form, then the LP with the "
@@ -170,6 +187,18 @@ VerifyReport render_verify_report(const VerifyReportContext& ctx,
     write_cases(r, r.worst, "largest_dG", "largest |dG| on the finest grid");
     write_cases(r, r.worst_above, "above_lp", "furthest above an LP witness");
   }
+}
+
+}  // namespace
+
+VerifyReport render_verify_report(const VerifyReportContext& ctx,
+                                  std::span<const VerifySolverResult> results,
+                                  std::span<const VerifyInstance> instances) {
+  std::ostringstream md, csv, worst;
+  const bool continuous = !ctx.grids.empty() && ctx.grids.back() == 0;
+  write_header(md, ctx, results, instances, continuous);
+  const bool all_passed = write_summary(md, csv, ctx, results, continuous);
+  write_worst_cases(md, worst, ctx, results, instances, continuous);
   return {md.str(), csv.str(), worst.str(), all_passed};
 }
 

@@ -2,6 +2,9 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <string>
+
+#include "util/number_text.h"
 
 namespace mb {
 
@@ -31,6 +34,65 @@ bool same_config(const std::map<std::string, std::string>& meta, const std::stri
   if (hash != meta.end() && hash->second == config_hash(config_yaml)) return true;
   const auto stored = meta.find("config");
   return stored != meta.end() && config_values(stored->second) == config_values(config_yaml);
+}
+
+namespace {
+constexpr const char* kMeasurementKeys[] = {"kernel.size", "kernel.sigma",  "reference",
+                                            "bias.slope",  "bias.constant", "lp.grid",
+                                            "lp.lo",       "lp.hi",         "lp.discretization",
+                                            "lp.quantize", "lp.backend",    "lp.moment_box"};
+}  // namespace
+
+std::map<std::string, std::string> measurement_meta(const EvalSettings& s) {
+  const auto& lp = s.technique.lp;
+  return {{"kernel.size", std::to_string(s.kernel.size)},
+          {"kernel.sigma", round_trip(s.kernel.sigma)},
+          {"reference", reference_name(s.bias.reference)},
+          {"bias.slope", round_trip(s.bias.slope)},
+          {"bias.constant", round_trip(s.bias.constant)},
+          {"lp.grid", std::to_string(lp.grid)},
+          {"lp.lo", round_trip(lp.lo)},
+          {"lp.hi", round_trip(lp.hi)},
+          {"lp.discretization", lp.continuous ? "continuous" : "grid"},
+          {"lp.quantize", lp.quantize ? "true" : "false"},
+          {"lp.backend", s.technique.lp_backend},
+          {"lp.moment_box", s.technique.lp_moment_box}};
+}
+
+std::string incomparable_key(const std::map<std::string, std::string>& a,
+                             const std::map<std::string, std::string>& b) {
+  auto value = [](const std::map<std::string, std::string>& m, const std::string& key) {
+    const auto it = m.find(key);
+    return it == m.end() ? std::string() : it->second;
+  };
+  if (value(a, "dataset") != value(b, "dataset")) return "dataset";
+  if (a.count("lp.grid") && b.count("lp.grid")) {
+    for (const char* key : kMeasurementKeys)
+      if (value(a, key) != value(b, key)) return key;
+    return "";
+  }
+  // An older database: its prose sentence holds the same settings (with %g's rounding).
+  for (const char* key : {"reference", "settings"})
+    if (value(a, key) != value(b, key)) return key;
+  return "";
+}
+
+std::optional<LpGridIdentity> lp_grid_of(const std::map<std::string, std::string>& meta) {
+  LpGridIdentity id;
+  if (meta.count("lp.grid") && meta.count("lp.lo") && meta.count("lp.hi")) {
+    id.grid = std::stoi(meta.at("lp.grid"));
+    id.lo = std::stod(meta.at("lp.lo"));
+    id.hi = std::stod(meta.at("lp.hi"));
+    return id;
+  }
+  const auto settings = meta.find("settings");
+  if (settings == meta.end()) return std::nullopt;
+  const size_t at = settings->second.find("LP grid ");
+  if (at == std::string::npos ||
+      std::sscanf(settings->second.c_str() + at, "LP grid %d on [%lf, %lf]", &id.grid, &id.lo,
+                  &id.hi) != 3)
+    return std::nullopt;
+  return id;
 }
 
 }  // namespace mb

@@ -25,6 +25,8 @@ const char* type_name(OptionType type) {
       return "a list of strings";
     case OptionType::NumberList:
       return "a list of finite numbers";
+    case OptionType::IntegerList:
+      return "a list of integers";
   }
   return "";
 }
@@ -152,6 +154,20 @@ void Config::assign(const std::string& name, const YAML::Node& node, const std::
       }
       break;
     }
+    case OptionType::IntegerList: {
+      const std::vector<std::string> items = list_items();
+      stored = YAML::Node(YAML::NodeType::Sequence);
+      for (size_t k = 0; k < items.size(); ++k) {
+        int64_t v;
+        const std::string where = "item " + std::to_string(k + 1) + " '" + items[k] + "'";
+        if (!YAML::convert<int64_t>::decode(YAML::Node(items[k]), v) || v < s.min || v > s.max)
+          throw InputError(origin + ": key '" + name + "': " + where +
+                           ": expected an integer in [" + number_text(s.min) + ", " +
+                           number_text(s.max) + "]");
+        stored.push_back(v);
+      }
+      break;
+    }
   }
   values_[name] = Value{stored, origin};
 }
@@ -248,6 +264,14 @@ std::vector<double> Config::numbers(const std::string& name) const {
   return out;
 }
 
+std::vector<int64_t> Config::integers(const std::string& name) const {
+  if (spec(name).type != OptionType::IntegerList)
+    throw std::logic_error(name + " is not an integer-list option");
+  std::vector<int64_t> out;
+  for (const auto& item : values_.at(name).node) out.push_back(item.as<int64_t>());
+  return out;
+}
+
 namespace {
 // The documentation of an option with its range and choices, as --print-config and the README's
 // tables show it.
@@ -255,7 +279,7 @@ std::string documented(const OptionSpec& s) {
   std::ostringstream out;
   out << s.doc;
   if (s.type == OptionType::Integer || s.type == OptionType::Number ||
-      s.type == OptionType::NumberList) {
+      s.type == OptionType::NumberList || s.type == OptionType::IntegerList) {
     if (std::isfinite(s.min) || std::isfinite(s.max))
       out << " Range [" << number_text(s.min) << ", " << number_text(s.max) << "].";
   }

@@ -13,7 +13,7 @@
 
 namespace mb {
 
-enum class OptionType { Integer, Number, Boolean, String, StringList, NumberList };
+enum class OptionType { Integer, Number, Boolean, String, StringList, NumberList, IntegerList };
 
 struct OptionSpec {
   std::string
@@ -44,7 +44,8 @@ class Config {
   bool boolean(const std::string& name) const;
   std::string string(const std::string& name) const;
   std::vector<std::string> strings(const std::string& name) const;
-  std::vector<double> numbers(const std::string& name) const;  // each item within [min, max]
+  std::vector<double> numbers(const std::string& name) const;    // each item within [min, max]
+  std::vector<int64_t> integers(const std::string& name) const;  // each item within [min, max]
 
   // The effective configuration as YAML that `load_file` reads back, one documented key a line.
   std::string to_yaml() const;

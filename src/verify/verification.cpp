@@ -19,9 +19,6 @@
 
 namespace mb {
 
-// How far a closed form may sit above an LP witness (below) before it counts as impossible: the
-// closed forms at alpha = 0 lose digits on near-singular moments.
-constexpr double kAboveLpSlack = 1e-6;
 // The largest rounding allowance an instance gets (see solve_continuous).
 constexpr double kMaxRoundingAllowance = 1e-2;
 
@@ -232,6 +229,159 @@ std::vector<VerifyInstance> random_verify_instances(int count, uint64_t seed) {
   return out;
 }
 
+namespace {
+
+// Cantelli's extremal two points keep mean and variance: z_f and mu - sigma^2 / (z_f - mu).
+// Further out than ten interval widths the columns' size breaks the LP's scaling (and the weight
+// there is tiny): the interval decides.
+void add_cantelli_support(const VerifyTarget& target, const VerifyInstance& inst,
+                          const lp::ProblemFactory& factory, lp::Problem& problem) {
+  double mean = 0, second = 0;
+  for (size_t a = 0; a < inst.depths.size(); ++a) {
+    const double z = inst.depths[a], w = inst.weights[a];
+    mean += w * z, second += w * z * z;
+  }
+  const double zf = inst.zf, variance = std::max(0.0, second - mean * mean);
+  const double reach = 10 * (target.hi - target.lo);
+  const double far = zf != mean ? mean - variance / (zf - mean) : zf;
+  if (far >= target.lo - reach && far <= target.hi + reach) {
+    const double points[2] = {zf, far};
+    factory.add_points(problem, points);
+  }
+}
+
+// G of the grid LP for one instance (NaN when no backend answers it), and its optimal
+// distribution as the witness. The LP sees the exact distribution (its depths join I), so it is
+// feasible and G_LP <= F_Z.
+double solve_grid(const VerifyTarget& target, const VerifyInstance& inst,
+                  const lp::ProblemFactory& factory, lp::Backend& fast, lp::Backend& glpk,
+                  Witness& witness) {
+  lp::Problem problem = factory.from_distribution(inst.depths, inst.weights, inst.zf);
+  if (target.cantelli_support) add_cantelli_support(target, inst, factory, problem);
+  lp::Solution s = fast.solve(problem);
+  if (s.status != lp::ProblemStatus::Optimal) s = glpk.solve(problem);
+  if (s.call != lp::CallStatus::Ok || s.status != lp::ProblemStatus::Optimal)
+    return std::numeric_limits<double>::quiet_NaN();
+  double total = 0;
+  for (size_t j = 0; j < s.support.size(); ++j) {
+    witness.points.push_back(problem.point(s.support[j]));
+    witness.weights.push_back(std::max(0.0, s.weights[j]));
+    total += witness.weights.back();
+  }
+  for (double& weight : witness.weights) weight /= total;
+  return s.G;
+}
+
+// The closed form on an instance's stored moments: NaN when it gives no number.
+double closed_form_answer(Technique& technique, std::span<const double> moments,
+                          const VerifyInstance& inst) {
+  FragmentInput in;
+  in.moments = moments;
+  in.zf = inst.zf;
+  in.kernel_depths = inst.depths;
+  in.kernel_weights = inst.weights;
+  const size_t before = technique.failures();
+  const double g = technique.shadow(in);
+  return technique.failures() > before ? std::numeric_limits<double>::quiet_NaN() : g;
+}
+
+// The witness test. An LP solution is a distribution whose moments miss the instance's by the LP's
+// tolerance; near the boundary of the moment space (Hankel determinants ~1e-17) that moves the
+// optimum by far more than the tolerance, so G_LP itself is no bound on the closed form there. But
+// the LP's distribution is an exact witness for its own moments: no correct infimum over I exceeds
+// its mass below z_f (docs/reference.md §1). Returns the largest excess over `witnesses`.
+template <class StoredMoments>
+double above_witnesses(Technique& probe, const StoredMoments& stored_moments, double zf,
+                       const std::vector<Witness>& witnesses, bool box_rows) {
+  double above = -std::numeric_limits<double>::infinity();
+  for (const Witness& w : witnesses) {
+    if (w.points.empty()) continue;
+    // A map stores depths in [0, 1] only (16-bit clamps its theta_4 coordinates there): a storage
+    // row's witness must lie there to be a distribution the map could hold.
+    if (box_rows &&
+        std::any_of(w.points.begin(), w.points.end(), [](double z) { return z < 0 || z > 1; }))
+      continue;
+    const std::vector<double> moments = stored_moments(w.points, w.weights);
+    double below = 0;
+    for (size_t j = 0; j < w.points.size(); ++j)
+      if (w.points[j] < zf) below += w.weights[j];
+    VerifyInstance own;  // the witness as an instance: its own depths and weights
+    own.depths = w.points;
+    own.weights = w.weights;
+    own.zf = zf;
+    const double g = closed_form_answer(probe, moments, own);
+    if (std::isfinite(g)) above = std::max(above, g - below);
+  }
+  return above;
+}
+
+// The per-grid statistics, the judgement and the worst cases, reduced in case order.
+void reduce_cases(const VerifyTarget& target, const std::vector<VerifyCase>& cases,
+                  const std::vector<int>& grids, bool continuous, bool box_rows, double tolerance,
+                  int worst_count, VerifySolverResult& result) {
+  result.grids.resize(cases[0].lp.size());
+  for (size_t k = 0; k < grids.size(); ++k) result.grids[k].grid = grids[k];  // 0: continuous
+  std::vector<std::pair<double, size_t>> finest, excess;
+  for (const auto& c : cases) {
+    if (!std::isfinite(c.closed_form)) {
+      ++result.undefined;
+      continue;
+    }
+    for (size_t k = 0; k < c.lp.size(); ++k) {
+      VerifyGridStats& s = result.grids[k];
+      if (!std::isfinite(c.lp[k])) {
+        ++s.lp_failures;
+        continue;
+      }
+      const double d = std::abs(c.closed_form - c.lp[k]);
+      ++s.compared;
+      s.max_difference = std::max(s.max_difference, d);
+      s.mean_difference += d;
+    }
+    // Beyond the arithmetic slack, by the instance's rounding allowance: the witness's moments
+    // are the instance's to within the LP's tolerance, and the closed form reads both rounded.
+    // Storage rows: the biased moments are a mixture's, allowed alpha above (closed_form.h).
+    const double allowance = box_rows ? target.alpha : c.rounding;
+    const double above_by = c.above_witness - allowance;
+    if (above_by > kAboveLpSlack) {
+      ++result.above_lp;
+      excess.push_back({above_by, c.instance});
+    }
+    if (!std::isfinite(c.lp.back())) continue;
+    result.above_finest += c.closed_form > c.lp.back() + kAboveLpSlack;
+    if (target.exceedance)
+      result.largest_excess =
+          std::max({result.largest_excess, c.closed_form - c.lp.back(), c.above_witness});
+    const double d = std::abs(c.closed_form - c.lp.back());
+    // The continuous LP's G lies in [upper - bracket, upper]: judged is the distance from there.
+    const double off = c.closed_form > c.lp.back() ? d : std::max(0.0, d - c.bracket);
+    if (box_rows)  // a lower bound of the box problem: judged from above only
+      result.beyond_tolerance += c.closed_form - c.lp.back() > kAboveLpSlack + target.alpha;
+    else
+      result.beyond_tolerance += off > tolerance + c.rounding;
+    finest.push_back({box_rows ? c.closed_form - c.lp.back() : d, c.instance});
+    if (box_rows) result.largest_excess = std::max(result.largest_excess, finest.back().first);
+  }
+  for (auto& s : result.grids)
+    if (s.compared) s.mean_difference /= double(s.compared);
+  if (continuous)
+    for (const auto& c : cases) {
+      if (!std::isfinite(c.lp.back())) continue;
+      result.widest_bracket = std::max(result.widest_bracket, c.bracket);
+      result.unproven += !c.proven;
+      result.unresolved += c.bracket > kUnresolvedBracket;
+    }
+  const auto largest_first = [](const auto& a, const auto& b) { return a.first > b.first; };
+  std::stable_sort(finest.begin(), finest.end(), largest_first);
+  std::stable_sort(excess.begin(), excess.end(), largest_first);
+  for (size_t k = 0; k < finest.size() && int(k) < worst_count; ++k)
+    result.worst.push_back(cases[finest[k].second]);
+  for (size_t k = 0; k < excess.size() && int(k) < worst_count; ++k)
+    result.worst_above.push_back(cases[excess[k].second]);
+}
+
+}  // namespace
+
 VerifySolverResult verify_solver(const VerifyTarget& target, const TechniqueMaker& make,
                                  std::span<const VerifyInstance> instances,
                                  const std::vector<int>& grids, bool continuous, double tolerance,
@@ -265,7 +415,7 @@ VerifySolverResult verify_solver(const VerifyTarget& target, const TechniqueMake
   // The continuous LP's seed grid for bases other than powers (in depth coordinates).
   const lp::ProblemFactory seed_factory(
       lp_basis, lp::Discretization{target.lo, target.hi, lp::kContinuousSeedGrid, false});
-  // The LP's optimal distribution per case and grid (its witness, see below).
+  // The LP's optimal distribution per case and grid (its witness).
   std::vector<std::vector<Witness>> witnesses(instances.size(),
                                               std::vector<Witness>(cases[0].lp.size()));
   // One factory per grid, shared read-only (columns are computed up front).
@@ -273,7 +423,6 @@ VerifySolverResult verify_solver(const VerifyTarget& target, const TechniqueMake
   for (int g : grids)
     factories.push_back(std::make_unique<lp::ProblemFactory>(
         lp_basis, lp::Discretization{target.lo, target.hi, g, false}));
-  // The LP sees the exact distribution (its depths join I), so it is feasible and G_LP <= F_Z.
   ParallelErrors errors;
 #pragma omp parallel num_threads(threads)
   {
@@ -285,48 +434,10 @@ VerifySolverResult verify_solver(const VerifyTarget& target, const TechniqueMake
 #pragma omp for schedule(dynamic, 16)
     for (size_t i = 0; i < instances.size(); ++i)
       errors.capture([&] {
-        FragmentInput in;
-        in.moments = cases[i].moments;
-        in.zf = instances[i].zf;
-        in.kernel_depths = instances[i].depths;
-        in.kernel_weights = instances[i].weights;
-        const size_t before = technique->failures();
-        const double g = technique->shadow(in);
-        cases[i].closed_form =
-            technique->failures() > before ? std::numeric_limits<double>::quiet_NaN() : g;
-        for (size_t k = 0; k < grids.size(); ++k) {
-          lp::Problem problem = factories[k]->from_distribution(
-              instances[i].depths, instances[i].weights, instances[i].zf);
-          if (target.cantelli_support) {
-            // Cantelli's extremal two points keep mean and variance: z_f and
-            // mu - sigma^2 / (z_f - mu). Further out than ten interval widths the columns' size
-            // breaks the LP's scaling (and the weight there is tiny): the interval decides.
-            double mean = 0, second = 0;
-            for (size_t a = 0; a < instances[i].depths.size(); ++a) {
-              const double z = instances[i].depths[a], w = instances[i].weights[a];
-              mean += w * z, second += w * z * z;
-            }
-            const double zf = instances[i].zf, variance = std::max(0.0, second - mean * mean);
-            const double reach = 10 * (target.hi - target.lo);
-            const double far = zf != mean ? mean - variance / (zf - mean) : zf;
-            if (far >= target.lo - reach && far <= target.hi + reach) {
-              const double points[2] = {zf, far};
-              factories[k]->add_points(problem, points);
-            }
-          }
-          lp::Solution s = fast->solve(problem);
-          if (s.status != lp::ProblemStatus::Optimal) s = glpk->solve(problem);
-          if (s.call != lp::CallStatus::Ok || s.status != lp::ProblemStatus::Optimal) continue;
-          cases[i].lp[k] = s.G;
-          Witness& w = witnesses[i][k];
-          double total = 0;
-          for (size_t j = 0; j < s.support.size(); ++j) {
-            w.points.push_back(problem.point(s.support[j]));
-            w.weights.push_back(std::max(0.0, s.weights[j]));
-            total += w.weights.back();
-          }
-          for (double& weight : w.weights) weight /= total;
-        }
+        cases[i].closed_form = closed_form_answer(*technique, cases[i].moments, instances[i]);
+        for (size_t k = 0; k < grids.size(); ++k)
+          cases[i].lp[k] =
+              solve_grid(target, instances[i], *factories[k], *fast, *glpk, witnesses[i][k]);
         if (box_rows)
           solve_storage_box(technique->basis(), technique->storage(), box_tolerance, instances[i],
                             cases[i], witnesses[i].back());
@@ -336,98 +447,12 @@ VerifySolverResult verify_solver(const VerifyTarget& target, const TechniqueMake
       });
   }
   errors.rethrow();
-  // The witness test (serial: the technique's basis). An LP solution is a distribution whose
-  // moments miss the instance's by the LP's tolerance; near the boundary of the moment space
-  // (Hankel determinants ~1e-17) that moves the optimum by far more than the tolerance, so G_LP
-  // itself is no bound on the closed form there. But the LP's distribution is an exact witness
-  // for its own moments: no correct infimum over I exceeds its mass below z_f (docs/reference.md
-  // §1).
-  for (size_t i = 0; i < instances.size(); ++i) {
-    if (!std::isfinite(cases[i].closed_form)) continue;
-    for (size_t k = 0; k < witnesses[i].size(); ++k) {
-      const Witness& w = witnesses[i][k];
-      if (w.points.empty()) continue;
-      // A map stores depths in [0, 1] only (16-bit clamps its theta_4 coordinates there): a
-      // storage row's witness must lie there to be a distribution the map could hold.
-      if (box_rows &&
-          std::any_of(w.points.begin(), w.points.end(), [](double z) { return z < 0 || z > 1; }))
-        continue;
-      const std::vector<double> moments = stored_moments(w.points, w.weights);
-      FragmentInput in;  // holds spans
-      in.moments = moments;
-      in.zf = instances[i].zf;
-      in.kernel_depths = w.points;
-      in.kernel_weights = w.weights;
-      double below = 0;
-      for (size_t j = 0; j < w.points.size(); ++j)
-        if (w.points[j] < in.zf) below += w.weights[j];
-      const size_t before = probe->failures();
-      const double g = probe->shadow(in);
-      if (probe->failures() == before)
-        cases[i].above_witness = std::max(cases[i].above_witness, g - below);
-    }
-  }
-  // Fixed-order reduction.
-  result.grids.resize(cases[0].lp.size());
-  for (size_t k = 0; k < grids.size(); ++k) result.grids[k].grid = grids[k];  // 0: continuous
-  std::vector<std::pair<double, size_t>> finest, excess;
-  for (const auto& c : cases) {
-    if (!std::isfinite(c.closed_form)) {
-      ++result.undefined;
-      continue;
-    }
-    for (size_t k = 0; k < c.lp.size(); ++k) {
-      VerifyGridStats& s = result.grids[k];
-      if (!std::isfinite(c.lp[k])) {
-        ++s.lp_failures;
-        continue;
-      }
-      const double d = std::abs(c.closed_form - c.lp[k]);
-      ++s.compared;
-      s.max_difference = std::max(s.max_difference, d);
-      s.mean_difference += d;
-    }
-    // Beyond the arithmetic slack, by the instance's rounding allowance: the witness's moments
-    // are the instance's to within the LP's tolerance, and the closed form reads both rounded.
-    // Storage rows: the biased moments are a mixture's, allowed alpha above (technique.cpp).
-    const double allowance = box_rows ? target.alpha : c.rounding;
-    const double above_by = c.above_witness - allowance;
-    if (above_by > kAboveLpSlack) {
-      ++result.above_lp;
-      excess.push_back({above_by, c.instance});
-    }
-    if (std::isfinite(c.lp.back())) {
-      result.above_finest += c.closed_form > c.lp.back() + kAboveLpSlack;
-      if (target.exceedance)
-        result.largest_excess =
-            std::max({result.largest_excess, c.closed_form - c.lp.back(), c.above_witness});
-      const double d = std::abs(c.closed_form - c.lp.back());
-      // The continuous LP's G lies in [upper - bracket, upper]: judged is the distance from there.
-      const double off = c.closed_form > c.lp.back() ? d : std::max(0.0, d - c.bracket);
-      if (box_rows)  // a lower bound of the box problem: judged from above only
-        result.beyond_tolerance += c.closed_form - c.lp.back() > kAboveLpSlack + target.alpha;
-      else
-        result.beyond_tolerance += off > tolerance + c.rounding;
-      finest.push_back({box_rows ? c.closed_form - c.lp.back() : d, c.instance});
-      if (box_rows) result.largest_excess = std::max(result.largest_excess, finest.back().first);
-    }
-  }
-  for (auto& s : result.grids)
-    if (s.compared) s.mean_difference /= double(s.compared);
-  if (continuous)
-    for (const auto& c : cases) {
-      if (!std::isfinite(c.lp.back())) continue;
-      result.widest_bracket = std::max(result.widest_bracket, c.bracket);
-      result.unproven += !c.proven;
-      result.unresolved += c.bracket > 1e-6;
-    }
-  const auto largest_first = [](const auto& a, const auto& b) { return a.first > b.first; };
-  std::stable_sort(finest.begin(), finest.end(), largest_first);
-  std::stable_sort(excess.begin(), excess.end(), largest_first);
-  for (size_t k = 0; k < finest.size() && int(k) < worst_count; ++k)
-    result.worst.push_back(cases[finest[k].second]);
-  for (size_t k = 0; k < excess.size() && int(k) < worst_count; ++k)
-    result.worst_above.push_back(cases[excess[k].second]);
+  // Serial: the technique's basis.
+  for (size_t i = 0; i < instances.size(); ++i)
+    if (std::isfinite(cases[i].closed_form))
+      cases[i].above_witness =
+          above_witnesses(*probe, stored_moments, instances[i].zf, witnesses[i], box_rows);
+  reduce_cases(target, cases, grids, continuous, box_rows, tolerance, worst_count, result);
   return result;
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "eval/evaluation.h"
 #include "techniques/technique.h"
 
 namespace mb {
@@ -61,6 +62,17 @@ struct VerifyInstance {
 
 // Seeded random instances: 1..8 atoms on [0, 1] and mixtures of two smooth bumps.
 std::vector<VerifyInstance> random_verify_instances(int count, uint64_t seed);
+// `count` real kernels: receivers of `views` drawn uniformly with `seed`, each with its kernel's
+// depths and weights and its test depth z_f - delta_f (dataset_instances.cpp).
+std::vector<VerifyInstance> dataset_verify_instances(const std::vector<ViewData>& views,
+                                                     const EvalSettings& settings, int count,
+                                                     uint64_t seed);
+
+// How far a closed form may sit above an LP witness before it counts as impossible: the closed
+// forms at alpha = 0 lose digits on near-singular moments. Reports print this constant.
+constexpr double kAboveLpSlack = 1e-6;
+// A continuous bracket wider than this leaves an instance unresolved (the exchange stalled).
+constexpr double kUnresolvedBracket = 1e-6;
 
 struct VerifyCase {
   size_t instance = 0;

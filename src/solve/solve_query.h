@@ -1,0 +1,49 @@
+#pragma once
+// Problem 1 queries (docs/reference.md §1-2): one instance, or a JSON Lines batch of them, answered
+// as JSON by an LP backend on a grid or the continuous interval, or by a closed form. `solve`
+// parses its flags into SolveSettings and calls these; tests call them directly.
+#include <istream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "util/config.h"
+
+namespace mb {
+
+struct SolveSettings {
+  std::vector<std::string> basis{"power4"};
+  std::vector<double> interval{0, 1};
+  int grid = 1024;
+  std::vector<double> moments, points;
+  double zf = 0.5;
+  std::string backend = "fast";
+  std::string technique;  // a closed form instead of the LP
+  double alpha = -1;      // its moment bias (< 0: the technique's default)
+  std::string input, output;
+  bool check = false, quantize = false;
+  std::string discretization = "grid";
+  double moment_tolerance = 4;  // ulps of each moment (docs/reference.md §2)
+};
+
+// solve's option table, and the settings it declares read from a resolved config (an instance
+// beside `input` is an InputError).
+std::vector<OptionSpec> solve_option_specs();
+SolveSettings solve_settings_from(const Config& config);
+
+// The instance of `settings` (its basis, moments and z_f, or its technique): the answer object with
+// `status`, `G`, `support`, and for the continuous method `lower`, `bracket`, `proven`.
+nlohmann::json solve_instance(const SolveSettings& settings);
+
+struct SolveBatch {
+  std::string lines;  // one JSON answer per non-blank input line, in input order
+  int failures = 0;   // answers that are not optimal, and malformed lines
+};
+// Every line of `in` as a query object (keys id, basis, interval, grid, discretization, moments,
+// points, zf, technique, alpha, moment_tolerance; the rest from `settings`). A malformed line is
+// answered {"status": "error", "message": "<source>:<line>: ..."} (and printed to stderr when
+// `report_errors`) without stopping the others.
+SolveBatch solve_batch(const SolveSettings& settings, std::istream& in, const std::string& source,
+                       bool report_errors = true);
+
+}  // namespace mb

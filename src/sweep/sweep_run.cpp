@@ -1,0 +1,342 @@
+#include "sweep/sweep_run.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <map>
+#include <set>
+#include <tuple>
+
+#include "eval/eval_config.h"
+#include "lp/solution.h"
+#include "sweep/candidate_evaluation.h"
+#include "sweep/results_store.h"
+#include "sweep/run_identity.h"
+#include "sweep/sweep_directory.h"
+#include "sweep/sweep_plan.h"
+#include "techniques/lp_technique.h"
+#include "techniques/technique.h"
+#include "util/error.h"
+#include "util/output_dir.h"
+#include "util/progress.h"
+#include "util/run_metadata.h"
+
+namespace mb {
+
+SweepSettings sweep_settings_from(const Config& config, int threads) {
+  SweepSettings s;
+  s.eval = shadow_settings_from(config, threads);
+  s.dataset = config.string("dataset");
+  s.resolution = int(config.integer("resolution"));
+  s.catalog = config.strings("catalog");
+  s.candidates = config.strings("candidates");
+  s.references = with_oracle_row(config.strings("references"), s.eval.bias);
+  s.combination_size = int(config.integer("combination_size"));
+  s.sample = uint64_t(config.integer("sample"));
+  s.sample_seed = uint64_t(config.integer("sample_seed"));
+  s.screen.fraction = config.number("screen.fraction");
+  s.screen.refine = config.number("screen.refine");
+  s.screen.rule.top = int(config.integer("screen.top"));
+  s.screen.rule.sigmas = config.number("screen.sigmas");
+  s.screen.rule.margin = config.number("screen.margin");
+  s.screen.seed = uint64_t(config.integer("screen.seed"));
+  s.config_yaml = config.to_yaml();
+  return s;
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+std::vector<std::pair<std::string, double>> view_errors(const std::vector<ViewData>& views,
+                                                        const std::vector<ErrorStats>& per_view) {
+  std::vector<std::pair<std::string, double>> out;
+  for (size_t v = 0; v < views.size(); ++v)
+    out.push_back({views[v].scene + "/" + views[v].view, per_view[v].mean()});
+  return out;
+}
+
+// The ids of `ids` not in `done`, in order.
+std::vector<uint64_t> not_done(const std::vector<uint64_t>& ids, const std::set<uint64_t>& done) {
+  std::vector<uint64_t> out;
+  for (uint64_t id : ids)
+    if (!done.count(id)) out.push_back(id);
+  return out;
+}
+
+// Runs `one(id)` (which commits its row and returns the LPs it solved) for every id, under a
+// progress bar labelled `what` with the LP rate.
+template <class One>
+void for_each_candidate(const std::vector<uint64_t>& ids, const char* what, bool quiet, One one) {
+  ProgressBar bar(what, ids.size(), quiet);
+  const auto since = Clock::now();
+  uint64_t lps = 0;
+  for (const uint64_t id : ids) {
+    lps += one(id);
+    char note[64];
+    std::snprintf(note, sizeof note, "%.3g LP/s", lps / std::max(seconds_since(since), 1e-9));
+    bar.set_note(note);
+    bar.advance();
+  }
+  bar.finish();
+}
+
+// Every catalog function on the admissible interval, and the candidates' size against the
+// backend, before any work: a function with a pole would fail every candidate it is in.
+void check_plan(const SweepPlan& plan, const EvalSettings& eval) {
+  std::vector<BasisFunction> functions;
+  for (const auto& name : plan.catalog) functions.push_back(BasisFunction::parse(name));
+  Basis(functions).check_admissible(eval.technique.lp.lo, eval.technique.lp.hi);
+  lp::check_backend_rows(eval.technique.lp_backend, plan.size, "combination_size");
+}
+
+// One sweep's state: its plan, views, database and evaluator.
+class SweepRun {
+ public:
+  SweepRun(const SweepSettings& s, const SweepJob& job, const SweepPlan& plan,
+           const std::vector<ViewData>& views, ResultsStore& store)
+      : s_(s), job_(job), plan_(plan), views_(views), store_(store), evaluator_(views, s.eval) {}
+
+  void evaluate_references();
+  void run(const std::vector<uint64_t>& mine);
+
+ private:
+  void log(const char* format, auto... args) const {
+    if (!job_.quiet) std::fprintf(stderr, format, args...);
+  }
+  ResultRow exact_row(uint64_t id, const CandidateResult& result, Clock::time_point start) const;
+  void evaluate_exactly(const std::vector<uint64_t>& todo, const char* what);
+  void screen_and_confirm(const std::vector<uint64_t>& mine);
+  ScreenSample sample_of(int stage, const std::vector<std::vector<double>>& pilot_shadow) const;
+  void screen_stage(int stage, const ScreenSample& sample, const std::vector<uint64_t>& ids);
+  EstimateRow estimate(int stage, uint64_t id, const ScreenSample& sample) const;
+  std::vector<uint64_t> reaching(int stage, const ScreenSample& sample,
+                                 const std::vector<uint64_t>& ids) const;
+
+  const SweepSettings& s_;
+  const SweepJob& job_;
+  const SweepPlan& plan_;
+  const std::vector<ViewData>& views_;
+  ResultsStore& store_;
+  CandidateEvaluator evaluator_;
+};
+
+// A candidate's committed row from its exact evaluation.
+ResultRow SweepRun::exact_row(uint64_t id, const CandidateResult& result,
+                              Clock::time_point start) const {
+  ResultRow row =
+      make_result_row(id, plan_.name(id), result.overall, view_errors(views_, result.per_view));
+  row.solved = result.solved;
+  row.skipped = result.skipped;
+  row.infeasible = result.infeasible;
+  row.unstable = result.unstable;
+  row.darkening_bound = kLpDarkeningBound;
+  row.seconds = seconds_since(start);
+  return row;
+}
+
+// Every reference technique once (a resumed sweep keeps those it has).
+void SweepRun::evaluate_references() {
+  std::set<std::string> have;
+  for (const auto& r : store_.references()) have.insert(r.name);
+  for (const auto& name : s_.references) {
+    if (have.count(name)) continue;
+    const auto start = Clock::now();
+    auto technique = make_technique(name, s_.eval.technique);
+    ErrorStats total;
+    std::vector<ErrorStats> per_view;
+    for (const auto& view : views_) {
+      TechniqueResult result = evaluate_technique(view, name, s_.eval, nullptr);
+      ErrorStats stats;
+      stats.add_all(view.fragments.pcf, result.shadow);
+      stats.failures = result.failures;
+      total.merge(stats);
+      per_view.push_back(stats);
+    }
+    ResultRow row = make_result_row(0, name, total, view_errors(views_, per_view));
+    row.unstable = total.failures;
+    row.darkening_bound = technique->darkening_bound();
+    row.darkening_reason = technique->darkening_reason();
+    row.seconds = seconds_since(start);
+    store_.put_reference(row);
+  }
+}
+
+// Candidates evaluated exactly, one committed row each. A numerically dependent combination is
+// recorded with every LP failed, shown lit, and the sweep goes on.
+void SweepRun::evaluate_exactly(const std::vector<uint64_t>& todo, const char* what) {
+  for_each_candidate(todo, what, job_.quiet, [&](uint64_t id) {
+    const auto start = Clock::now();
+    CandidateResult result;
+    try {
+      result = evaluator_.evaluate(Basis::parse(plan_.functions(id)));
+    } catch (const InputError& e) {
+      log("\ncandidate %llu: %s\n", (unsigned long long)id, e.what());
+      result.unstable = evaluator_.lp_fragments();
+      for (const auto& view : views_) {
+        ErrorStats stats;
+        stats.add_all(view.fragments.pcf, std::vector<double>(view.fragments.size(), 0.0));
+        result.overall.merge(stats);
+        result.per_view.push_back(stats);
+      }
+    }
+    store_.put_candidate(exact_row(id, result, start));
+    return result.solved + result.infeasible + result.unstable;
+  });
+}
+
+void SweepRun::run(const std::vector<uint64_t>& mine) {
+  if (s_.screen.fraction > 0) return screen_and_confirm(mine);
+  const std::vector<uint64_t> todo = not_done(mine, store_.candidate_ids());
+  log("sweep: %zu candidates in this shard, %zu done, %zu to go; %llu LPs per candidate\n",
+      mine.size(), mine.size() - todo.size(), todo.size(),
+      (unsigned long long)evaluator_.lp_fragments());
+  evaluate_exactly(todo, "sweep");
+}
+
+ScreenSample SweepRun::sample_of(int stage,
+                                 const std::vector<std::vector<double>>& pilot_shadow) const {
+  return make_screen_sample(views_, evaluator_.lp_lists(), pilot_shadow,
+                            stage == 1 ? s_.screen.fraction : s_.screen.refine,
+                            s_.screen.seed + uint64_t(stage - 1));
+}
+
+// One candidate's estimate at `stage` on `sample`.
+EstimateRow SweepRun::estimate(int stage, uint64_t id, const ScreenSample& sample) const {
+  const auto start = Clock::now();
+  EstimateRow row;
+  row.id = id;
+  row.stage = stage;
+  row.name = plan_.name(id);
+  CandidateResult counts;
+  try {
+    row.run_errors = evaluator_.screen(Basis::parse(plan_.functions(id)), sample, &counts);
+  } catch (const InputError& e) {
+    // As in the exact sweep: every LP fragment failed, shown lit (G = 0).
+    log("\ncandidate %llu: %s\n", (unsigned long long)id, e.what());
+    counts = {};
+    counts.unstable = sample.sampled_lps();
+    row.run_errors = sampled_unit_errors(sample, views_, {});
+  }
+  const ScreenEstimate e = estimate_mean_error(sample, row.run_errors);
+  row.mean = e.mean;
+  row.se = e.se;
+  row.solved = counts.solved;
+  row.failed = counts.infeasible + counts.unstable;
+  row.seconds = seconds_since(start);
+  return row;
+}
+
+// Estimates of `ids` at `stage` on `sample`, one committed row each (resumable).
+void SweepRun::screen_stage(int stage, const ScreenSample& sample,
+                            const std::vector<uint64_t>& ids) {
+  const std::vector<uint64_t> todo = not_done(ids, store_.estimate_ids(stage));
+  log("sweep: screening stage %d: %zu candidates (%zu done) on %zu of %zu units, %llu of %llu "
+      "LPs per candidate\n",
+      stage, ids.size(), ids.size() - todo.size(), sample.sampled_runs(), sample.runs(),
+      (unsigned long long)sample.sampled_lps(), (unsigned long long)evaluator_.lp_fragments());
+  for_each_candidate(todo, stage == 1 ? "screen" : "refine", job_.quiet, [&](uint64_t id) {
+    const EstimateRow row = estimate(stage, id, sample);
+    store_.put_estimate(row);
+    return row.solved + row.failed;
+  });
+}
+
+// The candidates of `ids` that reach the best (screening.h), from their estimates at `stage`.
+std::vector<uint64_t> SweepRun::reaching(int stage, const ScreenSample& sample,
+                                         const std::vector<uint64_t>& ids) const {
+  std::map<uint64_t, std::vector<double>> by_id;
+  for (auto& e : store_.estimates(stage)) by_id[e.id] = std::move(e.run_errors);
+  std::vector<std::vector<double>> run_errors;
+  for (uint64_t id : ids) {
+    auto& errors = by_id.at(id);
+    if (errors.size() != sample.sampled_runs())
+      throw InputError("candidate " + std::to_string(id) + ": its stage " + std::to_string(stage) +
+                       " estimate has " + std::to_string(errors.size()) +
+                       " unit errors, this sample " + std::to_string(sample.sampled_runs()) +
+                       ": the database was screened on other views");
+    run_errors.push_back(std::move(errors));
+  }
+  std::vector<uint64_t> out;
+  for (size_t c : candidates_to_confirm(sample, run_errors, s_.screen.rule)) out.push_back(ids[c]);
+  log("sweep: stage %d: %zu of %zu candidates in reach of the %d-th best estimate (margin %g, %g "
+      "standard errors)\n",
+      stage, out.size(), ids.size(), s_.screen.rule.top, s_.screen.rule.margin,
+      s_.screen.rule.sigmas);
+  return out;
+}
+
+// Screening (sweep/screening.h): every candidate of this shard on the sample, one committed
+// estimate each; then, once the database holds every planned candidate's estimate (one shard, or
+// the merged shards resumed), the candidates that reach the best K exactly.
+void SweepRun::screen_and_confirm(const std::vector<uint64_t>& mine) {
+  // The pilot, the catalog's first combination (z; z^2; z^3; z^4 in docs/reference.md §5's),
+  // exactly: its run errors are what every candidate's sampled runs are compared with
+  // (screening.h). When it is a planned candidate of this shard, its exact row is kept too.
+  const uint64_t pilot = 0;
+  std::vector<std::vector<double>> pilot_shadow;
+  log("sweep: the screen's pilot %s, exactly\n", plan_.name(pilot).c_str());
+  const auto start = Clock::now();
+  const CandidateResult result =
+      evaluator_.evaluate(Basis::parse(plan_.functions(pilot)), &pilot_shadow);
+  if (std::binary_search(mine.begin(), mine.end(), pilot) && !store_.candidate_ids().count(pilot))
+    store_.put_candidate(exact_row(pilot, result, start));
+
+  const ScreenSample first = sample_of(1, pilot_shadow);
+  screen_stage(1, first, mine);
+  // The confirmation compares every planned candidate: it waits for all shards.
+  if (job_.shards > 1 || store_.estimate_ids(1).size() < plan_.ids.size()) {
+    log("sweep: screened %zu of %zu planned candidates; the confirmation runs when all are "
+        "screened: merge the shards, then `sweep --resume` in the merged directory\n",
+        store_.estimate_ids(1).size(), plan_.ids.size());
+    return;
+  }
+  std::vector<uint64_t> ids = reaching(1, first, plan_.ids);
+  if (s_.screen.refine > 0) {
+    // The candidates in reach again, on a larger sample: cheaper than evaluating them exactly,
+    // and its smaller standard errors leave fewer in reach.
+    const ScreenSample refine = sample_of(2, pilot_shadow);
+    screen_stage(2, refine, ids);
+    ids = reaching(2, refine, ids);
+  }
+  evaluate_exactly(not_done(ids, store_.candidate_ids()), "confirm");
+}
+
+}  // namespace
+
+void run_sweep(const SweepSettings& s, const SweepJob& job) {
+  const SweepPlan plan =
+      make_sweep_plan(s.catalog, s.combination_size, s.candidates, s.sample, s.sample_seed);
+  check_plan(plan, s.eval);
+  for (const auto& name : s.references) make_technique(name, s.eval.technique);  // names checked
+  const DatasetDesc dataset = load_dataset(s.dataset);
+  if (job.out.empty()) throw InputError("--out: a sweep needs an output directory");
+  // Scenes are read and rendered before anything is written: bad input leaves no output.
+  const auto views = prepare_views(dataset, s.resolution, s.eval, job.quiet);
+  // The output directory is the sweep's state: new unless resuming, then it must match.
+  const std::string shard_text = std::to_string(job.shard) + "/" + std::to_string(job.shards);
+  std::map<std::string, std::string> meta = measurement_meta(s.eval);
+  meta.insert({{"dataset", dataset.name},
+               {"git_sha", collect_run_metadata(s.eval.threads, {}).git_sha},
+               {"catalog_size", std::to_string(plan.catalog.size())},
+               {"combination_size", std::to_string(plan.size)},
+               {"planned", std::to_string(plan.ids.size())},
+               {"settings", describe_settings(s.eval)}});
+  ResultsStore store =
+      open_sweep_directory(job.out, {config_hash(s.config_yaml), shard_text, s.config_yaml}, meta,
+                           job.resume, job.force);
+  write_file_atomically(job.out / ("run_" + std::to_string(std::time(nullptr)) + ".yaml"),
+                        to_yaml(collect_run_metadata(s.eval.threads, job.arguments)));
+  SweepRun run(s, job, plan, views, store);
+  run.evaluate_references();
+  run.run(shard_ids(plan, job.shard, job.shards));
+  if (!job.quiet)
+    std::fprintf(stderr, "sweep: %s complete\n", (job.out / "results.sqlite").c_str());
+}
+
+}  // namespace mb

@@ -1,0 +1,48 @@
+#pragma once
+// A whole sweep (docs/sweeps.md): the references once, then every candidate of this shard exactly,
+// or screened on a sample with the candidates in reach of the best confirmed exactly. Every row is
+// committed on its own, so a killed sweep resumes from any instant, losing and repeating nothing.
+// `sweep` parses its flags into SweepSettings and calls run_sweep; tests call it directly.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "eval/evaluation.h"
+#include "sweep/screening.h"
+#include "util/config.h"
+
+namespace mb {
+
+struct ScreenSettings {
+  double fraction = 0;  // screen.fraction: 0 = every candidate exactly
+  double refine = 0;    // screen.refine: a second sample's share, 0 = none
+  ScreenRule rule;      // screen.top, screen.sigmas, screen.margin
+  uint64_t seed = 1;    // screen.seed
+};
+
+// The sweep's options as typed fields (sweep_specs declares them).
+struct SweepSettings {
+  EvalSettings eval;
+  std::string dataset;
+  int resolution = 0;
+  std::vector<std::string> catalog, candidates, references;
+  int combination_size = 4;
+  uint64_t sample = 0, sample_seed = 1;
+  ScreenSettings screen;
+  std::string config_yaml;  // the effective config: the run's identity (run_identity.h)
+};
+SweepSettings sweep_settings_from(const Config& config, int threads);
+
+struct SweepJob {
+  std::filesystem::path out;
+  int shard = 1, shards = 1;
+  bool resume = false, force = false, quiet = false;
+  std::vector<std::string> arguments;  // this process's, for run_<time>.yaml
+};
+
+// Runs the sweep into job.out (its state: created, or resumed when job.resume and the config is
+// the same). Input errors are raised before anything is written.
+void run_sweep(const SweepSettings& settings, const SweepJob& job);
+
+}  // namespace mb

@@ -1,0 +1,94 @@
+// Problem 1 queries as a library: one instance and JSON Lines batches, answered without the CLI.
+#include "solve/solve_query.h"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "util/error.h"
+
+namespace mb {
+namespace {
+
+SolveSettings cantelli() {
+  SolveSettings s;
+  s.basis = {"z", "z^2"};
+  s.grid = 256;
+  s.moments = {0.5, 0.3};  // mean 0.5, variance 0.05
+  s.zf = 0.7;
+  return s;
+}
+
+// Cantelli's bound (0.2^2 / (0.05 + 0.2^2) = 4/9) is attained on a grid holding its two atoms
+// (0.7 and 0.5 - 0.05/0.2 = 0.25), which the 256-point grid of [0, 1] does not: the grid's G
+// lies at or above it.
+TEST(SolveQuery, AnInstanceIsCantellisBoundOnAFineGrid) {
+  SolveSettings s = cantelli();
+  s.points = {0.25, 0.7};
+  const auto answer = solve_instance(s);
+  ASSERT_EQ(answer["status"], "optimal");
+  EXPECT_NEAR(answer["G"].get<double>(), 4.0 / 9.0, 1e-9);
+  s.points = {};
+  EXPECT_GE(solve_instance(s)["G"].get<double>(), 4.0 / 9.0 - 1e-9);
+}
+
+TEST(SolveQuery, AClosedFormInstanceIsTheTechniquesAnswer) {
+  SolveSettings s = cantelli();
+  s.technique = "vsm";
+  const auto answer = solve_instance(s);
+  EXPECT_EQ(answer["backend"], "closed_form");
+  EXPECT_NEAR(answer["G"].get<double>(), 4.0 / 9.0, 1e-15);
+}
+
+TEST(SolveQuery, ABatchAnswersEveryLineInOrderAndNamesTheBadOnes) {
+  std::istringstream in(
+      R"({"id": "a", "basis": ["z", "z^2"], "moments": [0.5, 0.3], "zf": 0.7, "points": [0.25, 0.7]})"
+      "\n\n"
+      R"({"basis": ["z", "z^2"], "moments": [0.5, 0.3], "zf": 0.7, "gird": 64})"
+      "\n"
+      R"({"technique": "vsm", "moments": [0.5, 0.3], "zf": 0.7})"
+      "\n"
+      "not json\n");
+  const SolveBatch batch = solve_batch(SolveSettings(), in, "queries.jsonl", false);
+  std::istringstream lines(batch.lines);
+  std::vector<nlohmann::json> answers;
+  for (std::string line; std::getline(lines, line);) answers.push_back(nlohmann::json::parse(line));
+  ASSERT_EQ(answers.size(), 4u);  // the blank line is skipped
+  EXPECT_EQ(answers[0]["id"], "a");
+  EXPECT_NEAR(answers[0]["G"].get<double>(), 4.0 / 9.0, 1e-9);
+  EXPECT_EQ(answers[1]["status"], "error");
+  EXPECT_NE(answers[1]["message"].get<std::string>().find(
+                "queries.jsonl:3: unknown key 'gird' (did you mean 'grid'?)"),
+            std::string::npos);
+  EXPECT_EQ(answers[2]["id"], 4);  // a line without an id gets its line number
+  EXPECT_NEAR(answers[2]["G"].get<double>(), 4.0 / 9.0, 1e-15);
+  EXPECT_NE(answers[3]["message"].get<std::string>().find("queries.jsonl:5: JSON syntax"),
+            std::string::npos);
+  EXPECT_EQ(batch.failures, 2);
+}
+
+// Lines that share a basis reuse one problem factory; a line that changes it gets its own. The
+// answers must not depend on which line came before.
+TEST(SolveQuery, BatchAnswersDoNotDependOnTheLineBefore) {
+  const std::string power =
+      R"({"basis": "power4", "moments": [0.4, 0.2, 0.11, 0.065], "zf": 0.5, "grid": 128})";
+  const std::string trig =
+      R"({"basis": "trig4", "moments": [0.1, 0.2, 0.05, 0.1], "zf": 0.5, "grid": 128})";
+  std::istringstream alone(power + "\n"), after(trig + "\n" + power + "\n");
+  const std::string a = solve_batch(SolveSettings(), alone, "x", false).lines;
+  const std::string b = solve_batch(SolveSettings(), after, "x", false).lines;
+  auto G = [](const std::string& line) { return nlohmann::json::parse(line).value("G", -1.0); };
+  EXPECT_EQ(G(a.substr(0, a.find('\n'))), G(b.substr(b.find('\n') + 1)));
+}
+
+TEST(SolveQuery, MomentToleranceIsAKeyOfALine) {
+  // A point mass's moments rounded off the cone: answered within a box of ulps, or refused with 0.
+  std::istringstream in(
+      R"({"basis": ["z", "z^2"], "moments": [0.3, 0.09000000000000002], "zf": 0.5, "moment_tolerance": 0})"
+      "\n");
+  const SolveBatch batch = solve_batch(SolveSettings(), in, "x", false);
+  EXPECT_EQ(batch.lines.find("unknown key"), std::string::npos) << batch.lines;
+}
+
+}  // namespace
+}  // namespace mb
