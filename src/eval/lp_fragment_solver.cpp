@@ -20,28 +20,25 @@ std::vector<uint32_t> fragments_needing_lp(const Fragments& fragments) {
   return list;
 }
 
-LpViewAnswers solve_lp_view(const ViewData& view, const std::vector<uint32_t>& list,
-                            const Basis& basis, const lp::ProblemFactory& factory,
-                            const EvalSettings& settings, ProgressBar* progress,
-                            const std::vector<size_t>* runs_given) {
-  const lp::Discretization& disc = settings.technique.lp;
-  const int k = factory.rows(), m = int(basis.size());
-  const GaussianKernel& kernel = settings.kernel;
-  const int taps = kernel.size * kernel.size;
-  uint64_t solved = 0, infeasible = 0, unstable = 0;
-  const ShadowMap& map = view.map;
-  // Warm-start runs (bands of kWarmRunRows texel rows; fragments are in texel order): each
-  // run is solved in order by one thread, first from scratch, so the answers do not depend on
-  // the schedule.
-  const std::vector<size_t> run_begin =
-      runs_given ? *runs_given : warm_run_begins(list.size(), map.width, [&](size_t i) {
-        return view.fragments.texel[list[i]];
-      });
+namespace {
+
+// Transformed columns and (quantized) depths per texel, indexed by texel, the far plane's one past
+// the map.
+struct ViewColumns {
+  std::unique_ptr<double[]> depth, columns;
+};
+
+ViewColumns reached_columns(const ViewData& view, const std::vector<uint32_t>& list,
+                            const std::vector<size_t>& run_begin, const Basis& basis,
+                            const lp::ProblemFactory& factory, const EvalSettings& settings) {
   // Transformed columns T (1, b(z)) of the layer-0 depths the fragments' kernels reach: each
   // run's bounding box grown by the kernel's radius (every texel of a full evaluation, a few
   // blocks of a screen's sample), and the far plane's. Columns no kernel reaches are never read,
   // nor written: the buffers stay uninitialised.
-  const int reach = kernel.radius();
+  const ShadowMap& map = view.map;
+  const lp::Discretization& disc = settings.technique.lp;
+  const int k = factory.rows(), m = int(basis.size());
+  const int reach = settings.kernel.radius();
   std::vector<char> reached(map.depth.size(), 0);
   for (size_t run = 0; run + 1 < run_begin.size(); ++run) {
     int x0 = map.width, x1 = -1, y0 = map.height, y1 = -1;
@@ -59,13 +56,17 @@ LpViewAnswers solve_lp_view(const ViewData& view, const std::vector<uint32_t>& l
     if (reached[t]) needed.push_back(t);
   needed.push_back(map.depth.size());
   const size_t texels = map.depth.size() + 1;  // outside: index = map size
-  std::unique_ptr<double[]> depth(new double[texels]);
+  ViewColumns out;
+  out.depth.reset(new double[texels]);
+  double* depth = out.depth.get();
   std::vector<double> picked(needed.size()), values(needed.size());
   for (size_t n = 0; n < needed.size(); ++n) {
     const double z = needed[n] < map.depth.size() ? map.depth[needed[n]] : 1.0;
     picked[n] = depth[needed[n]] = disc.quantize ? lp::quantize_to_grid(disc, z) : z;
   }
-  std::unique_ptr<double[]> raw(new double[needed.size() * k]), columns(new double[texels * k]);
+  std::unique_ptr<double[]> raw(new double[needed.size() * k]);
+  out.columns.reset(new double[texels * k]);
+  double* columns = out.columns.get();
   for (size_t n = 0; n < needed.size(); ++n) raw[n * k] = 1;
   for (int j = 0; j < m; ++j) {
     basis[j].evaluate(picked, values);
@@ -74,6 +75,31 @@ LpViewAnswers solve_lp_view(const ViewData& view, const std::vector<uint32_t>& l
 #pragma omp parallel for schedule(static) num_threads(settings.threads)
   for (size_t n = 0; n < needed.size(); ++n)
     factory.transform(&raw[n * k], &columns[needed[n] * k]);
+  return out;
+}
+
+}  // namespace
+
+LpViewAnswers solve_lp_view(const ViewData& view, const std::vector<uint32_t>& list,
+                            const Basis& basis, const lp::ProblemFactory& factory,
+                            const EvalSettings& settings, ProgressBar* progress,
+                            const std::vector<size_t>* runs_given) {
+  const lp::Discretization& disc = settings.technique.lp;
+  const int k = factory.rows();
+  const GaussianKernel& kernel = settings.kernel;
+  const int taps = kernel.size * kernel.size;
+  uint64_t solved = 0, infeasible = 0, unstable = 0;
+  const ShadowMap& map = view.map;
+  // Warm-start runs (bands of kWarmRunRows texel rows; fragments are in texel order): each
+  // run is solved in order by one thread, first from scratch, so the answers do not depend on
+  // the schedule.
+  const std::vector<size_t> run_begin =
+      runs_given ? *runs_given : warm_run_begins(list.size(), map.width, [&](size_t i) {
+        return view.fragments.texel[list[i]];
+      });
+  const ViewColumns reached = reached_columns(view, list, run_begin, basis, factory, settings);
+  const double* depth = reached.depth.get();
+  const double* columns = reached.columns.get();
 
   const size_t runs = run_begin.size() - 1;
   const KernelAtomMap atoms(kernel.size);

@@ -81,16 +81,9 @@ std::string row_line(size_t rank, const ResultRow& r) {
   return s.str();
 }
 
-void findings(std::ostringstream& md, const std::vector<SweepSeries>& series) {
+// Functions per candidate (the seed paper's Figure 3).
+void finding_sizes(std::ostringstream& md, const std::vector<SweepSeries>& series) {
   const SweepSeries& main = main_series(series);
-  md << "## Findings of the seed paper, checked on this data\n\n"
-     << "Each claim of seed 000 §3.2 (docs/reference.md §3) next to what this report's databases "
-        "show. "
-        "The paper's own "
-        "scenes are not available, so absolute errors differ; orderings and shapes are what can "
-        "agree.\n\n";
-
-  // 1. Functions per candidate (the seed paper's Figure 3).
   std::set<int> sizes;
   for (const auto& s : series) sizes.insert(s.size);
   md << "### Four functions against two or three\n\n";
@@ -122,8 +115,11 @@ void findings(std::ostringstream& md, const std::vector<SweepSeries>& series) {
        << " with every added function" << (best_falls && median_falls ? " — agrees" : " — differs")
        << ".\n\n";
   }
+}
 
-  // 2. The power and trigonometric bases (the paper: 2.19 % and 1.93 %, the best).
+// The power and trigonometric bases (the paper: 2.19 % and 1.93 %, the best).
+void finding_bases(std::ostringstream& md, const std::vector<SweepSeries>& series) {
+  const SweepSeries& main = main_series(series);
   md << "### Power and trigonometric moments (" << main.label << ")\n\n";
   for (const auto& [label, set, paper] :
        {std::tuple{"power moments", "power4", kPaperPower},
@@ -150,7 +146,11 @@ void findings(std::ostringstream& md, const std::vector<SweepSeries>& series) {
        << ", by " << percent_text(std::abs(trig->mean - power->mean))
        << " percentage points; the best candidate is " << pct(main.best()) << ".\n";
   md << "\n";
+}
 
+// The LP grid's bias, where a closed form of the continuous problem measures it.
+void finding_lp_grid_bias(std::ostringstream& md, const std::vector<SweepSeries>& series) {
+  const SweepSeries& main = main_series(series);
   // The LP grid's bias (docs/reference.md §2): a grid admits fewer distributions than the interval,
   // so every candidate's LP error is optimistic. Two bases have closed forms of the continuous
   // Problem 1 on [0, 1] (Hausdorff 4MSM, trigonometric MSM), so this run measures the bias there.
@@ -187,8 +187,11 @@ void findings(std::ostringstream& md, const std::vector<SweepSeries>& series) {
             "(compare the tie margins below); a finer `lp.grid` shrinks it.\n\n";
     }
   }
+}
 
-  // 3. The classic techniques.
+// The classic techniques against the candidates.
+void finding_classics(std::ostringstream& md, const std::vector<SweepSeries>& series) {
+  const SweepSeries& main = main_series(series);
   md << "### Classic techniques (" << main.label << ")\n\n";
   const struct {
     const char* name;
@@ -212,8 +215,10 @@ void findings(std::ostringstream& md, const std::vector<SweepSeries>& series) {
   }
   if (!any) md << "- no classic technique among the references (option `references`)\n";
   md << "\n";
+}
 
-  // 4. Ties at the top (Peters' dissertation: ~15 000 of 66 045 once the LP was exact).
+// Ties at the top (Peters' dissertation: ~15 000 of 66 045 once the LP was exact).
+void finding_ties(std::ostringstream& md, const std::vector<SweepSeries>& series) {
   md << "### Candidates tied at the top\n\nCandidates whose mean error lies within an absolute "
         "margin of the best. "
         "Peters' dissertation (docs/reference.md §3) found about 15 000 of the 66 045 realizing "
@@ -237,8 +242,10 @@ void findings(std::ostringstream& md, const std::vector<SweepSeries>& series) {
     }
     md << "\n";
   }
+}
 
-  // 5. Over-darkening: the LP is exact, so no candidate may exceed its bound.
+// Over-darkening: the LP is exact, so no candidate may exceed its bound.
+void finding_over_darkening(std::ostringstream& md, const std::vector<SweepSeries>& series) {
   double worst = 0;
   std::string worst_name;
   for (const auto& s : series)
@@ -254,6 +261,22 @@ void findings(std::ostringstream& md, const std::vector<SweepSeries>& series) {
      << (worst > kLpDarkeningBound + kDarkeningSlack ? " — **above the certified bound: a bug**"
                                                      : " — as expected")
      << ".\n\n";
+}
+
+void findings(std::ostringstream& md, const std::vector<SweepSeries>& series) {
+  md << "## Findings of the seed paper, checked on this data\n\n"
+     << "Each claim of seed 000 §3.2 (docs/reference.md §3) next to what this report's databases "
+        "show. "
+        "The paper's own "
+        "scenes are not available, so absolute errors differ; orderings and shapes are what can "
+        "agree.\n\n";
+
+  finding_sizes(md, series);
+  finding_bases(md, series);
+  finding_lp_grid_bias(md, series);
+  finding_classics(md, series);
+  finding_ties(md, series);
+  finding_over_darkening(md, series);
 }
 
 }  // namespace
