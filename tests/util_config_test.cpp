@@ -7,6 +7,7 @@
 #include "test_support.h"
 #include "util/config.h"
 #include "util/error.h"
+#include "util/option_record.h"
 
 namespace mb {
 namespace {
@@ -129,6 +130,44 @@ TEST(Config, IntegerListTakesIntegersInRange) {
   EXPECT_THROW(config.set("grids=[1]"), InputError);
   EXPECT_THROW(config.set("grids=[abc]"), InputError);
   EXPECT_THROW(config.numbers("grids"), std::logic_error);
+}
+
+// Option records fill their fields from the resolved config, every type, with the key written once.
+struct RecordSettings {
+  int size = 0;
+  uint64_t seed = 0;
+  double sigma = 0;
+  bool plot = false;
+  std::string name;
+  std::vector<std::string> names;
+  std::vector<double> depths;
+  std::vector<int64_t> grids;
+};
+
+TEST(OptionRecord, ReadsEveryTypeIntoItsField) {
+  const std::vector<OptionRecord<RecordSettings>> records{
+      {{"size", OptionType::Integer, "9", "Taps.", 1, 99}, &RecordSettings::size},
+      {{"seed", OptionType::Integer, "7", "Seed.", 0, 1e18}, &RecordSettings::seed},
+      {{"sigma", OptionType::Number, "2.4", "Sigma."}, &RecordSettings::sigma},
+      {{"plot", OptionType::Boolean, "true", "Plot."}, &RecordSettings::plot},
+      {{"name", OptionType::String, "tiny", "Name."}, &RecordSettings::name},
+      {{"names", OptionType::StringList, "[a, b]", "Names."}, &RecordSettings::names},
+      {{"depths", OptionType::NumberList, "[0.5]", "Depths."}, &RecordSettings::depths},
+      {{"grids", OptionType::IntegerList, "[2, 4]", "Grids.", 2, 64}, &RecordSettings::grids}};
+  Config config(option_specs(records));
+  config.set("size=11");
+  config.set("seed=12345678901");
+  config.set("names=[x]");
+  RecordSettings s;
+  read_options(config, records, s);
+  EXPECT_EQ(s.size, 11);
+  EXPECT_EQ(s.seed, 12345678901u);
+  EXPECT_EQ(s.sigma, 2.4);
+  EXPECT_TRUE(s.plot);
+  EXPECT_EQ(s.name, "tiny");
+  EXPECT_EQ(s.names, std::vector<std::string>{"x"});
+  EXPECT_EQ(s.depths, std::vector<double>{0.5});
+  EXPECT_EQ(s.grids, (std::vector<int64_t>{2, 4}));
 }
 
 }  // namespace

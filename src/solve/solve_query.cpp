@@ -13,6 +13,7 @@
 #include "techniques/registry.h"
 #include "techniques/technique.h"
 #include "util/error.h"
+#include "util/option_record.h"
 
 namespace mb {
 
@@ -247,62 +248,68 @@ json solve_line(const std::string& line, int number, const SolveSettings& o, lp:
 
 }  // namespace
 
-std::vector<OptionSpec> solve_option_specs() {
-  return {
-      {"basis", OptionType::StringList, "[power4]",
-       "Basis functions: catalog names, expressions in z, or a set (power4, trig4)."},
-      {"interval", OptionType::NumberList, "[0, 1]", "Admissible interval [lo, hi]."},
-      {"grid", OptionType::Integer, "1024", "Uniform grid points on the interval.", 2, 1 << 24},
-      {"moments", OptionType::NumberList, "[]", "Moment vector b_1..b_m of the instance."},
-      {"points", OptionType::NumberList, "[]", "Extra points of I (e.g. the kernel's depths)."},
-      {"zf", OptionType::Number, "0.5", "Fragment depth z_f."},
-      {"backend", OptionType::String, "fast", "LP backend.", 0, 0, lp::backend_names()},
-      {"technique", OptionType::String, "''",
-       "A closed form instead of the LP (hamburger4, hausdorff4, tmsm, vsm, esm, ...); basis is "
-       "then ignored."},
-      {"alpha", OptionType::Number, "-1",
-       "Moment bias for technique; below 0: the technique's own.", -1, 0.999999},
-      {"input", OptionType::String, "''",
-       "JSON Lines file of instances (the instance options above are then refused)."},
-      {"output", OptionType::String, "''",
-       "JSON Lines results (written atomically); stdout if ''."},
-      {"check", OptionType::Boolean, "false",
-       "Run the independent KKT checker on every optimal answer."},
-      {"discretization",
-       OptionType::String,
-       "grid",
-       "grid: Problem 1 on the grid and points; continuous: on all of the interval (exchange "
-       "method; G, its certified lower end and their bracket; docs/reference.md §2).",
-       0,
-       0,
-       {"grid", "continuous"}},
-      {"moment_tolerance", OptionType::Number, "4",
-       "When the moments admit no distribution on I: Problem 1 over the box of this many ulps "
-       "of each moment instead (docs/reference.md §2; a boundary vector rounded to double), or the "
-       "vector's relative distance from the cone. 0: exact only.",
-       0, 1e15},
-      {"quantize", OptionType::Boolean, "false",
-       "Round extra points to the grid (docs/reference.md §2)."},
+const std::vector<OptionRecord<SolveSettings>>& solve_options() {
+  static const std::vector<OptionRecord<SolveSettings>> records{
+      {{"basis", OptionType::StringList, "[power4]",
+        "Basis functions: catalog names, expressions in z, or a set (power4, trig4)."},
+       &SolveSettings::basis},
+      {{"interval", OptionType::NumberList, "[0, 1]", "Admissible interval [lo, hi]."},
+       &SolveSettings::interval},
+      {{"grid", OptionType::Integer, "1024", "Uniform grid points on the interval.", 2, 1 << 24},
+       &SolveSettings::grid},
+      {{"moments", OptionType::NumberList, "[]", "Moment vector b_1..b_m of the instance."},
+       &SolveSettings::moments},
+      {{"points", OptionType::NumberList, "[]", "Extra points of I (e.g. the kernel's depths)."},
+       &SolveSettings::points},
+      {{"zf", OptionType::Number, "0.5", "Fragment depth z_f."}, &SolveSettings::zf},
+      {{"backend", OptionType::String, "fast", "LP backend.", 0, 0, lp::backend_names()},
+       &SolveSettings::backend},
+      {{"technique", OptionType::String, "''",
+        "A closed form instead of the LP (hamburger4, hausdorff4, tmsm, vsm, esm, ...); basis is "
+        "then ignored."},
+       &SolveSettings::technique},
+      {{"alpha", OptionType::Number, "-1",
+        "Moment bias for technique; below 0: the technique's own.", -1, 0.999999},
+       &SolveSettings::alpha},
+      {{"input", OptionType::String, "''",
+        "JSON Lines file of instances (the instance options above are then refused)."},
+       &SolveSettings::input},
+      {{"output", OptionType::String, "''",
+        "JSON Lines results (written atomically); stdout if ''."},
+       &SolveSettings::output},
+      {{"check", OptionType::Boolean, "false",
+        "Run the independent KKT checker on every optimal answer."},
+       &SolveSettings::check},
+      {{"discretization",
+        OptionType::String,
+        "grid",
+        "grid: Problem 1 on the grid and points; continuous: on all of the interval (exchange "
+        "method; G, its certified lower end and their bracket; docs/reference.md §2).",
+        0,
+        0,
+        {"grid", "continuous"}},
+       &SolveSettings::discretization},
+      {{"moment_tolerance", OptionType::Number, "4",
+        "When the moments admit no distribution on I: Problem 1 over the box of this many ulps "
+        "of each moment instead (docs/reference.md §2; a boundary vector rounded to double), or "
+        "the "
+        "vector's relative distance from the cone. 0: exact only.",
+        0, 1e15},
+       &SolveSettings::moment_tolerance},
+      {{"quantize", OptionType::Boolean, "false",
+        "Round extra points to the grid (docs/reference.md §2)."},
+       &SolveSettings::quantize},
   };
+  return records;
+}
+
+std::vector<OptionSpec> solve_option_specs() {
+  return option_specs(solve_options());
 }
 
 SolveSettings solve_settings_from(const Config& config) {
   SolveSettings o;
-  o.basis = config.strings("basis");
-  o.interval = config.numbers("interval");
-  o.grid = int(config.integer("grid"));
-  o.moments = config.numbers("moments");
-  o.points = config.numbers("points");
-  o.zf = config.number("zf");
-  o.backend = config.string("backend");
-  o.technique = config.string("technique");
-  o.alpha = config.number("alpha");
-  o.input = config.string("input");
-  o.output = config.string("output");
-  o.check = config.boolean("check");
-  o.quantize = config.boolean("quantize");
-  o.discretization = config.string("discretization");
-  o.moment_tolerance = config.number("moment_tolerance");
+  read_options(config, solve_options(), o);
   if (!o.input.empty())  // an instance comes from options or from input, never both
     for (const auto& changed : config.non_default())
       for (const char* key : {"basis", "interval", "moments", "points", "zf", "technique", "alpha"})

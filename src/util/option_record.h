@@ -1,0 +1,57 @@
+#pragma once
+// Options declared once and bound to a field (after HiGHS' option records): a record is an
+// OptionSpec (key, type, default, range, doc) and the member of a settings struct it fills. A
+// command's table is a list of records; read_options fills the struct from a resolved Config, so
+// code reads typed fields and the key is written only in its record.
+#include <cstdint>
+#include <string>
+#include <type_traits>
+#include <variant>
+#include <vector>
+
+#include "util/config.h"
+
+namespace mb {
+
+template <class S>
+struct OptionRecord {
+  OptionSpec spec;
+  std::variant<int S::*, int64_t S::*, uint64_t S::*, double S::*, bool S::*, std::string S::*,
+               std::vector<std::string> S::*, std::vector<double> S::*, std::vector<int64_t> S::*>
+      field;
+};
+
+template <class S>
+std::vector<OptionSpec> option_specs(const std::vector<OptionRecord<S>>& records) {
+  std::vector<OptionSpec> specs;
+  for (const auto& r : records) specs.push_back(r.spec);
+  return specs;
+}
+
+// Every record's value from `config` into its field of `settings`.
+template <class S>
+void read_options(const Config& config, const std::vector<OptionRecord<S>>& records, S& settings) {
+  for (const auto& r : records)
+    std::visit(
+        [&](auto member) {
+          using T = std::remove_reference_t<decltype(settings.*member)>;
+          const std::string& key = r.spec.name;
+          if constexpr (std::is_same_v<T, bool>)
+            settings.*member = config.boolean(key);
+          else if constexpr (std::is_integral_v<T>)
+            settings.*member = T(config.integer(key));
+          else if constexpr (std::is_same_v<T, double>)
+            settings.*member = config.number(key);
+          else if constexpr (std::is_same_v<T, std::string>)
+            settings.*member = config.string(key);
+          else if constexpr (std::is_same_v<T, std::vector<std::string>>)
+            settings.*member = config.strings(key);
+          else if constexpr (std::is_same_v<T, std::vector<double>>)
+            settings.*member = config.numbers(key);
+          else
+            settings.*member = config.integers(key);
+        },
+        r.field);
+}
+
+}  // namespace mb

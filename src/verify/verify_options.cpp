@@ -1,0 +1,75 @@
+#include "verify/verify_options.h"
+
+namespace mb {
+
+const std::vector<OptionRecord<VerifySettings>>& verify_options() {
+  static const std::vector<OptionRecord<VerifySettings>> records{
+      {{"verify.techniques", OptionType::StringList,
+        "[hamburger4, hausdorff4, tmsm, vsm, esm, hamburger6, hamburger4_float, "
+        "hamburger4_16bit, tmsm_float, evsm2, evsm4, csm]",
+        "Closed forms to check (docs/reference.md §6; EVSM as a lower bound of its basis)."},
+       &VerifySettings::techniques},
+      {{"verify.random", OptionType::Integer, "2000",
+        "Seeded random distributions (1-8 atoms, mixtures).", 0, 1e8},
+       &VerifySettings::random},
+      {{"verify.fragments", OptionType::Integer, "2000",
+        "Real receiver kernels sampled from the dataset (0: none).", 0, 1e8},
+       &VerifySettings::fragments},
+      {{"verify.seed", OptionType::Integer, "2015",
+        "Seed of the random instances and the fragment sample.", 0, 1e18},
+       &VerifySettings::seed},
+      {{"verify.grids", OptionType::IntegerList, "[256, 1024, 4096]",
+        "LP grid sizes, ascending; the last decides unless the discretization is "
+        "continuous.",
+        2, 1 << 24},
+       &VerifySettings::grids},
+      {{"verify.discretization",
+        OptionType::String,
+        "continuous",
+        "continuous: Problem 1 on the whole interval (R for Hamburger and VSM) by the "
+        "exchange method with a certificate decides (docs/reference.md §2); grid: the "
+        "finest grid decides.",
+        0,
+        0,
+        {"continuous", "grid"}},
+       &VerifySettings::discretization},
+      {{"verify.moment_box",
+        OptionType::String,
+        "storage",
+        "Float32 and 16-bit rows: storage = judged as lower bounds of Problem 1 over "
+        "every distribution on [0, 1] whose stored values lie within the format's "
+        "rounding of theirs (docs/reference.md §2), exceeding it reported; strict = "
+        "exceeding it also fails verify; off = against the exact moments, reported as "
+        "bias.",
+        0,
+        0,
+        {"storage", "strict", "off"}},
+       &VerifySettings::moment_box},
+      {{"verify.tolerance", OptionType::Number, "1e-6",
+        "Largest |G_closed_form - G_LP| beyond the instance's own rounding allowance "
+        "(the first-order effect of moments rounded to double): the closed forms' "
+        "arithmetic at alpha = 0.",
+        0, 1},
+       &VerifySettings::tolerance},
+      {{"verify.esm_c", OptionType::Number, "10",
+        "ESM exponent for verify: with c = 80 the LP cannot resolve E[e^{c(z-1)}] below "
+        "its 1e-9 tolerance.",
+        1e-6, 700},
+       &VerifySettings::esm_c},
+      {{"verify.evsm_c", OptionType::Number, "5",
+        "EVSM's positive exponent for verify: with c = 40 its LP columns exp(80 (z - 1)) "
+        "vanish below the LP's tolerance over most of [0, 1].",
+        1e-6, 300},
+       &VerifySettings::evsm_c},
+      {{"verify.csm_terms", OptionType::Integer, "3",
+        "CSM's Fourier terms M for verify: M = 8 gives 16 channels, beyond the LP's 15 "
+        "functions; M <= 3 keeps the fast backend, up to 7 runs on GLPK.",
+        1, 7},
+       &VerifySettings::csm_terms},
+      {{"verify.worst", OptionType::Integer, "5", "Worst cases listed per solver.", 0, 1000},
+       &VerifySettings::worst},
+  };
+  return records;
+}
+
+}  // namespace mb
