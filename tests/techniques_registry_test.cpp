@@ -5,6 +5,7 @@
 #include <set>
 #include <vector>
 
+#include "moments/basis.h"
 #include "techniques/registry.h"
 #include "util/config.h"
 #include "util/error.h"
@@ -23,6 +24,27 @@ TEST(TechniqueRegistry, EveryRowMakesATechniqueOfItsOwnName) {
   }
   EXPECT_EQ(find_technique("esm_zmx"), nullptr);
   EXPECT_THROW(make_technique("esm_zmx", params), InputError);
+}
+
+// verify's LP for a row reads the same number of channels as the technique's map: the LP answers
+// Problem 1 for the information the technique has (docs/reference.md §6).
+TEST(TechniqueRegistry, VerifyRecipesSpanTheTechniquesOwnChannels) {
+  TechniqueParams params;
+  params.csm_terms = 3;
+  int recipes = 0;
+  for (const auto& row : technique_registry()) {
+    if (!row.verify) continue;
+    ++recipes;
+    const auto technique = make_technique(row.name, params);
+    EXPECT_EQ(Basis::parse(row.verify->lp_basis(params)).size(), technique->basis().size())
+        << row.name;
+    EXPECT_LT(row.verify->lo, row.verify->hi) << row.name;
+    if (row.verify->judge == VerifyRecipe::Judge::StorageBox) {
+      ASSERT_NE(row.verify->alpha, nullptr) << row.name;
+      EXPECT_NE(technique->storage().kind, StorageKind::Double) << row.name;
+    }
+  }
+  EXPECT_EQ(recipes, 12);
 }
 
 TEST(TechniqueRegistry, OptionsAreDeclaredOnceAndReadIntoTheirFields) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "moments/basis.h"
 #include "techniques/lp_technique.h"
 #include "util/error.h"
 #include "util/number_text.h"
@@ -134,6 +135,55 @@ const char* kProven = "0: a sharp or classic lower bound (Cantelli, Markov) in d
 const char* kAlphaBound = "alpha: the moment bias, at beta = 0 (docs/reference.md §4)";
 const char* kNotProven = "not proven";
 
+// How verify checks each technique (docs/reference.md §6). I = R is a wide interval holding the
+// extremal nodes of nearly every instance; where it does not, the difference is "grid-limited" and
+// shows in the worst cases (VSM: Cantelli's second point mu - sigma^2 / (z_f - mu) runs far out
+// when z_f ~ mu, hence its wider interval). ESM's e^{cz} needs points far enough below 0 that
+// e^{cz} ~ 0 (Markov's extremal mass sits at -infinity; at z = -4, e^{c (z - z_f)} <= e^{-40} for
+// c = 10); the LP uses e^{c(z-1)}, the same span scaled by e^{-c}, whose values stay <= 1 (the LP
+// recomputes the moments from the distribution, so the scale of the closed form's moment does not
+// matter). EVSM's warps are scaled by their values at z = 1 likewise.
+std::vector<std::string> power4(const P&) {
+  return {"power4"};
+}
+std::vector<std::string> power6(const P&) {
+  return {"power6"};
+}
+std::vector<std::string> trig4(const P&) {
+  return {"trig4"};
+}
+std::vector<std::string> power2(const P&) {
+  return {"power2"};
+}
+std::vector<std::string> esm_basis(const P& p) {
+  return {"exp(" + round_trip(p.esm_c) + "*(z-1))"};
+}
+std::vector<std::string> evsm2_basis(const P& p) {
+  return {"exp(" + round_trip(p.evsm_c_positive) + "*(z-1))",
+          "exp(" + round_trip(2 * p.evsm_c_positive) + "*(z-1))"};
+}
+std::vector<std::string> evsm4_basis(const P& p) {
+  std::vector<std::string> functions = evsm2_basis(p);
+  functions.push_back("-exp(-" + round_trip(p.evsm_c_negative) + "*z)");
+  functions.push_back("exp(-" + round_trip(2 * p.evsm_c_negative) + "*z)");
+  return functions;
+}
+std::vector<std::string> csm_basis(const P& p) {
+  return csm_channels(p.csm_terms);
+}
+const VerifyRecipe kVerifyHamburger4{.lp_basis = power4, .lo = -4, .hi = 5, .on_r = true};
+const VerifyRecipe kVerifyVsm{
+    .lp_basis = power2, .lo = -20, .hi = 21, .on_r = true, .cantelli_support = true};
+VerifyRecipe storage_box(std::vector<std::string> (*basis)(const P&), double lo, double hi,
+                         bool on_r, double P::*alpha) {
+  return {.judge = VerifyRecipe::Judge::StorageBox,
+          .lp_basis = basis,
+          .lo = lo,
+          .hi = hi,
+          .on_r = on_r,
+          .alpha = alpha};
+}
+
 std::vector<TechniqueEntry> make_table() {
   return {
       {"pcf",
@@ -156,14 +206,16 @@ std::vector<TechniqueEntry> make_table() {
        kProven,
        {},
        {&kVsmMinVariance},
-       by_params<make_vsm>},
+       by_params<make_vsm>,
+       kVerifyVsm},
       {"esm",
        "exponential shadow maps: Markov on exp(c z)",
        "double",
        kProven,
        {},
        {&kEsmC},
-       by_params<make_esm>},
+       by_params<make_esm>,
+       VerifyRecipe{.lp_basis = esm_basis, .lo = -4}},
       {"esm_zmax",
        "ESM, falling back to a 2x2 custom PCF where the kernel's z_max fails (seed 002)",
        "double + z_max",
@@ -184,14 +236,16 @@ std::vector<TechniqueEntry> make_table() {
        kProven,
        {},
        {&kEvsmCPositive},
-       make_evsm},
+       make_evsm,
+       VerifyRecipe{.judge = VerifyRecipe::Judge::LowerBound, .lp_basis = evsm2_basis}},
       {"evsm4",
        "exponential VSM, both warps, the larger bound",
        "double",
        kProven,
        {},
        {&kEvsmCPositive, &kEvsmCNegative},
-       make_evsm},
+       make_evsm,
+       VerifyRecipe{.judge = VerifyRecipe::Judge::LowerBound, .lp_basis = evsm4_basis}},
       {"evsm2_float",
        "evsm2 with float32 moments",
        "float32",
@@ -219,56 +273,64 @@ std::vector<TechniqueEntry> make_table() {
        std::string(kNotProven) + ": truncation rings (Gibbs)",
        {},
        {&kCsmTerms, &kCsmDamping},
-       by_params<make_csm>},
+       by_params<make_csm>,
+       VerifyRecipe{.judge = VerifyRecipe::Judge::Exceedance, .lp_basis = csm_basis}},
       {"hamburger4",
        "4MSM on R (Hamburger), double",
        "double",
        kAlphaBound,
        {},
        {&kHamburger4Alpha, &kBeta},
-       by_params<make_hamburger4>},
+       by_params<make_hamburger4>,
+       kVerifyHamburger4},
       {"hamburger4_float",
        "4MSM on R, float32 maps and arithmetic",
        "float32",
        std::string(kNotProven) + ": rounding of the moments",
        {},
        {&kHamburger4FloatAlpha, &kBeta},
-       by_params<make_hamburger4_float>},
+       by_params<make_hamburger4_float>,
+       storage_box(power4, -4, 5, true, &P::hamburger4_float_alpha)},
       {"hamburger4_16bit",
        "4MSM on R from 16-bit maps with the transform theta_4",
        "unorm16",
        std::string(kNotProven) + ": 16-bit rounding of the moments",
        {},
        {&kHamburger416bitAlpha, &kBeta},
-       by_params<make_hamburger4_16bit>},
+       by_params<make_hamburger4_16bit>,
+       storage_box(power4, -4, 5, true, &P::hamburger4_16bit_alpha)},
       {"hausdorff4",
        "4MSM on [0, 1] (Hausdorff), double",
        "double",
        kAlphaBound,
        {},
        {&kHausdorff4Alpha, &kBeta},
-       by_params<make_hausdorff4>},
+       by_params<make_hausdorff4>,
+       VerifyRecipe{.lp_basis = power4}},
       {"hamburger6",
        "six power moments on R, double",
        "double",
        kAlphaBound,
        {},
        {&kHamburger6Alpha, &kBeta},
-       by_params<make_hamburger6>},
+       by_params<make_hamburger6>,
+       VerifyRecipe{.lp_basis = power6, .lo = -2, .hi = 3, .on_r = true}},
       {"tmsm",
        "trigonometric MSM (src/moments/tmsm.md), double",
        "double",
        kAlphaBound,
        {},
        {&kTmsmAlpha, &kBeta},
-       by_params<make_tmsm>},
+       by_params<make_tmsm>,
+       VerifyRecipe{.lp_basis = trig4}},
       {"tmsm_float",
        "trigonometric MSM, float32",
        "float32",
        std::string(kNotProven) + ": rounding of the moments",
        {},
        {&kTmsmFloatAlpha, &kBeta},
-       by_params<make_tmsm_float>},
+       by_params<make_tmsm_float>,
+       storage_box(trig4, 0, 1, false, &P::tmsm_float_alpha)},
       {"lp:",
        "Problem 1 as an LP for any basis, e.g. lp:power4, lp:trig4",
        "double",

@@ -6,6 +6,7 @@
 // README's technique list all read this table. Adding a technique: its file, one factory
 // declaration and one row in registry.cpp, a field of TechniqueParams per new option, its test.
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -23,6 +24,24 @@ struct TechniqueOption {
   bool moment_bias = false;
 };
 
+// How `verify` checks a technique against the LP of its own basis (docs/reference.md §6).
+struct VerifyRecipe {
+  enum class Judge {
+    Exact,       // double, alpha = 0: must match the sharp bound
+    StorageBox,  // float32 / 16-bit: a lower bound of Problem 1 over its storage's moment box
+    LowerBound,  // a valid, not sharp, bound: never above the LP
+    Exceedance,  // not a lower bound: how often and how far above the sharp bound
+  };
+  Judge judge = Judge::Exact;
+  // The LP's basis for these parameters (the technique's own functions, rescaled where that keeps
+  // the LP's columns representable), and the LP's interval.
+  std::vector<std::string> (*lp_basis)(const TechniqueParams&) = nullptr;
+  double lo = 0, hi = 1;
+  bool on_r = false;              // Problem 1 on all of R (Hamburger, VSM)
+  bool cantelli_support = false;  // VSM: Cantelli's two extremal points join the LP's points
+  double TechniqueParams::*alpha = nullptr;  // storage rows: their moment bias
+};
+
 struct TechniqueEntry {
   std::string name;  // as given in `techniques`; "lp:" matches every "lp:<basis>"
   std::string summary;
@@ -31,6 +50,7 @@ struct TechniqueEntry {
   std::string reference = "the view's reference (PCF)";
   std::vector<const TechniqueOption*> options;  // the options it reads (registry.cpp)
   std::unique_ptr<Technique> (*make)(const std::string& name, const TechniqueParams& params);
+  std::optional<VerifyRecipe> verify = std::nullopt;  // none: no LP ground truth
 };
 
 // Every technique, in the order documentation lists them.

@@ -13,6 +13,7 @@
 #include "lp/problem.h"
 #include "lp/solution.h"
 #include "scene/procedural.h"
+#include "techniques/registry.h"
 #include "util/error.h"
 #include "util/number_text.h"
 #include "util/parallel_errors.h"
@@ -111,82 +112,32 @@ void solve_storage_box(const Basis& basis, const MomentStorage& storage,
 
 std::vector<VerifyTarget> verify_targets(const std::vector<std::string>& techniques,
                                          const TechniqueParams& params) {
-  // docs/reference.md §6. I = R is represented by a wide interval that contains the extremal nodes
-  // of nearly every instance; where it does not, the difference is "grid-limited" and shows up in
-  // the worst cases (VSM: Cantelli's second point mu - sigma^2 / (z_f - mu) runs far out when z_f ~
-  // mu, hence its wider interval). ESM's e^{cz} needs points far enough below 0 that e^{cz} ~ 0
-  // (Markov's extremal mass sits at -infinity; at z = -4, e^{c (z - z_f)} <= e^{-40} for c = 10,
-  // where [-1, 1] left |dG| up to 7e-6); the LP uses e^{c(z-1)}, the same span scaled by e^{-c},
-  // whose values stay <= 1 (the LP recomputes the moments from the distribution, so the scale of
-  // the closed form's moment does not matter).
-  const std::string esm_basis = "exp(" + round_trip(params.esm_c) + "*(z-1))";
-  // EVSM's own basis on [0, 1], its warps scaled by their values at z = 1 like ESM's (the LP
-  // recomputes the moments from the distribution, so only the span of the functions matters).
-  const std::string p = round_trip(params.evsm_c_positive), n = round_trip(params.evsm_c_negative);
-  const std::string p2 = round_trip(2 * params.evsm_c_positive);
-  const std::vector<std::string> evsm2_basis{"exp(" + p + "*(z-1))", "exp(" + p2 + "*(z-1))"};
-  std::vector<std::string> evsm4_basis = evsm2_basis;
-  evsm4_basis.push_back("-exp(-" + n + "*z)");
-  evsm4_basis.push_back("exp(-" + round_trip(2 * params.evsm_c_negative) + "*z)");
-  std::vector<VerifyTarget> all = {
-      {.technique = "hamburger4",
-       .lp_basis = {"power4"},
-       .lo = -4,
-       .hi = 5,
-       .exact = true,
-       .on_r = true},
-      {.technique = "hausdorff4", .lp_basis = {"power4"}, .exact = true},
-      {.technique = "tmsm", .lp_basis = {"trig4"}, .exact = true},
-      {.technique = "vsm",
-       .lp_basis = {"power2"},
-       .lo = -20,
-       .hi = 21,
-       .exact = true,
-       .cantelli_support = true,
-       .on_r = true},
-      {.technique = "esm", .lp_basis = {esm_basis}, .lo = -4, .exact = true},
-      {.technique = "hamburger6",
-       .lp_basis = {"power6"},
-       .lo = -2,
-       .hi = 3,
-       .exact = true,
-       .on_r = true},
-      {.technique = "hamburger4_float",
-       .lp_basis = {"power4"},
-       .lo = -4,
-       .hi = 5,
-       .on_r = true,
-       .storage_box = true,
-       .alpha = params.hamburger4_float_alpha},
-      {.technique = "hamburger4_16bit",
-       .lp_basis = {"power4"},
-       .lo = -4,
-       .hi = 5,
-       .on_r = true,
-       .storage_box = true,
-       .alpha = params.hamburger4_16bit_alpha},
-      {.technique = "tmsm_float",
-       .lp_basis = {"trig4"},
-       .storage_box = true,
-       .alpha = params.tmsm_float_alpha},
-      // CSM is no lower bound: how often and by how much it exceeds the sharp bound of the same
-      // channels.
-      {.technique = "csm", .lp_basis = csm_channels(params.csm_terms), .exceedance = true},
-      {.technique = "evsm2", .lp_basis = evsm2_basis, .lower_bound = true},
-      {.technique = "evsm4", .lp_basis = evsm4_basis, .lower_bound = true},
-  };
-
   std::vector<VerifyTarget> out;
   for (const auto& name : techniques) {
-    auto it = std::find_if(all.begin(), all.end(),
-                           [&](const VerifyTarget& t) { return t.technique == name; });
-    if (it == all.end()) {
+    const TechniqueEntry* row = find_technique(name);
+    if (!row || !row->verify || name.rfind("lp:", 0) == 0) {
       std::string valid;
-      for (const auto& t : all) valid += (valid.empty() ? "" : ", ") + t.technique;
+      for (const auto& r : technique_registry())
+        if (r.verify) valid += (valid.empty() ? "" : ", ") + r.name;
       throw InputError("verify.techniques: '" + name +
                        "' has no LP ground truth in docs/reference.md §6; valid: " + valid);
     }
-    out.push_back(*it);
+    // The registry row's recipe (techniques/registry.cpp) for these parameters.
+    using Judge = VerifyRecipe::Judge;
+    const VerifyRecipe& r = *row->verify;
+    VerifyTarget t;
+    t.technique = name;
+    t.lp_basis = r.lp_basis(params);
+    t.lo = r.lo;
+    t.hi = r.hi;
+    t.exact = r.judge == Judge::Exact;
+    t.lower_bound = r.judge == Judge::LowerBound;
+    t.exceedance = r.judge == Judge::Exceedance;
+    t.storage_box = r.judge == Judge::StorageBox;
+    t.on_r = r.on_r;
+    t.cantelli_support = r.cantelli_support;
+    t.alpha = r.alpha ? params.*r.alpha : 0;
+    out.push_back(std::move(t));
   }
   return out;
 }
