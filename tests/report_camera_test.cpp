@@ -1,4 +1,4 @@
-// Camera views (issue 34, eval/camera_views.h): a camera looking straight down at a ground plane
+// Camera views (issue 34, report/camera_views.h): a camera looking straight down at a ground plane
 // sees the shadow of a square held above it, displaced by the light's slant; the pixels PCF puts
 // in shadow cover the square's area at the ground's pixel scale, centred where geometry says.
 // Exact techniques stay below PCF on every camera receiver, and the light view's receivers and a

@@ -1,4 +1,4 @@
-// Exponential variance shadow maps (eval/technique.cpp, seed 000 §2): analytic cases, the
+// Exponential variance shadow maps (techniques/evsm.cpp, seed 000 §2): analytic cases, the
 // lower-bound property against the sharp bound of EVSM's own basis (the LP, an independent method),
 // EVSM4 never below EVSM2, and float32 against double.
 #include <gtest/gtest.h>

@@ -130,8 +130,7 @@ int run_bounds(const CommonOptions& options) {
                       (out / "bounds").string(), "CDF and sharp lower bounds", options.quiet);
   const std::string text = report.markdown + "\n" + plot;
   write_file_atomically(out / "bounds.md", text);
-  write_file_atomically(out / "config.yaml", config.to_yaml());
-  write_file_atomically(out / "run.yaml", to_yaml(meta));
+  write_run_record(out, config, meta);
   out.commit();
   std::fputs(text.substr(0, text.rfind("\n\n![")).c_str(), stdout);
   std::fputs("\n", stdout);

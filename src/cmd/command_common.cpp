@@ -48,6 +48,11 @@ bool print_config_if_asked(const Config& config, const CommonOptions& options) {
   return true;
 }
 
+void write_run_record(const StagedOutputDir& out, const Config& config, const RunMetadata& meta) {
+  write_file_atomically(out / "config.yaml", config.to_yaml());
+  write_file_atomically(out / "run.yaml", to_yaml(meta));
+}
+
 void apply_flags(const CLI::App& command, Config& config, const std::vector<FlagKey>& flags) {
   for (const auto& f : flags)
     if (command.get_option(f.flag)->count() > 0) config.set_node(f.key, f.value(), f.flag);

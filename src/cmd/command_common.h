@@ -8,6 +8,8 @@
 
 #include "util/config.h"
 #include "util/number_text.h"
+#include "util/output_dir.h"
+#include "util/run_metadata.h"
 
 namespace mb {
 
@@ -24,6 +26,9 @@ void add_common_options(CLI::App& command, CommonOptions& options, bool has_outp
 // --print-config: prints the effective config as YAML that --config reads back; true when it did
 // (the command then stops).
 bool print_config_if_asked(const Config& config, const CommonOptions& options);
+// config.yaml (the effective config, which --config reads back) and run.yaml (how it was run)
+// into an output directory, written atomically.
+void write_run_record(const StagedOutputDir& out, const Config& config, const RunMetadata& meta);
 // Defaults, then the config file, then every --set in order.
 Config resolve_config(std::vector<OptionSpec> specs, const CommonOptions& options);
 // A command's own flags as shorthands of option keys: each flag given on the command line sets its

@@ -129,8 +129,7 @@ int run_eval(const EvalOptions& options) {
   const EvalReport report = render_eval_report(context, overall, per_view, darkening_reason);
   write_file_atomically(out / "report.md", report.markdown);
   write_file_atomically(out / "errors.csv", report.errors_csv);
-  write_file_atomically(out / "config.yaml", config.to_yaml());
-  write_file_atomically(out / "run.yaml", to_yaml(meta));
+  write_run_record(out, config, meta);
   out.commit();
   std::fputs(report.table.c_str(), stdout);
   return 0;

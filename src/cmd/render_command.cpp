@@ -84,8 +84,7 @@ int run_render(const RenderOptions& options) {
   write_file_atomically(out / "stats.csv", csv.str());
   write_file_atomically(out / "stats.md",
                         "# Layer stacks of dataset " + dataset.name + "\n\n" + table.str());
-  write_file_atomically(out / "config.yaml", config.to_yaml());
-  write_file_atomically(out / "run.yaml", to_yaml(meta));
+  write_run_record(out, config, meta);
   out.commit();
   std::fputs(table.str().c_str(), stdout);
   return 0;

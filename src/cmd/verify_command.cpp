@@ -99,8 +99,7 @@ int run_verify(const CommonOptions& options) {
   write_file_atomically(out / "verify.md", report.markdown);
   write_file_atomically(out / "verify.csv", report.csv);
   write_file_atomically(out / "worst.csv", report.worst_csv);
-  write_file_atomically(out / "config.yaml", config.to_yaml());
-  write_file_atomically(out / "run.yaml", to_yaml(meta));
+  write_run_record(out, config, meta);
   out.commit();
   // The table on stdout.
   const std::string& text = report.markdown;

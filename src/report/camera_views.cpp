@@ -178,7 +178,7 @@ void check_dataset_cameras(const std::vector<Scene>& scenes, const DatasetDesc& 
                    "a scene file)");
 }
 
-// Every camera of every scene, lit by each of the scene's light views (eval/camera_views.h).
+// Every camera of every scene, lit by each of the scene's light views (report/camera_views.h).
 void write_dataset_camera_views(const std::vector<Scene>& scenes, const DatasetDesc& dataset,
                                 const std::vector<ViewData>& views,
                                 const std::vector<std::string>& techniques, int resolution,

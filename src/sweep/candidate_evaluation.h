@@ -9,7 +9,7 @@
 #include "eval/error_stats.h"
 #include "eval/evaluation.h"
 #include "moments/basis.h"
-#include "sweep/screening.h"
+#include "screen/screening.h"
 
 namespace mb {
 
@@ -30,9 +30,9 @@ class CandidateEvaluator {
   // Per view, the fragments that need an LP (ascending): what a screening sample is drawn from.
   const std::vector<std::vector<uint32_t>>& lp_lists() const { return needs_lp_; }
   const std::vector<ViewData>& views() const { return views_; }
-  // The sampled units' error sums, sum |PCF - G| of each (screening.h), strata in order; each
-  // unit is a warm-start run of its own, so its answers are the full evaluation's optima (to the
-  // LP's tolerance). `outcome` (optional) gets the LP counts.
+  // The sampled units' error sums, sum |PCF - G| of each (screen/screening.h), strata in order;
+  // each unit is a warm-start run of its own, so its answers are the full evaluation's optima (to
+  // the LP's tolerance). `outcome` (optional) gets the LP counts.
   std::vector<double> screen(const Basis& basis, const ScreenSample& sample,
                              CandidateResult* outcome = nullptr) const;
 

@@ -32,7 +32,7 @@ struct ResultRow {
   double se = 0;
 };
 
-// A screened candidate (eval/screening.h): its estimated mean error, the standard error, and the
+// A screened candidate (screen/screening.h): its estimated mean error, the standard error, and the
 // sampled runs' error sums that the confirmation compares candidates by.
 struct EstimateRow {
   uint64_t id = 0;

@@ -247,7 +247,8 @@ void SweepRun::screen_stage(int stage, const ScreenSample& sample,
   });
 }
 
-// The candidates of `ids` that reach the best (screening.h), from their estimates at `stage`.
+// The candidates of `ids` that reach the best (screen/screening.h), from their estimates at
+// `stage`.
 std::vector<uint64_t> SweepRun::reaching(int stage, const ScreenSample& sample,
                                          const std::vector<uint64_t>& ids) const {
   std::map<uint64_t, std::vector<double>> by_id;
@@ -271,13 +272,13 @@ std::vector<uint64_t> SweepRun::reaching(int stage, const ScreenSample& sample,
   return out;
 }
 
-// Screening (sweep/screening.h): every candidate of this shard on the sample, one committed
+// Screening (screen/screening.h): every candidate of this shard on the sample, one committed
 // estimate each; then, once the database holds every planned candidate's estimate (one shard, or
 // the merged shards resumed), the candidates that reach the best K exactly.
 void SweepRun::screen_and_confirm(const std::vector<uint64_t>& mine) {
   // The pilot, the catalog's first combination (z; z^2; z^3; z^4 in docs/reference.md §5's),
   // exactly: its run errors are what every candidate's sampled runs are compared with
-  // (screening.h). When it is a planned candidate of this shard, its exact row is kept too.
+  // (screen/screening.h). When it is a planned candidate of this shard, its exact row is kept too.
   const uint64_t pilot = 0;
   std::vector<std::vector<double>> pilot_shadow;
   log("sweep: the screen's pilot %s, exactly\n", plan_.name(pilot).c_str());

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "eval/evaluation.h"
-#include "sweep/screening.h"
+#include "screen/screening.h"
 #include "util/config.h"
 
 namespace mb {

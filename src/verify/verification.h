@@ -34,8 +34,8 @@ struct VerifyTarget {
   // Float32 and 16-bit rows: the ground truth is Problem 1 over every distribution whose stored
   // values lie in the storage format's box (docs/reference.md §2, "Moments with a tolerance";
   // moments/storage.h), solved on the continuous interval, and the closed form must not exceed it
-  // by more than its bias alpha (the biased moments are a mixture's, see technique.cpp) plus
-  // 1e-6. Without the continuous ground truth such a row is reported, not judged.
+  // by more than its bias alpha (the biased moments are a mixture's, see techniques/closed_form.h)
+  // plus 1e-6. Without the continuous ground truth such a row is reported, not judged.
   bool storage_box = false;
   double alpha = 0;  // the technique's moment bias
   // Whether exceeding the box fails verify (verify.moment_box = strict). By default it is

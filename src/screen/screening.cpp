@@ -1,4 +1,4 @@
-#include "sweep/screening.h"
+#include "screen/screening.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-// Screening (eval/screening.h, issue 33): the estimate against the exact evaluation of the same
+// Screening (screen/screening.h, issue 33): the estimate against the exact evaluation of the same
 // candidates on the same views. A sample of every run is the exact mean; a sampled run's error
 // sum is the full evaluation's, bit for bit; the estimates' standard errors cover their misses;
 // and on a few hundred candidates the confirmation keeps the exact best K.
@@ -11,8 +11,8 @@
 
 #include "eval/evaluation.h"
 #include "eval/warm_runs.h"
+#include "screen/screening.h"
 #include "sweep/candidate_evaluation.h"
-#include "sweep/screening.h"
 #include "sweep/sweep_plan.h"
 
 namespace mb {
