@@ -13,7 +13,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 # The catalog in order, from the source (docs/reference.md §5).
-mapfile -t catalog < <(grep -o '^      {"[^"]*", \[\]' "$root/src/moments/basis.cpp" | sed 's/^      {"//; s/", \[\]$//')
+mapfile -t catalog < <(grep -o '^      {"[^"]*", \[\]' "$root/src/basis/basis.cpp" | sed 's/^      {"//; s/", \[\]$//')
 candidates=(power4 trig4)
 mapfile -t -O 2 candidates < <(/usr/bin/python3 - "$count" "${catalog[@]}" <<'PY'
 import random, sys

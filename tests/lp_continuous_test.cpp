@@ -11,12 +11,12 @@
 #include <string>
 #include <vector>
 
+#include "basis/basis.h"
+#include "basis/basis_derivatives.h"
 #include "lp/continuous.h"
 #include "lp/local_power.h"
 #include "lp/problem.h"
 #include "lp/solution.h"
-#include "moments/basis.h"
-#include "moments/basis_derivatives.h"
 
 namespace mb::lp {
 namespace {

@@ -11,11 +11,11 @@
 #include <random>
 #include <vector>
 
+#include "basis/basis.h"
 #include "lp/local_power.h"
 #include "lp/moment_box.h"
 #include "lp/problem.h"
 #include "lp/solution.h"
-#include "moments/basis.h"
 #include "moments/storage.h"
 
 namespace mb::lp {

@@ -2,8 +2,8 @@
 // for the fragments of one texel, must leave exactly the problem that building anew gives.
 #include <gtest/gtest.h>
 
+#include "basis/basis.h"
 #include "lp/problem.h"
-#include "moments/basis.h"
 
 namespace mb::lp {
 namespace {

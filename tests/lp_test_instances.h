@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "basis/basis.h"
 #include "lp/problem.h"
-#include "moments/basis.h"
 #include "scene/procedural.h"
 
 namespace mb::testing_support {

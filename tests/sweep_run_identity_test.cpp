@@ -33,6 +33,20 @@ TEST(RunIdentity, DatabasesWithTheOlderHashAreRecognisedByTheirValues) {
   EXPECT_FALSE(same_config(legacy, "dataset: default\nlp.grid: 256\n"));
 }
 
+// A sweep begun before an option existed resumes when the option is at its default (which keeps the
+// old behaviour), and not when it was changed.
+TEST(RunIdentity, OptionsAddedSinceCountAtTheirDefault) {
+  const std::map<std::string, std::string> old{{"config_hash", "0000000000000000"},
+                                               {"config", kYaml}};
+  const std::string defaults = "dataset: default\nthreads: 0\nlp.grid: 256\nesm.threshold: 0.01\n";
+  const std::string now = kYaml + "# New.\nesm.threshold: 0.01\n";
+  EXPECT_TRUE(same_config(old, now, defaults));
+  EXPECT_FALSE(same_config(old, now));  // without the defaults, a new key is a difference
+  EXPECT_FALSE(same_config(old, kYaml + "esm.threshold: 0.5\n", defaults));
+  EXPECT_FALSE(same_config(old, "dataset: tiny\n",
+                           defaults));  // a key removed  // a key removed is a difference
+}
+
 TEST(RunIdentity, MeasurementKeysHoldExactValues) {
   EvalSettings settings;
   settings.technique.lp.grid = 300;

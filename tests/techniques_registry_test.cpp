@@ -5,7 +5,7 @@
 #include <set>
 #include <vector>
 
-#include "moments/basis.h"
+#include "basis/basis.h"
 #include "techniques/registry.h"
 #include "util/config.h"
 #include "util/error.h"

@@ -6,9 +6,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "basis/basis.h"
 #include "eval/evaluation.h"
 #include "lp/problem.h"
-#include "moments/basis.h"
 #include "util/progress.h"
 
 namespace mb {

@@ -6,7 +6,7 @@
 #include <tuple>
 #include <vector>
 
-#include "moments/basis_derivatives.h"
+#include "basis/basis_derivatives.h"
 
 namespace mb::lp {
 

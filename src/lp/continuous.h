@@ -5,7 +5,7 @@
 // phi(z) = y . T (1, b(z)) rises above the step [z < z_f] on [lo, z_f) and on [z_f, hi], add those
 // points, solve again. It ends with a certificate: phi <= step + eps on all of [lo, hi], proven
 // cell by cell from Taylor models of phi (the catalog functions' closed-form derivatives and
-// bounds of the next derivative, moments/basis_derivatives.h). Weak duality then makes
+// bounds of the next derivative, basis/basis_derivatives.h). Weak duality then makes
 // E[phi] - eps a lower bound of the continuous infimum, and the finite optimum is an upper one.
 //
 // What is proven: for catalog bases, the bound on phi - step over every cell, in long double with

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "moments/basis.h"
+#include "basis/basis.h"
 
 namespace mb::lp {
 

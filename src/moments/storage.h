@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "moments/basis.h"
+#include "basis/basis.h"
 #include "util/eigen.h"
 
 namespace mb {

@@ -6,8 +6,8 @@
 #include <set>
 #include <sstream>
 
+#include "basis/basis.h"
 #include "eval/error_stats.h"
-#include "moments/basis.h"
 #include "report/darkening.h"
 #include "shadow/fragments.h"
 #include "sweep/candidates.h"

@@ -6,7 +6,7 @@
 #include <span>
 #include <vector>
 
-#include "moments/basis.h"
+#include "basis/basis.h"
 #include "moments/storage.h"
 #include "shadow/fragments.h"
 #include "shadow/gaussian_kernel.h"

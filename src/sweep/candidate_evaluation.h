@@ -6,9 +6,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "basis/basis.h"
 #include "eval/error_stats.h"
 #include "eval/evaluation.h"
-#include "moments/basis.h"
 #include "screen/screening.h"
 
 namespace mb {

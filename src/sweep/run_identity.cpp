@@ -29,11 +29,41 @@ std::string config_hash(const std::string& config_yaml) {
   return buffer;
 }
 
-bool same_config(const std::map<std::string, std::string>& meta, const std::string& config_yaml) {
+namespace {
+
+// "key: value" lines of config_values as a map.
+std::map<std::string, std::string> value_map(const std::string& yaml) {
+  std::map<std::string, std::string> out;
+  const std::string values = config_values(yaml);
+  size_t start = 0;
+  while (start < values.size()) {
+    const size_t end = values.find('\n', start);
+    const std::string line = values.substr(start, end - start);
+    const size_t colon = line.find(": ");
+    if (colon != std::string::npos) out[line.substr(0, colon)] = line.substr(colon + 2);
+    start = end + 1;
+  }
+  return out;
+}
+
+}  // namespace
+
+bool same_config(const std::map<std::string, std::string>& meta, const std::string& config_yaml,
+                 const std::string& defaults_yaml) {
   const auto hash = meta.find("config_hash");
   if (hash != meta.end() && hash->second == config_hash(config_yaml)) return true;
   const auto stored = meta.find("config");
-  return stored != meta.end() && config_values(stored->second) == config_values(config_yaml);
+  if (stored == meta.end()) return false;
+  const auto have = value_map(stored->second), now = value_map(config_yaml);
+  const auto defaults = value_map(defaults_yaml);
+  for (const auto& [key, value] : have)
+    if (!now.count(key) || now.at(key) != value) return false;
+  for (const auto& [key, value] : now) {
+    if (have.count(key)) continue;
+    const auto d = defaults.find(key);
+    if (d == defaults.end() || d->second != value) return false;
+  }
+  return true;
 }
 
 namespace {

@@ -18,8 +18,11 @@ std::string config_values(const std::string& config_yaml);
 // FNV-1a of config_values, as 16 hex digits.
 std::string config_hash(const std::string& config_yaml);
 // True when the database's meta (`config_hash`, `config`) describes the run of `config_yaml`: the
-// same hash, or (databases from before the value-only hash) the same values.
-bool same_config(const std::map<std::string, std::string>& meta, const std::string& config_yaml);
+// same hash, or the same values, where a key the stored config lacks (an option added since) counts
+// as the same when its value is its default in `defaults_yaml` (the defaults' config YAML; the
+// option's default keeps the behaviour from before it existed).
+bool same_config(const std::map<std::string, std::string>& meta, const std::string& config_yaml,
+                 const std::string& defaults_yaml = "");
 
 // What the errors of a run are measured with, as separate results-database meta keys with exact
 // values (kernel.size, kernel.sigma, reference, bias.slope, bias.constant, lp.grid, lp.lo, lp.hi,

@@ -34,7 +34,7 @@ ResultsStore open_sweep_directory(const std::filesystem::path& out, const SweepI
   if (resume && fs::exists(db_path)) {
     ResultsStore store = ResultsStore::open(db_path.string());
     auto have = store.meta();
-    if (!same_config(have, identity.config_yaml))
+    if (!same_config(have, identity.config_yaml, identity.defaults_yaml))
       throw InputError(db_path.string() + ": the sweep there was run with another config (hash " +
                        have["config_hash"] + ", now " + identity.config_hash +
                        "); compare its config.yaml, or start a new sweep elsewhere");

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <set>
 
-#include "moments/basis.h"
+#include "basis/basis.h"
 #include "scene/procedural.h"
 #include "sweep/candidates.h"
 #include "util/error.h"

@@ -18,29 +18,89 @@
 #include "techniques/lp_technique.h"
 #include "techniques/technique.h"
 #include "util/error.h"
+#include "util/option_record.h"
 #include "util/output_dir.h"
 #include "util/progress.h"
 #include "util/run_metadata.h"
 
 namespace mb {
 
+namespace {
+
+const std::vector<OptionRecord<SweepSettings>>& candidate_options() {
+  static const std::vector<OptionRecord<SweepSettings>> records{
+      {{"catalog", OptionType::StringList, "[]",
+        "Functions to combine (names or expressions); empty = the 37-function catalog "
+        "of docs/reference.md §5."},
+       &SweepSettings::catalog},
+      {{"combination_size", OptionType::Integer, "4", "Functions per candidate.", 1, 7},
+       &SweepSettings::combination_size},
+      {{"candidates", OptionType::StringList, "[]",
+        "Explicit candidates, each 'f1; f2; ...'; empty = all (or a sample)."},
+       &SweepSettings::candidates},
+      {{"sample", OptionType::Integer, "0",
+        "Evaluate a seeded random sample of this many; 0 = all.", 0, 1e12},
+       &SweepSettings::sample},
+      {{"sample_seed", OptionType::Integer, "1", "Seed of the sample.", 0, 1e18},
+       &SweepSettings::sample_seed},
+      {{"references", OptionType::StringList,
+        "[pcf, vsm, esm, hamburger4, hausdorff4, hamburger6, tmsm, lp:power4, lp:trig4]",
+        "Techniques evaluated once on the same dataset, for the report."},
+       &SweepSettings::references},
+  };
+  return records;
+}
+
+const std::vector<OptionRecord<ScreenSettings>>& screen_options() {
+  static const std::vector<OptionRecord<ScreenSettings>> records{
+      {{"screen.fraction", OptionType::Number, "0",
+        "Screening: every candidate first on this share of each view's units (8 x 16 "
+        "texels, the same for all), with a standard error; 0 = every candidate exactly.",
+        0, 1},
+       &ScreenSettings::fraction},
+      {{"screen.top", OptionType::Integer, "20",
+        "Screening: K. The best K estimates, and every candidate whose interval "
+        "reaches the K-th (screen.sigmas, screen.margin), are evaluated exactly.",
+        1, 1e9},
+       &ScreenSettings::top},
+      {{"screen.sigmas", OptionType::Number, "3",
+        "Screening: standard errors of a candidate's paired difference from the K-th "
+        "best estimate that still count as reaching it.",
+        0, 100},
+       &ScreenSettings::sigmas},
+      {{"screen.margin", OptionType::Number, "0",
+        "Screening: mean error (a fraction: 1e-4 = 0.01 pp) by which a candidate's "
+        "interval may miss the K-th best estimate and still be evaluated exactly; "
+        "negative: differences below |margin| are ties.",
+        -1, 1},
+       &ScreenSettings::margin},
+      {{"screen.refine", OptionType::Number, "0",
+        "Screening: a second sample, this share of the units, for the candidates in "
+        "reach after the first, before any is evaluated exactly; 0 = none.",
+        0, 1},
+       &ScreenSettings::refine},
+      {{"screen.seed", OptionType::Integer, "1", "Screening: seed of the sampled units.", 0, 1e18},
+       &ScreenSettings::seed},
+  };
+  return records;
+}
+
+}  // namespace
+
+std::vector<OptionSpec> sweep_option_specs() {
+  std::vector<OptionSpec> specs = option_specs(candidate_options());
+  for (auto& s : option_specs(screen_options())) specs.push_back(s);
+  return specs;
+}
+
 SweepSettings sweep_settings_from(const Config& config, int threads) {
   SweepSettings s;
   s.eval = shadow_settings_from(config, threads);
   s.dataset = config.string("dataset");
   s.resolution = int(config.integer("resolution"));
-  s.catalog = config.strings("catalog");
-  s.candidates = config.strings("candidates");
-  s.references = with_oracle_row(config.strings("references"), s.eval.bias);
-  s.combination_size = int(config.integer("combination_size"));
-  s.sample = uint64_t(config.integer("sample"));
-  s.sample_seed = uint64_t(config.integer("sample_seed"));
-  s.screen.fraction = config.number("screen.fraction");
-  s.screen.refine = config.number("screen.refine");
-  s.screen.rule.top = int(config.integer("screen.top"));
-  s.screen.rule.sigmas = config.number("screen.sigmas");
-  s.screen.rule.margin = config.number("screen.margin");
-  s.screen.seed = uint64_t(config.integer("screen.seed"));
+  read_options(config, candidate_options(), s);
+  read_options(config, screen_options(), s.screen);
+  s.references = with_oracle_row(s.references, s.eval.bias);
   s.config_yaml = config.to_yaml();
   return s;
 }
@@ -264,11 +324,11 @@ std::vector<uint64_t> SweepRun::reaching(int stage, const ScreenSample& sample,
     run_errors.push_back(std::move(errors));
   }
   std::vector<uint64_t> out;
-  for (size_t c : candidates_to_confirm(sample, run_errors, s_.screen.rule)) out.push_back(ids[c]);
+  for (size_t c : candidates_to_confirm(sample, run_errors, s_.screen.rule()))
+    out.push_back(ids[c]);
   log("sweep: stage %d: %zu of %zu candidates in reach of the %d-th best estimate (margin %g, %g "
       "standard errors)\n",
-      stage, out.size(), ids.size(), s_.screen.rule.top, s_.screen.rule.margin,
-      s_.screen.rule.sigmas);
+      stage, out.size(), ids.size(), s_.screen.top, s_.screen.margin, s_.screen.sigmas);
   return out;
 }
 
@@ -328,9 +388,9 @@ void run_sweep(const SweepSettings& s, const SweepJob& job) {
                {"combination_size", std::to_string(plan.size)},
                {"planned", std::to_string(plan.ids.size())},
                {"settings", describe_settings(s.eval)}});
-  ResultsStore store =
-      open_sweep_directory(job.out, {config_hash(s.config_yaml), shard_text, s.config_yaml}, meta,
-                           job.resume, job.force);
+  ResultsStore store = open_sweep_directory(
+      job.out, {config_hash(s.config_yaml), shard_text, s.config_yaml, s.defaults_yaml}, meta,
+      job.resume, job.force);
   write_file_atomically(job.out / ("run_" + std::to_string(std::time(nullptr)) + ".yaml"),
                         to_yaml(collect_run_metadata(s.eval.threads, job.arguments)));
   SweepRun run(s, job, plan, views, store);

@@ -17,8 +17,10 @@ namespace mb {
 struct ScreenSettings {
   double fraction = 0;  // screen.fraction: 0 = every candidate exactly
   double refine = 0;    // screen.refine: a second sample's share, 0 = none
-  ScreenRule rule;      // screen.top, screen.sigmas, screen.margin
-  uint64_t seed = 1;    // screen.seed
+  int top = 20;         // screen.top, screen.sigmas, screen.margin: the confirmation rule
+  double sigmas = 3, margin = 0;
+  uint64_t seed = 1;  // screen.seed
+  ScreenRule rule() const { return {top, sigmas, margin}; }
 };
 
 // The sweep's options as typed fields (sweep_specs declares them).
@@ -30,8 +32,12 @@ struct SweepSettings {
   int combination_size = 4;
   uint64_t sample = 0, sample_seed = 1;
   ScreenSettings screen;
-  std::string config_yaml;  // the effective config: the run's identity (run_identity.h)
+  std::string config_yaml;    // the effective config: the run's identity (run_identity.h)
+  std::string defaults_yaml;  // every option at its default: options added since a run began
 };
+// The sweep's own options (after the dataset's and the shadow options), declared once: the
+// candidates' keys bound to SweepSettings, the screen's to ScreenSettings.
+std::vector<OptionSpec> sweep_option_specs();
 SweepSettings sweep_settings_from(const Config& config, int threads);
 
 struct SweepJob {

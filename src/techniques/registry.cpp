@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <limits>
 
-#include "moments/basis.h"
+#include "basis/basis.h"
 #include "techniques/lp_technique.h"
 #include "util/error.h"
 #include "util/number_text.h"

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "basis/basis.h"
 #include "lp/problem.h"
-#include "moments/basis.h"
 #include "moments/storage.h"
 
 namespace mb {

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "basis/basis.h"
 #include "lp/problem.h"
-#include "moments/basis.h"
 
 namespace mb {
 

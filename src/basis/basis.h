@@ -9,7 +9,7 @@
 
 namespace mb {
 
-struct AnalyticForm;  // moments/basis_derivatives.h
+struct AnalyticForm;  // basis/basis_derivatives.h
 
 class BasisFunction {
  public:
@@ -19,7 +19,7 @@ class BasisFunction {
   const std::string& name() const { return name_; }
   void evaluate(std::span<const double> z, std::span<double> out) const;
   double operator()(double z) const;
-  // Catalog functions have closed-form derivatives (moments/basis_derivatives.h); expressions not.
+  // Catalog functions have closed-form derivatives (basis/basis_derivatives.h); expressions not.
   bool has_derivatives() const { return analytic_ != nullptr; }
   // out[k] = b^(k)(z), k = 0..order, in long double (has_derivatives() only).
   void derivatives(long double z, int order, long double* out) const;

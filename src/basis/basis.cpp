@@ -1,4 +1,4 @@
-#include "moments/basis.h"
+#include "basis/basis.h"
 
 #include <muParser.h>
 
@@ -7,7 +7,7 @@
 #include <mutex>
 #include <numbers>
 
-#include "moments/basis_derivatives.h"
+#include "basis/basis_derivatives.h"
 #include "util/eigen.h"
 #include "util/error.h"
 #include "util/number_text.h"

@@ -1,4 +1,4 @@
-#include "moments/basis_derivatives.h"
+#include "basis/basis_derivatives.h"
 
 #include <algorithm>
 #include <array>
