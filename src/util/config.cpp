@@ -42,6 +42,32 @@ std::string emit(const YAML::Node& node) {
   out << node;
   return out.c_str();
 }
+// A list of numbers (or integers) from its items, each within [min, max]; an error names the key,
+// the item and what was expected.
+YAML::Node number_list(const std::vector<std::string>& items, const OptionSpec& s,
+                       const std::string& origin) {
+  const bool integers = s.type == OptionType::IntegerList;
+  const std::string range = "[" + number_text(s.min) + ", " + number_text(s.max) + "]";
+  YAML::Node stored(YAML::NodeType::Sequence);
+  for (size_t k = 0; k < items.size(); ++k) {
+    const std::string where = origin + ": key '" + s.name + "': item " + std::to_string(k + 1) +
+                              " '" + items[k] + "': expected ";
+    if (integers) {
+      int64_t v;
+      if (!YAML::convert<int64_t>::decode(YAML::Node(items[k]), v) || v < s.min || v > s.max)
+        throw InputError(where + "an integer in " + range);
+      stored.push_back(v);
+      continue;
+    }
+    double v;
+    if (!YAML::convert<double>::decode(YAML::Node(items[k]), v) || !std::isfinite(v))
+      throw InputError(where + "a finite number");
+    if (v < s.min || v > s.max) throw InputError(where + "a number in " + range);
+    stored.push_back(number_text(v));
+  }
+  return stored;
+}
+
 }  // namespace
 
 Config::Config(std::vector<OptionSpec> specs) : specs_(std::move(specs)) {
@@ -138,36 +164,10 @@ void Config::assign(const std::string& name, const YAML::Node& node, const std::
         stored.push_back(item);
       }
       break;
-    case OptionType::NumberList: {
-      const std::vector<std::string> items = list_items();
-      stored = YAML::Node(YAML::NodeType::Sequence);
-      for (size_t k = 0; k < items.size(); ++k) {
-        double v;
-        const std::string where = "item " + std::to_string(k + 1) + " '" + items[k] + "'";
-        if (!YAML::convert<double>::decode(YAML::Node(items[k]), v) || !std::isfinite(v))
-          throw InputError(origin + ": key '" + name + "': " + where +
-                           ": expected a finite number");
-        if (v < s.min || v > s.max)
-          throw InputError(origin + ": key '" + name + "': " + where + ": expected a number in [" +
-                           number_text(s.min) + ", " + number_text(s.max) + "]");
-        stored.push_back(number_text(v));
-      }
+    case OptionType::NumberList:
+    case OptionType::IntegerList:
+      stored = number_list(list_items(), s, origin);
       break;
-    }
-    case OptionType::IntegerList: {
-      const std::vector<std::string> items = list_items();
-      stored = YAML::Node(YAML::NodeType::Sequence);
-      for (size_t k = 0; k < items.size(); ++k) {
-        int64_t v;
-        const std::string where = "item " + std::to_string(k + 1) + " '" + items[k] + "'";
-        if (!YAML::convert<int64_t>::decode(YAML::Node(items[k]), v) || v < s.min || v > s.max)
-          throw InputError(origin + ": key '" + name + "': " + where +
-                           ": expected an integer in [" + number_text(s.min) + ", " +
-                           number_text(s.max) + "]");
-        stored.push_back(v);
-      }
-      break;
-    }
   }
   values_[name] = Value{stored, origin};
 }
