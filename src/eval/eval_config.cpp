@@ -7,78 +7,131 @@
 #include "lp/solution.h"
 #include "techniques/registry.h"
 #include "util/error.h"
+#include "util/option_record.h"
 
 namespace mb {
 
-std::vector<OptionSpec> shadow_option_specs() {
-  constexpr double kInf = std::numeric_limits<double>::infinity();
-  std::vector<OptionSpec> specs{
-      {"kernel.size", OptionType::Integer, "9",
-       "Filter taps per axis (odd), for PCF and moment maps."},
-      {"kernel.sigma", OptionType::Number, "2.4", "Gaussian standard deviation in texels."},
-      {"reference",
-       OptionType::String,
-       "biased",
-       "What G is compared against: biased = PCF at z_f - delta_f (the paper's protocol, errors "
-       "are light leaking), "
-       "receiver_plane = each tap against the fragment's plane (the ideal hard shadow; tables add "
-       "the oracle floor).",
-       -kInf,
-       kInf,
-       {"biased", "receiver_plane"}},
-      {"bias.slope", OptionType::Number, "1",
-       "s in delta_f = c + s r (|dz/dx| + |dz/dy|) (docs/reference.md §3); 0 with bias.constant "
-       "1e-3 is "
-       "the old constant bias.",
-       0, 1e6},
-      {"bias.constant", OptionType::Number, "1e-4",
-       "c in delta_f: absorbs curvature and rasterisation rounding.", 0, 1},
-      {"lp.grid", OptionType::Integer, "256", "LP techniques: uniform grid points on the interval.",
-       2, 1e7},
-      {"lp.lo", OptionType::Number, "0", "LP techniques: admissible interval, lower end."},
-      {"lp.hi", OptionType::Number, "1", "LP techniques: admissible interval, upper end."},
-      {"lp.discretization",
-       OptionType::String,
-       "grid",
-       "LP techniques: grid (Problem 1 on the grid and the kernel's depths, warm-started) or "
-       "continuous (on all of [lp.lo, lp.hi], exchange method with a certificate; "
-       "docs/reference.md "
-       "§2).",
-       -kInf,
-       kInf,
-       {"grid", "continuous"}},
-      {"lp.quantize", OptionType::Boolean, "false",
-       "LP techniques: round depths to the grid instead of adding them."},
-      {"lp.backend", OptionType::String, "fast", "LP backend.", -kInf, kInf, lp::backend_names()},
-      {"lp.moment_box",
-       OptionType::String,
-       "none",
-       "LP techniques: none (the kernel's exact moments) or a storage format (double, float32, "
-       "unorm16 for power4/power2): Problem 1 over every distribution whose stored moments lie "
-       "within that format's rounding of the kernel's (docs/reference.md §2; GLPK, no warm start).",
-       -kInf,
-       kInf,
-       {"none", "double", "float32", "unorm16"}},
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// The protocol's and the LP's keys as plain fields; shadow_settings_from turns them into the
+// kernel, the bias and the LP discretisation.
+struct ShadowOptions {
+  int kernel_size = 9;
+  double kernel_sigma = 2.4;
+  std::string reference;
+  double bias_slope = 1, bias_constant = 1e-4;
+  int lp_grid = 256;
+  double lp_lo = 0, lp_hi = 1;
+  std::string lp_discretization;
+  bool lp_quantize = false;
+  std::string lp_backend, lp_moment_box;
+};
+
+const std::vector<OptionRecord<ShadowOptions>>& kernel_options() {
+  static const std::vector<OptionRecord<ShadowOptions>> records{
+      {{"kernel.size", OptionType::Integer, "9",
+        "Filter taps per axis (odd), for PCF and moment maps."},
+       &ShadowOptions::kernel_size},
+      {{"kernel.sigma", OptionType::Number, "2.4", "Gaussian standard deviation in texels."},
+       &ShadowOptions::kernel_sigma},
   };
-  // The technique options come from their registry rows, between the protocol's and the LP's.
-  const auto techniques = technique_option_specs();
-  const auto lp = std::find_if(specs.begin(), specs.end(),
-                               [](const OptionSpec& s) { return s.name.rfind("lp.", 0) == 0; });
-  specs.insert(lp, techniques.begin(), techniques.end());
+  return records;
+}
+
+const std::vector<OptionRecord<ShadowOptions>>& bias_options() {
+  static const std::vector<OptionRecord<ShadowOptions>> records{
+      {{"reference",
+        OptionType::String,
+        "biased",
+        "What G is compared against: biased = PCF at z_f - delta_f (the paper's protocol, errors "
+        "are light leaking), "
+        "receiver_plane = each tap against the fragment's plane (the ideal hard shadow; tables add "
+        "the oracle floor).",
+        -kInf,
+        kInf,
+        {"biased", "receiver_plane"}},
+       &ShadowOptions::reference},
+      {{"bias.slope", OptionType::Number, "1",
+        "s in delta_f = c + s r (|dz/dx| + |dz/dy|) (docs/reference.md §3); 0 with bias.constant "
+        "1e-3 is "
+        "the old constant bias.",
+        0, 1e6},
+       &ShadowOptions::bias_slope},
+      {{"bias.constant", OptionType::Number, "1e-4",
+        "c in delta_f: absorbs curvature and rasterisation rounding.", 0, 1},
+       &ShadowOptions::bias_constant},
+  };
+  return records;
+}
+
+const std::vector<OptionRecord<ShadowOptions>>& lp_options() {
+  static const std::vector<OptionRecord<ShadowOptions>> records{
+      {{"lp.grid", OptionType::Integer, "256",
+        "LP techniques: uniform grid points on the interval.", 2, 1e7},
+       &ShadowOptions::lp_grid},
+      {{"lp.lo", OptionType::Number, "0", "LP techniques: admissible interval, lower end."},
+       &ShadowOptions::lp_lo},
+      {{"lp.hi", OptionType::Number, "1", "LP techniques: admissible interval, upper end."},
+       &ShadowOptions::lp_hi},
+      {{"lp.discretization",
+        OptionType::String,
+        "grid",
+        "LP techniques: grid (Problem 1 on the grid and the kernel's depths, warm-started) or "
+        "continuous (on all of [lp.lo, lp.hi], exchange method with a certificate; "
+        "docs/reference.md "
+        "§2).",
+        -kInf,
+        kInf,
+        {"grid", "continuous"}},
+       &ShadowOptions::lp_discretization},
+      {{"lp.quantize", OptionType::Boolean, "false",
+        "LP techniques: round depths to the grid instead of adding them."},
+       &ShadowOptions::lp_quantize},
+      {{"lp.backend", OptionType::String, "fast", "LP backend.", -kInf, kInf, lp::backend_names()},
+       &ShadowOptions::lp_backend},
+      {{"lp.moment_box",
+        OptionType::String,
+        "none",
+        "LP techniques: none (the kernel's exact moments) or a storage format (double, float32, "
+        "unorm16 for power4/power2): Problem 1 over every distribution whose stored moments lie "
+        "within that format's rounding of the kernel's (docs/reference.md §2; GLPK, no warm "
+        "start).",
+        -kInf,
+        kInf,
+        {"none", "double", "float32", "unorm16"}},
+       &ShadowOptions::lp_moment_box},
+  };
+  return records;
+}
+
+}  // namespace
+
+std::vector<OptionSpec> shadow_option_specs() {
+  // The protocol's keys, then every technique's (from their registry rows), then the LP's.
+  std::vector<OptionSpec> specs = option_specs(kernel_options());
+  for (auto& s : option_specs(bias_options())) specs.push_back(s);
+  for (auto& s : technique_option_specs()) specs.push_back(s);
+  for (auto& s : option_specs(lp_options())) specs.push_back(s);
   return specs;
 }
 
 GaussianKernel kernel_from(const Config& config) {
-  return make_gaussian_kernel(int(config.integer("kernel.size")), config.number("kernel.sigma"));
+  ShadowOptions o;
+  read_options(config, kernel_options(), o);
+  return make_gaussian_kernel(o.kernel_size, o.kernel_sigma);
 }
 
 lp::Discretization lp_discretization_from(const Config& config) {
+  ShadowOptions o;
+  read_options(config, lp_options(), o);
   lp::Discretization d;
-  d.grid = int(config.integer("lp.grid"));
-  d.lo = config.number("lp.lo");
-  d.hi = config.number("lp.hi");
-  d.quantize = config.boolean("lp.quantize");
-  d.continuous = config.string("lp.discretization") == "continuous";
+  d.grid = o.lp_grid;
+  d.lo = o.lp_lo;
+  d.hi = o.lp_hi;
+  d.quantize = o.lp_quantize;
+  d.continuous = o.lp_discretization == "continuous";
   if (!(d.lo < d.hi)) throw InputError("lp.lo, lp.hi: expected lo < hi");
   return d;
 }
@@ -86,14 +139,17 @@ lp::Discretization lp_discretization_from(const Config& config) {
 EvalSettings shadow_settings_from(const Config& config, int threads) {
   EvalSettings s;
   s.kernel = kernel_from(config);
-  s.bias.reference = parse_reference(config.string("reference"), "reference");
-  s.bias.slope = config.number("bias.slope");
-  s.bias.constant = config.number("bias.constant");
+  ShadowOptions o;
+  read_options(config, bias_options(), o);
+  read_options(config, lp_options(), o);
+  s.bias.reference = parse_reference(o.reference, "reference");
+  s.bias.slope = o.bias_slope;
+  s.bias.constant = o.bias_constant;
   auto& t = s.technique;
   read_technique_options(config, t);
   t.lp = lp_discretization_from(config);
-  t.lp_backend = config.string("lp.backend");
-  t.lp_moment_box = config.string("lp.moment_box");
+  t.lp_backend = o.lp_backend;
+  t.lp_moment_box = o.lp_moment_box;
   s.threads = threads;
   return s;
 }
