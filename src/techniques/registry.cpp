@@ -7,6 +7,7 @@
 #include "techniques/lp_technique.h"
 #include "util/error.h"
 #include "util/number_text.h"
+#include "util/option_record.h"
 
 namespace mb {
 
@@ -371,12 +372,7 @@ std::vector<OptionSpec> technique_option_specs() {
 }
 
 void read_technique_options(const Config& config, TechniqueParams& params) {
-  for (const TechniqueOption* o : kAllOptions) {
-    if (auto* number = std::get_if<double TechniqueParams::*>(&o->field))
-      params.*(*number) = config.number(o->spec.name);
-    else
-      params.*std::get<int TechniqueParams::*>(o->field) = int(config.integer(o->spec.name));
-  }
+  for (const TechniqueOption* o : kAllOptions) read_option(config, o->spec.name, o->field, params);
 }
 
 void set_moment_bias(TechniqueParams& params, double alpha) {

@@ -28,30 +28,35 @@ std::vector<OptionSpec> option_specs(const std::vector<OptionRecord<S>>& records
   return specs;
 }
 
+// The value of `key` from `config` into `settings.*member`, whichever member pointer the variant
+// `field` holds (a record's, or another table's bound to the same kinds of fields).
+template <class S, class Field>
+void read_option(const Config& config, const std::string& key, const Field& field, S& settings) {
+  std::visit(
+      [&](auto member) {
+        using T = std::remove_reference_t<decltype(settings.*member)>;
+        if constexpr (std::is_same_v<T, bool>)
+          settings.*member = config.boolean(key);
+        else if constexpr (std::is_integral_v<T>)
+          settings.*member = T(config.integer(key));
+        else if constexpr (std::is_same_v<T, double>)
+          settings.*member = config.number(key);
+        else if constexpr (std::is_same_v<T, std::string>)
+          settings.*member = config.string(key);
+        else if constexpr (std::is_same_v<T, std::vector<std::string>>)
+          settings.*member = config.strings(key);
+        else if constexpr (std::is_same_v<T, std::vector<double>>)
+          settings.*member = config.numbers(key);
+        else
+          settings.*member = config.integers(key);
+      },
+      field);
+}
+
 // Every record's value from `config` into its field of `settings`.
 template <class S>
 void read_options(const Config& config, const std::vector<OptionRecord<S>>& records, S& settings) {
-  for (const auto& r : records)
-    std::visit(
-        [&](auto member) {
-          using T = std::remove_reference_t<decltype(settings.*member)>;
-          const std::string& key = r.spec.name;
-          if constexpr (std::is_same_v<T, bool>)
-            settings.*member = config.boolean(key);
-          else if constexpr (std::is_integral_v<T>)
-            settings.*member = T(config.integer(key));
-          else if constexpr (std::is_same_v<T, double>)
-            settings.*member = config.number(key);
-          else if constexpr (std::is_same_v<T, std::string>)
-            settings.*member = config.string(key);
-          else if constexpr (std::is_same_v<T, std::vector<std::string>>)
-            settings.*member = config.strings(key);
-          else if constexpr (std::is_same_v<T, std::vector<double>>)
-            settings.*member = config.numbers(key);
-          else
-            settings.*member = config.integers(key);
-        },
-        r.field);
+  for (const auto& r : records) read_option(config, r.spec.name, r.field, settings);
 }
 
 }  // namespace mb
