@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The LP engine's answers must not depend on the instruction set (src/lp/fast/lanes.h). Builds
+# The LP engine's answers must not depend on the instruction set (src/lp/lanes/lanes.h). Builds
 # lp_bench for other -march targets and compares its four warm rows with NATIVE_BUILD's:
 #  - x86-64-v3 (AVX2 + FMA): the same answers hash, bit for bit, and the same pivots;
 #  - x86-64 (SSE2, no FMA): the compiler cannot contract a * b + c into one rounding as the other

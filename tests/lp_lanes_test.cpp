@@ -1,5 +1,5 @@
 // Every SIMD path of the fast simplex's lane kernels against its scalar reference, bit for bit
-// (src/lp/fast/lanes.h): random inputs with ties, NaNs, signed zeros and every tail length, for
+// (src/lp/lanes/lanes.h): random inputs with ties, NaNs, signed zeros and every tail length, for
 // each path this build has (AVX-512 builds test the AVX2 paths too). A path that drifted by one
 // rounding, or chose another index on a tie, would make answers depend on the instruction set.
 #include <gtest/gtest.h>
@@ -11,7 +11,7 @@
 #include <random>
 #include <vector>
 
-#include "lp/fast/lanes.h"
+#include "lp/lanes/lanes.h"
 
 namespace mb::lp::fast::lanes {
 namespace {

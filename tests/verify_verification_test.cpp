@@ -177,11 +177,11 @@ TEST(VerifyOnR, VsmMatchesTheLpWithCantellisSupport) {
 namespace mb {
 namespace {
 
-// The continuous ground truth (docs/reference.md §2; lp/continuous.h, lp/local_power.h): every
-// exact closed form is within 1e-6 of Problem 1 on its whole interval (R for Hamburger and VSM),
-// beyond the first-order effect of its moments' rounding, so verify passes at its default
-// tolerance; a closed form off by 1e-5 (too low, which no witness can catch) fails, and the report,
-// whose all_passed decides verify's exit status 5, says so.
+// The continuous ground truth (docs/reference.md §2; continuous/continuous.h,
+// continuous/local_power.h): every exact closed form is within 1e-6 of Problem 1 on its whole
+// interval (R for Hamburger and VSM), beyond the first-order effect of its moments' rounding, so
+// verify passes at its default tolerance; a closed form off by 1e-5 (too low, which no witness can
+// catch) fails, and the report, whose all_passed decides verify's exit status 5, says so.
 TEST(VerifyContinuous, ExactClosedFormsPassAndABrokenOneFails) {
   const TechniqueParams params = verify_params(TechniqueParams{});
   const auto instances = random_verify_instances(200, 4242);

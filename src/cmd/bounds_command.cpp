@@ -12,11 +12,54 @@
 #include "scene/dataset.h"
 #include "util/error.h"
 #include "util/number_text.h"
+#include "util/option_record.h"
 #include "util/output_dir.h"
 #include "util/run_metadata.h"
 #include "verify/bound_curves.h"
 
 namespace mb {
+
+namespace {
+
+// bounds' own options; the kernel's, the LP's and the dataset's come from their own tables.
+struct BoundsSettings {
+  std::vector<double> depths, weights, zf_range;
+  std::string view;
+  std::vector<int64_t> texel, sizes;
+  std::vector<std::string> bases;
+  int samples = 401;
+};
+
+const std::vector<OptionRecord<BoundsSettings>>& bounds_options() {
+  static const std::vector<OptionRecord<BoundsSettings>> records{
+      {{"bounds.depths", OptionType::NumberList, "[0.2, 0.35, 0.5, 0.8]",
+        "The kernel's depths (used when bounds.view is empty)."},
+       &BoundsSettings::depths},
+      {{"bounds.weights", OptionType::NumberList, "[0.3, 0.2, 0.35, 0.15]",
+        "Their weights (normalised; one per depth)."},
+       &BoundsSettings::weights},
+      {{"bounds.view", OptionType::String, "''",
+        "Take the kernel from this view of the dataset instead ('scene/view' or 'view')."},
+       &BoundsSettings::view},
+      {{"bounds.texel", OptionType::IntegerList, "[0, 0]", "With bounds.view: the texel x, y.", 0,
+        16384},
+       &BoundsSettings::texel},
+      {{"bounds.bases", OptionType::StringList, "[power4, trig4]",
+        "Bases, each a named set or 'f1; f2; f3; f4'; the first m functions give the m-series."},
+       &BoundsSettings::bases},
+      {{"bounds.sizes", OptionType::IntegerList, "[2, 3, 4]", "m values (numbers of functions).", 1,
+        7},
+       &BoundsSettings::sizes},
+      {{"bounds.samples", OptionType::Integer, "401", "z_f values, uniform on bounds.zf_range.", 2,
+        1e6},
+       &BoundsSettings::samples},
+      {{"bounds.zf_range", OptionType::NumberList, "[0, 1]", "z_f from, to."},
+       &BoundsSettings::zf_range},
+  };
+  return records;
+}
+
+}  // namespace
 
 std::vector<OptionSpec> bounds_specs() {
   auto specs = dataset_option_specs();
@@ -24,40 +67,24 @@ std::vector<OptionSpec> bounds_specs() {
     if (s.name.rfind("kernel.", 0) == 0 || s.name.rfind("lp.", 0) == 0) specs.push_back(s);
   for (auto& s : specs)
     if (s.name == "lp.grid") s.default_value = "1024";  // one kernel: a fine grid costs nothing
-  specs.push_back({"bounds.depths", OptionType::NumberList, "[0.2, 0.35, 0.5, 0.8]",
-                   "The kernel's depths (used when bounds.view is empty)."});
-  specs.push_back({"bounds.weights", OptionType::NumberList, "[0.3, 0.2, 0.35, 0.15]",
-                   "Their weights (normalised; one per depth)."});
-  specs.push_back(
-      {"bounds.view", OptionType::String, "''",
-       "Take the kernel from this view of the dataset instead ('scene/view' or 'view')."});
-  specs.push_back({"bounds.texel", OptionType::NumberList, "[0, 0]",
-                   "With bounds.view: the texel x, y.", 0, 16384});
-  specs.push_back(
-      {"bounds.bases", OptionType::StringList, "[power4, trig4]",
-       "Bases, each a named set or 'f1; f2; f3; f4'; the first m functions give the m-series."});
-  specs.push_back({"bounds.sizes", OptionType::NumberList, "[2, 3, 4]",
-                   "m values (numbers of functions).", 1, 7});
-  specs.push_back({"bounds.samples", OptionType::Integer, "401",
-                   "z_f values, uniform on bounds.zf_range.", 2, 1e6});
-  specs.push_back({"bounds.zf_range", OptionType::NumberList, "[0, 1]", "z_f from, to."});
+  for (auto& s : option_specs(bounds_options())) specs.push_back(s);
   return specs;
 }
 
 namespace {
 
 // The kernel distribution at a dataset texel: the same taps as PCF and the moment maps see.
-std::string texel_distribution(const Config& config, BoundCurveRequest& request,
-                               const GaussianKernel& kernel, bool quiet) {
-  const std::string wanted = config.string("bounds.view");
-  const auto texel = config.numbers("bounds.texel");
-  if (texel.size() != 2 || texel[0] != int(texel[0]) || texel[1] != int(texel[1]))
-    throw InputError("bounds.texel: expected two integers [x, y]");
-  DatasetDesc dataset = load_dataset(config.string("dataset"));
+std::string texel_distribution(const DatasetOptions& data, const BoundsSettings& b,
+                               BoundCurveRequest& request, const GaussianKernel& kernel,
+                               bool quiet) {
+  const std::string& wanted = b.view;
+  const auto& texel = b.texel;
+  if (texel.size() != 2) throw InputError("bounds.texel: expected two integers [x, y]");
+  DatasetDesc dataset = load_dataset(data.dataset);
   EvalSettings settings;
   settings.kernel = kernel;
   settings.threads = request.threads;
-  const auto views = prepare_views(dataset, int(config.integer("resolution")), settings, quiet);
+  const auto views = prepare_views(dataset, data.resolution, settings, quiet);
   std::string names, matches;
   const ViewData* found = nullptr;
   for (const auto& v : views) {
@@ -91,29 +118,26 @@ std::string texel_distribution(const Config& config, BoundCurveRequest& request,
 int run_bounds(const CommonOptions& options) {
   Config config = resolve_config(bounds_specs(), options);
   if (print_config_if_asked(config, options)) return 0;
+  const DatasetOptions data = dataset_options_from(config);
+  BoundsSettings b;
+  read_options(config, bounds_options(), b);
   BoundCurveRequest request;
-  request.threads = resolve_thread_count(int(config.integer("threads")));
+  request.threads = resolve_thread_count(data.threads);
   request.lp = lp_discretization_from(config);
-  request.backend = config.string("lp.backend");
-  request.bases = config.strings("bounds.bases");
-  request.sizes.clear();
-  for (double m : config.numbers("bounds.sizes")) {
-    if (m != int(m))
-      throw InputError("bounds.sizes: expected whole numbers, got " + format_number(m, "%g"));
-    request.sizes.push_back(int(m));
-  }
-  request.samples = int(config.integer("bounds.samples"));
-  const auto range = config.numbers("bounds.zf_range");
-  if (range.size() != 2) throw InputError("bounds.zf_range: expected [from, to]");
-  request.zf_lo = range[0];
-  request.zf_hi = range[1];
+  request.backend = lp_backend_from(config);
+  request.bases = b.bases;
+  request.sizes.assign(b.sizes.begin(), b.sizes.end());
+  request.samples = b.samples;
+  if (b.zf_range.size() != 2) throw InputError("bounds.zf_range: expected [from, to]");
+  request.zf_lo = b.zf_range[0];
+  request.zf_hi = b.zf_range[1];
   const GaussianKernel kernel = kernel_from(config);
   std::string source = "given depths and weights";
-  if (!config.string("bounds.view").empty()) {
-    source = texel_distribution(config, request, kernel, options.quiet);
+  if (!b.view.empty()) {
+    source = texel_distribution(data, b, request, kernel, options.quiet);
   } else {
-    request.depths = config.numbers("bounds.depths");
-    request.weights = config.numbers("bounds.weights");
+    request.depths = b.depths;
+    request.weights = b.weights;
   }
   StagedOutputDir out(options.out, options.force);
   const BoundCurves curves = compute_bound_curves(request);

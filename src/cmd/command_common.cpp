@@ -59,13 +59,7 @@ void apply_flags(const CLI::App& command, Config& config, const std::vector<Flag
 }
 
 std::vector<OptionSpec> dataset_option_specs() {
-  return {
-      {"dataset", OptionType::String, "default",
-       "Dataset: a YAML file, or the name of one in configs/datasets/ (tiny, default, paper)."},
-      {"resolution", OptionType::Integer, "0",
-       "Shadow-map resolution for every view; 0 keeps the dataset's.", 0, 16384},
-      {"threads", OptionType::Integer, "0", "OpenMP threads; 0 uses every core.", 0, 4096},
-  };
+  return option_specs(dataset_option_records());
 }
 
 std::string run_plot_script(const std::string& script, std::vector<std::string> arguments,

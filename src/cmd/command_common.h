@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "scene/dataset_options.h"
 #include "util/config.h"
 #include "util/number_text.h"
 #include "util/output_dir.h"

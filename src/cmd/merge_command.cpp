@@ -11,6 +11,7 @@
 #include "sweep/run_identity.h"
 #include "sweep/sweep_plan.h"
 #include "util/error.h"
+#include "util/option_record.h"
 #include "util/output_dir.h"
 
 namespace mb {
@@ -94,11 +95,21 @@ int run_merge(const MergeOptions& o) {
 
 }  // namespace
 
-std::vector<OptionSpec> merge_specs() {
-  return {
-      {"partial", OptionType::Boolean, "false",
-       "Merge even when some shards of the sweep are missing (the report names them)."},
+namespace {
+
+const std::vector<OptionRecord<MergeOptions>>& merge_options() {
+  static const std::vector<OptionRecord<MergeOptions>> records{
+      {{"partial", OptionType::Boolean, "false",
+        "Merge even when some shards of the sweep are missing (the report names them)."},
+       &MergeOptions::partial},
   };
+  return records;
+}
+
+}  // namespace
+
+std::vector<OptionSpec> merge_specs() {
+  return option_specs(merge_options());
 }
 
 void register_merge_command(CLI::App& app, std::function<int()>& action) {
@@ -117,7 +128,7 @@ void register_merge_command(CLI::App& app, std::function<int()>& action) {
       if (print_config_if_asked(config, *common)) return 0;
       MergeOptions o = *options;
       o.out = common->out, o.force = common->force;
-      o.partial = config.boolean("partial");
+      read_options(config, merge_options(), o);
       if (o.shards.empty()) throw InputError("merge: give the shards' output directories");
       if (o.out.empty()) throw InputError("merge: --out DIR is required");
       return run_merge(o);

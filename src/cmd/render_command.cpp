@@ -10,15 +10,32 @@
 #include "raster/render_view.h"
 #include "scene/dataset.h"
 #include "util/number_text.h"
+#include "util/option_record.h"
 #include "util/output_dir.h"
 #include "util/run_metadata.h"
 
 namespace mb {
 
+namespace {
+
+struct RenderSettings {
+  bool previews = true;
+};
+
+const std::vector<OptionRecord<RenderSettings>>& render_options() {
+  static const std::vector<OptionRecord<RenderSettings>> records{
+      {{"previews", OptionType::Boolean, "true",
+        "Write PNG previews (layer-0 depth, layer counts)."},
+       &RenderSettings::previews},
+  };
+  return records;
+}
+
+}  // namespace
+
 std::vector<OptionSpec> render_specs() {
   auto specs = dataset_option_specs();
-  specs.push_back({"previews", OptionType::Boolean, "true",
-                   "Write PNG previews (layer-0 depth, layer counts)."});
+  for (auto& s : option_specs(render_options())) specs.push_back(s);
   return specs;
 }
 
@@ -31,9 +48,12 @@ struct RenderOptions {
 int run_render(const RenderOptions& options) {
   Config config = resolve_config(render_specs(), options.common);
   if (print_config_if_asked(config, options.common)) return 0;
-  const int threads = resolve_thread_count(int(config.integer("threads")));
-  DatasetDesc dataset = load_dataset(config.string("dataset"));
-  int resolution = int(config.integer("resolution"));
+  const DatasetOptions data = dataset_options_from(config);
+  RenderSettings render;
+  read_options(config, render_options(), render);
+  const int threads = resolve_thread_count(data.threads);
+  DatasetDesc dataset = load_dataset(data.dataset);
+  int resolution = data.resolution;
   if (resolution == 0) resolution = dataset.resolution;
 
   // Parse and build every scene before writing anything: bad input leaves no output behind.
@@ -60,7 +80,7 @@ int run_render(const RenderOptions& options) {
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       std::string base = (out.staging() / scene.name / view.name).string();
       write_deep_exr(stack, base + ".exr");
-      if (config.boolean("previews")) {
+      if (render.previews) {
         write_depth_preview(stack, base + "_depth.png");
         write_layer_count_preview(stack, base + "_layers.png");
       }

@@ -8,6 +8,7 @@
 #include "cmd/commands.h"
 #include "report/sweep_report.h"
 #include "util/error.h"
+#include "util/option_record.h"
 #include "util/output_dir.h"
 
 namespace mb {
@@ -47,12 +48,22 @@ int run_report(const ReportOptions& o) {
 
 }  // namespace
 
-std::vector<OptionSpec> report_specs() {
-  return {
-      {"bins", OptionType::Integer, "60", "Histogram bins.", 1, 10000},
-      {"plot", OptionType::Boolean, "true",
-       "Draw histogram.png/pdf with scripts/plot_histogram.py (needs matplotlib)."},
+namespace {
+
+const std::vector<OptionRecord<ReportOptions>>& report_options() {
+  static const std::vector<OptionRecord<ReportOptions>> records{
+      {{"bins", OptionType::Integer, "60", "Histogram bins.", 1, 10000}, &ReportOptions::bins},
+      {{"plot", OptionType::Boolean, "true",
+        "Draw histogram.png/pdf with scripts/plot_histogram.py (needs matplotlib)."},
+       &ReportOptions::plot},
   };
+  return records;
+}
+
+}  // namespace
+
+std::vector<OptionSpec> report_specs() {
+  return option_specs(report_options());
 }
 
 void register_report_command(CLI::App& app, std::function<int()>& action) {
@@ -75,8 +86,7 @@ void register_report_command(CLI::App& app, std::function<int()>& action) {
       if (print_config_if_asked(config, *common)) return 0;
       ReportOptions o = *options;
       o.out = common->out, o.force = common->force, o.quiet = common->quiet;
-      o.bins = int(config.integer("bins"));
-      o.plot = config.boolean("plot");
+      read_options(config, report_options(), o);
       if (o.results.empty()) throw InputError("report: give one or more results databases");
       if (o.out.empty()) throw InputError("report: --out DIR is required");
       return run_report(o);

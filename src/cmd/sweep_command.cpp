@@ -42,7 +42,7 @@ int run_sweep_command(const SweepOptions& options) {
   job.quiet = options.common.quiet;
   job.arguments = process_arguments();
   SweepSettings settings =
-      sweep_settings_from(config, resolve_thread_count(int(config.integer("threads"))));
+      sweep_settings_from(config, resolve_thread_count(dataset_options_from(config).threads));
   settings.defaults_yaml = Config(sweep_specs()).to_yaml();
   run_sweep(settings, job);
   return 0;

@@ -136,6 +136,12 @@ lp::Discretization lp_discretization_from(const Config& config) {
   return d;
 }
 
+std::string lp_backend_from(const Config& config) {
+  ShadowOptions o;
+  read_options(config, lp_options(), o);
+  return o.lp_backend;
+}
+
 EvalSettings shadow_settings_from(const Config& config, int threads) {
   EvalSettings s;
   s.kernel = kernel_from(config);

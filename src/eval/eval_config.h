@@ -1,6 +1,7 @@
 #pragma once
 // The options that decide how shadows are evaluated (kernel, PCF bias, moment bias, technique
 // parameters, LP discretisation), declared once for `eval`, `sweep` and `verify`.
+#include <string>
 #include <vector>
 
 #include "eval/evaluation.h"
@@ -12,6 +13,7 @@ std::vector<OptionSpec> shadow_option_specs();
 // The kernel.* and lp.* keys alone (commands that need no technique parameters).
 GaussianKernel kernel_from(const Config& config);
 lp::Discretization lp_discretization_from(const Config& config);
+std::string lp_backend_from(const Config& config);
 // Validated settings from a resolved config (InputError naming the key on bad values).
 EvalSettings shadow_settings_from(const Config& config, int threads);
 // `techniques` with the `oracle` row added where the receiver-plane reference needs it

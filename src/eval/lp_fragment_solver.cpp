@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <memory>
 
+#include "continuous/discretized.h"
 #include "eval/warm_runs.h"
-#include "lp/discretized.h"
 #include "lp/solution.h"
 #include "techniques/lp_technique.h"
 #include "util/parallel_errors.h"
@@ -78,80 +78,118 @@ ViewColumns reached_columns(const ViewData& view, const std::vector<uint32_t>& l
   return out;
 }
 
+// One thread's state for its runs of fragments: the backend, the problem that move_zf updates
+// between the fragments of one texel, the kernel's taps, and the solution it reuses (no allocation
+// per LP).
+class RunSolver {
+ public:
+  RunSolver(const ViewData& view, const ViewColumns& reached, const lp::ProblemFactory& factory,
+            const Basis& basis, const EvalSettings& settings, const KernelAtomMap& atoms,
+            const std::optional<LpMomentBox>& box)
+      : view_(view),
+        reached_(reached),
+        factory_(factory),
+        basis_(basis),
+        settings_(settings),
+        atoms_(atoms),
+        box_(box),
+        backend_(lp::make_backend(settings.technique.lp_backend)),
+        taps_(settings.kernel.size * settings.kernel.size),
+        tap_depth_(taps_),
+        tap_weight_(taps_),
+        tap_column_(taps_),
+        tap_texel_(taps_) {}
+
+  // Fragment f, cold when it starts its run (so answers do not depend on the schedule);
+  // `same_kernel` when the previous fragment of the run sat on the same texel.
+  const lp::Solution& solve(size_t f, bool cold, bool same_kernel) {
+    const size_t t = view_.fragments.texel[f];
+    const int x = int(t % view_.map.width), y = int(t / view_.map.width);
+    const double zf = view_.fragments.ztest[f];  // z_f - delta_f (docs/reference.md §3)
+    if (!same_kernel) gather_taps(x, y);
+    const lp::Discretization& disc = settings_.technique.lp;
+    if (box_) {
+      // lp.moment_box: the box around the kernel's stored moments needs no problem columns.
+      s_.call = lp::CallStatus::Ok;
+      s_.status = solve_box_fragment(*box_, basis_, disc, tap_depth_, tap_weight_, zf, s_.G);
+      return s_;
+    }
+    if (!same_kernel || !factory_.move_zf(zf, problem_))
+      factory_.from_distribution(tap_depth_, tap_weight_, tap_column_, zf, problem_);
+    if (disc.continuous) {
+      // The whole interval (docs/reference.md §2): the exchange extends a copy, from scratch, so
+      // move_zf keeps working on `problem_` and answers do not depend on the schedule.
+      lp::Problem work = problem_;
+      s_ = lp::solve_discretized(factory_, work, *backend_, tap_depth_, tap_weight_).finite;
+    } else {
+      const lp::WarmStart at = warm_start_at(view_.fragments.layer[f], x, y, &atoms_);
+      backend_->solve_into(problem_, cold ? nullptr : &at, s_);
+    }
+    return s_;
+  }
+
+ private:
+  // The kernel's taps in kernel_distribution's order; the extra texel index picks the column (the
+  // far plane's, one past the map, for taps outside it).
+  void gather_taps(int x, int y) {
+    kernel_distribution(view_.map, settings_.kernel, x, y, tap_depth_, tap_weight_, tap_texel_);
+    const int k = factory_.rows();
+    for (int n = 0; n < taps_; ++n) {
+      tap_depth_[n] = reached_.depth[tap_texel_[n]];  // quantized in quantize mode
+      tap_column_[n] = &reached_.columns[tap_texel_[n] * k];
+    }
+  }
+
+  const ViewData& view_;
+  const ViewColumns& reached_;
+  const lp::ProblemFactory& factory_;
+  const Basis& basis_;
+  const EvalSettings& settings_;
+  const KernelAtomMap& atoms_;
+  const std::optional<LpMomentBox>& box_;
+  std::unique_ptr<lp::Backend> backend_;
+  lp::Problem problem_;
+  int taps_;
+  std::vector<double> tap_depth_, tap_weight_;
+  std::vector<const double*> tap_column_;
+  std::vector<size_t> tap_texel_;
+  lp::Solution s_;
+};
+
 }  // namespace
 
 LpViewAnswers solve_lp_view(const ViewData& view, const std::vector<uint32_t>& list,
                             const Basis& basis, const lp::ProblemFactory& factory,
                             const EvalSettings& settings, ProgressBar* progress,
                             const std::vector<size_t>* runs_given) {
-  const lp::Discretization& disc = settings.technique.lp;
-  const int k = factory.rows();
-  const GaussianKernel& kernel = settings.kernel;
-  const int taps = kernel.size * kernel.size;
   uint64_t solved = 0, infeasible = 0, unstable = 0;
-  const ShadowMap& map = view.map;
   // Warm-start runs (bands of kWarmRunRows texel rows; fragments are in texel order): each
   // run is solved in order by one thread, first from scratch, so the answers do not depend on
   // the schedule.
   const std::vector<size_t> run_begin =
-      runs_given ? *runs_given : warm_run_begins(list.size(), map.width, [&](size_t i) {
+      runs_given ? *runs_given : warm_run_begins(list.size(), view.map.width, [&](size_t i) {
         return view.fragments.texel[list[i]];
       });
   const ViewColumns reached = reached_columns(view, list, run_begin, basis, factory, settings);
-  const double* depth = reached.depth.get();
-  const double* columns = reached.columns.get();
-
   const size_t runs = run_begin.size() - 1;
-  const KernelAtomMap atoms(kernel.size);
+  const KernelAtomMap atoms(settings.kernel.size);
   // lp.moment_box: each fragment's box problem from scratch (GLPK; no warm start).
   const std::optional<LpMomentBox> box = lp_moment_box(settings.technique.lp_moment_box, basis);
   std::vector<double> g(view.fragments.size(), 0.0);  // skipped fragments: G = 0 exactly
   ParallelErrors errors;  // each run captured: a throw must not leave the worksharing loop
 #pragma omp parallel num_threads(settings.threads) reduction(+ : solved, infeasible, unstable)
   {
-    auto backend = lp::make_backend(settings.technique.lp_backend);
-    lp::Problem problem;
-    std::vector<double> tap_depth(taps), tap_weight(taps);
-    std::vector<const double*> tap_column(taps);
-    std::vector<size_t> tap_texel(taps);
-    lp::Solution s;  // reused: no allocation per LP
+    RunSolver solver(view, reached, factory, basis, settings, atoms, box);
 #pragma omp for schedule(dynamic, 1)
     for (size_t run = 0; run < runs; ++run)
       errors.capture([&] {
         for (size_t i = run_begin[run]; i < run_begin[run + 1]; ++i) {
-          const size_t f = list[i], t = view.fragments.texel[f];
-          const int x = int(t % map.width), y = int(t / map.width);
-          const double zf = view.fragments.ztest[f];  // z_f - delta_f (docs/reference.md §3)
+          const size_t f = list[i];
           // The fragments of one texel share its kernel (41 % of them follow one of their
           // texel's): then only z_f's column changes, and the problem is the same as built anew.
-          const bool same_kernel = i > run_begin[run] && view.fragments.texel[list[i - 1]] == t;
-          if (!same_kernel) {
-            // The kernel's taps in kernel_distribution's order; the extra texel index picks the
-            // column (the far plane's, one past the map, for taps outside it).
-            kernel_distribution(map, kernel, x, y, tap_depth, tap_weight, tap_texel);
-            for (int n = 0; n < taps; ++n) {
-              tap_depth[n] = depth[tap_texel[n]];  // quantized in quantize mode
-              tap_column[n] = &columns[tap_texel[n] * k];
-            }
-          }
-          if (box) {
-            // lp.moment_box: the box around the kernel's stored moments needs no problem columns.
-            s.call = lp::CallStatus::Ok;
-            s.status = solve_box_fragment(*box, basis, disc, tap_depth, tap_weight, zf, s.G);
-          } else {
-            if (!same_kernel || !factory.move_zf(zf, problem))
-              factory.from_distribution(tap_depth, tap_weight, tap_column, zf, problem);
-            if (disc.continuous) {
-              // The whole interval (docs/reference.md §2): the exchange extends a copy, from
-              // scratch, so move_zf keeps working on `problem` and answers do not depend on the
-              // schedule.
-              lp::Problem work = problem;
-              s = lp::solve_discretized(factory, work, *backend, tap_depth, tap_weight).finite;
-            } else {
-              const lp::WarmStart at = warm_start_at(view.fragments.layer[f], x, y, &atoms);
-              backend->solve_into(problem, i == run_begin[run] ? nullptr : &at, s);
-            }
-          }
+          const bool same_kernel =
+              i > run_begin[run] && view.fragments.texel[list[i - 1]] == view.fragments.texel[f];
+          const lp::Solution& s = solver.solve(f, i == run_begin[run], same_kernel);
           if (s.call == lp::CallStatus::Ok && s.status == lp::ProblemStatus::Optimal) {
             g[f] = std::clamp(s.G, 0.0, 1.0);
             ++solved;

@@ -229,6 +229,41 @@ Problem ProblemFactory::from_distribution(std::span<const double> depths,
   return p;
 }
 
+namespace {
+
+// The kernel's total weight in four independent sums (one sum is a chain of dependent adds).
+double weight_sum(std::span<const double> weights) {
+  double part[4] = {0, 0, 0, 0};
+  size_t i = 0;
+  for (; i + 4 <= weights.size(); i += 4)
+    for (int q = 0; q < 4; ++q) part[q] += weights[i + q];
+  for (; i < weights.size(); ++i) part[0] += weights[i];
+  return (part[0] + part[1]) + (part[2] + part[3]);
+}
+
+// Rows written `stride` apart, packed `count` apart: row r moves down from r * stride to r * count.
+void pack_rows(std::vector<double>& values, int rows, size_t stride, int count) {
+  for (int r = 1; r < rows; ++r)
+    std::copy(values.begin() + r * stride, values.begin() + r * stride + count,
+              values.begin() + r * count);
+  values.resize(size_t(rows) * count);
+}
+
+// The untransformed moments, for reports: T (lower triangular) inverted on the rhs.
+void untransformed_moments(const std::vector<double>& transform, int rows, const double* rhs,
+                           std::vector<double>& moments) {
+  moments.resize(rows - 1);
+  double raw[kMaxColumnRows];
+  for (int r = 0; r < rows; ++r) {
+    double s = rhs[r];
+    for (int c = 0; c < r; ++c) s -= transform[size_t(r) * rows + c] * raw[c];
+    raw[r] = s / transform[size_t(r) * rows + r];
+  }
+  for (int j = 1; j < rows; ++j) moments[j - 1] = raw[j];
+}
+
+}  // namespace
+
 void ProblemFactory::from_distribution(std::span<const double> depths,
                                        std::span<const double> weights,
                                        std::span<const double* const> depth_columns, double zf,
@@ -242,13 +277,7 @@ void ProblemFactory::from_distribution(std::span<const double> depths,
   p.atom_extra.assign(depths.size(), -1);
   p.extra_atom.clear();
   p.zf_extra = -1;
-  double part[4] = {0, 0, 0, 0};  // four independent sums: one is a chain of dependent adds
-  size_t i = 0;
-  for (; i + 4 <= weights.size(); i += 4)
-    for (int q = 0; q < 4; ++q) part[q] += weights[i + q];
-  for (; i < weights.size(); ++i) part[0] += weights[i];
-  const double total = (part[0] + part[1]) + (part[2] + part[3]);
-  const double scale = 1 / total;  // one division per fragment, not one per atom
+  const double scale = 1 / weight_sum(weights);  // one division per fragment, not one per atom
   // Distinct depths become extra columns (a kernel often sees one surface many times); the rhs is
   // the distribution's own moment vector, accumulated in atom order (in registers: through p.rhs
   // every atom waited for the previous atom's store). Columns go straight to their rows, `stride`
@@ -315,21 +344,10 @@ void ProblemFactory::from_distribution(std::span<const double> depths,
       put_column(*this, zf, values, stride, count++);
     }
   }
-  for (int r = 1; r < rows_; ++r)  // pack: row r moves down from r * stride to r * count
-    std::copy(values.begin() + r * stride, values.begin() + r * stride + count,
-              values.begin() + r * count);
-  values.resize(size_t(rows_) * count);
+  pack_rows(values, rows_, stride, count);
   p.extra.max_abs = largest_magnitude(values);
   p.rhs.assign(rhs, rhs + rows_);
-  // The untransformed moments, for reports: invert T on the rhs.
-  p.moments.resize(rows_ - 1);
-  double raw[kMaxColumnRows];
-  for (int r = 0; r < rows_; ++r) {
-    double s = rhs[r];
-    for (int c = 0; c < r; ++c) s -= transform_[size_t(r) * rows_ + c] * raw[c];
-    raw[r] = s / transform_[size_t(r) * rows_ + r];
-  }
-  for (int j = 1; j < rows_; ++j) p.moments[j - 1] = raw[j];
+  untransformed_moments(transform_, rows_, rhs, p.moments);
 }
 
 bool ProblemFactory::move_zf(double zf, Problem& p) const {

@@ -32,7 +32,7 @@ struct Discretization {
   // the grid on [lo, hi] (the feasible set is the same): verify's local coordinates put a kernel's
   // scale there, so that its columns keep their digits.
   double window_lo = 0, window_hi = 0;
-  // Problem 1 on all of [lo, hi] (lp/discretized.h): the grid then only seeds the exchange.
+  // Problem 1 on all of [lo, hi] (continuous/discretized.h): the grid then only seeds the exchange.
   bool continuous = false;
   bool operator==(const Discretization&) const = default;
 };

@@ -7,18 +7,10 @@
 #include <vector>
 
 #include "eval/error_stats.h"
+#include "eval/eval_run.h"
 #include "shadow/fragments.h"
 
 namespace mb {
-
-// One technique's errors over all views (scene "all") or one view.
-struct EvalRow {
-  std::string technique, scene, view;
-  ErrorStats stats;
-  double seconds = 0;
-  double darkening_bound = 0;  // Technique::darkening_bound
-  size_t fallbacks = 0;        // Technique::fallbacks
-};
 
 // What the report's header states about the run.
 struct EvalReportContext {

@@ -47,6 +47,9 @@ std::string verdict(const VerifySolverResult& r) {
 
 namespace {
 
+void write_pass_rule(std::ostream& md, const VerifyReportContext& ctx, bool continuous);
+void write_storage_rule(std::ostream& md, std::span<const VerifySolverResult> results);
+
 // What was run and how it is judged.
 void write_header(std::ostream& md, const VerifyReportContext& ctx,
                   std::span<const VerifySolverResult> results,
@@ -70,8 +73,15 @@ void write_header(std::ostream& md, const VerifyReportContext& ctx,
                "to "
                "G, judged from the bracket; `unproven`: a basis of expressions, whose certificate "
                "samples instead of proving.\n"
-             : "")
-     << "- Pass: on the " << (continuous ? "continuous ground truth" : "finest grid")
+             : "");
+  write_pass_rule(md, ctx, continuous);
+  write_storage_rule(md, results);
+}
+
+// When a closed form passes: within the tolerance plus its rounding allowance, never above a
+// witness.
+void write_pass_rule(std::ostream& md, const VerifyReportContext& ctx, bool continuous) {
+  md << "- Pass: on the " << (continuous ? "continuous ground truth" : "finest grid")
      << " |dG| <= " << num(ctx.tolerance)
      << " plus the instance's rounding allowance (the first-order change of G when the moments "
         "are rounded to double, from the certificate's coefficients: the closed form reads "
@@ -83,8 +93,12 @@ void write_header(std::ostream& md, const VerifyReportContext& ctx,
      << "), so the closed form evaluated on that distribution's own moments must not exceed its "
         "mass below z_f by more than "
      << round_trip(kAboveLpSlack)
-     << ". Undefined: the closed form gave no number (singular moments at alpha = 0).\n\n"
-     << (std::any_of(results.begin(), results.end(),
+     << ". Undefined: the closed form gave no number (singular moments at alpha = 0).\n\n";
+}
+
+// How the float32 and 16-bit rows are judged: against the box of their storage's rounding.
+void write_storage_rule(std::ostream& md, std::span<const VerifySolverResult> results) {
+  md << (std::any_of(results.begin(), results.end(),
                      [](const VerifySolverResult& r) { return r.box_judged; })
              ? "- Storage rows (float32, 16-bit): their continuous column is Problem 1 over every "
                "distribution on [0, 1] whose stored values lie within the format's rounding of "

@@ -5,9 +5,9 @@
 #include <cstdio>
 #include <memory>
 
-#include "lp/discretized.h"
+#include "continuous/discretized.h"
+#include "continuous/moment_box.h"
 #include "lp/kkt_checker.h"
-#include "lp/moment_box.h"
 #include "lp/problem.h"
 #include "lp/solution.h"
 #include "techniques/registry.h"

@@ -10,6 +10,7 @@
 
 #include "eval/eval_config.h"
 #include "lp/solution.h"
+#include "scene/dataset_options.h"
 #include "sweep/candidate_evaluation.h"
 #include "sweep/results_store.h"
 #include "sweep/run_identity.h"
@@ -96,8 +97,9 @@ std::vector<OptionSpec> sweep_option_specs() {
 SweepSettings sweep_settings_from(const Config& config, int threads) {
   SweepSettings s;
   s.eval = shadow_settings_from(config, threads);
-  s.dataset = config.string("dataset");
-  s.resolution = int(config.integer("resolution"));
+  const DatasetOptions dataset = dataset_options_from(config);
+  s.dataset = dataset.dataset;
+  s.resolution = dataset.resolution;
   read_options(config, candidate_options(), s);
   read_options(config, screen_options(), s.screen);
   s.references = with_oracle_row(s.references, s.eval.bias);

@@ -1,7 +1,7 @@
 #include "techniques/lp_technique.h"
 
-#include "lp/discretized.h"
-#include "lp/moment_box.h"
+#include "continuous/discretized.h"
+#include "continuous/moment_box.h"
 #include "lp/solution.h"
 #include "util/error.h"
 

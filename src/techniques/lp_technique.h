@@ -30,8 +30,8 @@ struct LpMomentBox {
 // "none" -> no box; "double", "float32", "unorm16" (theta_4 or theta_2: power4 and power2 only).
 std::optional<LpMomentBox> lp_moment_box(const std::string& setting, const Basis& basis);
 // G of the box problem around the kernel's stored moments, on the grid ∪ the kernel's depths or
-// (disc.continuous) on all of [lo, hi] by the exchange method (lp/moment_box.h). The status says
-// whether G is an answer.
+// (disc.continuous) on all of [lo, hi] by the exchange method (continuous/moment_box.h). The status
+// says whether G is an answer.
 lp::ProblemStatus solve_box_fragment(const LpMomentBox& box, const Basis& basis,
                                      const lp::Discretization& disc, std::span<const double> depths,
                                      std::span<const double> weights, double zf, double& G);

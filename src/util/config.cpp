@@ -90,12 +90,42 @@ std::string Config::canonical(const std::string& name) const {
                    (hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
 }
 
+namespace {
+
+[[noreturn]] void throw_unexpected(const std::string& origin, const std::string& name,
+                                   const YAML::Node& node, const std::string& why) {
+  std::string value = node.IsScalar() ? node.Scalar() : node.IsSequence() ? "a list" : "a map";
+  throw InputError(origin + ": key '" + name + "': expected " + why + ", got '" + value + "'");
+}
+
+// The items of a list option: a YAML list of scalars, or one comma-separated scalar as --set
+// gives it ("techniques=vsm,esm", "bounds.depths=0.2,0.5"); empty or null is the empty list.
+std::vector<std::string> option_list_items(const YAML::Node& node, const OptionSpec& s,
+                                           const std::string& origin) {
+  std::vector<std::string> items;
+  if (node.IsScalar() && !node.Scalar().empty()) {
+    std::stringstream in(node.Scalar());
+    for (std::string item; std::getline(in, item, ',');) items.push_back(item);
+  } else if (node.IsSequence()) {
+    for (const auto& item : node) {
+      if (!item.IsScalar())
+        throw InputError(origin + ": key '" + s.name + "': expected " + type_name(s.type) +
+                         ", but item " + std::to_string(items.size() + 1) + " is a YAML " +
+                         (item.IsMap() ? "map" : "list") +
+                         " (quote items that hold ': ' or brackets, e.g. \"lp:z;z^2\")");
+      items.push_back(item.Scalar());
+    }
+  } else if (!(node.IsNull() || (node.IsScalar() && node.Scalar().empty()))) {
+    throw_unexpected(origin, s.name, node, type_name(s.type));
+  }
+  return items;
+}
+
+}  // namespace
+
 void Config::assign(const std::string& name, const YAML::Node& node, const std::string& origin) {
   const OptionSpec& s = spec(name);
-  auto bad = [&](const std::string& why) {
-    std::string value = node.IsScalar() ? node.Scalar() : node.IsSequence() ? "a list" : "a map";
-    throw InputError(origin + ": key '" + name + "': expected " + why + ", got '" + value + "'");
-  };
+  auto bad = [&](const std::string& why) { throw_unexpected(origin, name, node, why); };
   auto check_choice = [&](const std::string& v) {
     if (s.choices.empty()) return;
     for (const auto& c : s.choices)
@@ -106,27 +136,7 @@ void Config::assign(const std::string& name, const YAML::Node& node, const std::
     throw InputError(origin + ": key '" + name + "': unknown value '" + v + "'" +
                      (hint.empty() ? "" : " (did you mean '" + hint + "'?)") + "; valid: " + all);
   };
-  // The items of a list option: a YAML list of scalars, or one comma-separated scalar as --set
-  // gives it ("techniques=vsm,esm", "bounds.depths=0.2,0.5"); empty or null is the empty list.
-  auto list_items = [&] {
-    std::vector<std::string> items;
-    if (node.IsScalar() && !node.Scalar().empty()) {
-      std::stringstream in(node.Scalar());
-      for (std::string item; std::getline(in, item, ',');) items.push_back(item);
-    } else if (node.IsSequence()) {
-      for (const auto& item : node) {
-        if (!item.IsScalar())
-          throw InputError(origin + ": key '" + name + "': expected " + type_name(s.type) +
-                           ", but item " + std::to_string(items.size() + 1) + " is a YAML " +
-                           (item.IsMap() ? "map" : "list") +
-                           " (quote items that hold ': ' or brackets, e.g. \"lp:z;z^2\")");
-        items.push_back(item.Scalar());
-      }
-    } else if (!(node.IsNull() || (node.IsScalar() && node.Scalar().empty()))) {
-      bad(type_name(s.type));
-    }
-    return items;
-  };
+  auto list_items = [&] { return option_list_items(node, s, origin); };
   YAML::Node stored;
   switch (s.type) {
     case OptionType::Integer: {

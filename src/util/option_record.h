@@ -28,6 +28,13 @@ std::vector<OptionSpec> option_specs(const std::vector<OptionRecord<S>>& records
   return specs;
 }
 
+// GCC 12 instantiates every alternative of `field` against S and, for a settings struct smaller
+// than a std::string (one bool), warns that the alternatives never taken would read out of its
+// bounds (-Warray-bounds). Only the alternative the variant holds runs.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Warray-bounds"
+#endif
 // The value of `key` from `config` into `settings.*member`, whichever member pointer the variant
 // `field` holds (a record's, or another table's bound to the same kinds of fields).
 template <class S, class Field>
@@ -52,6 +59,9 @@ void read_option(const Config& config, const std::string& key, const Field& fiel
       },
       field);
 }
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
 
 // Every record's value from `config` into its field of `settings`.
 template <class S>

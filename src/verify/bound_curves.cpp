@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "lp/discretized.h"
+#include "continuous/discretized.h"
 #include "lp/solution.h"
 #include "techniques/lp_technique.h"
 #include "util/error.h"

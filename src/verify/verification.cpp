@@ -6,10 +6,10 @@
 #include <cmath>
 #include <limits>
 
-#include "lp/continuous.h"
-#include "lp/discretized.h"
-#include "lp/local_power.h"
-#include "lp/moment_box.h"
+#include "continuous/continuous.h"
+#include "continuous/discretized.h"
+#include "continuous/local_power.h"
+#include "continuous/moment_box.h"
 #include "lp/problem.h"
 #include "lp/solution.h"
 #include "scene/procedural.h"

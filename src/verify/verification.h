@@ -129,8 +129,9 @@ struct VerifySolverResult {
 using TechniqueMaker = std::function<std::unique_ptr<Technique>()>;
 
 // Compares `make()`'s technique with the LP on every instance and grid (grids ascending), then,
-// when `continuous`, with Problem 1 on the continuous interval (lp/continuous.h; power bases in
-// local coordinates, lp/local_power.h), which then decides. Deterministic for any thread count.
+// when `continuous`, with Problem 1 on the continuous interval (continuous/continuous.h; power
+// bases in local coordinates, continuous/local_power.h), which then decides. Deterministic for any
+// thread count.
 VerifySolverResult verify_solver(const VerifyTarget& target, const TechniqueMaker& make,
                                  std::span<const VerifyInstance> instances,
                                  const std::vector<int>& grids, bool continuous, double tolerance,

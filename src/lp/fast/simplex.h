@@ -14,9 +14,9 @@
 #include "lp/double_double.h"
 #include "lp/fast/dense_lu.h"
 #include "lp/fast/grid_bound.h"
-#include "lp/fast/lanes.h"
+#include "lp/lanes/lanes.h"
 #include "lp/fast/settings.h"
-#include "lp/fast/warm_offers.h"
+#include "lp/warm/warm_offers.h"
 #include "lp/solution.h"
 
 namespace mb::lp::fast {

@@ -1,5 +1,5 @@
-// Problem 1 with moments known to a tolerance (src/lp/moment_box.h, docs/reference.md §2): a
-// boundary moment vector pushed just outside the moment cone by rounding is answered within its
+// Problem 1 with moments known to a tolerance (src/continuous/moment_box.h, docs/reference.md §2):
+// a boundary moment vector pushed just outside the moment cone by rounding is answered within its
 // box, a vector far outside is infeasible with its distance from the cone, and on many boundary
 // vectors of few atoms the box's G never exceeds the atoms' own mass in front of z_f (the atoms are
 // one of the distributions the box admits).
@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "basis/basis.h"
-#include "lp/local_power.h"
-#include "lp/moment_box.h"
+#include "continuous/local_power.h"
+#include "continuous/moment_box.h"
 #include "lp/problem.h"
 #include "lp/solution.h"
 #include "moments/storage.h"

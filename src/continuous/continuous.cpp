@@ -1,4 +1,4 @@
-#include "lp/continuous.h"
+#include "continuous/continuous.h"
 
 #include <algorithm>
 #include <cmath>
@@ -247,6 +247,46 @@ long double tail_bound(const DualFunction& phi, long double end, int dir, long d
   return d[0] + rounding - step;
 }
 
+// E_S[phi] over the distributions S with the problem's moments (from the atoms when known, which
+// keeps the digits a narrow kernel's moments lose), and E_S of the terms' magnitudes, which sizes
+// the rounding allowance.
+struct DualMean {
+  long double value = 0, magnitude = 0;
+};
+
+DualMean dual_mean(const DualFunction& phi, const std::vector<long double>& c,
+                   const Problem& problem, std::span<const double> depths,
+                   std::span<const double> weights) {
+  DualMean mean;
+  if (!depths.empty()) {
+    long double total = 0;
+    for (size_t i = 0; i < depths.size(); ++i) {
+      long double m;
+      mean.value += weights[i] * phi.value(depths[i], &m);
+      mean.magnitude += weights[i] * m;
+      total += weights[i];
+    }
+    mean.value /= total, mean.magnitude /= total;
+    return mean;
+  }
+  mean.value = c[0], mean.magnitude = std::abs(c[0]);
+  for (size_t j = 0; j < problem.moments.size(); ++j) {
+    mean.value += c[j + 1] * problem.moments[j];
+    mean.magnitude += std::abs(c[j + 1] * problem.moments[j]);
+  }
+  return mean;
+}
+
+// E[z^n], n the even degree whose tail term the certificate's delta multiplies.
+long double power_mean(const Problem& problem, std::span<const double> depths,
+                       std::span<const double> weights, int degree) {
+  if (depths.empty()) return problem.moments[degree - 1];
+  long double mean = 0, total = 0;
+  for (size_t i = 0; i < depths.size(); ++i)
+    mean += weights[i] * std::pow((long double)depths[i], degree), total += weights[i];
+  return mean / total;
+}
+
 }  // namespace
 
 long double DualCertificate::rounding() {
@@ -322,38 +362,11 @@ ContinuousSolution ContinuousSolver::solve(Problem& problem, Backend& backend,
     out.proven = found.proven;
     out.violation = double(found.violation);
     // Weak duality: for every distribution S on I with these moments,
-    // P_S(z < z_f) >= E_S[phi] - violation. E_S[phi] from the atoms when known.
-    long double dual = 0, magnitude = 0;
-    if (!depths.empty()) {
-      long double total = 0;
-      for (size_t i = 0; i < depths.size(); ++i) {
-        long double m;
-        dual += weights[i] * phi.value(depths[i], &m);
-        magnitude += weights[i] * m;
-        total += weights[i];
-      }
-      dual /= total, magnitude /= total;
-    } else {
-      const std::vector<long double> c = factory_.raw_coefficients(out.finite.duals);
-      dual = c[0], magnitude = std::abs(c[0]);
-      for (size_t j = 0; j < problem.moments.size(); ++j) {
-        dual += c[j + 1] * problem.moments[j];
-        magnitude += std::abs(c[j + 1] * problem.moments[j]);
-      }
-    }
-    if (delta > 0) {
-      long double power_mean = 0;  // E[z^n]
-      if (!depths.empty()) {
-        long double total = 0;
-        for (size_t i = 0; i < depths.size(); ++i)
-          power_mean += weights[i] * std::pow((long double)depths[i], domain_.even_degree),
-              total += weights[i];
-        power_mean /= total;
-      } else {
-        power_mean = problem.moments[domain_.even_degree - 1];
-      }
-      dual -= delta * (1 + power_mean);
-    }
+    // P_S(z < z_f) >= E_S[phi] - violation.
+    const DualMean mean = dual_mean(phi, out.coefficients, problem, depths, weights);
+    long double dual = mean.value;
+    const long double magnitude = mean.magnitude;
+    if (delta > 0) dual -= delta * (1 + power_mean(problem, depths, weights, domain_.even_degree));
     out.lower = double(dual - out.violation - kRounding * magnitude);
     out.upper = out.finite.G;
     if (found.violators.empty() || out.width() <= settings_.target_width ||

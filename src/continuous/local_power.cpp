@@ -1,4 +1,4 @@
-#include "lp/local_power.h"
+#include "continuous/local_power.h"
 
 #include <algorithm>
 #include <cmath>

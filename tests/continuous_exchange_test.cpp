@@ -1,5 +1,5 @@
-// Problem 1 on the continuous interval (src/lp/continuous.h, docs/reference.md §2): the exchange
-// method against a 50-digit reference of the Hamburger and Hausdorff closed forms
+// Problem 1 on the continuous interval (src/continuous/continuous.h, docs/reference.md §2): the
+// exchange method against a 50-digit reference of the Hamburger and Hausdorff closed forms
 // (docs/reference.md §4) on kernels narrower than a grid cell and on boundary moment vectors; its
 // bracket contains the reference; refining the grid never raises G, and the grid can sit far above
 // the continuous G.
@@ -13,8 +13,8 @@
 
 #include "basis/basis.h"
 #include "basis/basis_derivatives.h"
-#include "lp/continuous.h"
-#include "lp/local_power.h"
+#include "continuous/continuous.h"
+#include "continuous/local_power.h"
 #include "lp/problem.h"
 #include "lp/solution.h"
 
@@ -207,7 +207,7 @@ TEST(Continuous, TheGridSitsAboveAndRefiningNeverRaisesG) {
     ASSERT_EQ(s.status, ProblemStatus::Optimal);
     // In depth coordinates the grid LP's columns of a kernel this narrow keep only ~8 digits
     // that tell its atoms apart, so equal optima may differ by ~1e-7 (the local coordinates of
-    // lp/local_power.h exist for this): refining may not raise G by more.
+    // continuous/local_power.h exist for this): refining may not raise G by more.
     EXPECT_LE(s.G, previous + kGridDigits) << "grid " << grid << " by " << s.G - previous;
     previous = s.G;
     grid_g.push_back(s.G);

@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <limits>
 
-#include "lp/fast/lanes.h"
+#include "lp/lanes/lanes.h"
 #include "lp/solution.h"
 
 namespace mb::lp::fast {

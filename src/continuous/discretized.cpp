@@ -1,9 +1,9 @@
-#include "lp/discretized.h"
+#include "continuous/discretized.h"
 
 #include <limits>
 #include <string>
 
-#include "lp/local_power.h"
+#include "continuous/local_power.h"
 
 namespace mb::lp {
 

@@ -1,12 +1,13 @@
 #pragma once
 // Problem 1 as the discretisation asks (docs/reference.md §2): the finite LP on the grid ∪ the
 // fragment's points, or (Discretization::continuous) the whole interval by the exchange method
-// with its certificate (lp/continuous.h). A power basis z, .., z^n with a known distribution is
-// solved in that distribution's local coordinates (lp/local_power.h), where narrow kernels keep
-// their digits. The one entry point of eval's lp: techniques, the sweep, bounds and solve.
+// with its certificate (continuous/continuous.h). A power basis z, .., z^n with a known
+// distribution is solved in that distribution's local coordinates (continuous/local_power.h), where
+// narrow kernels keep their digits. The one entry point of eval's lp: techniques, the sweep, bounds
+// and solve.
 #include <span>
 
-#include "lp/continuous.h"
+#include "continuous/continuous.h"
 
 namespace mb::lp {
 

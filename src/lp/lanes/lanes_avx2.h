@@ -3,7 +3,7 @@
 // vector and a scalar tail. Each returns exactly what its scalar reference (lanes_scalar.h)
 // returns, bit for bit. Kernels without an AVX2 path use the scalar reference in such builds.
 #if defined(__AVX2__) && defined(__FMA__)
-#include "lp/fast/lanes_scalar.h"
+#include "lp/lanes/lanes_scalar.h"
 #include "util/simd_intrinsics.h"
 
 namespace mb::lp::fast::lanes::avx2 {

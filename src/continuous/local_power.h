@@ -4,12 +4,12 @@
 // distributions and G are the same (docs/reference.md §2); but in u a kernel spanning 0.01 in depth
 // has columns that differ in their leading digits, where in z (and in double) they differ only in
 // the eighth. Rows are orthonormalised over u in [-4, 4] (the distribution's own scale), and the
-// continuous method (lp/continuous.h) solves on the whole interval. What verify's ground truth for
-// the Hamburger and Hausdorff closed forms is built on.
+// continuous method (continuous/continuous.h) solves on the whole interval. What verify's ground
+// truth for the Hamburger and Hausdorff closed forms is built on.
 #include <span>
 #include <vector>
 
-#include "lp/continuous.h"
+#include "continuous/continuous.h"
 
 namespace mb::lp {
 

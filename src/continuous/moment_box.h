@@ -7,12 +7,12 @@
 // the exact LP is infeasible; the box problem is feasible whenever the true moments are within eps,
 // and its G is a lower bound for every distribution that could have produced the stored values.
 // Solved by GLPK on the raw rows, each scaled by its largest value over the points (our simplex has
-// no bounded rows); on the continuous interval by the exchange method of lp/continuous.h, whose
-// certificate serves unchanged: the box LP's dual is again a function phi <= step on I.
+// no bounded rows); on the continuous interval by the exchange method of continuous/continuous.h,
+// whose certificate serves unchanged: the box LP's dual is again a function phi <= step on I.
 #include <span>
 #include <vector>
 
-#include "lp/continuous.h"
+#include "continuous/continuous.h"
 #include "lp/problem.h"
 #include "lp/solution.h"
 #include "util/eigen.h"

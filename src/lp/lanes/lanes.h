@@ -5,9 +5,9 @@
 // the build's instruction set has; tests/lp_lanes_test.cpp compares every path the build has with
 // the reference, so the answers do not depend on the instruction set (docs/reference.md §2 promises
 // G to 1e-9; the project promises more: the same bits on every thread count and path).
-#include "lp/fast/lanes_avx2.h"
-#include "lp/fast/lanes_avx512.h"
-#include "lp/fast/lanes_scalar.h"
+#include "lp/lanes/lanes_avx2.h"
+#include "lp/lanes/lanes_avx512.h"
+#include "lp/lanes/lanes_scalar.h"
 
 namespace mb::lp::fast::lanes {
 

@@ -1,4 +1,4 @@
-#include "lp/moment_box.h"
+#include "continuous/moment_box.h"
 
 #include <glpk.h>
 

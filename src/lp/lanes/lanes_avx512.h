@@ -9,7 +9,7 @@
 #include <limits>
 
 #include "lp/double_double.h"
-#include "lp/fast/lanes_scalar.h"
+#include "lp/lanes/lanes_scalar.h"
 #include "util/simd_intrinsics.h"
 
 namespace mb::lp::fast::lanes::avx512 {

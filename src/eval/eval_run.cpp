@@ -1,0 +1,74 @@
+#include "eval/eval_run.h"
+
+#include <chrono>
+
+namespace mb {
+
+const std::vector<OptionRecord<EvalRunOptions>>& eval_run_options() {
+  static const std::vector<OptionRecord<EvalRunOptions>> records{
+      {{"techniques", OptionType::StringList,
+        "[pcf, vsm, esm, hamburger4, hamburger4_float, hamburger4_16bit, hausdorff4, hamburger6, "
+        "tmsm, tmsm_float]",
+        "Techniques to evaluate: closed forms, pcf, or lp:<basis> (e.g. lp:power4, lp:trig4)."},
+       &EvalRunOptions::techniques},
+      {{"images", OptionType::Boolean, "true",
+        "Write shadow and error images per view and technique."},
+       &EvalRunOptions::images},
+      {{"camera_images", OptionType::Boolean, "false",
+        "For every camera a scene names and each of its light views: the camera's image with each "
+        "technique's shadow, its difference from PCF, and one contact sheet (cameras/)."},
+       &EvalRunOptions::camera_images},
+      {{"error_scale", OptionType::Number, "0.5", "|PCF - G| at the top of the error colour bar.",
+        1e-6, 1},
+       &EvalRunOptions::error_scale},
+  };
+  return records;
+}
+
+namespace {
+
+size_t receiver_count(const std::vector<ViewData>& views) {
+  size_t receivers = 0;
+  for (const auto& v : views) receivers += v.fragments.size();
+  return receivers;
+}
+
+}  // namespace
+
+EvalRows evaluate_techniques(const std::vector<ViewData>& views,
+                             const std::vector<std::string>& techniques,
+                             const EvalSettings& settings, bool quiet,
+                             const ViewShadowSink& on_view) {
+  using Clock = std::chrono::steady_clock;
+  const size_t receivers = receiver_count(views);
+  EvalRows rows;
+  for (const auto& name : techniques) {
+    ProgressBar bar(name, receivers, quiet);
+    EvalRow total;
+    total.technique = name;
+    total.scene = "all";
+    total.darkening_bound = make_technique(name, settings.technique)->darkening_bound();
+    for (const auto& view : views) {
+      const auto start = Clock::now();
+      TechniqueResult result = evaluate_technique(view, name, settings, &bar);
+      EvalRow row = total;
+      row.scene = view.scene;
+      row.view = view.view;
+      row.stats = ErrorStats();
+      row.stats.add_all(view.fragments.pcf, result.shadow);
+      row.stats.failures = result.failures;
+      row.fallbacks = result.fallbacks;
+      row.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+      total.stats.merge(row.stats);
+      total.fallbacks += row.fallbacks;
+      total.seconds += row.seconds;
+      if (on_view) on_view(name, view, result.shadow);
+      rows.per_view.push_back(std::move(row));
+    }
+    bar.finish();
+    rows.overall.push_back(std::move(total));
+  }
+  return rows;
+}
+
+}  // namespace mb

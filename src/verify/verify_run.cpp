@@ -1,0 +1,69 @@
+#include "verify/verify_run.h"
+
+#include "util/error.h"
+#include "util/progress.h"
+
+namespace mb {
+
+namespace {
+
+std::vector<int> ascending_grids(const std::vector<int64_t>& sizes) {
+  std::vector<int> grids;
+  for (const int64_t n : sizes) {
+    if (!grids.empty() && n <= grids.back())
+      throw InputError("verify.grids: expected ascending grid sizes, got " + std::to_string(n) +
+                       " after " + std::to_string(grids.back()));
+    grids.push_back(int(n));
+  }
+  if (grids.empty()) throw InputError("verify.grids: expected at least one grid size");
+  return grids;
+}
+
+}  // namespace
+
+VerifyPlan make_verify_plan(const VerifySettings& v, const TechniqueParams& technique) {
+  VerifyPlan plan;
+  plan.settings = v;
+  plan.params = verify_params(technique);
+  plan.params.esm_c = v.esm_c;
+  plan.params.evsm_c_positive = v.evsm_c;
+  plan.params.csm_terms = v.csm_terms;
+  plan.targets = verify_targets(v.techniques, plan.params);
+  for (auto& t : plan.targets) {
+    t.storage_box = t.storage_box && v.moment_box != "off";
+    t.storage_strict = v.moment_box == "strict";
+  }
+  plan.grids = ascending_grids(v.grids);
+  plan.continuous = v.discretization == "continuous";
+  // A pass over no instances would prove nothing.
+  if (v.random == 0 && v.fragments == 0)
+    throw InputError(
+        "verify.random, verify.fragments: both 0, nothing to verify; give at least one instance");
+  return plan;
+}
+
+VerifyRun run_verification(const VerifyPlan& plan, const DatasetOptions& data,
+                           const EvalSettings& settings, bool quiet) {
+  const VerifySettings& v = plan.settings;
+  VerifyRun run;
+  run.instances = random_verify_instances(v.random, v.seed);
+  run.random_count = run.instances.size();
+  if (v.fragments > 0) {
+    DatasetDesc dataset = load_dataset(data.dataset);
+    run.dataset_name = dataset.name;
+    auto views = prepare_views(dataset, data.resolution, settings, quiet);
+    for (auto& inst : dataset_verify_instances(views, settings, v.fragments, v.seed))
+      run.instances.push_back(std::move(inst));
+  }
+  for (const auto& target : plan.targets) {
+    ProgressBar bar("verify " + target.technique, 1, quiet);
+    const auto make = [&] { return make_technique(target.technique, plan.params); };
+    run.results.push_back(verify_solver(target, make, run.instances, plan.grids, plan.continuous,
+                                        v.tolerance, v.worst, settings.threads));
+    bar.advance(1);
+    bar.finish();
+  }
+  return run;
+}
+
+}  // namespace mb

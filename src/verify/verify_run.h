@@ -1,0 +1,36 @@
+#pragma once
+// What `verify` runs (docs/reference.md §6): its settings checked into a plan before any output
+// exists, then every target against the LP on the seeded random instances and the dataset's
+// kernels. The command writes the report; this is reachable from tests.
+#include <string>
+#include <vector>
+
+#include "eval/evaluation.h"
+#include "scene/dataset_options.h"
+#include "verify/verification.h"
+#include "verify/verify_options.h"
+
+namespace mb {
+
+struct VerifyPlan {
+  VerifySettings settings;
+  TechniqueParams params;  // the shadow settings' technique parameters, as verify runs them
+  std::vector<VerifyTarget> targets;
+  std::vector<int> grids;  // ascending
+  bool continuous = true;  // the continuous interval decides, not the finest grid
+};
+
+// InputError naming the key on unknown techniques, unordered grids or nothing to verify.
+VerifyPlan make_verify_plan(const VerifySettings& settings, const TechniqueParams& technique);
+
+struct VerifyRun {
+  std::vector<VerifyInstance> instances;  // the random ones first
+  size_t random_count = 0;
+  std::string dataset_name = "none";        // when no dataset kernels were sampled
+  std::vector<VerifySolverResult> results;  // one per target, in order
+};
+
+VerifyRun run_verification(const VerifyPlan& plan, const DatasetOptions& data,
+                           const EvalSettings& settings, bool quiet);
+
+}  // namespace mb
