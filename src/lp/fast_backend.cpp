@@ -3,7 +3,6 @@
 #include <tuple>
 
 #include "lp/fallback_backend.h"
-#include "lp/warm/bracket_shift.h"
 #include "lp/fast/certificates.h"
 #include "lp/fast/driver.h"
 #include "lp/fast/factorisation.h"
@@ -12,9 +11,10 @@
 #include "lp/fast/refinement.h"
 #include "lp/fast/simplex.h"
 #include "lp/fast/starts.h"
-#include "lp/warm/warm_start.h"
 #include "lp/glpk_backend.h"
 #include "lp/row_count.h"
+#include "lp/warm/bracket_shift.h"
+#include "lp/warm/warm_start.h"
 #include "util/error.h"
 
 namespace mb::lp {

@@ -14,10 +14,10 @@
 #include "lp/double_double.h"
 #include "lp/fast/dense_lu.h"
 #include "lp/fast/grid_bound.h"
-#include "lp/lanes/lanes.h"
 #include "lp/fast/settings.h"
-#include "lp/warm/warm_offers.h"
+#include "lp/lanes/lanes.h"
 #include "lp/solution.h"
+#include "lp/warm/warm_offers.h"
 
 namespace mb::lp::fast {
 
