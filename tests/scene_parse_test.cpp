@@ -24,7 +24,7 @@ std::string parse_error(const std::string& yaml) {
 }
 
 TEST(SceneParse, BuiltInDatasetsParse) {
-  for (const char* name : {"tiny", "default", "paper"}) {
+  for (const char* name : {"tiny", "default", "paper", "translucent"}) {
     DatasetDesc dataset = load_dataset(name);
     EXPECT_FALSE(dataset.scene_files.empty());
     for (const auto& file : dataset.scene_files) EXPECT_NO_THROW(parse_scene(file)) << file;

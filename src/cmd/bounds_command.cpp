@@ -106,10 +106,7 @@ std::string texel_distribution(const DatasetOptions& data, const BoundsSettings&
     throw InputError("bounds.texel: (" + std::to_string(x) + ", " + std::to_string(y) +
                      ") lies outside view " + v.scene + "/" + v.view + " (" +
                      std::to_string(v.map.width) + "x" + std::to_string(v.map.height) + ")");
-  const size_t taps = size_t(kernel.size) * kernel.size;
-  request.depths.assign(taps, 0);
-  request.weights.assign(taps, 0);
-  kernel_distribution(v.map, kernel, x, y, request.depths, request.weights);
+  kernel_atoms(v.map, kernel, x, y, request.depths, request.weights);
   return "dataset " + dataset.name + ", view " + v.scene + "/" + v.view + ", texel (" +
          std::to_string(x) + ", " + std::to_string(y) + "), " + std::to_string(kernel.size) + "x" +
          std::to_string(kernel.size) + " Gaussian kernel";

@@ -96,6 +96,7 @@ TechniqueResult evaluate_technique(const ViewData& view, const std::string& tech
     auto technique = make_technique(technique_name, settings.technique);
     const bool needs_distribution = technique->needs_distribution();
     std::vector<double> depths(taps), weights(taps);
+    std::vector<uint32_t> tap_offsets;
 #pragma omp for schedule(dynamic, 1)
     for (size_t block = 0; block < blocks; ++block)
       errors.capture([&] {
@@ -108,10 +109,11 @@ TechniqueResult evaluate_technique(const ViewData& view, const std::string& tech
           in.pcf = f.pcf[k];
           in.oracle = f.oracle[k];
           if (needs_distribution) {
-            kernel_distribution(view.map, settings.kernel, int(texel % f.width),
-                                int(texel / f.width), depths, weights);
+            kernel_atoms(view.map, settings.kernel, int(texel % f.width), int(texel / f.width),
+                         depths, weights, nullptr, &tap_offsets);
             in.kernel_depths = depths;
             in.kernel_weights = weights;
+            if (view.map.translucent()) in.tap_offsets = tap_offsets;
           }
           result.shadow[k] = technique->shadow(in);
         }

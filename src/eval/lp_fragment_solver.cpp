@@ -28,6 +28,32 @@ struct ViewColumns {
   std::unique_ptr<double[]> depth, columns;
 };
 
+// A translucent map's columns (docs/reference.md §7): one per atom, every atom of the map, and the
+// far plane's one past the last.
+ViewColumns atom_columns(const ShadowMap& map, const Basis& basis,
+                         const lp::ProblemFactory& factory, const EvalSettings& settings) {
+  const lp::Discretization& disc = settings.technique.lp;
+  const int k = factory.rows(), m = int(basis.size());
+  const size_t count = map.atom_count() + 1;
+  ViewColumns out;
+  out.depth.reset(new double[count]);
+  std::vector<double> depth(count), values(count);
+  for (size_t a = 0; a < count; ++a) {
+    const double z = a < map.atom_count() ? map.atom_depth[a] : 1.0;
+    depth[a] = out.depth[a] = disc.quantize ? lp::quantize_to_grid(disc, z) : z;
+  }
+  std::unique_ptr<double[]> raw(new double[count * k]);
+  out.columns.reset(new double[count * k]);
+  for (size_t a = 0; a < count; ++a) raw[a * k] = 1;
+  for (int j = 0; j < m; ++j) {
+    basis[j].evaluate(depth, values);
+    for (size_t a = 0; a < count; ++a) raw[a * k + j + 1] = values[a];
+  }
+#pragma omp parallel for schedule(static) num_threads(settings.threads)
+  for (size_t a = 0; a < count; ++a) factory.transform(&raw[a * k], &out.columns[a * k]);
+  return out;
+}
+
 ViewColumns reached_columns(const ViewData& view, const std::vector<uint32_t>& list,
                             const std::vector<size_t>& run_begin, const Basis& basis,
                             const lp::ProblemFactory& factory, const EvalSettings& settings) {
@@ -102,7 +128,10 @@ class RunSolver {
 
   // Fragment f, cold when it starts its run (so answers do not depend on the schedule);
   // `same_kernel` when the previous fragment of the run sat on the same texel.
+  // A translucent kernel's atoms are not its taps, which the warm starts' atom map assumes
+  // (eval/warm_runs.h): every fragment starts cold.
   const lp::Solution& solve(size_t f, bool cold, bool same_kernel) {
+    cold = cold || view_.map.translucent();
     const size_t t = view_.fragments.texel[f];
     const int x = int(t % view_.map.width), y = int(t / view_.map.width);
     const double zf = view_.fragments.ztest[f];  // z_f - delta_f (docs/reference.md §3)
@@ -132,9 +161,14 @@ class RunSolver {
   // The kernel's taps in kernel_distribution's order; the extra texel index picks the column (the
   // far plane's, one past the map, for taps outside it).
   void gather_taps(int x, int y) {
-    kernel_distribution(view_.map, settings_.kernel, x, y, tap_depth_, tap_weight_, tap_texel_);
+    if (view_.map.translucent()) {
+      kernel_atoms(view_.map, settings_.kernel, x, y, tap_depth_, tap_weight_, &tap_texel_);
+      tap_column_.resize(tap_depth_.size());
+    } else {
+      kernel_distribution(view_.map, settings_.kernel, x, y, tap_depth_, tap_weight_, tap_texel_);
+    }
     const int k = factory_.rows();
-    for (int n = 0; n < taps_; ++n) {
+    for (size_t n = 0; n < tap_depth_.size(); ++n) {
       tap_depth_[n] = reached_.depth[tap_texel_[n]];  // quantized in quantize mode
       tap_column_[n] = &reached_.columns[tap_texel_[n] * k];
     }
@@ -170,7 +204,9 @@ LpViewAnswers solve_lp_view(const ViewData& view, const std::vector<uint32_t>& l
       runs_given ? *runs_given : warm_run_begins(list.size(), view.map.width, [&](size_t i) {
         return view.fragments.texel[list[i]];
       });
-  const ViewColumns reached = reached_columns(view, list, run_begin, basis, factory, settings);
+  const ViewColumns reached =
+      view.map.translucent() ? atom_columns(view.map, basis, factory, settings)
+                             : reached_columns(view, list, run_begin, basis, factory, settings);
   const size_t runs = run_begin.size() - 1;
   const KernelAtomMap atoms(settings.kernel.size);
   // lp.moment_box: each fragment's box problem from scratch (GLPK; no warm start).

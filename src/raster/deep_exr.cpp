@@ -12,9 +12,12 @@ namespace mb {
 
 namespace {
 using OIIO::TypeDesc;
-const char* const kChannels[] = {"Z",       "facing",  "depth_hi", "depth_lo",
-                                 "dzdx_hi", "dzdx_lo", "dzdy_hi",  "dzdy_lo"};
-constexpr int kChannelCount = 8;
+// Z and A as compositors read deep images (A: the surface's opacity, docs/reference.md §7); the
+// others hold the doubles bit for bit.
+const char* const kChannels[] = {"Z",       "facing",  "depth_hi", "depth_lo", "dzdx_hi",
+                                 "dzdx_lo", "dzdy_hi", "dzdy_lo",  "A"};
+constexpr int kChannelCount = 9;
+constexpr int kAlphaChannel = 8;
 constexpr int kFormatVersion = 1;
 
 void split(double value, uint32_t& hi, uint32_t& lo) {
@@ -33,7 +36,9 @@ void write_deep_exr(const LayerStack& stack, const std::string& file) {
   spec.channelnames.assign(std::begin(kChannels), std::end(kChannels));
   spec.channelformats.assign(kChannelCount, TypeDesc::UINT);
   spec.channelformats[0] = TypeDesc::FLOAT;
+  spec.channelformats[kAlphaChannel] = TypeDesc::FLOAT;
   spec.z_channel = 0;
+  spec.alpha_channel = kAlphaChannel;
   spec.attribute("compression", "zips");
   spec.attribute("momentbench:format_version", kFormatVersion);
   spec.attribute("momentbench:scene", stack.scene);
@@ -57,6 +62,7 @@ void write_deep_exr(const LayerStack& stack, const std::string& file) {
       deep.set_deep_value(t, 4, s, hi), deep.set_deep_value(t, 5, s, lo);
       split(stack.dz_dy[f], hi, lo);
       deep.set_deep_value(t, 6, s, hi), deep.set_deep_value(t, 7, s, lo);
+      deep.set_deep_value(t, kAlphaChannel, s, stack.translucent() ? stack.alpha[f] : 1.0f);
     }
   }
   auto out = OIIO::ImageOutput::create(file);
@@ -76,7 +82,7 @@ LayerStack read_deep_exr(const std::string& file) {
   int channel[kChannelCount];
   for (int c = 0; c < kChannelCount; ++c) {
     channel[c] = spec.channelindex(kChannels[c]);
-    if (channel[c] < 0)
+    if (channel[c] < 0 && c != kAlphaChannel)  // files without A are opaque
       throw InputError(file + ": missing channel '" + std::string(kChannels[c]) + "'");
   }
   OIIO::DeepData deep;
@@ -104,6 +110,11 @@ LayerStack read_deep_exr(const std::string& file) {
       stack.depth[f] = join(u(2), u(3));
       stack.dz_dx[f] = join(u(4), u(5));
       stack.dz_dy[f] = join(u(6), u(7));
+      if (channel[kAlphaChannel] >= 0) {
+        const float alpha = deep.deep_value(t, channel[kAlphaChannel], s);
+        if (alpha != 1.0f && stack.alpha.empty()) stack.alpha.assign(total, 1.0f);
+        if (!stack.alpha.empty()) stack.alpha[f] = alpha;
+      }
     }
   }
   return stack;

@@ -6,7 +6,7 @@ namespace mb {
 
 bool LayerStack::same_fragments(const LayerStack& o) const {
   return width == o.width && height == o.height && offsets == o.offsets && depth == o.depth &&
-         facing == o.facing && dz_dx == o.dz_dx && dz_dy == o.dz_dy;
+         facing == o.facing && dz_dx == o.dz_dx && dz_dy == o.dz_dy && alpha == o.alpha;
 }
 
 LayerStackStats compute_stats(const LayerStack& stack, size_t triangles) {

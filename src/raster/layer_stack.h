@@ -16,10 +16,14 @@ struct LayerStack {
   std::vector<double> dz_dx;       // depth gradient of the fragment's triangle, per texel along x
   std::vector<double> dz_dy;       // ... along y (raster rows, downwards)
   std::vector<uint32_t> triangle;  // the fragment's triangle, when RasterInput::keep_triangles
+  // Opacity of the fragment's surface (docs/reference.md §7); empty when every surface is opaque.
+  // Float: what the deep EXR's A channel holds, so a stack read back is the same.
+  std::vector<float> alpha;
   std::string scene, view, frame;  // provenance, written to the file header
 
   size_t texel_count() const { return size_t(width) * size_t(height); }
   size_t fragment_count() const { return depth.size(); }
+  bool translucent() const { return !alpha.empty(); }
   int layers(size_t texel) const { return int(offsets[texel + 1] - offsets[texel]); }
   // The shadow map value: nearest surface, or the far plane 1 where the texel is empty.
   double layer0_depth(size_t texel) const { return layers(texel) ? depth[offsets[texel]] : 1.0; }

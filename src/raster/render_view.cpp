@@ -71,7 +71,22 @@ LayerStack render_view(const Scene& scene, const LightViewDesc& view, int thread
                &c = scene.mesh.vertices[tri[2]];
     input.facing[t] = scene.two_sided[t] || (b - a).cross(c - a).dot(frame.to_light()) > 0;
   }
+  // Translucent parts (docs/reference.md §7): each fragment's alpha from its triangle's part,
+  // at the world point of its texel centre and depth.
+  input.keep_triangles = scene.translucent();
   LayerStack stack = rasterize(input, threads);
+  if (input.keep_triangles) {
+    stack.alpha.resize(stack.fragment_count());
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (size_t t = 0; t < stack.texel_count(); ++t)
+      for (uint64_t f = stack.offsets[t]; f < stack.offsets[t + 1]; ++f) {
+        const Eigen::Vector3d raster(double(t % stack.width) + 0.5, double(t / stack.width) + 0.5,
+                                     stack.depth[f]);
+        const OpacityDesc& o = scene.opacity[scene.part[stack.triangle[f]]];
+        stack.alpha[f] = float(o.at(frame.to_world(raster)));
+      }
+    stack.triangle.clear();
+  }
   stack.scene = scene.name;
   stack.view = view.name;
   stack.frame = frame.describe();

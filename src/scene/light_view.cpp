@@ -47,6 +47,13 @@ Eigen::Vector3d LightFrame::to_raster(const Eigen::Vector3d& p) const {
           (w_.dot(p) - w_min_) / depth_range_};
 }
 
+Eigen::Vector3d LightFrame::to_world(const Eigen::Vector3d& r) const {
+  const double u = (r.x() - resolution_ / 2.0) / texels_per_world_ + u_center_;
+  const double v = v_center_ - (r.y() - resolution_ / 2.0) / texels_per_world_;
+  const double w = r.z() * depth_range_ + w_min_;
+  return u * u_ + v * v_ + w * w_;  // u, v, w are orthonormal
+}
+
 std::string LightFrame::describe() const {
   std::ostringstream s;
   s.precision(17);

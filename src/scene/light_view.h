@@ -27,6 +27,8 @@ class LightFrame {
 
   // (x, y) in texels, z in [0, 1] growing away from the light.
   Eigen::Vector3d to_raster(const Eigen::Vector3d& world) const;
+  // Its inverse: the world point at raster (x, y) and depth z.
+  Eigen::Vector3d to_world(const Eigen::Vector3d& raster) const;
   const Eigen::Vector3d& to_light() const { return to_light_; }
   int resolution() const { return resolution_; }
   // World units per texel and per unit of depth, for converting gradients back to slopes.

@@ -102,7 +102,7 @@ PartDesc parse_part(YamlMap map, const std::filesystem::path& base_dir) {
   }
   if (part.kind.empty()) {
     map.also_suggest(kinds);
-    map.also_suggest({"transform", "two_sided", "fit"});
+    map.also_suggest({"transform", "two_sided", "fit", "opacity", "opacity_pattern"});
     map.finish();  // reports a misspelled generator name first
     std::string all;
     for (const auto& k : kinds) all += (all.empty() ? "" : ", ") + k;
@@ -131,6 +131,7 @@ PartDesc parse_part(YamlMap map, const std::filesystem::path& base_dir) {
     params.finish();
   }
   part.two_sided = map.boolean("two_sided", false);
+  part.opacity = parse_opacity(map);
   part.transform = parse_transform(map.map("transform"));
   map.finish();
   return part;
@@ -245,18 +246,26 @@ SceneDesc parse_scene(const std::string& file) {
   return desc;
 }
 
+bool Scene::translucent() const {
+  for (const auto& o : opacity)
+    if (!o.opaque()) return true;
+  return false;
+}
+
 Scene build_scene(const SceneDesc& desc) {
   Scene scene;
   scene.name = desc.name;
   scene.views = desc.views;
   scene.cameras = desc.cameras;
   for (const auto& part : desc.parts) {
+    scene.opacity.push_back(part.opacity);
     for (const auto& piece : build_part(part)) {
       for (const auto& v : piece.vertices)
         if (!v.allFinite())
           throw InputError(part.where + ": transform produced a non-finite vertex");
       scene.mesh.append(piece);
       scene.two_sided.resize(scene.mesh.triangles.size(), piece.two_sided ? 1 : 0);
+      scene.part.resize(scene.mesh.triangles.size(), uint32_t(scene.opacity.size() - 1));
     }
   }
   if (scene.mesh.triangles.empty())

@@ -8,6 +8,7 @@
 #include "scene/camera.h"
 #include "scene/light_view.h"
 #include "scene/mesh.h"
+#include "scene/opacity.h"
 
 namespace mb {
 
@@ -23,6 +24,7 @@ struct PartDesc {
   std::map<std::string, std::vector<double>> params;  // generator parameters, validated
   double fit = 0;  // mesh only: scale so the largest extent is `fit`, centred, resting on y = 0
   bool two_sided = false;
+  OpacityDesc opacity;  // opaque unless the part says otherwise
   TransformDesc transform;
   std::string where;  // "file:line" for errors found while building
 };
@@ -37,8 +39,11 @@ struct SceneDesc {
 
 struct Scene {
   std::string name;
-  TriangleMesh mesh;               // all parts, world coordinates
-  std::vector<uint8_t> two_sided;  // per triangle
+  TriangleMesh mesh;                 // all parts, world coordinates
+  std::vector<uint8_t> two_sided;    // per triangle
+  std::vector<uint32_t> part;        // per triangle: its part, an index into `opacity`
+  std::vector<OpacityDesc> opacity;  // per part
+  bool translucent() const;          // some part is not opaque
   std::vector<LightViewDesc> views;
   std::vector<CameraDesc> cameras;
 };

@@ -23,12 +23,39 @@ double fragment_bias(const BiasParams& bias, int kernel_radius, double dz_dx, do
   return bias.constant + bias.slope * kernel_radius * (std::abs(dz_dx) + std::abs(dz_dy));
 }
 
+namespace {
+
+// Each texel's distribution of where its light stops (docs/reference.md §7): front to back, a
+// surface takes alpha of the light that reached it; the first opaque one takes the rest, else the
+// far plane does.
+void add_translucent_atoms(const LayerStack& stack, ShadowMap& map) {
+  map.atom_offsets.assign(stack.texel_count() + 1, 0);
+  for (size_t t = 0; t < stack.texel_count(); ++t) {
+    double transmitted = 1;
+    for (uint64_t i = stack.offsets[t]; i < stack.offsets[t + 1] && transmitted > 0; ++i) {
+      const double alpha = stack.alpha[i];
+      if (alpha <= 0) continue;  // a fully transparent surface stops nothing
+      map.atom_depth.push_back(stack.depth[i]);
+      map.atom_mass.push_back(alpha >= 1 ? transmitted : transmitted * alpha);
+      transmitted = alpha >= 1 ? 0 : transmitted * (1 - alpha);
+    }
+    if (transmitted > 0) {
+      map.atom_depth.push_back(1.0);
+      map.atom_mass.push_back(transmitted);
+    }
+    map.atom_offsets[t + 1] = map.atom_depth.size();
+  }
+}
+
+}  // namespace
+
 ShadowMap layer0_shadow_map(const LayerStack& stack) {
   ShadowMap map;
   map.width = stack.width;
   map.height = stack.height;
   map.depth.resize(stack.texel_count());
   for (size_t t = 0; t < stack.texel_count(); ++t) map.depth[t] = stack.layer0_depth(t);
+  if (stack.translucent()) add_translucent_atoms(stack, map);
   return map;
 }
 
@@ -64,10 +91,43 @@ Fragments collect_receivers(const LayerStack& stack, const GaussianKernel& kerne
   return f;
 }
 
+namespace {
+
+// F_{Z_t}(z) of the texel at (x, y): the light its ray loses in front of z (far plane outside).
+double texel_cdf(const ShadowMap& map, int x, int y, double z) {
+  if (x < 0 || y < 0 || x >= map.width || y >= map.height) return 1.0 < z ? 1 : 0;
+  const size_t t = size_t(y) * map.width + x;
+  double cdf = 0;
+  for (uint64_t a = map.atom_offsets[t]; a < map.atom_offsets[t + 1]; ++a)
+    if (map.atom_depth[a] < z) cdf += map.atom_mass[a];
+  return cdf;
+}
+
+// The filtered transmittance's complement (docs/reference.md §7): sum_t k_t F_{Z_t}.
+ReceiverTest translucent_receiver_test(const ShadowMap& map, const GaussianKernel& kernel,
+                                       const BiasParams& bias, int x, int y, double zf, double gx,
+                                       double gy, double ztest) {
+  const int r = kernel.radius();
+  double oracle = 0, plane = 0;
+  for (int dy = -r; dy <= r; ++dy)
+    for (int dx = -r; dx <= r; ++dx) {
+      const double w = kernel.weight(dx, dy);
+      oracle += w * texel_cdf(map, x + dx, y + dy, ztest);
+      const double z_plane = std::min(zf + dx * gx + dy * gy - bias.constant, 1.0);
+      plane += w * texel_cdf(map, x + dx, y + dy, z_plane);
+    }
+  oracle = std::min(oracle, 1.0);
+  return {ztest, oracle, bias.reference == Reference::Biased ? oracle : std::min(plane, 1.0)};
+}
+
+}  // namespace
+
 ReceiverTest receiver_test(const ShadowMap& map, const GaussianKernel& kernel,
                            const BiasParams& bias, int x, int y, double zf, double gx, double gy) {
   const int r = kernel.radius();
   const double ztest = zf - fragment_bias(bias, r, gx, gy);
+  if (map.translucent())
+    return translucent_receiver_test(map, kernel, bias, x, y, zf, gx, gy, ztest);
   double oracle = 0, plane = 0;
   for (int dy = -r; dy <= r; ++dy)
     for (int dx = -r; dx <= r; ++dx) {
@@ -95,6 +155,34 @@ void kernel_distribution(const ShadowMap& map, const GaussianKernel& kernel, int
       const int xx = x + dx, yy = y + dy;
       const bool inside = xx >= 0 && yy >= 0 && xx < map.width && yy < map.height;
       texels[k] = inside ? size_t(yy) * map.width + xx : map.depth.size();
+    }
+}
+
+void kernel_atoms(const ShadowMap& map, const GaussianKernel& kernel, int x, int y,
+                  std::vector<double>& depths, std::vector<double>& weights,
+                  std::vector<size_t>* atoms, std::vector<uint32_t>* tap_offsets) {
+  const int r = kernel.radius();
+  depths.clear(), weights.clear();
+  if (atoms) atoms->clear();
+  if (tap_offsets) tap_offsets->assign(1, 0);
+  for (int dy = -r; dy <= r; ++dy)
+    for (int dx = -r; dx <= r; ++dx) {
+      const int xx = x + dx, yy = y + dy;
+      const double w = kernel.weight(dx, dy);
+      const bool inside = xx >= 0 && yy >= 0 && xx < map.width && yy < map.height;
+      const size_t t = inside ? size_t(yy) * map.width + xx : 0;
+      if (!inside || !map.translucent()) {
+        depths.push_back(inside ? map.depth[t] : 1.0);
+        weights.push_back(w);
+        if (atoms) atoms->push_back(inside ? t : map.atom_count());
+      } else {
+        for (uint64_t a = map.atom_offsets[t]; a < map.atom_offsets[t + 1]; ++a) {
+          depths.push_back(map.atom_depth[a]);
+          weights.push_back(w * map.atom_mass[a]);
+          if (atoms) atoms->push_back(a);
+        }
+      }
+      if (tap_offsets) tap_offsets->push_back(uint32_t(depths.size()));
     }
 }
 

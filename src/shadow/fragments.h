@@ -37,14 +37,24 @@ struct BiasParams {
 double fragment_bias(const BiasParams& bias, int kernel_radius, double dz_dx, double dz_dy);
 
 // The ordinary shadow map: layer-0 depth per texel, 1 (the far plane) where the texel is empty.
+// With translucent occluders (docs/reference.md §7) each texel also holds the distribution Z_t of
+// where its light ray stops: atoms [atom_offsets[t], atom_offsets[t + 1]) with depth z_i and mass
+// T(z_i) alpha_i, every surface up to the first opaque one, then the far plane with what is left.
+// Atoms are indexed globally; atom_count() (one past the last) is the far plane outside the map.
+// Without translucency the atoms are the texels: Z_t = delta at depth[t].
 struct ShadowMap {
   int width = 0, height = 0;
   std::vector<double> depth;
+  std::vector<uint64_t> atom_offsets;  // empty: every surface is opaque
+  std::vector<double> atom_depth, atom_mass;
+  bool translucent() const { return !atom_offsets.empty(); }
+  size_t atom_count() const { return translucent() ? atom_depth.size() : depth.size(); }
   // Depth at (x, y); outside the map counts as the far plane (docs/reference.md §3).
   double at(int x, int y) const {
     return x < 0 || y < 0 || x >= width || y >= height ? 1.0 : depth[size_t(y) * width + x];
   }
 };
+// The shadow map of a stack, with its texels' translucent distributions when any alpha < 1.
 ShadowMap layer0_shadow_map(const LayerStack& stack);
 
 struct Fragments {
@@ -76,5 +86,14 @@ Fragments collect_receivers(const LayerStack& stack, const GaussianKernel& kerne
 void kernel_distribution(const ShadowMap& map, const GaussianKernel& kernel, int x, int y,
                          std::span<double> depths, std::span<double> weights,
                          std::span<size_t> texels = {});
+
+// The kernel's distribution over the atoms of its taps' texels (docs/reference.md §7): for an
+// opaque map exactly kernel_distribution's taps; for a translucent one, tap by tap, each atom of
+// the tap's texel with weight k_t * mass. With `atoms`, each one's global index (atom_count() for
+// taps outside the map); with `tap_offsets`, where each tap's atoms begin (size^2 + 1 entries).
+void kernel_atoms(const ShadowMap& map, const GaussianKernel& kernel, int x, int y,
+                  std::vector<double>& depths, std::vector<double>& weights,
+                  std::vector<size_t>* atoms = nullptr,
+                  std::vector<uint32_t>* tap_offsets = nullptr);
 
 }  // namespace mb

@@ -2,6 +2,29 @@
 
 namespace mb {
 
+namespace {
+
+// A translucent map's texels (docs/reference.md §7): E_{Z_t}[b] = sum_i T(z_i) alpha_i b(z_i), what
+// alpha blending b(z_i) front to back produces, written over the padded texels inside the map.
+void blend_translucent_texels(const ShadowMap& map, const Basis& basis, int r,
+                              std::vector<double>& stored) {
+  const int m = int(basis.size()), w = map.width, pw = w + 2 * r;
+  std::vector<double> values(map.atom_depth.size());
+  for (int j = 0; j < m; ++j) {
+    basis[j].evaluate(map.atom_depth, values);
+    for (int y = 0; y < map.height; ++y)
+      for (int x = 0; x < w; ++x) {
+        const size_t t = size_t(y) * w + x;
+        double sum = 0;
+        for (uint64_t a = map.atom_offsets[t]; a < map.atom_offsets[t + 1]; ++a)
+          sum += map.atom_mass[a] * values[a];
+        stored[(size_t(y + r) * pw + x + r) * m + j] = sum;
+      }
+  }
+}
+
+}  // namespace
+
 MomentMap compute_moment_map(const ShadowMap& map, const Basis& basis, const GaussianKernel& kernel,
                              const MomentStorage& storage, int threads) {
   const int m = int(basis.size()), r = kernel.radius();
@@ -16,6 +39,7 @@ MomentMap compute_moment_map(const ShadowMap& map, const Basis& basis, const Gau
     basis[j].evaluate(padded_depth, column);
     for (size_t t = 0; t < column.size(); ++t) stored[t * m + j] = column[t];
   }
+  if (map.translucent()) blend_translucent_texels(map, basis, r, stored);
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (size_t t = 0; t < padded_depth.size(); ++t)
     store_moments(storage, {stored.data() + t * m, size_t(m)});

@@ -54,16 +54,30 @@ class EsmFallbackTechnique : public Technique {
   // clamped results bilinearly. A receiver sits at its texel's centre, so the four nearest texels
   // are ambiguous; momentbench takes the receiver's texel and its +x, +y and +x+y neighbours with
   // weight 1/4 each (the bilinear weights half a texel towards +x+y). Taps are row by row.
+  // On a translucent map a tap's test is the mass-weighted mean of its atoms' tests (the mass
+  // sums to the tap's kernel weight, docs/reference.md §7).
   double custom_pcf(const FragmentInput& in) const {
-    const int size = int(std::lround(std::sqrt(double(in.kernel_depths.size()))));
+    const size_t taps =
+        in.tap_offsets.empty() ? in.kernel_depths.size() : in.tap_offsets.size() - 1;
+    const int size = int(std::lround(std::sqrt(double(taps))));
     const int centre = (size / 2) * size + size / 2;
     double lit = 0;
     for (int offset : {0, 1, size, size + 1}) {
-      const double z = in.kernel_depths[size_t(centre + offset)];
-      lit += 0.25 * std::clamp(std::exp(c_ * (z - in.zf)), 0.0, 1.0);
+      const size_t tap = size_t(centre + offset);
+      if (in.tap_offsets.empty()) {
+        lit += 0.25 * test(in.kernel_depths[tap], in.zf);
+        continue;
+      }
+      double weight = 0, sum = 0;
+      for (uint32_t a = in.tap_offsets[tap]; a < in.tap_offsets[tap + 1]; ++a)
+        weight += in.kernel_weights[a],
+            sum += in.kernel_weights[a] * test(in.kernel_depths[a], in.zf);
+      lit += 0.25 * (weight > 0 ? sum / weight : 1.0);
     }
     return 1 - lit;
   }
+  // The unfiltered exponential test of one depth: the light that passes it.
+  double test(double z, double zf) const { return std::clamp(std::exp(c_ * (z - zf)), 0.0, 1.0); }
 
   EsmClassifier classifier_;
   double c_, zmax_offset_, threshold_;

@@ -19,8 +19,11 @@ struct FragmentInput {
   double zf = 0;                    // the fragment depth, bias already applied (z_f - delta_f)
   double pcf = 0;                   // the reference (for the `pcf` sanity row)
   double oracle = 0;                // F_Z(z_f - delta_f) (the `oracle` row)
-  // The kernel's depth distribution (layer-0 depths and weights), for techniques that need it.
+  // The kernel's depth distribution, for techniques that need it: layer-0 depths and weights, or
+  // on a translucent map every atom of every tap (shadow/fragments.h, kernel_atoms), tap t's atoms
+  // being [tap_offsets[t], tap_offsets[t + 1]) (empty tap_offsets: one atom per tap).
   std::span<const double> kernel_depths, kernel_weights;
+  std::span<const uint32_t> tap_offsets;
 };
 
 // Every technique parameter, with the defaults of the eval options table.

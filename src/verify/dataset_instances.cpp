@@ -14,7 +14,6 @@ std::vector<VerifyInstance> dataset_verify_instances(const std::vector<ViewData>
   for (const auto& v : views) total += v.fragments.size();
   if (total == 0 || count == 0) return out;
   SeededRandom rng(seed ^ 0x9e3779b97f4a7c15ull);
-  const int taps = settings.kernel.size * settings.kernel.size;
   for (int i = 0; i < count; ++i) {
     size_t index = size_t(rng.uniform() * double(total));
     for (const auto& v : views) {
@@ -25,9 +24,7 @@ std::vector<VerifyInstance> dataset_verify_instances(const std::vector<ViewData>
       const int x = int(v.fragments.texel[index] % v.fragments.width),
                 y = int(v.fragments.texel[index] / v.fragments.width);
       VerifyInstance inst;
-      inst.depths.resize(taps);
-      inst.weights.resize(taps);
-      kernel_distribution(v.map, settings.kernel, x, y, inst.depths, inst.weights);
+      kernel_atoms(v.map, settings.kernel, x, y, inst.depths, inst.weights);
       inst.zf = v.fragments.ztest[index];
       inst.source = "dataset:" + v.scene + "/" + v.view + " texel (" + std::to_string(x) + "," +
                     std::to_string(y) + ") layer " + std::to_string(v.fragments.layer[index]);
