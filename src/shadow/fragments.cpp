@@ -93,31 +93,16 @@ Fragments collect_receivers(const LayerStack& stack, const GaussianKernel& kerne
 
 namespace {
 
-// F_{Z_t}(z) of the texel at (x, y): the light its ray loses in front of z (far plane outside).
+// F_{Z_t}(z) of the texel at (x, y): the light its ray loses in front of z (docs/reference.md §7).
+// Opaque texels, and the far plane outside the map, are one atom of mass 1: the hard test.
 double texel_cdf(const ShadowMap& map, int x, int y, double z) {
-  if (x < 0 || y < 0 || x >= map.width || y >= map.height) return 1.0 < z ? 1 : 0;
+  if (!map.translucent() || x < 0 || y < 0 || x >= map.width || y >= map.height)
+    return map.at(x, y) < z ? 1 : 0;
   const size_t t = size_t(y) * map.width + x;
   double cdf = 0;
   for (uint64_t a = map.atom_offsets[t]; a < map.atom_offsets[t + 1]; ++a)
     if (map.atom_depth[a] < z) cdf += map.atom_mass[a];
   return cdf;
-}
-
-// The filtered transmittance's complement (docs/reference.md §7): sum_t k_t F_{Z_t}.
-ReceiverTest translucent_receiver_test(const ShadowMap& map, const GaussianKernel& kernel,
-                                       const BiasParams& bias, int x, int y, double zf, double gx,
-                                       double gy, double ztest) {
-  const int r = kernel.radius();
-  double oracle = 0, plane = 0;
-  for (int dy = -r; dy <= r; ++dy)
-    for (int dx = -r; dx <= r; ++dx) {
-      const double w = kernel.weight(dx, dy);
-      oracle += w * texel_cdf(map, x + dx, y + dy, ztest);
-      const double z_plane = std::min(zf + dx * gx + dy * gy - bias.constant, 1.0);
-      plane += w * texel_cdf(map, x + dx, y + dy, z_plane);
-    }
-  oracle = std::min(oracle, 1.0);
-  return {ztest, oracle, bias.reference == Reference::Biased ? oracle : std::min(plane, 1.0)};
 }
 
 }  // namespace
@@ -126,17 +111,16 @@ ReceiverTest receiver_test(const ShadowMap& map, const GaussianKernel& kernel,
                            const BiasParams& bias, int x, int y, double zf, double gx, double gy) {
   const int r = kernel.radius();
   const double ztest = zf - fragment_bias(bias, r, gx, gy);
-  if (map.translucent())
-    return translucent_receiver_test(map, kernel, bias, x, y, zf, gx, gy, ztest);
   double oracle = 0, plane = 0;
   for (int dy = -r; dy <= r; ++dy)
     for (int dx = -r; dx <= r; ++dx) {
-      const double depth = map.at(x + dx, y + dy), w = kernel.weight(dx, dy);
-      if (depth < ztest) oracle += w;
+      const double w = kernel.weight(dx, dy);
+      oracle += w * texel_cdf(map, x + dx, y + dy, ztest);
       // docs/reference.md §3: the ideal filtered hard shadow tests each tap against the plane. The
       // plane, extrapolated past a steep receiver's edge, can pass the far plane, where empty
       // texels hold depth 1: nothing lies beyond it, so the test depth stops there.
-      if (depth < std::min(zf + dx * gx + dy * gy - bias.constant, 1.0)) plane += w;
+      plane +=
+          w * texel_cdf(map, x + dx, y + dy, std::min(zf + dx * gx + dy * gy - bias.constant, 1.0));
     }
   oracle = std::min(oracle, 1.0);
   return {ztest, oracle, bias.reference == Reference::Biased ? oracle : std::min(plane, 1.0)};
