@@ -34,10 +34,11 @@ std::string slabs(const std::string& first, const std::string& second = "") {
   return yaml + "views:\n  - {name: top, azimuth: 0, elevation: 90, resolution: 64}\n";
 }
 
-ViewData view_of(const std::string& yaml) {
+ViewData view_of(const std::string& yaml, BlendOrder blend = BlendOrder::Sorted) {
   const Scene scene = build_scene(parse_scene(write_temp_file("scene.yaml", yaml)));
   EvalSettings settings;
   settings.threads = 2;
+  settings.blend = blend;
   return prepare_view(scene, scene.views[0], settings);
 }
 
@@ -94,6 +95,82 @@ TEST(Translucent, MomentMapHoldsTheTranslucentDistributionsMoments) {
         kUpper * std::pow(z1, j + 1) + rest * std::pow(z2, j + 1) + rest * std::pow(zg, j + 1);
     EXPECT_NEAR(moments.at(t)[j], expected, 1e-14) << "b_" << j + 1;
   }
+}
+
+// An unsorted blend (translucent.blend = submission) over the ground, under both slabs: drawn back
+// to front (the lower slab's part first) it is the exact blend; drawn front to back the far slab
+// takes alpha of the blend after the near one, and the near one keeps its share times 1 - alpha.
+// The reference stays the exact one either way.
+TEST(Translucent, SubmissionOrderBlendsInTriangleOrder) {
+  const std::string lower =
+      "  - ground_plane: {size: 4}\n    transform: {translate: [0, 1.5, 0]}\n"
+      "    opacity: 0.5\n";
+  const std::string upper =
+      "  - ground_plane: {size: 4}\n    transform: {translate: [0, 2.5, 0]}\n"
+      "    opacity: 0.3\n";
+  const std::string head = "name: slabs\nparts:\n  - ground_plane: {size: 8}\n";
+  const std::string views = "views:\n  - {name: top, azimuth: 0, elevation: 90, resolution: 64}\n";
+  const size_t t = 32 * 64 + 32;
+  const ViewData sorted = view_of(head + lower + upper + views, BlendOrder::Sorted);
+  const ViewData back_to_front = view_of(head + lower + upper + views, BlendOrder::Submission);
+  const ViewData front_to_back = view_of(head + upper + lower + views, BlendOrder::Submission);
+  const uint64_t a = sorted.map.atom_offsets[t];
+  ASSERT_EQ(sorted.map.atom_offsets[t + 1] - a, 3u);
+  for (int i = 0; i < 3; ++i)
+    EXPECT_NEAR(back_to_front.map.blended_mass()[a + i], sorted.map.atom_mass[a + i], 1e-15) << i;
+  const double expected[3] = {kUpper * 0.5, 0.5, (1 - kUpper) * 0.5};  // z1, z2, the ground
+  for (int i = 0; i < 3; ++i)
+    EXPECT_NEAR(front_to_back.map.blended_mass()[a + i], expected[i], 1e-15) << i;
+  EXPECT_EQ(front_to_back.map.atom_mass, sorted.map.atom_mass);
+  EXPECT_EQ(front_to_back.fragments.pcf, sorted.fragments.pcf);
+  const MomentMap moments = compute_moment_map(front_to_back.map, Basis::parse({"z"}),
+                                               make_gaussian_kernel(1, 1), double_storage(), 2);
+  const double z1 = sorted.map.atom_depth[a], z2 = sorted.map.atom_depth[a + 1],
+               zg = sorted.map.atom_depth[a + 2];
+  EXPECT_NEAR(moments.at(t)[0], expected[0] * z1 + expected[1] * z2 + expected[2] * zg, 1e-15);
+}
+
+// Fourier opacity mapping: one slab of alpha 0.5 at depth 0.3 in every tap; behind it the series'
+// absorbance approaches -ln 0.5 as terms are added (the truncated step converges away from its
+// jump), and an absorbance map adds up in any order, so an unsorted blend leaves it unchanged.
+TEST(Translucent, FourierOpacityMappingConvergesAndIgnoresTheOrder) {
+  const std::vector<double> depths = {0.3, 1.0}, weights = {0.5, 0.5}, alphas = {0.5, 0.0};
+  FragmentInput in;
+  in.kernel_depths = depths;
+  in.kernel_weights = weights;
+  in.kernel_alpha = alphas;
+  const std::vector<uint32_t> offsets = {0, 2};
+  in.tap_offsets = offsets;
+  in.zf = 0.7;
+  double previous = 1;
+  for (int terms : {1, 4, 16, 64}) {
+    TechniqueParams params;
+    params.fom_terms = terms;
+    const double error = std::abs(make_technique("fom", params)->shadow(in) - 0.5);
+    EXPECT_LT(error, previous + 1e-12) << terms;
+    previous = error;
+  }
+  EXPECT_LT(previous, 2e-3);
+  const std::string yaml =
+      "name: slabs\nparts:\n  - ground_plane: {size: 8}\n"
+      "  - ground_plane: {size: 4}\n    transform: {translate: [0, 2.5, 0]}\n    opacity: 0.3\n"
+      "  - ground_plane: {size: 4}\n    transform: {translate: [0, 1.5, 0]}\n    opacity: 0.5\n"
+      "views:\n  - {name: top, azimuth: 0, elevation: 90, resolution: 64}\n";
+  EvalSettings settings;
+  settings.threads = 2;
+  const TechniqueResult sorted =
+      evaluate_technique(view_of(yaml, BlendOrder::Sorted), "fom", settings, nullptr);
+  const TechniqueResult unsorted =
+      evaluate_technique(view_of(yaml, BlendOrder::Submission), "fom", settings, nullptr);
+  // Equal but for the rounding of each tap's weight, summed from its (differently blended) masses.
+  ASSERT_EQ(sorted.shadow.size(), unsorted.shadow.size());
+  for (size_t k = 0; k < sorted.shadow.size(); ++k)
+    EXPECT_NEAR(sorted.shadow[k], unsorted.shadow[k], 1e-14) << k;
+  const TechniqueResult moments =
+      evaluate_technique(view_of(yaml, BlendOrder::Submission), "hamburger4", settings, nullptr);
+  const TechniqueResult exact =
+      evaluate_technique(view_of(yaml, BlendOrder::Sorted), "hamburger4", settings, nullptr);
+  EXPECT_NE(moments.shadow, exact.shadow);  // moments, unlike absorbance, depend on the order
 }
 
 // opacity: 1 is the key's absence: the same stack, map and receivers, bit for bit.

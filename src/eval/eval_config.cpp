@@ -7,6 +7,7 @@
 #include "lp/solution.h"
 #include "techniques/registry.h"
 #include "util/error.h"
+#include "util/number_text.h"
 #include "util/option_record.h"
 
 namespace mb {
@@ -27,6 +28,8 @@ struct ShadowOptions {
   std::string lp_discretization;
   bool lp_quantize = false;
   std::string lp_backend, lp_moment_box;
+  double lp_beta = 0;
+  std::string blend;
 };
 
 const std::vector<OptionRecord<ShadowOptions>>& kernel_options() {
@@ -62,6 +65,23 @@ const std::vector<OptionRecord<ShadowOptions>>& bias_options() {
       {{"bias.constant", OptionType::Number, "1e-4",
         "c in delta_f: absorbs curvature and rasterisation rounding.", 0, 1},
        &ShadowOptions::bias_constant},
+  };
+  return records;
+}
+
+const std::vector<OptionRecord<ShadowOptions>>& translucent_options() {
+  static const std::vector<OptionRecord<ShadowOptions>> records{
+      {{"translucent.blend",
+        OptionType::String,
+        "sorted",
+        "Translucent occluders (docs/reference.md §7): how the moment maps blend a texel's "
+        "surfaces. sorted: front to back, the exact E_Z[b] (seed 004 needs any OIT method); "
+        "submission: in the scene's triangle order over the first opaque surface, as an unsorted "
+        "GPU pass does. The reference is exact either way.",
+        -kInf,
+        kInf,
+        {"sorted", "submission"}},
+       &ShadowOptions::blend},
   };
   return records;
 }
@@ -102,6 +122,12 @@ const std::vector<OptionRecord<ShadowOptions>>& lp_options() {
         kInf,
         {"none", "double", "float32", "unorm16"}},
        &ShadowOptions::lp_moment_box},
+      {{"lp.beta", OptionType::Number, "0",
+        "LP techniques: G + beta (G+ - G), G+ the LP's maximum of the mass at or in front of z_f "
+        "(docs/reference.md §2): seed 004's blend of its closed forms' bounds, for any basis. 0 is "
+        "the sharp lower bound; above 0 an LP may over-darken. Grid discretisation only.",
+        0, 1},
+       &ShadowOptions::lp_beta},
   };
   return records;
 }
@@ -112,6 +138,7 @@ std::vector<OptionSpec> shadow_option_specs() {
   // The protocol's keys, then every technique's (from their registry rows), then the LP's.
   std::vector<OptionSpec> specs = option_specs(kernel_options());
   for (auto& s : option_specs(bias_options())) specs.push_back(s);
+  for (auto& s : option_specs(translucent_options())) specs.push_back(s);
   for (auto& s : technique_option_specs()) specs.push_back(s);
   for (auto& s : option_specs(lp_options())) specs.push_back(s);
   return specs;
@@ -148,6 +175,8 @@ EvalSettings shadow_settings_from(const Config& config, int threads) {
   ShadowOptions o;
   read_options(config, bias_options(), o);
   read_options(config, lp_options(), o);
+  read_options(config, translucent_options(), o);
+  s.blend = o.blend == "submission" ? BlendOrder::Submission : BlendOrder::Sorted;
   s.bias.reference = parse_reference(o.reference, "reference");
   s.bias.slope = o.bias_slope;
   s.bias.constant = o.bias_constant;
@@ -156,6 +185,12 @@ EvalSettings shadow_settings_from(const Config& config, int threads) {
   t.lp = lp_discretization_from(config);
   t.lp_backend = o.lp_backend;
   t.lp_moment_box = o.lp_moment_box;
+  t.lp_beta = o.lp_beta;
+  if (t.lp_beta > 0 && (t.lp.continuous || t.lp_moment_box != "none"))
+    throw InputError(
+        "lp.beta: " + std::to_string(t.lp_beta) +
+        " needs the LP's maximum, which is solved on the grid only; expected lp.beta = 0 with "
+        "lp.discretization = continuous or an lp.moment_box");
   s.threads = threads;
   return s;
 }
@@ -185,7 +220,12 @@ std::string describe_settings(const EvalSettings& s) {
       s.technique.lp_backend.c_str(),
       s.technique.lp_moment_box == "none" ? "" : "; LP moment box of ",
       s.technique.lp_moment_box == "none" ? "" : s.technique.lp_moment_box.c_str());
-  return buffer;
+  std::string text = buffer;
+  if (s.technique.lp_beta > 0)
+    text += "; LP answers G + " + round_trip(s.technique.lp_beta) + " (G+ - G)";
+  if (s.blend == BlendOrder::Submission)
+    text += "; translucent moment maps blended in submission order (unsorted)";
+  return text;
 }
 
 }  // namespace mb

@@ -15,7 +15,7 @@ namespace mb {
 
 ViewData prepare_view(const Scene& scene, const LightViewDesc& view, const EvalSettings& settings) {
   LayerStack stack = render_view(scene, view, settings.threads);
-  return ViewData{scene.name, view.name, layer0_shadow_map(stack),
+  return ViewData{scene.name, view.name, layer0_shadow_map(stack, settings.blend),
                   collect_receivers(stack, settings.kernel, settings.bias, settings.threads)};
 }
 
@@ -72,7 +72,7 @@ TechniqueResult evaluate_technique(const ViewData& view, const std::string& tech
   auto probe = make_technique(technique_name, settings.technique);
   if (const lp::ProblemFactory* factory = probe->lp_factory()) {
     // The sweep's loop, so that eval's lp: and a sweep candidate are one computation.
-    const std::vector<uint32_t> needs_lp = fragments_needing_lp(f);
+    const std::vector<uint32_t> needs_lp = fragments_needing_lp(f, settings.technique.lp_beta);
     LpViewAnswers answers =
         solve_lp_view(view, needs_lp, probe->basis(), *factory, settings, progress);
     if (progress) progress->advance(f.size() - needs_lp.size());  // the skipped fragments
@@ -95,7 +95,7 @@ TechniqueResult evaluate_technique(const ViewData& view, const std::string& tech
   {
     auto technique = make_technique(technique_name, settings.technique);
     const bool needs_distribution = technique->needs_distribution();
-    std::vector<double> depths(taps), weights(taps);
+    std::vector<double> depths(taps), weights(taps), alphas(taps);
     std::vector<uint32_t> tap_offsets;
 #pragma omp for schedule(dynamic, 1)
     for (size_t block = 0; block < blocks; ++block)
@@ -110,9 +110,10 @@ TechniqueResult evaluate_technique(const ViewData& view, const std::string& tech
           in.oracle = f.oracle[k];
           if (needs_distribution) {
             kernel_atoms(view.map, settings.kernel, int(texel % f.width), int(texel / f.width),
-                         depths, weights, nullptr, &tap_offsets);
+                         depths, weights, nullptr, &tap_offsets, &alphas);
             in.kernel_depths = depths;
             in.kernel_weights = weights;
+            in.kernel_alpha = alphas;
             if (view.map.translucent()) in.tap_offsets = tap_offsets;
           }
           result.shadow[k] = technique->shadow(in);

@@ -24,6 +24,8 @@ struct EvalSettings {
   BiasParams
       bias;  // delta_f and the reference: techniques see z_f - delta_f (docs/reference.md §3)
   TechniqueParams technique;
+  // How translucent moment maps blend (translucent.blend; the reference is always exact).
+  BlendOrder blend = BlendOrder::Sorted;
   int threads = 1;
 };
 

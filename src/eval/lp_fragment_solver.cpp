@@ -13,10 +13,10 @@
 
 namespace mb {
 
-std::vector<uint32_t> fragments_needing_lp(const Fragments& fragments) {
+std::vector<uint32_t> fragments_needing_lp(const Fragments& fragments, double lp_beta) {
   std::vector<uint32_t> list;
   for (size_t k = 0; k < fragments.size(); ++k)
-    if (fragments.oracle[k] > 0) list.push_back(uint32_t(k));
+    if (fragments.oracle[k] > 0 || lp_beta > 0) list.push_back(uint32_t(k));
   return list;
 }
 
@@ -120,6 +120,9 @@ class RunSolver {
         atoms_(atoms),
         box_(box),
         backend_(lp::make_backend(settings.technique.lp_backend)),
+        upper_backend_(settings.technique.lp_beta > 0
+                           ? lp::make_backend(settings.technique.lp_backend)
+                           : nullptr),
         taps_(settings.kernel.size * settings.kernel.size),
         tap_depth_(taps_),
         tap_weight_(taps_),
@@ -153,11 +156,29 @@ class RunSolver {
     } else {
       const lp::WarmStart at = warm_start_at(view_.fragments.layer[f], x, y, &atoms_);
       backend_->solve_into(problem_, cold ? nullptr : &at, s_);
+      if (upper_backend_) blend_with_maximum();
     }
     return s_;
   }
 
  private:
+  // lp.beta: s_.G <- G + beta (G+ - G), G+ = 1 - (the least mass behind z_f), solved cold (the
+  // warm bases remember the minimum's problems); a failed maximum fails the fragment.
+  void blend_with_maximum() {
+    if (s_.call != lp::CallStatus::Ok || s_.status != lp::ProblemStatus::Optimal) return;
+    upper_problem_ = problem_;
+    upper_problem_.behind = true;
+    upper_backend_->solve_into(upper_problem_, nullptr, upper_);
+    if (upper_.call != lp::CallStatus::Ok || upper_.status != lp::ProblemStatus::Optimal) {
+      s_.status =
+          upper_.status == lp::ProblemStatus::Optimal ? lp::ProblemStatus::Unstable : upper_.status;
+      return;
+    }
+    const double lower = std::clamp(s_.G, 0.0, 1.0);
+    const double upper = std::clamp(1 - upper_.G, lower, 1.0);
+    s_.G = lower + settings_.technique.lp_beta * (upper - lower);
+  }
+
   // The kernel's taps in kernel_distribution's order; the extra texel index picks the column (the
   // far plane's, one past the map, for taps outside it).
   void gather_taps(int x, int y) {
@@ -181,13 +202,13 @@ class RunSolver {
   const EvalSettings& settings_;
   const KernelAtomMap& atoms_;
   const std::optional<LpMomentBox>& box_;
-  std::unique_ptr<lp::Backend> backend_;
-  lp::Problem problem_;
+  std::unique_ptr<lp::Backend> backend_, upper_backend_;
+  lp::Problem problem_, upper_problem_;
   int taps_;
   std::vector<double> tap_depth_, tap_weight_;
   std::vector<const double*> tap_column_;
   std::vector<size_t> tap_texel_;
-  lp::Solution s_;
+  lp::Solution s_, upper_;
 };
 
 }  // namespace

@@ -18,11 +18,13 @@ struct LpViewAnswers {
   uint64_t solved = 0, infeasible = 0, unstable = 0;
 };
 
-// The fragments of `fragments` that need an LP: F_Z(z_f - delta_f) > 0 (the others have G = 0).
-std::vector<uint32_t> fragments_needing_lp(const Fragments& fragments);
+// The fragments of `fragments` that need an LP: F_Z(z_f - delta_f) > 0 (the others have G = 0),
+// or all of them when lp.beta > 0 (the maximum G+ may exceed 0 where F_Z does not).
+std::vector<uint32_t> fragments_needing_lp(const Fragments& fragments, double lp_beta = 0);
 
 // Solves the LPs of `needs_lp` (ascending fragment indices of `view`) with `factory`'s basis and
-// discretisation, the backend of `settings`; failed LPs are counted and shown lit (G = 0).
+// discretisation, the backend of `settings`; failed LPs are counted and shown lit (G = 0). With
+// lp.beta > 0 each answer is G + beta (G+ - G), G+ from the maximum's LP (solved cold).
 // `runs`: where each warm-start run begins in `needs_lp`, its size appended, each run's fragments
 // in texel order (a screen's units); null: bands of kWarmRunRows rows, `needs_lp` ascending.
 LpViewAnswers solve_lp_view(const ViewData& view, const std::vector<uint32_t>& needs_lp,

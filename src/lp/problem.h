@@ -62,6 +62,10 @@ struct Problem {
   // AtomMap (solution.h), so that the atoms standing for the same depths come back.
   std::vector<int> atom_extra, extra_atom;
   int zf_extra = -1;
+  // The objective's side (docs/reference.md §2, "The maximum"): false counts the mass strictly in
+  // front of z_f (G, the sharp lower bound); true the mass strictly behind it, whose minimum m
+  // gives the sharp upper bound G+ = 1 - m on the mass at or in front of z_f.
+  bool behind = false;
 
   int grid_size() const { return grid ? grid->size() : 0; }
   int cols() const { return grid_size() + extra.size(); }
@@ -73,8 +77,12 @@ struct Problem {
   double point(int j) const {
     return j < grid_size() ? grid->points[j] : extra.points[j - grid_size()];
   }
-  // The objective: 1 for mass strictly in front of z_f (docs/reference.md §1).
-  double cost(int j) const { return point(j) < zf ? 1.0 : 0.0; }
+  // The objective: 1 for mass strictly in front of z_f (docs/reference.md §1), or strictly behind
+  // it when `behind`.
+  double cost(int j) const {
+    const double z = point(j);
+    return (behind ? z > zf : z < zf) ? 1.0 : 0.0;
+  }
 };
 
 // Everything that depends only on the basis and the discretisation: the grid columns and the row

@@ -50,21 +50,42 @@ CameraImage render_camera(const Scene& scene, const CameraDesc& camera, int thre
   CameraImage image;
   image.width = camera.width;
   image.height = camera.height;
-  image.triangle.assign(stack.texel_count(), -1);
-  image.point.assign(stack.texel_count(), Eigen::Vector3d::Zero());
+  image.offsets.assign(stack.texel_count() + 1, 0);
+  const bool translucent = scene.translucent();
+  // Per pixel into its own slot first (parallel), then packed.
+  std::vector<std::vector<std::pair<uint32_t, Eigen::Vector3d>>> seen(stack.texel_count());
+  std::vector<std::vector<double>> seen_alpha(stack.texel_count());
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (size_t p = 0; p < stack.texel_count(); ++p) {
-    if (stack.layers(p) == 0) continue;
-    const uint32_t t = source[stack.triangle[stack.offsets[p]]];
-    const auto& tri = mesh.triangles[t];
-    const Eigen::Vector3d& a = mesh.vertices[tri[0]];
-    const Eigen::Vector3d normal = (mesh.vertices[tri[1]] - a).cross(mesh.vertices[tri[2]] - a);
     const Eigen::Vector3d ray = frame.ray(int(p % camera.width), int(p / camera.width));
-    const double facing = normal.dot(ray);
-    // A triangle seen edge-on covers the pixel's centre only by rounding: background there.
-    if (!(std::abs(facing) > 1e-12 * normal.norm())) continue;
-    image.triangle[p] = t;
-    image.point[p] = frame.position() + ray * (normal.dot(a - frame.position()) / facing);
+    for (uint64_t f = stack.offsets[p]; f < stack.offsets[p + 1]; ++f) {
+      const uint32_t t = source[stack.triangle[f]];
+      const auto& tri = mesh.triangles[t];
+      const Eigen::Vector3d& a = mesh.vertices[tri[0]];
+      const Eigen::Vector3d normal = (mesh.vertices[tri[1]] - a).cross(mesh.vertices[tri[2]] - a);
+      const double facing = normal.dot(ray);
+      // A triangle seen edge-on covers the pixel's centre only by rounding: an opaque scene shows
+      // background there, a translucent one what lies behind.
+      if (!(std::abs(facing) > 1e-12 * normal.norm())) {
+        if (translucent) continue;
+        break;
+      }
+      const Eigen::Vector3d point =
+          frame.position() + ray * (normal.dot(a - frame.position()) / facing);
+      const double alpha = translucent ? scene.opacity[scene.part[t]].at(point) : 1.0;
+      if (alpha <= 0) continue;  // fully transparent: nothing to see
+      seen[p].push_back({t, point});
+      seen_alpha[p].push_back(std::min(alpha, 1.0));
+      if (alpha >= 1 || !translucent) break;
+    }
+  }
+  for (size_t p = 0; p < stack.texel_count(); ++p) {
+    for (size_t k = 0; k < seen[p].size(); ++k) {
+      image.triangle.push_back(seen[p][k].first);
+      image.point.push_back(seen[p][k].second);
+      image.alpha.push_back(seen_alpha[p][k]);
+    }
+    image.offsets[p + 1] = image.triangle.size();
   }
   return image;
 }

@@ -85,7 +85,7 @@ LayerStack render_view(const Scene& scene, const LightViewDesc& view, int thread
         const OpacityDesc& o = scene.opacity[scene.part[stack.triangle[f]]];
         stack.alpha[f] = float(o.at(frame.to_world(raster)));
       }
-    stack.triangle.clear();
+    // The triangles stay: an unsorted blend draws in their order (BlendOrder::Submission).
   }
   stack.scene = scene.name;
   stack.view = view.name;

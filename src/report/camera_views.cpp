@@ -39,43 +39,55 @@ CameraView camera_view(const Scene& scene, const LightViewDesc& light, const Vie
   out.camera = camera.name;
   out.width = image.width;
   out.height = image.height;
-  out.diffuse.assign(image.triangle.size(), -1.0f);
   const Eigen::Vector3d to_light = frame.to_light();
   const CameraFrame eye(camera);
   struct Receiver {
     uint32_t pixel, texel;
     double zf, gx, gy;
+    uint64_t surface;
   };
   std::vector<Receiver> receivers;
-  for (size_t p = 0; p < image.triangle.size(); ++p) {
-    if (image.triangle[p] < 0) continue;
-    const auto& tri = scene.mesh.triangles[size_t(image.triangle[p])];
-    const Eigen::Vector3d &a = scene.mesh.vertices[tri[0]], &b = scene.mesh.vertices[tri[1]],
-                          &c = scene.mesh.vertices[tri[2]];
-    Eigen::Vector3d n = (b - a).cross(c - a).normalized();
-    const bool two_sided = scene.two_sided[size_t(image.triangle[p])];
-    // A two-sided surface is lit on the side the camera sees; a one-sided one only from outside.
-    if (two_sided && n.dot(eye.position() - image.point[p]) < 0) n = -n;
-    const double lambert = n.dot(to_light);
-    out.diffuse[p] = float(std::max(0.0, lambert));
-    // Receivers face the light (docs/reference.md §3); the others are in their own shadow.
-    if (!(lambert > 0)) continue;
-    const std::optional<Eigen::Vector2d> gradient =
-        plane_gradient(frame.to_raster(a), frame.to_raster(b), frame.to_raster(c));
-    if (!gradient || !gradient->allFinite()) {
-      out.diffuse[p] = 0;  // edge-on to the light: grazing, unlit
-      continue;
+  const size_t pixels = image.offsets.size() - 1;
+  out.diffuse.assign(pixels, -1.0f);
+  out.surface_offsets = image.offsets;
+  out.surface_diffuse.assign(image.triangle.size(), 0.0f);
+  out.surface_share.assign(image.triangle.size(), 0.0f);
+  out.surface_receiver.assign(image.triangle.size(), -1);
+  for (size_t p = 0; p < pixels; ++p) {
+    float transmitted = 1;  // front to back (docs/reference.md §7)
+    for (uint64_t s = image.offsets[p]; s < image.offsets[p + 1]; ++s) {
+      out.surface_share[s] = transmitted * float(image.alpha[s]);
+      transmitted *= float(1 - image.alpha[s]);
+      const auto& tri = scene.mesh.triangles[image.triangle[s]];
+      const Eigen::Vector3d &a = scene.mesh.vertices[tri[0]], &b = scene.mesh.vertices[tri[1]],
+                            &c = scene.mesh.vertices[tri[2]];
+      Eigen::Vector3d n = (b - a).cross(c - a).normalized();
+      const bool two_sided = scene.two_sided[image.triangle[s]];
+      // A two-sided surface is lit on the side the camera sees; a one-sided one only from outside.
+      if (two_sided && n.dot(eye.position() - image.point[s]) < 0) n = -n;
+      const double lambert = n.dot(to_light);
+      out.surface_diffuse[s] = float(std::max(0.0, lambert));
+      if (s == image.offsets[p]) out.diffuse[p] = out.surface_diffuse[s];
+      // Receivers face the light (docs/reference.md §3); the others are in their own shadow.
+      if (!(lambert > 0)) continue;
+      const std::optional<Eigen::Vector2d> gradient =
+          plane_gradient(frame.to_raster(a), frame.to_raster(b), frame.to_raster(c));
+      if (!gradient || !gradient->allFinite()) {
+        out.surface_diffuse[s] = 0;  // edge-on to the light: grazing, unlit
+        if (s == image.offsets[p]) out.diffuse[p] = 0;
+        continue;
+      }
+      const double gx = gradient->x(), gy = gradient->y();
+      const Eigen::Vector3d r = frame.to_raster(image.point[s]);
+      const int x = std::clamp(int(std::floor(r.x())), 0, map.width - 1),
+                y = std::clamp(int(std::floor(r.y())), 0, map.height - 1);
+      // The receiver is tested at its texel's centre, on its own plane: the shadow map is sampled
+      // there, and delta_f covers the kernel's reach from the centre (docs/reference.md §3), not
+      // the extra half texel from an arbitrary point in it (which made the ground shadow itself in
+      // a texel-periodic pattern). So a camera pixel gets exactly its light texel's receiver test.
+      const double zf = r.z() + gx * (x + 0.5 - r.x()) + gy * (y + 0.5 - r.y());
+      receivers.push_back({uint32_t(p), uint32_t(size_t(y) * map.width + x), zf, gx, gy, s});
     }
-    const double gx = gradient->x(), gy = gradient->y();
-    const Eigen::Vector3d r = frame.to_raster(image.point[p]);
-    const int x = std::clamp(int(std::floor(r.x())), 0, map.width - 1),
-              y = std::clamp(int(std::floor(r.y())), 0, map.height - 1);
-    // The receiver is tested at its texel's centre, on its own plane: the shadow map is sampled
-    // there, and delta_f covers the kernel's reach from the centre (docs/reference.md §3), not the
-    // extra half texel from an arbitrary point in it (which made the ground shadow itself in a
-    // texel-periodic pattern). So a camera pixel gets exactly its light texel's receiver test.
-    const double zf = r.z() + gx * (x + 0.5 - r.x()) + gy * (y + 0.5 - r.y());
-    receivers.push_back({uint32_t(p), uint32_t(size_t(y) * map.width + x), zf, gx, gy});
   }
   // Texel order (then pixel order), as collect_receivers lists a light view's fragments, so that
   // the LP techniques' warm-start runs cut the same way.
@@ -91,6 +103,7 @@ CameraView camera_view(const Scene& scene, const LightViewDesc& light, const Vie
     const ReceiverTest test =
         receiver_test(map, settings.kernel, settings.bias, int(r.texel % map.width),
                       int(r.texel / map.width), r.zf, r.gx, r.gy);
+    out.surface_receiver[r.surface] = int64_t(out.pixel.size());
     out.pixel.push_back(r.pixel);
     f.texel.push_back(r.texel);
     f.layer.push_back(0);
@@ -103,15 +116,27 @@ CameraView camera_view(const Scene& scene, const LightViewDesc& light, const Vie
 }
 
 std::vector<float> shade_camera_view(const CameraView& view, const std::vector<double>& shadow) {
-  std::vector<float> lit(view.diffuse.size(), 0.0f);  // the light's visibility 1 - G per pixel
-  for (size_t k = 0; k < view.pixel.size(); ++k) lit[view.pixel[k]] = float(1 - shadow[k]);
-  std::vector<float> rgb(view.diffuse.size() * 3);
-  for (size_t p = 0; p < view.diffuse.size(); ++p)
+  const size_t pixels = view.diffuse.size();
+  std::vector<float> rgb(pixels * 3);
+  for (size_t p = 0; p < pixels; ++p) {
+    const uint64_t first = view.surface_offsets[p], last = view.surface_offsets[p + 1];
+    if (first == last) {
+      std::copy(kSky, kSky + 3, &rgb[p * 3]);
+      continue;
+    }
+    // Linear radiance composited front to back; the sky (sRGB) behind what the shares leave.
+    float linear = 0, left = 1;
+    for (uint64_t s = first; s < last; ++s) {
+      const int64_t k = view.surface_receiver[s];
+      const float lit = k >= 0 ? float(1 - shadow[size_t(k)]) : 0.0f;  // the light's visibility
+      linear += view.surface_share[s] * kAlbedo *
+                (kAmbient + (1 - kAmbient) * view.surface_diffuse[s] * lit);
+      left -= view.surface_share[s];
+    }
     for (int ch = 0; ch < 3; ++ch)
       rgb[p * 3 + ch] =
-          view.diffuse[p] < 0
-              ? kSky[ch]
-              : to_srgb(kAlbedo * (kAmbient + (1 - kAmbient) * view.diffuse[p] * lit[p]));
+          left > 0 ? to_srgb(linear + left * std::pow(kSky[ch], 2.2f)) : to_srgb(linear);
+  }
   return rgb;
 }
 
@@ -124,12 +149,20 @@ std::vector<float> difference_image(const CameraView& view, const std::vector<do
     for (int ch = 0; ch < 3; ++ch) rgb[p * 3 + ch] = grey;
   }
   constexpr float kDarker[3] = {1.0f, 0.15f, 0.1f}, kLighter[3] = {0.15f, 0.45f, 1.0f};
-  for (size_t k = 0; k < view.pixel.size(); ++k) {
-    const double d = shadow[k] - view.receivers.fragments.pcf[k];
+  for (size_t p = 0; p < view.diffuse.size(); ++p) {
+    // The pixel's difference: its receivers' differences by their shares of it.
+    double d = 0;
+    bool any = false;
+    for (uint64_t s = view.surface_offsets[p]; s < view.surface_offsets[p + 1]; ++s)
+      if (const int64_t k = view.surface_receiver[s]; k >= 0) {
+        d += view.surface_share[s] * (shadow[size_t(k)] - view.receivers.fragments.pcf[size_t(k)]);
+        any = true;
+      }
+    if (!any) continue;
     const float t = float(std::min(1.0, std::abs(d) / scale));
     const float* colour = d > 0 ? kDarker : kLighter;
     for (int ch = 0; ch < 3; ++ch) {
-      float& v = rgb[size_t(view.pixel[k]) * 3 + ch];
+      float& v = rgb[p * 3 + ch];
       v = (1 - t) * v + t * colour[ch];
     }
   }

@@ -22,8 +22,16 @@ struct CameraView {
   // The light view's shadow map with the camera's receivers as its fragments (in texel order).
   ViewData receivers;
   std::vector<uint32_t> pixel;  // per receiver: its pixel
-  // Per pixel: max(0, n . l) of the surface seen (0 facing away from the light), -1 background.
+  // Per pixel: max(0, n . l) of the nearest surface seen (0 facing away from the light), -1
+  // background.
   std::vector<float> diffuse;
+  // Every surface a pixel shows (CameraImage's), nearest first: its diffuse term, its share of the
+  // pixel (its alpha times the transmittance of those in front: front-to-back compositing, 1 for
+  // an opaque scene's one surface) and its receiver (-1: it faces away from the light). The sky
+  // takes what the shares leave.
+  std::vector<uint64_t> surface_offsets;
+  std::vector<float> surface_diffuse, surface_share;
+  std::vector<int64_t> surface_receiver;
 };
 
 // `light`: the view as rendered for `light_view` (its resolution). The camera sees `scene`.

@@ -37,25 +37,59 @@ void add_translucent_atoms(const LayerStack& stack, ShadowMap& map) {
       if (alpha <= 0) continue;  // a fully transparent surface stops nothing
       map.atom_depth.push_back(stack.depth[i]);
       map.atom_mass.push_back(alpha >= 1 ? transmitted : transmitted * alpha);
+      map.atom_alpha.push_back(std::min(alpha, 1.0));
       transmitted = alpha >= 1 ? 0 : transmitted * (1 - alpha);
     }
     if (transmitted > 0) {
       map.atom_depth.push_back(1.0);
       map.atom_mass.push_back(transmitted);
+      map.atom_alpha.push_back(0.0);
     }
     map.atom_offsets[t + 1] = map.atom_depth.size();
   }
 }
 
+// The masses an unsorted blend gives the same atoms (docs/reference.md §7): the opaque pass leaves
+// the texel's last atom (its first opaque surface or the far plane) with everything; each
+// translucent surface in front, drawn in triangle order, takes alpha of the blend ("over") and
+// leaves 1 - alpha of what was there. A convex combination at every step, so the result is again a
+// distribution on the same atoms, with masses that depend on the order.
+void add_submission_masses(const LayerStack& stack, ShadowMap& map) {
+  if (stack.triangle.size() != stack.fragment_count())
+    throw InputError("translucent.blend: submission order needs the stack's triangles");
+  map.atom_blend.assign(map.atom_mass.size(), 0.0);
+  struct Drawn {
+    uint32_t triangle;
+    uint64_t atom;
+    double alpha;
+    bool operator<(const Drawn& o) const { return triangle < o.triangle; }
+  };
+  std::vector<Drawn> drawn;
+  for (size_t t = 0; t < stack.texel_count(); ++t) {
+    const uint64_t first = map.atom_offsets[t], last = map.atom_offsets[t + 1] - 1;
+    drawn.clear();
+    uint64_t a = first;  // the atoms in front of the last, in depth order (add_translucent_atoms)
+    for (uint64_t i = stack.offsets[t]; i < stack.offsets[t + 1] && a < last; ++i)
+      if (stack.alpha[i] > 0) drawn.push_back({stack.triangle[i], a++, double(stack.alpha[i])});
+    std::stable_sort(drawn.begin(), drawn.end());
+    map.atom_blend[last] = 1;
+    for (const Drawn& d : drawn) {
+      for (uint64_t b = first; b <= last; ++b) map.atom_blend[b] *= 1 - d.alpha;
+      map.atom_blend[d.atom] = d.alpha;
+    }
+  }
+}
+
 }  // namespace
 
-ShadowMap layer0_shadow_map(const LayerStack& stack) {
+ShadowMap layer0_shadow_map(const LayerStack& stack, BlendOrder order) {
   ShadowMap map;
   map.width = stack.width;
   map.height = stack.height;
   map.depth.resize(stack.texel_count());
   for (size_t t = 0; t < stack.texel_count(); ++t) map.depth[t] = stack.layer0_depth(t);
   if (stack.translucent()) add_translucent_atoms(stack, map);
+  if (stack.translucent() && order == BlendOrder::Submission) add_submission_masses(stack, map);
   return map;
 }
 
@@ -144,10 +178,12 @@ void kernel_distribution(const ShadowMap& map, const GaussianKernel& kernel, int
 
 void kernel_atoms(const ShadowMap& map, const GaussianKernel& kernel, int x, int y,
                   std::vector<double>& depths, std::vector<double>& weights,
-                  std::vector<size_t>* atoms, std::vector<uint32_t>* tap_offsets) {
+                  std::vector<size_t>* atoms, std::vector<uint32_t>* tap_offsets,
+                  std::vector<double>* alphas) {
   const int r = kernel.radius();
   depths.clear(), weights.clear();
   if (atoms) atoms->clear();
+  if (alphas) alphas->clear();
   if (tap_offsets) tap_offsets->assign(1, 0);
   for (int dy = -r; dy <= r; ++dy)
     for (int dx = -r; dx <= r; ++dx) {
@@ -159,11 +195,13 @@ void kernel_atoms(const ShadowMap& map, const GaussianKernel& kernel, int x, int
         depths.push_back(inside ? map.depth[t] : 1.0);
         weights.push_back(w);
         if (atoms) atoms->push_back(inside ? t : map.atom_count());
+        if (alphas) alphas->push_back(inside && map.depth[t] < 1 ? 1.0 : 0.0);
       } else {
         for (uint64_t a = map.atom_offsets[t]; a < map.atom_offsets[t + 1]; ++a) {
           depths.push_back(map.atom_depth[a]);
-          weights.push_back(w * map.atom_mass[a]);
+          weights.push_back(w * map.blended_mass()[a]);
           if (atoms) atoms->push_back(a);
+          if (alphas) alphas->push_back(map.atom_alpha[a]);
         }
       }
       if (tap_offsets) tap_offsets->push_back(uint32_t(depths.size()));

@@ -47,15 +47,30 @@ struct ShadowMap {
   std::vector<double> depth;
   std::vector<uint64_t> atom_offsets;  // empty: every surface is opaque
   std::vector<double> atom_depth, atom_mass;
+  // What the map's blending gives each atom when it is not the exact sorted blend (BlendOrder::
+  // Submission); empty: atom_mass. The moment maps and the kernel's atoms read these, the reference
+  // atom_mass.
+  std::vector<double> atom_blend;
+  // Each atom's opacity alpha (1 for the first opaque surface, 0 for the far plane): what an
+  // order-independent absorbance map (Fourier opacity mapping) accumulates.
+  std::vector<double> atom_alpha;
   bool translucent() const { return !atom_offsets.empty(); }
+  const std::vector<double>& blended_mass() const {
+    return atom_blend.empty() ? atom_mass : atom_blend;
+  }
   size_t atom_count() const { return translucent() ? atom_depth.size() : depth.size(); }
   // Depth at (x, y); outside the map counts as the far plane (docs/reference.md §3).
   double at(int x, int y) const {
     return x < 0 || y < 0 || x >= width || y >= height ? 1.0 : depth[size_t(y) * width + x];
   }
 };
-// The shadow map of a stack, with its texels' translucent distributions when any alpha < 1.
-ShadowMap layer0_shadow_map(const LayerStack& stack);
+// How a translucent moment map blends its texels' surfaces (docs/reference.md §7): Sorted, front
+// to back, gives the exact E_Z[b] (seed 004 asks for "any OIT method"); Submission blends them in
+// the scene's triangle order over the first opaque surface, as an unsorted GPU pass does.
+enum class BlendOrder { Sorted, Submission };
+// The shadow map of a stack, with its texels' translucent distributions when any alpha < 1
+// (Submission needs the stack's triangles).
+ShadowMap layer0_shadow_map(const LayerStack& stack, BlendOrder order = BlendOrder::Sorted);
 
 struct Fragments {
   int width = 0, height = 0;
@@ -89,11 +104,14 @@ void kernel_distribution(const ShadowMap& map, const GaussianKernel& kernel, int
 
 // The kernel's distribution over the atoms of its taps' texels (docs/reference.md §7): for an
 // opaque map exactly kernel_distribution's taps; for a translucent one, tap by tap, each atom of
-// the tap's texel with weight k_t * mass. With `atoms`, each one's global index (atom_count() for
-// taps outside the map); with `tap_offsets`, where each tap's atoms begin (size^2 + 1 entries).
+// the tap's texel with weight k_t * its blended mass (ShadowMap::blended_mass). With `atoms`, each
+// one's global index (atom_count() for taps outside the map); with `tap_offsets`, where each tap's
+// atoms begin (size^2 + 1 entries); with `alphas`, each atom's opacity (ShadowMap::atom_alpha; an
+// opaque map's texels 1, the far plane 0).
 void kernel_atoms(const ShadowMap& map, const GaussianKernel& kernel, int x, int y,
                   std::vector<double>& depths, std::vector<double>& weights,
                   std::vector<size_t>* atoms = nullptr,
-                  std::vector<uint32_t>* tap_offsets = nullptr);
+                  std::vector<uint32_t>* tap_offsets = nullptr,
+                  std::vector<double>* alphas = nullptr);
 
 }  // namespace mb

@@ -5,11 +5,13 @@ namespace mb {
 namespace {
 
 // A translucent map's texels (docs/reference.md §7): E_{Z_t}[b] = sum_i T(z_i) alpha_i b(z_i), what
-// alpha blending b(z_i) front to back produces, written over the padded texels inside the map.
+// alpha blending b(z_i) front to back produces (in submission order: ShadowMap::blended_mass),
+// written over the padded texels inside the map.
 void blend_translucent_texels(const ShadowMap& map, const Basis& basis, int r,
                               std::vector<double>& stored) {
   const int m = int(basis.size()), w = map.width, pw = w + 2 * r;
   std::vector<double> values(map.atom_depth.size());
+  const std::vector<double>& mass = map.blended_mass();  // what the blending gives each atom
   for (int j = 0; j < m; ++j) {
     basis[j].evaluate(map.atom_depth, values);
     for (int y = 0; y < map.height; ++y)
@@ -17,7 +19,7 @@ void blend_translucent_texels(const ShadowMap& map, const Basis& basis, int r,
         const size_t t = size_t(y) * w + x;
         double sum = 0;
         for (uint64_t a = map.atom_offsets[t]; a < map.atom_offsets[t + 1]; ++a)
-          sum += map.atom_mass[a] * values[a];
+          sum += mass[a] * values[a];
         stored[(size_t(y + r) * pw + x + r) * m + j] = sum;
       }
   }

@@ -97,6 +97,10 @@ std::vector<OptionSpec> sweep_option_specs() {
 SweepSettings sweep_settings_from(const Config& config, int threads) {
   SweepSettings s;
   s.eval = shadow_settings_from(config, threads);
+  if (s.eval.technique.lp_beta != 0)
+    throw InputError("lp.beta: " + std::to_string(s.eval.technique.lp_beta) +
+                     "; a sweep ranks bases by their sharp lower bound, expected 0 (eval takes "
+                     "lp.beta > 0)");
   const DatasetOptions dataset = dataset_options_from(config);
   s.dataset = dataset.dataset;
   s.resolution = dataset.resolution;

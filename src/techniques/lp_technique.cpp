@@ -1,5 +1,8 @@
 #include "techniques/lp_technique.h"
 
+#include <algorithm>
+#include <limits>
+
 #include "continuous/discretized.h"
 #include "continuous/moment_box.h"
 #include "lp/solution.h"
@@ -18,9 +21,15 @@ class LpTechnique : public Technique {
                   this->basis().check_independent(p.lp.lo, p.lp.hi), this->basis()),
                  p.lp),
         backend_(lp::make_backend(p.lp_backend)),
-        box_(lp_moment_box(p.lp_moment_box, this->basis())) {}
+        box_(lp_moment_box(p.lp_moment_box, this->basis())),
+        beta_(p.lp_beta) {}
   bool needs_distribution() const override { return true; }
-  double darkening_bound() const override { return kLpDarkeningBound; }
+  double darkening_bound() const override {
+    return beta_ > 0 ? std::numeric_limits<double>::infinity() : kLpDarkeningBound;
+  }
+  std::string darkening_reason() const override {
+    return beta_ > 0 ? "lp.beta > 0 blends the sharp lower bound towards the LP's maximum" : "";
+  }
   const lp::ProblemFactory* lp_factory() const override { return &factory_; }
 
   double shadow(const FragmentInput& in) override {
@@ -29,7 +38,7 @@ class LpTechnique : public Technique {
     double cdf = 0;
     for (size_t t = 0; t < in.kernel_depths.size(); ++t)
       if (in.kernel_depths[t] < in.zf) cdf += in.kernel_weights[t];
-    if (cdf == 0) return 0;
+    if (cdf == 0 && beta_ == 0) return 0;
     // The kernel's own distribution fixes the moments, so the program is feasible by construction.
     // One fragment alone, from scratch: evaluate_technique solves whole views with warm starts
     // instead (solve_lp_view), to the same certified answers.
@@ -50,20 +59,30 @@ class LpTechnique : public Technique {
     } else {
       backend_->solve_into(problem, nullptr, solution_);
     }
-    const lp::Solution& s = solution_;
-    if (s.call != lp::CallStatus::Ok || s.status != lp::ProblemStatus::Optimal) {
-      ++failures_;
-      return 0;
-    }
-    return std::clamp(s.G, 0.0, 1.0);
+    if (!optimal(solution_)) return 0;
+    const double lower = std::clamp(solution_.G, 0.0, 1.0);
+    if (beta_ == 0) return lower;
+    // lp.beta: the maximum G+ = 1 - (the least mass behind z_f) over the same distributions.
+    problem.behind = true;
+    backend_->solve_into(problem, nullptr, solution_);
+    if (!optimal(solution_)) return 0;
+    const double upper = std::clamp(1 - solution_.G, lower, 1.0);
+    return lower + beta_ * (upper - lower);
   }
   size_t failures() const override { return failures_; }
 
  private:
+  bool optimal(const lp::Solution& s) {
+    const bool ok = s.call == lp::CallStatus::Ok && s.status == lp::ProblemStatus::Optimal;
+    failures_ += !ok;
+    return ok;
+  }
+
   lp::ProblemFactory factory_;
   std::unique_ptr<lp::Backend> backend_;
   lp::Solution solution_;  // reused: no allocation per LP
   std::optional<LpMomentBox> box_;
+  double beta_ = 0;
   size_t failures_ = 0;
 };
 

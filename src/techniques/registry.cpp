@@ -21,6 +21,7 @@ std::unique_ptr<Technique> make_esm_zmax(const TechniqueParams&);
 std::unique_ptr<Technique> make_esm_threshold(const TechniqueParams&);
 std::unique_ptr<Technique> make_evsm(const std::string& name, const TechniqueParams&);
 std::unique_ptr<Technique> make_csm(const TechniqueParams&);
+std::unique_ptr<Technique> make_fom(const TechniqueParams&);
 std::unique_ptr<Technique> make_hamburger4(const TechniqueParams&);
 std::unique_ptr<Technique> make_hamburger4_float(const TechniqueParams&);
 std::unique_ptr<Technique> make_hamburger4_16bit(const TechniqueParams&);
@@ -107,6 +108,20 @@ const TechniqueOption kCsmDamping{
     {"csm.damping", OptionType::Number, "2",
      "CSM ringing suppression: term k scaled by exp(-damping (k/M)^2).", 0, 100},
     &P::csm_damping};
+const TechniqueOption kFomTerms{
+    {"fom.terms", OptionType::Integer, "3",
+     "Fourier opacity mapping: terms M of the absorbance's series (2M + 1 coefficients; 3 fills "
+     "two "
+     "RGBA targets less one channel, the storage of two 4MSM maps; Jansen & Bavoil 2010 vary it).",
+     1, 16},
+    &P::fom_terms};
+const TechniqueOption kFomMaxOpacity{
+    {"fom.max_opacity", OptionType::Number, "0.99",
+     "Fourier opacity mapping: the opacity an opaque surface is given (its absorbance -ln(1 - "
+     "alpha) must be finite; 0.99 lets 1 % through where the series is exact, and larger values "
+     "ring more). Our choice: the seeds give none.",
+     0, 0.999999},
+    &P::fom_max_opacity};
 
 const std::vector<const TechniqueOption*> kAllOptions{&kHamburger4Alpha,
                                                       &kHamburger4FloatAlpha,
@@ -124,7 +139,9 @@ const std::vector<const TechniqueOption*> kAllOptions{&kHamburger4Alpha,
                                                       &kEvsmCNegative,
                                                       &kLvsmLayers,
                                                       &kCsmTerms,
-                                                      &kCsmDamping};
+                                                      &kCsmDamping,
+                                                      &kFomTerms,
+                                                      &kFomMaxOpacity};
 
 // A factory that ignores the row's name (every row but EVSM's and the LP's).
 template <std::unique_ptr<Technique> (*make)(const TechniqueParams&)>
@@ -276,6 +293,14 @@ std::vector<TechniqueEntry> make_table() {
        {&kCsmTerms, &kCsmDamping},
        by_params<make_csm>,
        VerifyRecipe{.judge = VerifyRecipe::Judge::Exceedance, .lp_basis = csm_basis}},
+      {"fom",
+       "Fourier opacity mapping (Jansen & Bavoil 2010): a Fourier series of the absorbance, for "
+       "translucent occluders (seed 004 §4.1)",
+       "double",
+       std::string(kNotProven) + ": truncation rings, and filtering averages absorbance",
+       {},
+       {&kFomTerms, &kFomMaxOpacity},
+       by_params<make_fom>},
       {"hamburger4",
        "4MSM on R (Hamburger), double",
        "double",

@@ -24,6 +24,7 @@ struct FragmentInput {
   // being [tap_offsets[t], tap_offsets[t + 1]) (empty tap_offsets: one atom per tap).
   std::span<const double> kernel_depths, kernel_weights;
   std::span<const uint32_t> tap_offsets;
+  std::span<const double> kernel_alpha;  // each atom's opacity (shadow/fragments.h, kernel_atoms)
 };
 
 // Every technique parameter, with the defaults of the eval options table.
@@ -40,9 +41,12 @@ struct TechniqueParams {
   int lvsm_layers = 4;                               // LVSM depth layers
   int csm_terms = 8;                                 // CSM Fourier terms M
   double csm_damping = 2;                            // CSM ringing suppression
+  int fom_terms = 3;              // Fourier opacity mapping: terms M (2M + 1 coefficients)
+  double fom_max_opacity = 0.99;  // FOM: opaque surfaces absorb -ln(1 - this)
   lp::Discretization lp;
   std::string lp_backend = "fast";
   std::string lp_moment_box = "none";  // lp_technique.h, lp_moment_box
+  double lp_beta = 0;                  // G + lp_beta (G+ - G), G+ the LP's maximum (lp.beta)
 };
 
 class Technique {

@@ -12,6 +12,7 @@
 #include "continuous/moment_box.h"
 #include "lp/problem.h"
 #include "lp/solution.h"
+#include "moments/hamburger.h"
 #include "scene/procedural.h"
 #include "techniques/registry.h"
 #include "util/error.h"
@@ -137,6 +138,10 @@ std::vector<VerifyTarget> verify_targets(const std::vector<std::string>& techniq
     t.on_r = r.on_r;
     t.cantelli_support = r.cantelli_support;
     t.alpha = r.alpha ? params.*r.alpha : 0;
+    t.upper = t.exact && t.on_r &&
+              (t.lp_basis == std::vector<std::string>{"power4"} ||
+               t.lp_basis == std::vector<std::string>{"power6"});
+    t.upper_judged = t.upper && t.lp_basis == std::vector<std::string>{"power4"};
     out.push_back(std::move(t));
   }
   return out;
@@ -221,6 +226,68 @@ double solve_grid(const VerifyTarget& target, const VerifyInstance& inst,
   }
   for (double& weight : witness.weights) weight /= total;
   return s.G;
+}
+
+// Hamburger's upper bound G + w_1 from the canonical distribution through z_f (moments/hamburger.h)
+// against the LP's maximum (Problem::behind) with the canonical nodes among the LP's points: both
+// are then the supremum over R of the mass at or in front of z_f (the LP's points lie in R, and
+// the canonical distribution is among its distributions), so they must agree to the tolerance.
+// Both in the kernel's local coordinates u = (z - mean) / spread, where both bounds are the same
+// (Problem 1 on R with power moments is invariant under z -> (z - c) / s): raw moments of a
+// narrow kernel rounded to double move either by up to 1e-4 (FINDINGS §7b), which is the
+// moments' doing and not what this compares. The LP's grid spans the kernel's atoms +- 4 spreads.
+void solve_upper(const VerifyTarget& target, const VerifyInstance& inst, VerifyCase& c,
+                 lp::Backend& fast, lp::Backend& glpk) {
+  const int m = target.lp_basis.front() == "power6" ? 6 : 4;
+  double mean = 0, spread = 0;
+  for (size_t a = 0; a < inst.depths.size(); ++a) mean += inst.weights[a] * inst.depths[a];
+  for (double z : inst.depths) spread = std::max(spread, std::abs(z - mean));
+  if (spread == 0) spread = 1;
+  std::vector<double> u(inst.depths.size());
+  for (size_t a = 0; a < u.size(); ++a) u[a] = (inst.depths[a] - mean) / spread;
+  const double uf = (inst.zf - mean) / spread;
+  double b[6] = {};
+  for (size_t a = 0; a < u.size(); ++a) {
+    double power = 1;
+    for (int j = 0; j < m; ++j) b[j] += inst.weights[a] * (power *= u[a]);
+  }
+  const MsmBound<double> r = m == 4 ? hamburger4(b, uf) : hamburger6(b, uf);
+  if (!std::isfinite(r.lower + r.at_zf)) return;
+  c.closed_upper = r.lower + r.at_zf;
+  const double lo = std::min(uf, -1.0) - 4, hi = std::max(uf, 1.0) + 4;
+  const lp::ProblemFactory factory(Basis::parse(target.lp_basis),
+                                   lp::Discretization{lo, hi, 513, false});
+  lp::Problem problem = factory.from_distribution(u, inst.weights, uf);
+  const double reach = 10 * (hi - lo);
+  std::vector<double> nodes;
+  for (int n = 0; n < r.node_count; ++n) {
+    const bool near = r.nodes[n] >= lo - reach && r.nodes[n] <= hi + reach;
+    if (near && r.weights[n] > 0) nodes.push_back(r.nodes[n]);
+    c.upper_limited = c.upper_limited || (!near && r.weights[n] > 0);
+  }
+  factory.add_points(problem, nodes);
+  problem.behind = true;
+  lp::Solution s = fast.solve(problem);
+  if (s.status != lp::ProblemStatus::Optimal) s = glpk.solve(problem);
+  if (s.call == lp::CallStatus::Ok && s.status == lp::ProblemStatus::Optimal) c.lp_upper = 1 - s.G;
+}
+
+// The upper-bound comparison of solve_upper, reduced: within the tolerance and the instance's
+// rounding allowance, or (a node beyond reach) at least not below the LP's maximum.
+void reduce_upper(const std::vector<VerifyCase>& cases, double tolerance,
+                  VerifySolverResult& result) {
+  for (const auto& c : cases) {
+    if (!std::isfinite(c.closed_upper) || !std::isfinite(c.lp_upper)) continue;
+    ++result.upper_compared;
+    const double d = c.closed_upper - c.lp_upper, allowed = tolerance + c.rounding;
+    if (c.upper_limited) {
+      ++result.upper_limited;
+      result.upper_beyond += d < -allowed;
+      continue;
+    }
+    result.upper_max_difference = std::max(result.upper_max_difference, std::abs(d));
+    result.upper_beyond += std::abs(d) > allowed;
+  }
 }
 
 // The closed form on an instance's stored moments: NaN when it gives no number.
@@ -395,6 +462,7 @@ VerifySolverResult verify_solver(const VerifyTarget& target, const TechniqueMake
         else if (continuous)
           solve_continuous(target, lp_basis, degree, seed_factory, instances[i], *fast, cases[i],
                            witnesses[i].back());
+        if (target.upper) solve_upper(target, instances[i], cases[i], *fast, *glpk);
       });
   }
   errors.rethrow();
@@ -404,6 +472,7 @@ VerifySolverResult verify_solver(const VerifyTarget& target, const TechniqueMake
       cases[i].above_witness =
           above_witnesses(*probe, stored_moments, instances[i].zf, witnesses[i], box_rows);
   reduce_cases(target, cases, grids, continuous, box_rows, tolerance, worst_count, result);
+  if (target.upper) reduce_upper(cases, tolerance, result);
   return result;
 }
 

@@ -75,21 +75,25 @@ inline void FastSimplex<K>::solve(const Problem& p, WarmOffers& warm, Solution& 
   grid_points_ = grid.data();
   extra_points_ = p.extra.points.data();
   cell_scale_ = grid.back() > grid.front() ? (g_ - 1) / (grid.back() - grid.front()) : 0.0;
-  const int in_front = grid_bound(grid, p.zf, false, cell_scale_);
-  // Along a run the grid stays and z_f moves by a few cells, so only the cells between the last
-  // problem's prefix and this one's are rewritten.
-  if (p.grid != costed_grid_) {
-    std::fill(cost_.begin(), cost_.begin() + in_front, 1.0);
-    std::fill(cost_.begin() + in_front, cost_.begin() + g_, 0.0);
-    costed_grid_ = p.grid;
-    grid_first_row_ = constant_first_row(p.grid->values.data(), g_);
-  } else if (in_front != costed_front_) {
-    const bool ones = in_front > costed_front_;
-    std::fill(cost_.begin() + std::min(in_front, costed_front_),
-              cost_.begin() + std::max(in_front, costed_front_), ones ? 1.0 : 0.0);
+  if (p.behind) {
+    cost_behind(p);
+  } else {
+    const int in_front = grid_bound(grid, p.zf, false, cell_scale_);
+    // Along a run the grid stays and z_f moves by a few cells, so only the cells between the last
+    // problem's prefix and this one's are rewritten.
+    if (p.grid != costed_grid_) {
+      std::fill(cost_.begin(), cost_.begin() + in_front, 1.0);
+      std::fill(cost_.begin() + in_front, cost_.begin() + g_, 0.0);
+      costed_grid_ = p.grid;
+      grid_first_row_ = constant_first_row(p.grid->values.data(), g_);
+    } else if (in_front != costed_front_) {
+      const bool ones = in_front > costed_front_;
+      std::fill(cost_.begin() + std::min(in_front, costed_front_),
+                cost_.begin() + std::max(in_front, costed_front_), ones ? 1.0 : 0.0);
+    }
+    costed_front_ = in_front;
+    lanes::front_costs(extra_points_, e_, p.zf, cost_.data() + g_);
   }
-  costed_front_ = in_front;
-  lanes::front_costs(extra_points_, e_, p.zf, cost_.data() + g_);
   composite_cost_ = std::numeric_limits<double>::quiet_NaN();  // cost() computes it if asked
 
   if (warm.usable > 0) {
@@ -115,6 +119,19 @@ inline void FastSimplex<K>::solve(const Problem& p, WarmOffers& warm, Solution& 
   phase_ = 2;
   if (solve_phase2(s)) return;
   unstable(s);
+}
+
+// The maximum's objective (Problem::behind): ones on the grid's suffix behind z_f and on the extra
+// points behind it. Rare (lp.beta > 0), so every cost is written and the front prefix cache is
+// dropped.
+template <int K>
+inline void FastSimplex<K>::cost_behind(const Problem& p) {
+  const int at_or_front = grid_bound(p.grid->points, p.zf, true, cell_scale_);
+  std::fill(cost_.begin(), cost_.begin() + at_or_front, 0.0);
+  std::fill(cost_.begin() + at_or_front, cost_.begin() + g_, 1.0);
+  for (int e = 0; e < e_; ++e) cost_[g_ + e] = extra_points_[e] > p.zf ? 1.0 : 0.0;
+  grid_first_row_ = constant_first_row(p.grid->values.data(), g_);
+  costed_grid_ = nullptr;
 }
 
 // A failed start: only the pivots it spent are kept.

@@ -62,6 +62,7 @@ class FastSimplex {
   // driver.h: one LP from the warm bases or from scratch, with the retry
   void solve(const Problem& p, WarmOffers& warm, Solution& s);
   static void start_over(Solution& s);
+  void cost_behind(const Problem& p);
   bool repair_with_composite(Solution& s);
   void unstable(Solution& s) const;
   bool solve_phase2(Solution& s);
