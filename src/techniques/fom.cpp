@@ -2,7 +2,10 @@
 // classic filterable map for translucent occluders. It stores the Fourier series on [0, 1] of the
 // absorption density sigma(z) = sum_i A_i delta(z - z_i), A_i = -ln(1 - alpha_i), which adds up in
 // any order, so no sorting is needed; the transmittance to z_f is exp(-(integral of the truncated
-// series up to z_f)).
+// series up to z_f)). Opaque occluders go to an ordinary shadow map beside it, as in Jansen &
+// Bavoil (their absorbance is infinite, and a 2M + 1 term series spreads a receiver's own opaque
+// surface over ~1/M of the depth range: every receiver would shadow itself): the light is the PCF
+// visibility of the opaque map times the series' transmittance.
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -16,17 +19,13 @@ namespace {
 
 class FomTechnique : public Technique {
  public:
-  FomTechnique(int terms, double max_opacity)
-      : Technique("fom", Basis(), double_storage()),
-        terms_(terms),
-        max_absorbance_(-std::log1p(-max_opacity)),
-        a_(terms + 1),
-        b_(terms + 1) {}
+  explicit FomTechnique(int terms)
+      : Technique("fom", Basis(), double_storage()), terms_(terms), a_(terms + 1), b_(terms + 1) {}
   bool needs_distribution() const override { return true; }
   double darkening_bound() const override { return std::numeric_limits<double>::infinity(); }
   std::string darkening_reason() const override {
-    return "a truncated Fourier series of the absorbance rings (Gibbs), and its filtering "
-           "averages absorbance, not transmittance";
+    return "a truncated Fourier series of the absorbance rings (Gibbs) and spreads each surface "
+           "over ~1/M of the depth range, and its filtering averages absorbance, not transmittance";
   }
 
   // The kernel's coefficients: each tap's, weighted by its kernel weight k_t, which is what
@@ -35,6 +34,7 @@ class FomTechnique : public Technique {
   double shadow(const FragmentInput& in) override {
     std::fill(a_.begin(), a_.end(), 0.0);
     std::fill(b_.begin(), b_.end(), 0.0);
+    double visible = 0;  // PCF of the opaque map: taps whose first opaque surface is behind z_f
     const size_t taps =
         in.tap_offsets.empty() ? in.kernel_depths.size() : in.tap_offsets.size() - 1;
     for (size_t t = 0; t < taps; ++t) {
@@ -42,15 +42,17 @@ class FomTechnique : public Technique {
       const size_t end = in.tap_offsets.empty() ? t + 1 : in.tap_offsets[t + 1];
       double weight = 0;
       for (size_t i = begin; i < end; ++i) weight += in.kernel_weights[i];
+      double opaque = 1;  // the far plane where the tap has no opaque surface
       for (size_t i = begin; i < end; ++i) {
         const double alpha = in.kernel_alpha[i];
-        if (alpha <= 0) continue;
-        // Opaque surfaces would absorb infinitely: fom.max_opacity caps them.
-        const double absorbance = std::min(-std::log1p(-std::min(alpha, 1.0)), max_absorbance_);
-        add_atom(weight * absorbance, in.kernel_depths[i]);
+        if (alpha >= 1)
+          opaque = in.kernel_depths[i];
+        else if (alpha > 0)
+          add_atom(weight * -std::log1p(-alpha), in.kernel_depths[i]);
       }
+      visible += opaque < in.zf ? 0 : weight;
     }
-    return 1 - std::exp(-std::max(0.0, absorbance_to(in.zf)));
+    return 1 - visible * std::exp(-std::max(0.0, absorbance_to(in.zf)));
   }
 
  private:
@@ -73,14 +75,13 @@ class FomTechnique : public Technique {
   }
 
   int terms_;
-  double max_absorbance_;
   std::vector<double> a_, b_;
 };
 
 }  // namespace
 
 std::unique_ptr<Technique> make_fom(const TechniqueParams& p) {
-  return std::make_unique<FomTechnique>(p.fom_terms, p.fom_max_opacity);
+  return std::make_unique<FomTechnique>(p.fom_terms);
 }
 
 }  // namespace mb

@@ -115,13 +115,6 @@ const TechniqueOption kFomTerms{
      "RGBA targets less one channel, the storage of two 4MSM maps; Jansen & Bavoil 2010 vary it).",
      1, 16},
     &P::fom_terms};
-const TechniqueOption kFomMaxOpacity{
-    {"fom.max_opacity", OptionType::Number, "0.99",
-     "Fourier opacity mapping: the opacity an opaque surface is given (its absorbance -ln(1 - "
-     "alpha) must be finite; 0.99 lets 1 % through where the series is exact, and larger values "
-     "ring more). Our choice: the seeds give none.",
-     0, 0.999999},
-    &P::fom_max_opacity};
 
 const std::vector<const TechniqueOption*> kAllOptions{&kHamburger4Alpha,
                                                       &kHamburger4FloatAlpha,
@@ -140,8 +133,7 @@ const std::vector<const TechniqueOption*> kAllOptions{&kHamburger4Alpha,
                                                       &kLvsmLayers,
                                                       &kCsmTerms,
                                                       &kCsmDamping,
-                                                      &kFomTerms,
-                                                      &kFomMaxOpacity};
+                                                      &kFomTerms};
 
 // A factory that ignores the row's name (every row but EVSM's and the LP's).
 template <std::unique_ptr<Technique> (*make)(const TechniqueParams&)>
@@ -299,7 +291,7 @@ std::vector<TechniqueEntry> make_table() {
        "double",
        std::string(kNotProven) + ": truncation rings, and filtering averages absorbance",
        {},
-       {&kFomTerms, &kFomMaxOpacity},
+       {&kFomTerms},
        by_params<make_fom>},
       {"hamburger4",
        "4MSM on R (Hamburger), double",

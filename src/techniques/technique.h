@@ -41,8 +41,7 @@ struct TechniqueParams {
   int lvsm_layers = 4;                               // LVSM depth layers
   int csm_terms = 8;                                 // CSM Fourier terms M
   double csm_damping = 2;                            // CSM ringing suppression
-  int fom_terms = 3;              // Fourier opacity mapping: terms M (2M + 1 coefficients)
-  double fom_max_opacity = 0.99;  // FOM: opaque surfaces absorb -ln(1 - this)
+  int fom_terms = 3;  // Fourier opacity mapping: terms M (2M + 1 coefficients)
   lp::Discretization lp;
   std::string lp_backend = "fast";
   std::string lp_moment_box = "none";  // lp_technique.h, lp_moment_box
