@@ -35,6 +35,12 @@ TEST(EvalRun, RowsAreEachViewsErrorsAndTheirMerge) {
       EXPECT_EQ(row.stats.mean(), direct.mean()) << row.technique << " view " << v;
       merged.merge(direct);
     }
+    // Interior and silhouette receivers hold all of an exact technique's error: on unshadowed ones
+    // the reference is 0 and so is G.
+    const EvalRow& all = rows.overall[t];
+    EXPECT_LE(all.interior.count + all.silhouette.count, all.stats.count);
+    EXPECT_GT(all.silhouette.count, 0u);
+    EXPECT_NEAR(all.interior.sum_abs + all.silhouette.sum_abs, all.stats.sum_abs, 1e-9);
     EXPECT_EQ(rows.overall[t].scene, "all");
     EXPECT_EQ(rows.overall[t].stats.mean(), merged.mean());
   }

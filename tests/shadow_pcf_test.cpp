@@ -45,6 +45,7 @@ TEST(Pcf, PenumbraOfASquareOccluderEqualsTheSumOfGaussianWeights) {
     if (f.zf[k] < 0.5 || x < 4 || y < 4 || x >= f.width - 4 || y >= f.height - 4)
       continue;  // ground, inside
     double expected = 0;
+    uint32_t covered = 0;  // taps under the occluder: ShadowRegion's count
     bool ambiguous = false;
     for (int dy = -4; dy <= 4; ++dy)
       for (int dx = -4; dx <= 4; ++dx) {
@@ -52,11 +53,18 @@ TEST(Pcf, PenumbraOfASquareOccluderEqualsTheSumOfGaussianWeights) {
         if (std::min({std::abs(cx - x0), std::abs(cx - x1), std::abs(cy - y0), std::abs(cy - y1)}) <
             1e-6)
           ambiguous = true;
-        if (cx > x0 && cx < x1 && cy > y0 && cy < y1)
+        if (cx > x0 && cx < x1 && cy > y0 && cy < y1) {
           expected += std::exp(-(dx * dx + dy * dy) / (2 * sigma * sigma)) / (norm * norm);
+          ++covered;
+        }
       }
     if (ambiguous) continue;
     ASSERT_NEAR(f.pcf[k], expected, 1e-12) << "texel " << x << "," << y;
+    ASSERT_EQ(f.covered_taps[k], covered) << "texel " << x << "," << y;
+    const ShadowRegion region = covered == 0    ? ShadowRegion::Unshadowed
+                                : covered == 81 ? ShadowRegion::Interior
+                                                : ShadowRegion::Silhouette;
+    ASSERT_EQ(shadow_region(f, k), region);
     ++checked;
     if (expected > 0.01 && expected < 0.99) ++penumbra;
   }

@@ -130,6 +130,73 @@ TEST(Translucent, SubmissionOrderBlendsInTriangleOrder) {
   EXPECT_NEAR(moments.at(t)[0], expected[0] * z1 + expected[1] * z2 + expected[2] * zg, 1e-15);
 }
 
+// An unsorted blend moves mass backwards, never forwards: the mass a blend leaves on the atoms
+// nearer than any depth is at most 1 - prod (1 - alpha) of them, which the sorted blend gives
+// (docs/reference.md §7). So every exact technique stays a lower bound of the exact reference.
+TEST(Translucent, UnsortedBlendIsNeverDarkerThanTheSortedOne) {
+  const std::string head = "name: slabs\nparts:\n  - ground_plane: {size: 8}\n";
+  const std::string near =
+      "  - ground_plane: {size: 4}\n    transform: {translate: [0, 2.5, 0]}\n"
+      "    opacity: 0.9\n    opacity_pattern: {noise: {scale: 0.3, seed: 7, min: 0.1}}\n";
+  const std::string far =
+      "  - ground_plane: {size: 4}\n    transform: {translate: [0.7, 1.5, 0]}\n"
+      "    opacity: 0.6\n";
+  const std::string views = "views:\n  - {name: top, azimuth: 0, elevation: 90, resolution: 64}\n";
+  const ViewData v = view_of(head + near + far + views, BlendOrder::Submission);
+  size_t lighter = 0;
+  for (size_t t = 0; t + 1 < v.map.atom_offsets.size(); ++t) {
+    double sorted = 0, unsorted = 0;
+    for (uint64_t a = v.map.atom_offsets[t]; a < v.map.atom_offsets[t + 1]; ++a) {
+      sorted += v.map.atom_mass[a];
+      unsorted += v.map.blended_mass()[a];
+      ASSERT_LE(unsorted, sorted + 1e-15) << "texel " << t << " atom " << a;
+      if (unsorted < sorted - 1e-3) ++lighter;
+    }
+  }
+  EXPECT_GT(lighter, 100u);  // drawn front to back, the near surface loses mass where both lie
+}
+
+// Stored formats round every blend step, as a GPU writing float or 16-bit targets does (seed 004
+// §4: theta_4's values blended into two RG16 targets). Under both slabs, with a one-tap kernel,
+// the texel is the ground's stored value, blended over by the far slab, then the near one.
+TEST(Translucent, StoredFormatsRoundEveryBlendStep) {
+  const ViewData v = view_of(slabs("    opacity: 0.5\n", "    opacity: 0.3\n"));
+  const Basis basis = Basis::parse({"z", "z^2", "z^3", "z^4"});
+  const size_t t = 32 * 64 + 32;
+  const uint64_t a = v.map.atom_offsets[t];
+  ASSERT_EQ(v.map.atom_offsets[t + 1] - a, 3u);
+  const double z[3] = {v.map.atom_depth[a], v.map.atom_depth[a + 1], v.map.atom_depth[a + 2]};
+  const double alpha[2] = {kUpper, 0.5};
+  for (const MomentStorage& storage : {unorm16_power4_storage(), float32_storage()}) {
+    const auto stored_b = [&](double depth) {
+      const std::vector<double> b = {depth, depth * depth, std::pow(depth, 3), std::pow(depth, 4)};
+      return stored_values(storage, b);
+    };
+    const auto round = [&](double q) {
+      if (storage.kind == StorageKind::Float32) return double(float(q));
+      return std::round(q * 65535.0) / 65535.0;
+    };
+    std::vector<double> q = stored_b(z[2]);
+    for (double& v : q) v = round(v);
+    for (int s : {1, 0}) {
+      const std::vector<double> src = stored_b(z[s]);
+      for (int j = 0; j < 4; ++j) q[j] = round(alpha[s] * src[j] + (1 - alpha[s]) * q[j]);
+    }
+    load_moments(storage, q);
+    const MomentMap map = compute_moment_map(v.map, basis, make_gaussian_kernel(1, 1), storage, 2);
+    for (int j = 0; j < 4; ++j) EXPECT_NEAR(map.at(t)[j], q[j], 1e-13) << storage.name() << j;
+    // Not what rounding the exact blend once gives: three roundings, not one.
+    const MomentMap exact =
+        compute_moment_map(v.map, basis, make_gaussian_kernel(1, 1), double_storage(), 2);
+    std::vector<double> once(exact.at(t).begin(), exact.at(t).end());
+    store_moments(storage, once);
+    load_moments(storage, once);
+    double apart = 0;
+    for (int j = 0; j < 4; ++j) apart = std::max(apart, std::abs(once[j] - q[j]));
+    EXPECT_GT(apart, 0) << storage.name();
+  }
+}
+
 // Fourier opacity mapping: one slab of alpha 0.5 at depth 0.3 in every tap; behind it the series'
 // absorbance approaches -ln 0.5 as terms are added (the truncated step converges away from its
 // jump), and an absorbance map adds up in any order, so an unsorted blend leaves it unchanged.

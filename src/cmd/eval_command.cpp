@@ -88,6 +88,7 @@ int run_eval(const EvalOptions& options) {
       render_eval_report(context, rows.overall, rows.per_view, darkening_reason);
   write_file_atomically(out / "report.md", report.markdown);
   write_file_atomically(out / "errors.csv", report.errors_csv);
+  write_file_atomically(out / "regions.csv", report.regions_csv);
   write_run_record(out, config, meta);
   out.commit();
   std::fputs(report.table.c_str(), stdout);

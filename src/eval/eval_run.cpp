@@ -33,6 +33,15 @@ size_t receiver_count(const std::vector<ViewData>& views) {
   return receivers;
 }
 
+// The row's error split by where the receivers lie (ShadowRegion), in fragment order.
+void add_regions(const Fragments& f, const std::vector<double>& shadow, EvalRow& row) {
+  for (size_t k = 0; k < f.size(); ++k) {
+    const ShadowRegion region = shadow_region(f, k);
+    if (region == ShadowRegion::Interior) row.interior.add(f.pcf[k], shadow[k]);
+    if (region == ShadowRegion::Silhouette) row.silhouette.add(f.pcf[k], shadow[k]);
+  }
+}
+
 }  // namespace
 
 EvalRows evaluate_techniques(const std::vector<ViewData>& views,
@@ -55,11 +64,15 @@ EvalRows evaluate_techniques(const std::vector<ViewData>& views,
       row.scene = view.scene;
       row.view = view.view;
       row.stats = ErrorStats();
+      row.interior = row.silhouette = ErrorStats();
       row.stats.add_all(view.fragments.pcf, result.shadow);
+      add_regions(view.fragments, result.shadow, row);
       row.stats.failures = result.failures;
       row.fallbacks = result.fallbacks;
       row.seconds = std::chrono::duration<double>(Clock::now() - start).count();
       total.stats.merge(row.stats);
+      total.interior.merge(row.interior);
+      total.silhouette.merge(row.silhouette);
       total.fallbacks += row.fallbacks;
       total.seconds += row.seconds;
       if (on_view) on_view(name, view, result.shadow);

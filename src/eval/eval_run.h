@@ -25,6 +25,7 @@ const std::vector<OptionRecord<EvalRunOptions>>& eval_run_options();
 struct EvalRow {
   std::string technique, scene, view;
   ErrorStats stats;
+  ErrorStats interior, silhouette;  // the receivers of each ShadowRegion (shadow/fragments.h)
   double seconds = 0;
   double darkening_bound = 0;  // Technique::darkening_bound
   size_t fallbacks = 0;        // Technique::fallbacks

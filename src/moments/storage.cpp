@@ -42,21 +42,31 @@ MomentStorage unorm16_power2_storage() {
   return s;
 }
 
-void store_moments(const MomentStorage& storage, std::span<double> b) {
+void round_stored(const MomentStorage& storage, std::span<double> q) {
   switch (storage.kind) {
     case StorageKind::Double:
       return;
     case StorageKind::Float32:
-      for (double& v : b) v = double(float(v));
+      for (double& v : q) v = double(float(v));
       return;
-    case StorageKind::Unorm16: {
-      Eigen::Map<Eigen::VectorXd> v(b.data(), Eigen::Index(b.size()));
-      Eigen::VectorXd q = storage.transform * v + storage.offset;
-      for (Eigen::Index i = 0; i < q.size(); ++i)
-        v(i) = std::round(std::clamp(q(i), 0.0, 1.0) * 65535.0) / 65535.0;
+    case StorageKind::Unorm16:
+      for (double& v : q) v = std::round(std::clamp(v, 0.0, 1.0) * 65535.0) / 65535.0;
       return;
-    }
   }
+}
+
+void store_moments(const MomentStorage& storage, std::span<double> b) {
+  if (storage.kind == StorageKind::Unorm16) {
+    Eigen::Map<Eigen::VectorXd> v(b.data(), Eigen::Index(b.size()));
+    v = storage.transform * v + storage.offset;
+  }
+  round_stored(storage, b);
+}
+
+void blend_stored(const MomentStorage& storage, std::span<double> dst, std::span<const double> src,
+                  double alpha) {
+  for (size_t j = 0; j < dst.size(); ++j) dst[j] = alpha * src[j] + (1 - alpha) * dst[j];
+  round_stored(storage, dst);
 }
 
 void load_moments(const MomentStorage& storage, std::span<double> q) {

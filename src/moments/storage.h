@@ -29,6 +29,13 @@ MomentStorage unorm16_power2_storage();
 
 // b -> what the texel holds (rounded), in place.
 void store_moments(const MomentStorage& storage, std::span<double> b);
+// A stored value -> the nearest the target's format holds (float32 or 16-bit unorm), in place.
+void round_stored(const MomentStorage& storage, std::span<double> q);
+// The blend unit's "over" into a stored target (docs/reference.md §7): dst = alpha * src +
+// (1 - alpha) * dst, rounded to the format, as a GPU writes every blend step. Seed 004 §4 blends
+// theta_4's values into two RG16 targets; src is the fragment's unrounded stored value.
+void blend_stored(const MomentStorage& storage, std::span<double> dst, std::span<const double> src,
+                  double alpha);
 // Filtered stored values -> moments, in place (inverse transform; identity otherwise).
 void load_moments(const MomentStorage& storage, std::span<double> q);
 
@@ -46,7 +53,9 @@ std::vector<double> stored_values(const MomentStorage& storage, std::span<const 
 // value, for depths in [0, 1] (docs/reference.md §2 "Moments with a tolerance", §4): float32 rounds
 // each texel's b_j to the nearest float, within 2^-24 |b_j|, so the weighted sum is within
 // 2^-24 max over [0, 1] of |b_j|; 16-bit rounds each texel's q_i to the nearest of 65536 steps,
-// within 0.5 / 65535 (theta_4 keeps [0, 1] inside [0, 1]^4, so nothing is clamped). Both plus 8
+// within 0.5 / 65535 (theta_4 keeps [0, 1] inside [0, 1]^4, so nothing is clamped); a translucent
+// texel blended step by step (blend_stored) is off by up to one such rounding per step, which this
+// tolerance does not cover: the LP's moment box rounds the kernel's atoms itself. Both plus 8
 // double ulps of the value's scale for the filter's own sums and the transform's round trip. The
 // largest |b_j| is proven for catalog functions (samples plus half a spacing times the bound of
 // b_j'); sampled with a 1 % margin for expressions.

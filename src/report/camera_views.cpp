@@ -99,6 +99,7 @@ CameraView camera_view(const Scene& scene, const LightViewDesc& light, const Vie
   Fragments& f = out.receivers.fragments;
   f.width = map.width;
   f.height = map.height;
+  f.kernel_taps = settings.kernel.size * settings.kernel.size;
   for (const Receiver& r : receivers) {
     const ReceiverTest test =
         receiver_test(map, settings.kernel, settings.bias, int(r.texel % map.width),
@@ -111,6 +112,7 @@ CameraView camera_view(const Scene& scene, const LightViewDesc& light, const Vie
     f.ztest.push_back(test.ztest);
     f.oracle.push_back(test.oracle);
     f.pcf.push_back(test.pcf);
+    f.covered_taps.push_back(uint32_t(test.covered_taps));
   }
   return out;
 }

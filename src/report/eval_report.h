@@ -26,6 +26,7 @@ struct EvalReportContext {
 struct EvalReport {
   std::string table;  // the overall table (stdout)
   std::string markdown, errors_csv;
+  std::string regions_csv;  // each row's error split by ShadowRegion (regions.csv)
 };
 
 EvalReport render_eval_report(const EvalReportContext& ctx, const std::vector<EvalRow>& overall,

@@ -58,6 +58,7 @@ void add_submission_masses(const LayerStack& stack, ShadowMap& map) {
   if (stack.triangle.size() != stack.fragment_count())
     throw InputError("translucent.blend: submission order needs the stack's triangles");
   map.atom_blend.assign(map.atom_mass.size(), 0.0);
+  map.atom_draw.assign(map.atom_mass.size(), 0);
   struct Drawn {
     uint32_t triangle;
     uint64_t atom;
@@ -73,9 +74,12 @@ void add_submission_masses(const LayerStack& stack, ShadowMap& map) {
       if (stack.alpha[i] > 0) drawn.push_back({stack.triangle[i], a++, double(stack.alpha[i])});
     std::stable_sort(drawn.begin(), drawn.end());
     map.atom_blend[last] = 1;
-    for (const Drawn& d : drawn) {
+    map.atom_draw[first] = last;
+    for (size_t k = 0; k < drawn.size(); ++k) {
+      const Drawn& d = drawn[k];
       for (uint64_t b = first; b <= last; ++b) map.atom_blend[b] *= 1 - d.alpha;
       map.atom_blend[d.atom] = d.alpha;
+      map.atom_draw[first + 1 + k] = d.atom;
     }
   }
 }
@@ -109,6 +113,8 @@ Fragments collect_receivers(const LayerStack& stack, const GaussianKernel& kerne
   f.ztest.resize(count);
   f.oracle.resize(count);
   f.pcf.resize(count);
+  f.covered_taps.resize(count);
+  f.kernel_taps = kernel.size * kernel.size;
   const ShadowMap map = layer0_shadow_map(stack);
 #pragma omp parallel for schedule(dynamic, 1024) num_threads(threads)
   for (size_t k = 0; k < count; ++k) {
@@ -121,6 +127,7 @@ Fragments collect_receivers(const LayerStack& stack, const GaussianKernel& kerne
     f.ztest[k] = test.ztest;
     f.oracle[k] = test.oracle;
     f.pcf[k] = test.pcf;
+    f.covered_taps[k] = uint32_t(test.covered_taps);
   }
   return f;
 }
@@ -146,10 +153,12 @@ ReceiverTest receiver_test(const ShadowMap& map, const GaussianKernel& kernel,
   const int r = kernel.radius();
   const double ztest = zf - fragment_bias(bias, r, gx, gy);
   double oracle = 0, plane = 0;
+  int covered = 0;
   for (int dy = -r; dy <= r; ++dy)
     for (int dx = -r; dx <= r; ++dx) {
-      const double w = kernel.weight(dx, dy);
-      oracle += w * texel_cdf(map, x + dx, y + dy, ztest);
+      const double w = kernel.weight(dx, dy), cdf = texel_cdf(map, x + dx, y + dy, ztest);
+      oracle += w * cdf;
+      covered += cdf > 0;
       // docs/reference.md §3: the ideal filtered hard shadow tests each tap against the plane. The
       // plane, extrapolated past a steep receiver's edge, can pass the far plane, where empty
       // texels hold depth 1: nothing lies beyond it, so the test depth stops there.
@@ -157,7 +166,8 @@ ReceiverTest receiver_test(const ShadowMap& map, const GaussianKernel& kernel,
           w * texel_cdf(map, x + dx, y + dy, std::min(zf + dx * gx + dy * gy - bias.constant, 1.0));
     }
   oracle = std::min(oracle, 1.0);
-  return {ztest, oracle, bias.reference == Reference::Biased ? oracle : std::min(plane, 1.0)};
+  return {ztest, oracle, bias.reference == Reference::Biased ? oracle : std::min(plane, 1.0),
+          covered};
 }
 
 void kernel_distribution(const ShadowMap& map, const GaussianKernel& kernel, int x, int y,

@@ -51,6 +51,11 @@ struct ShadowMap {
   // Submission); empty: atom_mass. The moment maps and the kernel's atoms read these, the reference
   // atom_mass.
   std::vector<double> atom_blend;
+  // Submission only: each texel's atoms in the order its blend draws them, in the texel's own
+  // range: the last atom (the opaque pass or the clear) first, then the translucent surfaces in
+  // triangle order. Empty: back to front, the order that gives atom_mass (moment_map.cpp rounds
+  // each step in this order for stored formats).
+  std::vector<uint64_t> atom_draw;
   // Each atom's opacity alpha (1 for the first opaque surface, 0 for the far plane): what an
   // order-independent absorbance map (Fourier opacity mapping) accumulates.
   std::vector<double> atom_alpha;
@@ -80,13 +85,28 @@ struct Fragments {
   std::vector<double> ztest;    // z_f - delta_f: the depth every technique is evaluated at
   std::vector<double> oracle;   // F_Z(z_f - delta_f); 0 means G = 0 exactly (docs/reference.md §2)
   std::vector<double> pcf;      // the reference shadow intensity in [0, 1] (= oracle if Biased)
+  // Taps of the kernel with a surface in front of z_f - delta_f, of kernel_taps (ShadowRegion).
+  std::vector<uint32_t> covered_taps;
+  int kernel_taps = 0;
   size_t size() const { return zf.size(); }
 };
+
+// Where a receiver lies in the shadow (docs/reference.md §3): no tap of its kernel has a surface
+// in front of z_f - delta_f (unshadowed: the reference is 0, and an exact technique too), every tap
+// has one (interior: an umbra, or a translucent occluder's inside), or some do (silhouette: the
+// kernel straddles an occluder's edge).
+enum class ShadowRegion { Unshadowed, Silhouette, Interior };
+inline ShadowRegion shadow_region(const Fragments& f, size_t k) {
+  if (f.covered_taps[k] == 0) return ShadowRegion::Unshadowed;
+  return int(f.covered_taps[k]) == f.kernel_taps ? ShadowRegion::Interior
+                                                 : ShadowRegion::Silhouette;
+}
 
 // One receiver's test at texel (x, y) of `map`, its depth z_f and plane gradient (dz/dx, dz/dy
 // in texels): z_f - delta_f, F_Z there (the oracle) and the reference (docs/reference.md §3).
 struct ReceiverTest {
   double ztest, oracle, pcf;
+  int covered_taps;  // taps with a surface in front of ztest (ShadowRegion)
 };
 ReceiverTest receiver_test(const ShadowMap& map, const GaussianKernel& kernel,
                            const BiasParams& bias, int x, int y, double zf, double gx, double gy);

@@ -1,5 +1,7 @@
 #include "shadow/moment_map.h"
 
+#include <algorithm>
+
 namespace mb {
 
 namespace {
@@ -25,6 +27,39 @@ void blend_translucent_texels(const ShadowMap& map, const Basis& basis, int r,
   }
 }
 
+// The same texels as a GPU blends them into a float or 16-bit target (seed 004 §4): the opaque pass
+// or the clear writes the last atom's stored value, then each translucent surface blends over it
+// in draw order, rounded to the format at every step (blend_stored). Sorted order draws back to
+// front, which gives T(z_i) alpha_i in exact arithmetic. Written back as moments (load_moments),
+// which store_moments turns into the same stored values again: they lie on the format's grid.
+void blend_stored_texels(const ShadowMap& map, const Basis& basis, const MomentStorage& storage,
+                         int r, std::vector<double>& stored) {
+  const size_t m = basis.size(), w = size_t(map.width), pw = w + 2 * size_t(r);
+  std::vector<double> values(map.atom_depth.size() * m), column(map.atom_depth.size());
+  for (size_t j = 0; j < m; ++j) {
+    basis[j].evaluate(map.atom_depth, column);
+    for (size_t a = 0; a < column.size(); ++a) values[a * m + j] = column[a];
+  }
+  for (size_t a = 0; a < map.atom_depth.size(); ++a) {
+    const std::vector<double> q = stored_values(storage, {values.data() + a * m, m});
+    std::copy(q.begin(), q.end(), values.begin() + a * m);
+  }
+  const auto drawn = [&](uint64_t first, uint64_t last, uint64_t k) {
+    return map.atom_draw.empty() ? last - k : map.atom_draw[first + k];
+  };
+  for (size_t t = 0; t < map.depth.size(); ++t) {
+    const uint64_t first = map.atom_offsets[t], last = map.atom_offsets[t + 1] - 1;
+    double* texel = stored.data() + ((t / w + r) * pw + t % w + r) * m;
+    std::copy_n(values.data() + last * m, m, texel);
+    round_stored(storage, {texel, m});
+    for (uint64_t k = 1; k <= last - first; ++k) {
+      const uint64_t a = drawn(first, last, k);
+      blend_stored(storage, {texel, m}, {values.data() + a * m, m}, map.atom_alpha[a]);
+    }
+    load_moments(storage, {texel, m});
+  }
+}
+
 }  // namespace
 
 MomentMap compute_moment_map(const ShadowMap& map, const Basis& basis, const GaussianKernel& kernel,
@@ -41,7 +76,10 @@ MomentMap compute_moment_map(const ShadowMap& map, const Basis& basis, const Gau
     basis[j].evaluate(padded_depth, column);
     for (size_t t = 0; t < column.size(); ++t) stored[t * m + j] = column[t];
   }
-  if (map.translucent()) blend_translucent_texels(map, basis, r, stored);
+  if (map.translucent() && storage.kind == StorageKind::Double)
+    blend_translucent_texels(map, basis, r, stored);
+  else if (map.translucent())
+    blend_stored_texels(map, basis, storage, r, stored);
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (size_t t = 0; t < padded_depth.size(); ++t)
     store_moments(storage, {stored.data() + t * m, size_t(m)});
