@@ -58,6 +58,9 @@ int run_eval(const EvalOptions& options) {
   const bool quiet = options.common.quiet;
 
   auto views = prepare_views(scenes, dataset, data.resolution, settings, quiet);
+  for (const auto& name : techniques)
+    if (make_technique(name, settings.technique)->lp_factory())
+      check_lp_interval(views, settings.technique.lp.lo, settings.technique.lp.hi);
   std::filesystem::create_directories(out.staging() / "histograms");
   if (run.images) std::filesystem::create_directories(out.staging() / "images");
   const auto write_images = [&](const std::string& name, const ViewData& view,

@@ -9,6 +9,7 @@
 #include "raster/previews.h"
 #include "raster/render_view.h"
 #include "scene/dataset.h"
+#include "util/error.h"
 #include "util/number_text.h"
 #include "util/option_record.h"
 #include "util/output_dir.h"
@@ -71,6 +72,7 @@ int run_render(const RenderOptions& options) {
   table << "| scene | view | resolution | triangles | fragments | receivers | max layers | mean "
            "layers | seconds |\n"
         << "|---|---|---|---|---|---|---|---|---|\n";
+  size_t fragments = 0;
   for (const auto& scene : scenes) {
     std::filesystem::create_directories(out.staging() / scene.name);
     for (const auto& view : scene.views) {
@@ -85,6 +87,7 @@ int run_render(const RenderOptions& options) {
         write_layer_count_preview(stack, base + "_layers.png");
       }
       LayerStackStats s = compute_stats(stack, scene.mesh.triangles.size());
+      fragments += s.fragments;
       char mean[32];
       std::snprintf(mean, sizeof mean, "%.3f", s.mean_layers);
       csv << scene.name << "," << view.name << "," << view.resolution << "," << s.triangles << ","
@@ -100,6 +103,11 @@ int run_render(const RenderOptions& options) {
                      mean, seconds);
     }
   }
+  // As eval and verify say of a dataset without receivers: nothing rendered is an error.
+  if (fragments == 0)
+    throw InputError(dataset.file + ": dataset " + dataset.name +
+                     " has nothing to render: no view of any scene rasterizes a fragment (every "
+                     "triangle degenerate, or no geometry inside the views)");
   RunMetadata meta = collect_run_metadata(threads, process_arguments());
   write_file_atomically(out / "stats.csv", csv.str());
   write_file_atomically(out / "stats.md",

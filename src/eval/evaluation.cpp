@@ -9,6 +9,7 @@
 #include "raster/render_view.h"
 #include "shadow/moment_map.h"
 #include "util/error.h"
+#include "util/number_text.h"
 #include "util/parallel_errors.h"
 
 namespace mb {
@@ -63,6 +64,22 @@ std::vector<ViewData> prepare_views(const std::vector<Scene>& scenes, const Data
         dataset.file + ": dataset " + dataset.name +
         " has no receiver fragments (no surface faces the light in any view); nothing to evaluate");
   return views;
+}
+
+void check_lp_interval(const std::vector<ViewData>& views, double lo, double hi) {
+  for (const ViewData& v : views) {
+    const std::vector<double>& depths = v.map.translucent() ? v.map.atom_depth : v.map.depth;
+    // Outside the map is the far plane, 1 (docs/reference.md §3), which every kernel can reach.
+    double min = 1, max = 1;
+    for (double z : depths) min = std::min(min, z), max = std::max(max, z);
+    if (lo <= min && max <= hi) continue;
+    throw InputError("lp.lo, lp.hi: the LP's interval [" + round_trip(lo) + ", " + round_trip(hi) +
+                     "] excludes depths of view " + v.scene + "/" + v.view + ", which lie in [" +
+                     round_trip(min) + ", " + round_trip(max) +
+                     "]; a kernel's depths must be admissible (docs/reference.md §2): expected "
+                     "lp.lo <= " +
+                     round_trip(min) + " and lp.hi >= " + round_trip(max));
+  }
 }
 
 TechniqueResult evaluate_technique(const ViewData& view, const std::string& technique_name,

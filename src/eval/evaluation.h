@@ -44,6 +44,11 @@ std::vector<Scene> build_dataset_scenes(const DatasetDesc& dataset);
 std::vector<ViewData> prepare_views(const std::vector<Scene>& scenes, const DatasetDesc& dataset,
                                     int resolution, const EvalSettings& settings, bool quiet);
 
+// The LP's interval [lo, hi] must hold every depth a kernel can see (docs/reference.md §2: the
+// kernel's own distribution is then feasible, and the bound is the one asked for): InputError
+// naming lp.lo / lp.hi, the first view that has a depth outside and its range, otherwise.
+void check_lp_interval(const std::vector<ViewData>& views, double lo, double hi);
+
 struct TechniqueResult {
   std::vector<double> shadow;  // G per fragment, in fragment order
   size_t failures = 0;

@@ -10,14 +10,12 @@ bool can_over_darken(double bound) {
   return !(bound <= kDarkeningSlack);
 }
 
-namespace {
-bool violates(double max_dark, double bound) {
+bool darkening_violates(double max_dark, double bound) {
   return !can_over_darken(bound) && max_dark > bound + kDarkeningSlack;
 }
-}  // namespace
 
 std::string darkening_text(double mean_dark, double max_dark, double bound) {
-  if (violates(max_dark, bound)) return percent_text(mean_dark) + " (!)";
+  if (darkening_violates(max_dark, bound)) return percent_text(mean_dark) + " (!)";
   if (!can_over_darken(bound)) return "-";
   return percent_text(mean_dark);
 }
@@ -53,7 +51,7 @@ std::string protocol_text(Reference reference) {
 std::string darkening_notes(const std::vector<DarkeningRow>& rows) {
   std::ostringstream out;
   for (const auto& r : rows) {
-    if (violates(r.max_dark, r.bound))
+    if (darkening_violates(r.max_dark, r.bound))
       out << "**" << r.technique << " over-darkens by up to " << round_trip(r.max_dark)
           << ", above its proven bound " << round_trip(r.bound)
           << ".** An exact technique cannot do this (docs/reference.md §3): this is a bug; please "

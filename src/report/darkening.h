@@ -23,6 +23,8 @@ struct DarkeningRow {
 };
 
 bool can_over_darken(double bound);
+// An exact technique (finite bound) whose largest over-darkening exceeds its bound: a bug.
+bool darkening_violates(double max_dark, double bound);
 // The table cell: "-" for an exact technique within its bound, the percentage otherwise ("(!)" if
 // an exact technique exceeds its bound).
 std::string darkening_text(double mean_dark, double max_dark, double bound);

@@ -65,6 +65,36 @@ std::string regions_csv(const std::vector<EvalRow>& overall, const std::vector<E
   return csv.str();
 }
 
+// Three lines before the tables: what ran, the headline numbers, what needs attention (failed
+// fragments, an exact technique above its proven bound).
+std::string summary_lines(const EvalReportContext& ctx, const std::vector<EvalRow>& overall) {
+  std::ostringstream s, headline, attention;
+  s << "**Summary.** " << overall.size() << " techniques on dataset " << ctx.dataset << ": "
+    << ctx.views << " views, " << ctx.receivers << " receivers, reference "
+    << reference_name(ctx.reference) << ".  \n";
+  const EvalRow* lowest = nullptr;
+  for (const auto& r : overall) {
+    headline << (headline.tellp() > 0 ? ", " : "") << r.technique << " "
+             << percent_text(r.stats.mean()) << " %";
+    if (r.technique != "pcf" && r.technique != "oracle" &&
+        (!lowest || r.stats.mean() < lowest->stats.mean()))
+      lowest = &r;
+  }
+  s << "Mean error: " << headline.str();
+  if (lowest) s << " (lowest: " << lowest->technique << ")";
+  s << ".  \nNeeds attention: ";
+  for (const auto& r : overall) {
+    if (r.stats.failures)
+      attention << (attention.tellp() > 0 ? "; " : "") << r.technique << ": " << r.stats.failures
+                << " fragments failed";
+    if (darkening_violates(r.stats.max_dark, r.darkening_bound))
+      attention << (attention.tellp() > 0 ? "; " : "") << "**" << r.technique
+                << " over-darkens above its proven bound**";
+  }
+  s << (attention.tellp() > 0 ? attention.str() : std::string("nothing")) << ".\n\n";
+  return s.str();
+}
+
 }  // namespace
 
 std::string file_stem(const std::string& name) {
@@ -101,7 +131,7 @@ EvalReport render_eval_report(const EvalReportContext& ctx, const std::vector<Ev
   report << "# Shadow evaluation of dataset " << ctx.dataset << "\n\n"
          << "Made by momentbench " << ctx.version << " (git " << ctx.git_sha << "), "
          << ctx.compiler << ", " << ctx.threads << " threads, " << ctx.started << ".\n\n"
-         << "- " << ctx.settings_text << "\n"
+         << summary_lines(ctx, overall) << "- " << ctx.settings_text << "\n"
          << "- " << ctx.views << " views, " << ctx.receivers
          << " receiver fragments (every light-facing fragment of "
          << "every layer, docs/reference.md §3)\n";

@@ -403,11 +403,49 @@ SweepReportTables sweep_report_tables(const std::vector<SweepSeries>& series, in
   return t;
 }
 
+namespace {
+
+// Three lines before the tables: what ran, each series' best candidate, what needs attention
+// (failed LPs, a missing shard, a candidate or reference above its proven bound).
+std::string summary_lines(const std::vector<SweepSeries>& series) {
+  std::ostringstream s, attention;
+  size_t candidates = 0;
+  uint64_t failed = 0, above = 0;
+  for (const auto& x : series) {
+    candidates += x.ranked.size();
+    for (const auto& r : x.ranked) {
+      failed += r.infeasible + r.unstable;
+      above += !r.estimated && darkening_violates(r.max_dark, r.darkening_bound);
+    }
+    if (x.meta.count("missing_shards"))
+      attention << (attention.tellp() > 0 ? "; " : "") << x.label << " lacks shards "
+                << x.meta.at("missing_shards");
+  }
+  s << "**Summary.** " << candidates << " candidates in " << series.size() << " series on dataset "
+    << main_series(series).meta.at("dataset") << ".  \nBest: ";
+  for (size_t i = 0; i < series.size(); ++i)
+    s << (i ? "; " : "") << series[i].label << " " << percent_text(series[i].best()) << " % ("
+      << series[i].ranked.front().name << ")";
+  for (const auto& r : main_series(series).references)
+    if (darkening_violates(r.max_dark, r.darkening_bound))
+      attention << (attention.tellp() > 0 ? "; " : "") << "**" << r.name
+                << " over-darkens above its proven bound**";
+  if (failed) attention << (attention.tellp() > 0 ? "; " : "") << failed << " LPs failed";
+  if (above)
+    attention << (attention.tellp() > 0 ? "; " : "") << "**" << above
+              << " candidates over-darken above the certified bound**";
+  s << ".  \nNeeds attention: "
+    << (attention.tellp() > 0 ? attention.str() : std::string("nothing")) << ".\n\n";
+  return s.str();
+}
+
+}  // namespace
+
 std::string sweep_report_markdown(const std::vector<SweepSeries>& series,
                                   const std::string& histogram_note) {
   const SweepSeries& main = main_series(series);
   std::ostringstream md;
-  md << "# Sweep report\n\n";
+  md << "# Sweep report\n\n" << summary_lines(series);
   for (const auto& s : series) {
     auto meta = s.meta;
     md << "- " << s.label << ": `" << s.database << "`, " << s.ranked.size() << " of "
@@ -468,12 +506,18 @@ std::string sweep_report_markdown(const std::vector<SweepSeries>& series,
       "|---|---|---|---|---|---|---|---|\n";
   for (const auto& s : series) {
     const auto& ranked = s.ranked;
-    md << "## Best 50 candidates: " << s.label << "\n\n" << header;
-    for (size_t i = 0; i < std::min<size_t>(50, ranked.size()); ++i)
-      md << row_line(i + 1, ranked[i]) << "\n";
-    md << "\n## Worst 10 candidates: " << s.label << "\n\n" << header;
-    for (size_t i = ranked.size() > 10 ? ranked.size() - 10 : 0; i < ranked.size(); ++i)
-      md << row_line(i + 1, ranked[i]) << "\n";
+    // Each candidate once: the worst 10 start after the best 50 when there are fewer than 60.
+    const size_t best = std::min<size_t>(50, ranked.size());
+    const size_t worst_from = std::max(best, ranked.size() > 10 ? ranked.size() - 10 : 0);
+    md << "## " << (best == ranked.size() ? "All " : "Best ") << best << " candidates: " << s.label
+       << "\n\n"
+       << header;
+    for (size_t i = 0; i < best; ++i) md << row_line(i + 1, ranked[i]) << "\n";
+    if (worst_from < ranked.size()) {
+      md << "\n## Worst " << ranked.size() - worst_from << " candidates: " << s.label << "\n\n"
+         << header;
+      for (size_t i = worst_from; i < ranked.size(); ++i) md << row_line(i + 1, ranked[i]) << "\n";
+    }
     md << "\n";
   }
   return md.str();

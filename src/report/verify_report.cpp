@@ -47,6 +47,35 @@ std::string verdict(const VerifySolverResult& r) {
 
 namespace {
 
+// Three lines before the rules and tables: what ran, the verdicts, what needs attention.
+std::string summary_lines(std::span<const VerifySolverResult> results,
+                          std::span<const VerifyInstance> instances, bool continuous) {
+  size_t passed = 0, reported = 0;
+  std::string failed, noted;
+  for (const auto& r : results) {
+    if (!r.judged())
+      ++reported;
+    else if (r.passed())
+      ++passed;
+    else if (r.decides_exit())
+      failed += (failed.empty() ? "" : ", ") + r.target.technique;
+    else
+      noted += (noted.empty() ? "" : ", ") + r.target.technique;
+  }
+  std::string attention = failed.empty() ? "" : "**" + failed + " fail**";
+  if (!noted.empty())
+    attention += (attention.empty() ? "" : "; ") + noted +
+                 " exceed their storage box (quantization noise, reported: seed 000 §4.3)";
+  std::ostringstream s;
+  s << "**Summary.** " << results.size() << " closed forms against the LP on " << instances.size()
+    << " instances, ground truth " << (continuous ? "the continuous interval" : "the finest grid")
+    << ".  \n"
+    << passed << " pass, " << reported << " reported without a verdict (biased, or not lower "
+    << "bounds), " << results.size() - passed - reported << " do not pass.  \nNeeds attention: "
+    << (attention.empty() ? std::string("nothing") : attention) << ".\n\n";
+  return s.str();
+}
+
 void write_pass_rule(std::ostream& md, const VerifyReportContext& ctx, bool continuous);
 void write_storage_rule(std::ostream& md, std::span<const VerifySolverResult> results);
 
@@ -57,9 +86,9 @@ void write_header(std::ostream& md, const VerifyReportContext& ctx,
   md << "# Closed forms against the LP (docs/reference.md §6)\n\n"
      << "Made by momentbench " << ctx.version << " (git " << ctx.git_sha << "), " << ctx.threads
      << " threads, " << ctx.started << ".\n\n"
-     << "- " << ctx.random_count << " seeded random distributions (seed " << ctx.seed
-     << "; 1-8 atoms, two-bump mixtures), " << instances.size() - ctx.random_count
-     << " real receiver kernels of dataset " << ctx.dataset
+     << summary_lines(results, instances, continuous) << "- " << ctx.random_count
+     << " seeded random distributions (seed " << ctx.seed << "; 1-8 atoms, two-bump mixtures), "
+     << instances.size() - ctx.random_count << " real receiver kernels of dataset " << ctx.dataset
      << " (at z_f - delta_f, delta_f = " << num(ctx.bias.constant) << " + " << num(ctx.bias.slope)
      << " * " << ctx.kernel_radius << " * (|dz/dx| + |dz/dy|))\n"
      << "- The LP sees the exact distribution (its depths join the grid); the closed form sees its "

@@ -385,6 +385,7 @@ void run_sweep(const SweepSettings& s, const SweepJob& job) {
   if (job.out.empty()) throw InputError("--out: a sweep needs an output directory");
   // Scenes are read and rendered before anything is written: bad input leaves no output.
   const auto views = prepare_views(dataset, s.resolution, s.eval, job.quiet);
+  check_lp_interval(views, s.eval.technique.lp.lo, s.eval.technique.lp.hi);
   // The output directory is the sweep's state: new unless resuming, then it must match.
   const std::string shard_text = std::to_string(job.shard) + "/" + std::to_string(job.shards);
   std::map<std::string, std::string> meta = measurement_meta(s.eval);
