@@ -32,6 +32,8 @@ int run_solve_command(const CLI::App& command, const CommonOptions& common, Solv
        {"--interval", "interval", [&] { return yaml_of(flags.interval); }},
        {"--grid", "grid", [&] { return yaml_of(flags.grid); }},
        {"--moments", "moments", [&] { return yaml_of(flags.moments); }},
+       {"--depths", "depths", [&] { return yaml_of(flags.depths); }},
+       {"--weights", "weights", [&] { return yaml_of(flags.weights); }},
        {"--points", "points", [&] { return yaml_of(flags.points); }},
        {"--zf", "zf", [&] { return yaml_of(flags.zf); }},
        {"--backend", "backend", [&] { return yaml_of(flags.backend); }},
@@ -76,6 +78,9 @@ void register_solve_command(CLI::App& app, std::function<int()>& action) {
   c->add_option("--interval", o->interval, "= --set interval=[lo, hi]")->delimiter(',');
   c->add_option("--grid", o->grid, "= --set grid=N")->check(CLI::Range(2, 1 << 24));
   c->add_option("--moments", o->moments, "= --set moments=[...]")->delimiter(',');
+  c->add_option("--depths", o->depths, "= --set depths=[...] (a distribution, with --weights)")
+      ->delimiter(',');
+  c->add_option("--weights", o->weights, "= --set weights=[...]")->delimiter(',');
   c->add_option("--points", o->points, "= --set points=[...]")->delimiter(',');
   c->add_option("--zf", o->zf, "= --set zf=Z");
   c->add_option("--backend", o->backend, "= --set backend=NAME")
@@ -91,8 +96,8 @@ void register_solve_command(CLI::App& app, std::function<int()>& action) {
   c->add_option("--discretization", o->discretization, "= --set discretization=grid|continuous")
       ->check(CLI::IsMember({"grid", "continuous"}));
   // An instance comes from flags or from --input, never both (flags beside a batch were ignored).
-  for (const char* flag :
-       {"--basis", "--interval", "--moments", "--points", "--zf", "--technique", "--alpha"})
+  for (const char* flag : {"--basis", "--interval", "--moments", "--depths", "--weights",
+                           "--points", "--zf", "--technique", "--alpha"})
     input->excludes(c->get_option(flag));
   c->callback([o, common, c, &action] {
     action = [o, common, c] { return run_solve_command(*c, *common, *o); };

@@ -45,16 +45,54 @@ class FactoryCache {
   std::unique_ptr<lp::ProblemFactory> factory_;
 };
 
+// What an instance gives of its distribution: moments, or depths with their weights.
+struct Instance {
+  std::vector<double> moments, depths, weights;
+  bool from_distribution() const { return !depths.empty(); }
+};
+
+// A distribution must be one: as many weights as depths, each >= 0, summing to 1, depths finite
+// (docs/reference.md §1), and never given beside moments.
+Instance checked_instance(std::vector<double> moments, std::vector<double> depths,
+                          std::vector<double> weights) {
+  if (depths.empty() && weights.empty()) return {std::move(moments), {}, {}};
+  if (!moments.empty())
+    throw InputError("moments: given beside depths and weights; expected one or the other");
+  if (depths.size() != weights.size())
+    throw InputError("weights: expected one per depth (" + std::to_string(depths.size()) +
+                     "), got " + std::to_string(weights.size()));
+  long double total = 0;
+  for (double w : weights) {
+    if (!(w >= 0)) throw InputError("weights: expected numbers >= 0, got " + std::to_string(w));
+    total += w;
+  }
+  if (std::abs(double(total) - 1) > 1e-12)
+    throw InputError("weights: expected to sum to 1 (a distribution), got " +
+                     std::to_string(double(total)));
+  return {{}, std::move(depths), std::move(weights)};
+}
+
 json solve_one(lp::Backend& backend, FactoryCache& factories,
                const std::vector<std::string>& basis_names, const lp::Discretization& disc,
-               const std::vector<double>& moments, double zf, const std::vector<double>& points,
-               bool check, double tolerance_ulps) {
+               const Instance& instance, double zf, const std::vector<double>& points, bool check,
+               double tolerance_ulps) {
   const lp::ProblemFactory& factory = factories.get(basis_names, disc);
-  lp::Problem problem = factory.from_moments(moments, zf, points);
-  const lp::ContinuousSolution answer = lp::solve_discretized(factory, problem, backend);
+  const std::vector<double>& moments = instance.moments;
+  lp::Problem problem = instance.from_distribution()
+                            ? factory.from_distribution(instance.depths, instance.weights, zf)
+                            : factory.from_moments(moments, zf, points);
+  if (instance.from_distribution()) factory.add_points(problem, points);
+  // A distribution's own depths and weights let a power basis go to its local coordinates, where
+  // a narrow kernel keeps its digits (docs/reference.md §2).
+  const lp::ContinuousSolution answer =
+      lp::solve_discretized(factory, problem, backend, instance.depths, instance.weights);
   const lp::Solution& s = answer.finite;
   json out;
-  if (tolerance_ulps > 0 && s.call == lp::CallStatus::Ok &&
+  if (instance.from_distribution())
+    out["moments_from"] = lp::power_basis_degree(factory.basis()) > 0 && disc.continuous
+                              ? "distribution, local coordinates"
+                              : "distribution";
+  if (!instance.from_distribution() && tolerance_ulps > 0 && s.call == lp::CallStatus::Ok &&
       s.status != lp::ProblemStatus::Optimal) {
     // docs/reference.md §2, moments with a tolerance: a boundary vector rounded to double may lie
     // just outside the moment cone. Problem 1 over every distribution whose moments are within the
@@ -197,8 +235,8 @@ struct Query {
 };
 
 const std::vector<std::string> kQueryKeys = {
-    "id",     "basis", "interval",  "grid",  "discretization",  "moments",
-    "points", "zf",    "technique", "alpha", "moment_tolerance"};
+    "id",      "basis",  "interval", "grid",      "discretization", "moments",         "depths",
+    "weights", "points", "zf",       "technique", "alpha",          "moment_tolerance"};
 
 json solve_line(const std::string& line, int number, const SolveSettings& o, lp::Backend& backend,
                 FactoryCache& factories) {
@@ -239,8 +277,14 @@ json solve_line(const std::string& line, int number, const SolveSettings& o, lp:
     throw InputError("key 'discretization': expected grid or continuous, got '" + discretization +
                      "'");
   d.continuous = discretization == "continuous";
+  const bool distribution = query.has("depths") || query.has("weights");
+  const Instance instance =
+      distribution ? checked_instance(
+                         query.has("moments") ? query.numbers("moments") : std::vector<double>{},
+                         query.numbers("depths"), query.numbers("weights"))
+                   : checked_instance(query.numbers("moments"), {}, {});
   out.update(solve_one(
-      backend, factories, query.strings("basis"), d, query.numbers("moments"), query.number("zf"),
+      backend, factories, query.strings("basis"), d, instance, query.number("zf"),
       query.has("points") ? query.numbers("points") : std::vector<double>{}, o.check,
       query.has("moment_tolerance") ? query.number("moment_tolerance") : o.moment_tolerance));
   return out;
@@ -259,6 +303,14 @@ const std::vector<OptionRecord<SolveSettings>>& solve_options() {
        &SolveSettings::grid},
       {{"moments", OptionType::NumberList, "[]", "Moment vector b_1..b_m of the instance."},
        &SolveSettings::moments},
+      {{"depths", OptionType::NumberList, "[]",
+        "A distribution instead of moments: its depths (with weights). Its moments are computed "
+        "from it, for a power basis with discretization continuous in its own local coordinates, "
+        "where a narrow kernel keeps the digits that rounding raw moments loses."},
+       &SolveSettings::depths},
+      {{"weights", OptionType::NumberList, "[]",
+        "The distribution's weights, one per depth, >= 0, summing to 1."},
+       &SolveSettings::weights},
       {{"points", OptionType::NumberList, "[]", "Extra points of I (e.g. the kernel's depths)."},
        &SolveSettings::points},
       {{"zf", OptionType::Number, "0.5", "Fragment depth z_f."}, &SolveSettings::zf},
@@ -312,7 +364,8 @@ SolveSettings solve_settings_from(const Config& config) {
   read_options(config, solve_options(), o);
   if (!o.input.empty())  // an instance comes from options or from input, never both
     for (const auto& changed : config.non_default())
-      for (const char* key : {"basis", "interval", "moments", "points", "zf", "technique", "alpha"})
+      for (const char* key : {"basis", "interval", "moments", "depths", "weights", "points", "zf",
+                              "technique", "alpha"})
         if (changed.rfind(std::string(key) + ":", 0) == 0)
           throw InputError("solve: key '" + std::string(key) +
                            "' beside 'input' (a batch's lines carry their own instances)");
@@ -326,7 +379,8 @@ nlohmann::json solve_instance(const SolveSettings& o) {
   lp::Discretization disc{o.interval[0], o.interval[1], o.grid, o.quantize};
   disc.continuous = o.discretization == "continuous";
   FactoryCache factories;
-  return solve_one(*backend, factories, o.basis, disc, o.moments, o.zf, o.points, o.check,
+  return solve_one(*backend, factories, o.basis, disc,
+                   checked_instance(o.moments, o.depths, o.weights), o.zf, o.points, o.check,
                    o.moment_tolerance);
 }
 

@@ -16,6 +16,9 @@ struct SolveSettings {
   std::vector<double> interval{0, 1};
   int grid = 1024;
   std::vector<double> moments, points;
+  // A distribution instead of moments (docs/reference.md §2): its moments are computed from it,
+  // for a power basis in its own local coordinates (continuous/local_power.h).
+  std::vector<double> depths, weights;
   double zf = 0.5;
   std::string backend = "fast";
   std::string technique;  // a closed form instead of the LP
@@ -39,10 +42,10 @@ struct SolveBatch {
   std::string lines;  // one JSON answer per non-blank input line, in input order
   int failures = 0;   // answers that are not optimal, and malformed lines
 };
-// Every line of `in` as a query object (keys id, basis, interval, grid, discretization, moments,
-// points, zf, technique, alpha, moment_tolerance; the rest from `settings`). A malformed line is
-// answered {"status": "error", "message": "<source>:<line>: ..."} (and printed to stderr when
-// `report_errors`) without stopping the others.
+// Every line of `in` as a query object (keys id, basis, interval, grid, discretization, moments or
+// depths and weights, points, zf, technique, alpha, moment_tolerance; the rest from `settings`). A
+// malformed line is answered {"status": "error", "message": "<source>:<line>: ..."} (and printed to
+// stderr when `report_errors`) without stopping the others.
 SolveBatch solve_batch(const SolveSettings& settings, std::istream& in, const std::string& source,
                        bool report_errors = true);
 
