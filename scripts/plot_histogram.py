@@ -7,13 +7,14 @@ series.csv and references.csv; writes <out>.png and <out>.pdf. Run with Debian's
 import argparse
 import csv
 
-from plot_common import save_png_and_pdf  # first: it selects the headless backend
+from plot_common import label_room, save_png_and_pdf, stack_labels  # first: headless backend
 
 import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.ticker  # noqa: E402
 
 # References drawn as lines; the others stay in the report's table (too many labels overlap).
-SHOWN_REFERENCES = ("vsm", "esm", "hamburger4", "hamburger6", "lp:power4", "lp:trig4", "oracle")
+SHOWN_REFERENCES = ("vsm", "esm", "hamburger4", "hausdorff4", "hamburger6", "tmsm", "lp:power4",
+                    "lp:trig4", "oracle")
 
 
 def draw(ax, rows, series, references):
@@ -39,19 +40,17 @@ def draw(ax, rows, series, references):
             colour = "#2f4f6f"
         ax.axvline(100 * float(s["best"]), color=colour, linestyle="-", linewidth=1.2)
         ax.axvline(100 * float(s["median"]), color=colour, linestyle=":", linewidth=1.2)
-    # Vertical labels, alternately left and right of their line, so that close references stay legible.
-    shown = sorted((r for r in references if r[0] in SHOWN_REFERENCES), key=lambda r: r[1])
-    for i, (name, error) in enumerate(shown):
+    shown = [r for r in references if r[0] in SHOWN_REFERENCES]
+    for name, error in shown:
         ax.axvline(error, color="#555555", linestyle="--", linewidth=0.8)
-        ax.text(error, top * 1.02, name, color="#333333", fontsize=6.5, va="bottom", rotation=90,
-                ha="right" if i % 2 else "left")
+    ax.set_ylim(0, top * 1.35)  # the labels' pixel widths depend on the axes' final x range
     ax.plot([], [], color="#555555", linestyle="-", label="best (solid), median (dotted)")
     ax.yaxis.set_major_locator(matplotlib.ticker.MaxNLocator(integer=True))
     ax.set_xlabel("mean |PCF - G| over receiver fragments (%)")
     ax.set_ylabel("candidates")
     ax.set_title("Sweep candidates by mean error" + (" and functions per candidate" if several else ""))
-    ax.set_ylim(0, top * 1.35)
-    ax.legend(fontsize=7, loc="upper right", ncol=1, frameon=False)
+    ax.legend(fontsize=7, loc="upper left", ncol=1, frameon=False)
+    return shown, top
 
 
 def draw_zoom(ax, series, references, candidates, lo, hi, bins=60):
@@ -72,16 +71,15 @@ def draw_zoom(ax, series, references, candidates, lo, hi, bins=60):
         for value, style in ((float(s["best"]), "-"), (float(s["median"]), ":")):
             if lo <= 100 * value <= hi:
                 ax.axvline(100 * value, color=colour, linestyle=style, linewidth=1.2)
-    shown = sorted((r for r in references if r[0] in SHOWN_REFERENCES and lo <= r[1] <= hi), key=lambda r: r[1])
-    for i, (name, error) in enumerate(shown):
+    shown = [r for r in references if r[0] in SHOWN_REFERENCES and lo <= r[1] <= hi]
+    for name, error in shown:
         ax.axvline(error, color="#555555", linestyle="--", linewidth=0.8)
-        ax.text(error, top * 1.02, name, color="#333333", fontsize=6.5, va="bottom", rotation=90,
-                ha="right" if i % 2 else "left")
-    ax.set_ylim(0, top * 1.35)
     ax.set_xlim(lo, hi)
     ax.yaxis.set_major_locator(matplotlib.ticker.MaxNLocator(integer=True))
     ax.set_xlabel("mean |PCF - G| (%), zoomed on the bulk of the candidates with the most functions")
     ax.set_ylabel("candidates")
+    ax.set_ylim(0, top * 1.35)
+    return shown, top
 
 
 def main():
@@ -113,11 +111,35 @@ def main():
             hi = errors[min(len(errors) - 1, int(0.95 * len(errors)))]
             if hi > lo:
                 zoom = (candidates, lo, hi)
+    fig, _ = figure(rows, series, references, zoom)
+    save_png_and_pdf(fig, args.out, "plot_histogram.py", layout=False)
+
+
+def figure(rows, series, references, zoom=None):
+    """The whole figure: the histogram, and the zoomed panel when `zoom` = (candidates, lo, hi),
+    laid out, with the reference labels placed last (by their pixel extents) so that the layout
+    does not move them onto each other. Returns the figure and every label."""
     fig, axes = plt.subplots(2 if zoom else 1, 1, figsize=(7.5, 7.2 if zoom else 4.0), squeeze=False)
-    draw(axes[0][0], rows, series, references)
+    panels = [(axes[0][0], *draw(axes[0][0], rows, series, references), 0.0)]
     if zoom:
-        draw_zoom(axes[1][0], series, references, *zoom)
-    save_png_and_pdf(fig, args.out, "plot_histogram.py")
+        panels.append((axes[1][0], *draw_zoom(axes[1][0], series, references, *zoom), 0.0))
+    fig.tight_layout()
+    labels = []
+    renderer = fig.canvas.get_renderer()
+    for ax, shown, top, legend_room in panels:
+        texts, lanes = stack_labels(ax, shown, top)
+        ax.set_ylim(0, label_room(top, lanes) + top * legend_room)
+        legend = ax.get_legend()
+        # Raise the y limit (the labels sink in pixels, the legend stays) until no label meets it.
+        for _ in range(20):
+            if legend is None:
+                break
+            box = legend.get_window_extent(renderer)
+            if not any(box.overlaps(t.get_window_extent(renderer)) for t in texts):
+                break
+            ax.set_ylim(0, ax.get_ylim()[1] * 1.12)
+        labels += texts
+    return fig, labels
 
 
 if __name__ == "__main__":
