@@ -84,7 +84,7 @@ TEST_P(BothBackends, MomentsOutsideTheMomentSpaceAreInfeasible) {
   EXPECT_EQ(solve_with(GetParam(), q).status, ProblemStatus::Infeasible);
 }
 
-INSTANTIATE_TEST_SUITE_P(Lp, BothBackends, ::testing::Values("fast", "glpk"));
+INSTANTIATE_TEST_SUITE_P(Lp, BothBackends, ::testing::Values("fast", "glpk", "exact"));
 
 // A narrow kernel's LP from the default dataset's power4 sweep (the 81 taps of a 9x9 kernel, all
 // within 0.3621-0.3655 of depth, 7 % of the mass in front of z_f, duals ~1e6): with the extra
@@ -229,6 +229,37 @@ TEST(LpBackends, AgreeOnOneHundredThousandRandomInstancesAcrossTheCatalog) {
   // GLPK's own error rate, not ours (each case is checked above): ~0.1 %; it counts a few more
   // since our solver certifies more of the boundary instances GLPK gets wrong (103 measured).
   EXPECT_LE(glpk_inconsistent, 2 * kInstances / 1000);
+}
+
+// The exact rational arbiter (QSopt_ex) on seeded instances across the catalog: it solves the LP
+// as posed exactly, so our certified answers must agree with it to 1e-9 wherever ours is optimal
+// and not our GLPK fallback's; GLPK is counted, not required to agree (docs/lp-engine.md § The
+// exact arbiter).
+TEST(LpBackends, OursAgreesWithTheExactRationalArbiter) {
+  SeededRandom random(20261205);
+  auto fast = make_backend("fast"), glpk = make_backend("glpk"), exact = make_backend("exact");
+  const int kInstances = 1500;
+  int compared = 0, glpk_agrees = 0;
+  double max_difference = 0;
+  for (int n = 0; n < kInstances; ++n) {
+    auto inst = testing_support::random_instance(random, 1 + n % 4, 16, 96);
+    const Basis basis = Basis::parse(inst.basis);
+    const Problem p = make_problem_from_distribution(basis, Discretization{0, 1, inst.grid, false},
+                                                     inst.depths, inst.weights, inst.zf);
+    const Solution e = exact->solve(p);
+    ASSERT_EQ(e.status, ProblemStatus::Optimal) << "instance " << n << ": it is feasible";
+    ASSERT_EQ(e.engine, Engine::Exact);
+    const Solution a = fast->solve(p), b = glpk->solve(p);
+    glpk_agrees += b.status == ProblemStatus::Optimal && std::abs(b.G - e.G) <= 1e-9;
+    if (a.status != ProblemStatus::Optimal || a.engine != Engine::Fast) continue;
+    EXPECT_NEAR(a.G, e.G, 1e-9) << "instance " << n;
+    max_difference = std::max(max_difference, std::abs(a.G - e.G));
+    ++compared;
+  }
+  std::printf(
+      "exact arbiter: %d instances; ours compared %d (max |dG| %.2e); GLPK within 1e-9: %d\n",
+      kInstances, compared, max_difference, glpk_agrees);
+  EXPECT_GE(compared, kInstances * 99 / 100);
 }
 
 TEST(LpProperties, ZeroCdfGivesZeroAndRefiningNeverRaisesTheBound) {

@@ -2,6 +2,7 @@
 
 #include <tuple>
 
+#include "lp/exact_backend.h"
 #include "lp/fallback_backend.h"
 #include "lp/fast/certificates.h"
 #include "lp/fast/driver.h"
@@ -55,7 +56,7 @@ std::unique_ptr<Backend> make_fast_backend(const fast::SimplexSettings& settings
 }
 
 const char* to_string(Engine engine) {
-  return engine == Engine::Fast ? "fast" : "glpk";
+  return engine == Engine::Fast ? "fast" : engine == Engine::Glpk ? "glpk" : "exact";
 }
 
 const char* to_string(ProblemStatus status) {
@@ -73,12 +74,13 @@ const char* to_string(ProblemStatus status) {
 }
 
 std::vector<std::string> backend_names() {
-  return {"fast", "glpk"};
+  return {"fast", "glpk", "exact"};
 }
 
 std::unique_ptr<Backend> make_backend(const std::string& name) {
   if (name == "fast") return make_fallback_backend(make_fast_backend());
   if (name == "glpk") return make_glpk_backend();
+  if (name == "exact") return make_exact_backend();
   std::string valid;
   for (const auto& n : backend_names()) valid += (valid.empty() ? "" : ", ") + n;
   throw InputError("unknown LP backend '" + name + "'; valid: " + valid);

@@ -25,7 +25,7 @@ const char* to_string(ProblemStatus status);
 // Which solver produced an answer: the fast backend hands the rare LP its simplex cannot certify
 // to GLPK (accepted only with an independent certificate), so a comparison of the two backends
 // must know which answers are GLPK's own.
-enum class Engine { Fast, Glpk };
+enum class Engine { Fast, Glpk, Exact };
 const char* to_string(Engine engine);
 
 struct Solution {
