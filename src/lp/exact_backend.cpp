@@ -36,6 +36,7 @@ struct Rational {
 
 class ExactBackend : public Backend {
  public:
+  explicit ExactBackend(ExactRhs rhs) : rhs_(rhs) {}
   std::string name() const override { return "exact"; }
   int max_functions() const override { return kMaxColumnRows - 1; }
 
@@ -48,7 +49,7 @@ class ExactBackend : public Backend {
     mpq_set(infinity.q, mpq_ILL_MAXDOUBLE);
     for (int r = 0; r < p.rows; ++r) {
       Rational rhs(p.rhs[r]);
-      exact_image_of_start(p, r, rhs.q);
+      if (rhs_ == ExactRhs::DistributionImage) exact_image_of_start(p, r, rhs.q);
       mpq_QSnew_row(lp, rhs.q, 'E', nullptr);
     }
     std::vector<int> rows(p.rows);
@@ -79,6 +80,8 @@ class ExactBackend : public Backend {
   }
 
  private:
+  ExactRhs rhs_;
+
   // A problem built from a distribution (Problem::start_support) poses the moments of that
   // distribution: its double right-hand side is the rounding of sum_k w_k column_k, which for a
   // distribution on the boundary of the moment cone (one or two atoms of four power moments) no
@@ -118,8 +121,8 @@ class ExactBackend : public Backend {
 
 }  // namespace
 
-std::unique_ptr<Backend> make_exact_backend() {
-  return std::make_unique<ExactBackend>();
+std::unique_ptr<Backend> make_exact_backend(ExactRhs rhs) {
+  return std::make_unique<ExactBackend>(rhs);
 }
 
 }  // namespace mb::lp

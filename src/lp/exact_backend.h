@@ -9,6 +9,10 @@
 
 namespace mb::lp {
 
-std::unique_ptr<Backend> make_exact_backend();
+// Which right-hand side a problem built from a distribution poses (Problem::start_support): that
+// distribution's exact image (what the problem means; `lp.backend exact`), or the rounded double
+// one our engine and GLPK solve (to check their answers against the LP they were given).
+enum class ExactRhs { DistributionImage, AsRounded };
+std::unique_ptr<Backend> make_exact_backend(ExactRhs rhs = ExactRhs::DistributionImage);
 
 }  // namespace mb::lp
