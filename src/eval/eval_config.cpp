@@ -35,7 +35,10 @@ struct ShadowOptions {
 const std::vector<OptionRecord<ShadowOptions>>& kernel_options() {
   static const std::vector<OptionRecord<ShadowOptions>> records{
       {{"kernel.size", OptionType::Integer, "9",
-        "Filter taps per axis (odd), for PCF and moment maps."},
+        "Filter taps per axis (odd), for PCF and moment maps. At most 127: every receiver's LP "
+        "holds "
+        "size^2 kernel atoms, and a kernel wider than the map only averages the far plane.",
+        1, 127},
        &ShadowOptions::kernel_size},
       {{"kernel.sigma", OptionType::Number, "2.4", "Gaussian standard deviation in texels."},
        &ShadowOptions::kernel_sigma},
