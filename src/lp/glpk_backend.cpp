@@ -2,6 +2,7 @@
 
 #include <glpk.h>
 
+#include <climits>
 #include <vector>
 
 namespace mb::lp {
@@ -13,7 +14,7 @@ namespace {
 // in 5000 stalled, with a fallback to the dual simplex from GLPK's advanced basis.
 class GlpkBackend : public Backend {
  public:
-  GlpkBackend() : lp_(glp_create_prob()) {
+  explicit GlpkBackend(GlpkMode mode) : mode_(mode), lp_(glp_create_prob()) {
     glp_term_out(GLP_OFF);
     glp_init_smcp(&params_);
     params_.msg_lev = GLP_MSG_OFF;
@@ -26,7 +27,7 @@ class GlpkBackend : public Backend {
     params_.tol_bnd = 1e-10;
   }
   ~GlpkBackend() override { glp_delete_prob(lp_); }
-  std::string name() const override { return "glpk"; }
+  std::string name() const override { return mode_ == GlpkMode::Exact ? "glpk_exact" : "glpk"; }
   int max_functions() const override { return kMaxColumnRows - 1; }
 
   Solution solve(const Problem& p) override {
@@ -66,6 +67,14 @@ class GlpkBackend : public Backend {
       rc = glp_simplex(lp_, &params_);
       iterations += glp_get_it_cnt(lp_);
     }
+    if (mode_ == GlpkMode::Exact) {
+      // glp_exact starts from the basis the double simplex left, and only needs it valid; it has
+      // no iteration limit of its own but obeys it_lim, which the double run set.
+      if (rc != 0 && glp_warm_up(lp_) != 0) glp_std_basis(lp_);
+      params_.it_lim = INT_MAX;
+      rc = glp_exact(lp_, &params_);
+      iterations += glp_get_it_cnt(lp_);
+    }
     s.iterations = iterations;
     if (rc != 0 && rc != GLP_EITLIM && rc != GLP_ENOPFS && rc != GLP_ENODFS && rc != GLP_ESING &&
         rc != GLP_ECOND && rc != GLP_EOBJLL && rc != GLP_EOBJUL) {
@@ -95,6 +104,7 @@ class GlpkBackend : public Backend {
   }
 
  private:
+  GlpkMode mode_;
   glp_prob* lp_;
   glp_smcp params_;
   std::vector<int> ia_, ja_;
@@ -103,8 +113,8 @@ class GlpkBackend : public Backend {
 
 }  // namespace
 
-std::unique_ptr<Backend> make_glpk_backend() {
-  return std::make_unique<GlpkBackend>();
+std::unique_ptr<Backend> make_glpk_backend(GlpkMode mode) {
+  return std::make_unique<GlpkBackend>(mode);
 }
 
 }  // namespace mb::lp

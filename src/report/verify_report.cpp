@@ -209,12 +209,14 @@ void write_worst_cases(std::ostream& md, std::ostream& worst, const VerifyReport
                        std::span<const VerifyInstance> instances, bool continuous) {
   worst << "technique,kind,rank,source,zf,moments,depths,weights,G_closed_form";
   for (int g : ctx.grids) worst << ",G_lp_" << (g ? std::to_string(g) : "continuous");
-  worst << "\n";
+  worst << ",G_lp_exact\n";
   md << "\n## Worst cases\n\nPer solver: the largest |dG| on the finest grid, then (if any) the "
         "cases furthest above an "
         "LP. Re-run one with the printed `solve` commands (closed form, then the LP with the "
         "distribution's depths "
-        "as extra points).\n";
+        "as extra points). `G exact LP` is the finest grid's LP solved in rational arithmetic "
+        "(the arbiter, docs/lp-engine.md): where it differs from the grid's column, the double "
+        "LP is off, not the closed form.\n";
   // One table (and its worst.csv rows) per list of cases; `kind` names the ordering.
   const auto write_cases = [&](const VerifySolverResult& r, const std::vector<VerifyCase>& cases,
                                const char* kind, const char* heading) {
@@ -222,7 +224,7 @@ void write_worst_cases(std::ostream& md, std::ostream& worst, const VerifyReport
     md << "\n### " << r.target.technique << ": " << heading
        << "\n\n| rank | source | z_f | G closed form |";
     for (int g : ctx.grids) md << " G LP " << ground_truth(g) << " |";
-    md << "\n|---|---|---|---|";
+    md << " G exact LP |\n|---|---|---|---|---|";
     for (size_t k = 0; k < ctx.grids.size(); ++k) md << "---|";
     md << "\n";
     for (size_t k = 0; k < cases.size(); ++k) {
@@ -231,13 +233,13 @@ void write_worst_cases(std::ostream& md, std::ostream& worst, const VerifyReport
       md << "| " << k + 1 << " | " << inst.source << " | " << full(inst.zf) << " | "
          << full(c.closed_form) << " |";
       for (double g : c.lp) md << " " << full(g) << " |";
-      md << "\n";
+      md << " " << full(c.lp_exact) << " |\n";
       worst << r.target.technique << "," << kind << "," << k + 1 << ",\"" << inst.source << "\","
             << full(inst.zf) << ",\"" << joined(c.moments, " ") << "\",\""
             << joined(inst.depths, " ") << "\",\"" << joined(inst.weights, " ") << "\","
             << full(c.closed_form);
       for (double g : c.lp) worst << "," << full(g);
-      worst << "\n";
+      worst << "," << full(c.lp_exact) << "\n";
     }
     std::string basis;
     for (const auto& b : r.target.lp_basis) basis += (basis.empty() ? "" : ",") + b;

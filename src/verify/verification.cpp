@@ -10,6 +10,7 @@
 #include "continuous/discretized.h"
 #include "continuous/local_power.h"
 #include "continuous/moment_box.h"
+#include "lp/exact_backend.h"
 #include "lp/problem.h"
 #include "lp/solution.h"
 #include "moments/hamburger.h"
@@ -398,6 +399,23 @@ void reduce_cases(const VerifyTarget& target, const std::vector<VerifyCase>& cas
     result.worst_above.push_back(cases[excess[k].second]);
 }
 
+// The worst cases through the exact arbiter (docs/lp-engine.md § The exact arbiter): the finest
+// grid's LP as solve_grid poses it, solved in rational arithmetic, so that a large |dG| can be
+// told apart from an LP answer that is off (results/FINDINGS.md §6b). Serial: the arbiter keeps
+// global state, and there are only 2 x `verify.worst` cases per solver.
+void arbitrate_worst(const VerifyTarget& target, std::span<const VerifyInstance> instances,
+                     const lp::ProblemFactory& finest, VerifySolverResult& result) {
+  auto exact = lp::make_exact_backend(lp::ExactRhs::DistributionImage);
+  for (auto* list : {&result.worst, &result.worst_above})
+    for (VerifyCase& c : *list) {
+      const VerifyInstance& inst = instances[c.instance];
+      lp::Problem problem = finest.from_distribution(inst.depths, inst.weights, inst.zf);
+      if (target.cantelli_support) add_cantelli_support(target, inst, finest, problem);
+      const lp::Solution s = exact->solve(problem);
+      if (s.call == lp::CallStatus::Ok && s.status == lp::ProblemStatus::Optimal) c.lp_exact = s.G;
+    }
+}
+
 }  // namespace
 
 VerifySolverResult verify_solver(const VerifyTarget& target, const TechniqueMaker& make,
@@ -472,6 +490,7 @@ VerifySolverResult verify_solver(const VerifyTarget& target, const TechniqueMake
       cases[i].above_witness =
           above_witnesses(*probe, stored_moments, instances[i].zf, witnesses[i], box_rows);
   reduce_cases(target, cases, grids, continuous, box_rows, tolerance, worst_count, result);
+  if (!grids.empty()) arbitrate_worst(target, instances, *factories.back(), result);
   if (target.upper) reduce_upper(cases, tolerance, result);
   return result;
 }

@@ -102,6 +102,9 @@ struct VerifyCase {
   double closed_upper = std::numeric_limits<double>::quiet_NaN();
   double lp_upper = std::numeric_limits<double>::quiet_NaN();
   bool upper_limited = false;
+  // The worst cases only: the finest grid's LP solved by the exact arbiter (lp/exact_backend.h)
+  // with the distribution's exact image as right-hand side; NaN elsewhere, or where it failed.
+  double lp_exact = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct VerifyGridStats {
