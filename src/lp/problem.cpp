@@ -28,7 +28,9 @@ double largest_magnitude(const std::vector<double>& values) {
 std::vector<double> grid_points(const Discretization& disc) {
   if (disc.grid < 2)
     throw InputError("grid: at least 2 points are needed, got " + std::to_string(disc.grid));
-  if (!(disc.lo < disc.hi)) throw InputError("interval: expected lo < hi");
+  if (!(disc.lo < disc.hi))
+    throw InputError("interval: expected lo < hi, got [" + round_trip(disc.lo) + ", " +
+                     round_trip(disc.hi) + "]");
   std::vector<double> g(disc.grid);
   for (int i = 0; i < disc.grid; ++i) g[i] = disc.lo + (disc.hi - disc.lo) * i / (disc.grid - 1);
   g.back() = disc.hi;
@@ -46,7 +48,9 @@ ProblemFactory::ProblemFactory(const Basis& basis, const Discretization& disc)
   auto grid = std::make_shared<ColumnBlock>();
   grid->points = grid_points(disc);
   const int n = disc.grid, k = int(basis.size()) + 1;
-  if (n < k) throw InputError("grid: fewer points than the basis has functions plus one");
+  if (n < k)
+    throw InputError("grid: " + std::to_string(n) + " points, expected at least " +
+                     std::to_string(k) + " (the basis's functions plus the constant)");
   if (k > kMaxColumnRows)
     throw InputError("basis: at most " + std::to_string(kMaxColumnRows - 1) + " functions, got " +
                      std::to_string(k - 1));
@@ -180,14 +184,14 @@ Problem ProblemFactory::from_moments(std::span<const double> moments, double zf,
   if (moments.size() != basis_.size())
     throw InputError("moments: expected " + std::to_string(basis_.size()) +
                      " values (one per basis function), got " + std::to_string(moments.size()));
-  if (!std::isfinite(zf)) throw InputError("zf: not finite");
+  if (!std::isfinite(zf)) throw InputError("zf: expected a finite depth, got " + round_trip(zf));
   Problem p;
   p.rows = rows_;
   p.grid = grid_;
   p.zf = zf;
   std::vector<double> points;
   for (double z : extra_points) {
-    if (!std::isfinite(z)) throw InputError("points: a depth is not finite");
+    if (!std::isfinite(z)) throw InputError("points: expected finite depths, got " + round_trip(z));
     points.push_back(disc_.quantize ? quantize_to_grid(disc_, z) : z);
   }
   // z_f joins I only where it is admissible; outside [lo, hi] it changes nothing but the cost.
@@ -202,7 +206,8 @@ Problem ProblemFactory::from_moments(std::span<const double> moments, double zf,
   raw[0] = 1;
   for (size_t j = 0; j < moments.size(); ++j) {
     if (!std::isfinite(moments[j]))
-      throw InputError("moments: value " + std::to_string(j + 1) + " is not finite");
+      throw InputError("moments: value " + std::to_string(j + 1) + " is " + round_trip(moments[j]) +
+                       ", expected a finite number");
     raw[j + 1] = moments[j];
   }
   p.rhs.resize(rows_);
@@ -214,12 +219,16 @@ Problem ProblemFactory::from_moments(std::span<const double> moments, double zf,
 Problem ProblemFactory::from_distribution(std::span<const double> depths,
                                           std::span<const double> weights, double zf) const {
   if (depths.size() != weights.size() || depths.empty())
-    throw InputError("distribution: expected as many weights as depths, at least one");
+    throw InputError("distribution: expected as many weights as depths, at least one; got " +
+                     std::to_string(weights.size()) + " weights for " +
+                     std::to_string(depths.size()) + " depths");
   std::vector<double> columns(depths.size() * rows_);
   std::vector<const double*> pointers(depths.size());
   std::vector<double> used(depths.size());
   for (size_t t = 0; t < depths.size(); ++t) {
-    if (!std::isfinite(depths[t])) throw InputError("distribution: a depth is not finite");
+    if (!std::isfinite(depths[t]))
+      throw InputError("distribution: depth " + std::to_string(t + 1) + " is " +
+                       round_trip(depths[t]) + ", expected a finite number");
     used[t] = disc_.quantize ? quantize_to_grid(disc_, depths[t]) : depths[t];
     column(used[t], &columns[t * rows_]);
     pointers[t] = &columns[t * rows_];

@@ -77,8 +77,9 @@ LayerStack read_deep_exr(const std::string& file) {
   const OIIO::ImageSpec& spec = in->spec();
   if (!spec.deep) throw InputError(file + ": not a deep image");
   if (spec.get_int_attribute("momentbench:format_version", 0) != kFormatVersion)
-    throw InputError(file + ": not a momentbench layer stack (format version " +
-                     std::to_string(kFormatVersion) + ")");
+    throw InputError(file + ": not a momentbench layer stack: format version " +
+                     std::to_string(spec.get_int_attribute("momentbench:format_version", 0)) +
+                     ", expected " + std::to_string(kFormatVersion));
   int channel[kChannelCount];
   for (int c = 0; c < kChannelCount; ++c) {
     channel[c] = spec.channelindex(kChannels[c]);

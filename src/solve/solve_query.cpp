@@ -13,6 +13,7 @@
 #include "techniques/registry.h"
 #include "techniques/technique.h"
 #include "util/error.h"
+#include "util/number_text.h"
 #include "util/option_record.h"
 
 namespace mb {
@@ -63,12 +64,12 @@ Instance checked_instance(std::vector<double> moments, std::vector<double> depth
                      "), got " + std::to_string(weights.size()));
   long double total = 0;
   for (double w : weights) {
-    if (!(w >= 0)) throw InputError("weights: expected numbers >= 0, got " + std::to_string(w));
+    if (!(w >= 0)) throw InputError("weights: expected numbers >= 0, got " + round_trip(w));
     total += w;
   }
   if (std::abs(double(total) - 1) > 1e-12)
     throw InputError("weights: expected to sum to 1 (a distribution), got " +
-                     std::to_string(double(total)));
+                     round_trip(double(total)));
   return {{}, std::move(depths), std::move(weights)};
 }
 
@@ -268,7 +269,9 @@ json solve_line(const std::string& line, int number, const SolveSettings& o, lp:
   }
   std::vector<double> interval =
       query.has("interval") ? query.numbers("interval") : std::vector<double>{0, 1};
-  if (interval.size() != 2) throw InputError("key 'interval': expected [lo, hi]");
+  if (interval.size() != 2)
+    throw InputError("key 'interval': expected [lo, hi], got " + std::to_string(interval.size()) +
+                     (interval.size() == 1 ? " number" : " numbers"));
   lp::Discretization d{interval[0], interval[1],
                        query.has("grid") ? query.integer("grid", 2, 1 << 24) : o.grid, o.quantize};
   const std::string discretization =
@@ -375,7 +378,9 @@ SolveSettings solve_settings_from(const Config& config) {
 nlohmann::json solve_instance(const SolveSettings& o) {
   if (!o.technique.empty()) return solve_closed_form(o.technique, o.alpha, o.moments, o.zf);
   auto backend = lp::make_backend(o.backend);
-  if (o.interval.size() != 2) throw InputError("interval: expected [lo, hi]");
+  if (o.interval.size() != 2)
+    throw InputError("interval: expected [lo, hi], got " + std::to_string(o.interval.size()) +
+                     (o.interval.size() == 1 ? " number" : " numbers"));
   lp::Discretization disc{o.interval[0], o.interval[1], o.grid, o.quantize};
   disc.continuous = o.discretization == "continuous";
   FactoryCache factories;

@@ -26,7 +26,9 @@ uint64_t combination_rank(const std::vector<int>& c, int n) {
 
 std::vector<int> combination_unrank(uint64_t rank, int n, int k) {
   if (rank >= binomial(n, k))
-    throw InputError("candidate id " + std::to_string(rank) + " out of range");
+    throw InputError("candidate id " + std::to_string(rank) + ": expected a rank below " +
+                     std::to_string(binomial(n, k)) + " (combinations of " + std::to_string(k) +
+                     " from " + std::to_string(n) + ")");
   std::vector<int> c;
   int v = 0;
   for (int i = 0; i < k; ++i) {

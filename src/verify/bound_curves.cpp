@@ -25,18 +25,25 @@ double checked_total_weight(const BoundCurveRequest& r) {
   double total = 0;
   for (size_t t = 0; t < r.depths.size(); ++t) {
     if (!std::isfinite(r.depths[t]))
-      throw InputError("bounds.depths: depth " + std::to_string(t + 1) + " is not finite");
+      throw InputError("bounds.depths: depth " + std::to_string(t + 1) + " is " +
+                       round_trip(r.depths[t]) + ", expected a finite number");
     if (!(r.weights[t] >= 0) || !std::isfinite(r.weights[t]))
-      throw InputError("bounds.weights: weight " + std::to_string(t + 1) +
-                       " is not a finite non-negative number");
+      throw InputError("bounds.weights: weight " + std::to_string(t + 1) + " is " +
+                       round_trip(r.weights[t]) + ", expected a finite number >= 0");
     if (r.depths[t] < r.lp.lo || r.depths[t] > r.lp.hi)
       throw InputError("bounds.depths: depth " + round_trip(r.depths[t]) +
-                       " lies outside the LP interval [lo, hi]");
+                       " lies outside the LP interval [" + round_trip(r.lp.lo) + ", " +
+                       round_trip(r.lp.hi) + "] (lp.lo, lp.hi); expected a depth inside it");
     total += r.weights[t];
   }
-  if (!(total > 0)) throw InputError("bounds.weights: expected a positive total weight");
-  if (r.samples < 2) throw InputError("bounds.samples: expected at least 2 z_f values");
-  if (!(r.zf_lo < r.zf_hi)) throw InputError("bounds.zf_range: expected lo < hi");
+  if (!(total > 0))
+    throw InputError("bounds.weights: expected a positive total weight, got " + round_trip(total));
+  if (r.samples < 2)
+    throw InputError("bounds.samples: expected at least 2 z_f values, got " +
+                     std::to_string(r.samples));
+  if (!(r.zf_lo < r.zf_hi))
+    throw InputError("bounds.zf_range: expected lo < hi, got [" + round_trip(r.zf_lo) + ", " +
+                     round_trip(r.zf_hi) + "]");
   return total;
 }
 

@@ -5,11 +5,14 @@
 // from the exact mean is measured in standard errors. A calibrated standard error gives misses of
 // root mean square near 1 and none far beyond 3.
 //
-//   screen_calibration_bench DATASET RESOLUTION CANDIDATES SEEDS FRACTION [UNITS.csv]
+//   screen_calibration_bench DATASET RESOLUTION CANDIDATES SEEDS FRACTION [UNITS.csv [ROWS.bin]]
 //
 // prints, per fraction, the rms of the misses in SE, the largest, and how many exceed 3 and 4;
 // with UNITS.csv also writes every unit's exact error sum per candidate (candidate 0 the pilot),
-// for trying other estimators offline.
+// for trying other estimators offline; with ROWS.bin also the error sums of every one-row segment
+// of kScreenUnitColumns texels with LP fragments, as float64 (a header row of segment keys
+// view * 2^32 + row * 2^16 + column block, then one row per candidate, the pilot first), for
+// trying other unit shapes.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -65,6 +68,41 @@ int run(int argc, char** argv) {
     }
   };
   dump(0, sampled_unit_errors(every, views, pilot));
+  // One-row segments: keys once, then each candidate's sums in key order.
+  std::vector<std::vector<uint64_t>> segment_of(views.size());
+  std::vector<uint64_t> keys;
+  for (size_t v = 0; v < views.size(); ++v) {
+    const int width = views[v].map.width;
+    for (uint32_t f : evaluator.lp_lists()[v]) {
+      const uint64_t t = views[v].fragments.texel[f];
+      segment_of[v].push_back((uint64_t(v) << 32) | ((t / uint64_t(width)) << 16) |
+                              (t % uint64_t(width)) / kScreenUnitColumns);
+      keys.push_back(segment_of[v].back());
+    }
+  }
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  std::ofstream rows;
+  if (argc > 7) {
+    rows.open(argv[7], std::ios::binary);
+    const uint64_t n = keys.size();
+    rows.write(reinterpret_cast<const char*>(&n), sizeof n);
+    rows.write(reinterpret_cast<const char*>(keys.data()), std::streamsize(n * sizeof n));
+  }
+  auto dump_rows = [&](const std::vector<std::vector<double>>& shadow) {
+    if (!rows.is_open()) return;
+    std::vector<double> sums(keys.size(), 0.0);
+    for (size_t v = 0; v < views.size(); ++v)
+      for (size_t i = 0; i < segment_of[v].size(); ++i) {
+        const uint32_t f = evaluator.lp_lists()[v][i];
+        const size_t at =
+            size_t(std::lower_bound(keys.begin(), keys.end(), segment_of[v][i]) - keys.begin());
+        sums[at] += std::abs(views[v].fragments.pcf[f] - shadow[v][f]);
+      }
+    rows.write(reinterpret_cast<const char*>(sums.data()),
+               std::streamsize(sums.size() * sizeof(double)));
+  };
+  dump_rows(pilot);
 
   const SweepPlan plan = make_sweep_plan({}, 4, {}, count, 45);
   std::vector<ScreenSample> samples;
@@ -78,6 +116,7 @@ int run(int argc, char** argv) {
     const double exact =
         evaluator.evaluate(Basis::parse(plan.functions(plan.ids[c])), &shadow).overall.mean();
     dump(c + 1, sampled_unit_errors(every, views, shadow));
+    dump_rows(shadow);
     for (const ScreenSample& sample : samples) {
       const ScreenEstimate e =
           estimate_mean_error(sample, sampled_unit_errors(sample, views, shadow));
