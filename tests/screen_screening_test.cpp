@@ -114,35 +114,43 @@ TEST(Screening, SampledUnitsAgreeWithTheFullEvaluation) {
   EXPECT_EQ(pilot.se, 0.0);
 }
 
-// The standard error is honest: over 40 seeds of the sample, a candidate's estimate misses its
-// exact mean by z standard errors with z of root mean square near 1 (measured 1.2-2.1 here, 1.0-1.7
-// on the default dataset at F = 0.05: the run errors are heavy tailed and a screen has few runs),
-// and rarely by more than 3. An SE off by a factor (a dropped n or R) breaks both.
-TEST(Screening, StandardErrorsCoverTheMissesOverSeeds) {
+// The standard error is calibrated (docs/sweeps.md, "Calibration"): over 200 candidates and 10
+// seeds of the sample, the estimates miss their exact means by z standard errors with z of root
+// mean square between 0.8 and 1.2, and by little more than 4 at worst. An SE off by a factor (a
+// dropped n or R) breaks the first; units that let a few clusters of hard fragments hold most of
+// the variance (blocks of 8 rows: up to 13 SE on the default dataset) break the second. The tiny
+// dataset at 256^2 has 1 476 units, so even half of them (739) is fewer than a real screen's
+// ~2 000, and its tail is a little heavier: 4.34 at worst here (exp(8z) candidates), where the
+// default dataset at F = 0.05 and 0.25 stays within 4 (tests/bench/screen_calibration_bench).
+TEST(Screening, StandardErrorsAreCalibratedOverCandidatesAndSeeds) {
   const Fixture& f = fixture();
-  const SweepPlan plan = make_sweep_plan({}, 4, {}, 4, 33);
+  const SweepPlan plan = make_sweep_plan({}, 4, {}, 200, 45);
+  std::vector<ScreenSample> samples;
+  for (uint64_t seed = 1; seed <= 10; ++seed) samples.push_back(f.sample(0.5, seed));
+  double squares = 0, largest = 0;
+  int count = 0, beyond3 = 0;
   for (uint64_t id : plan.ids) {
     std::vector<std::vector<double>> shadow;
     const double exact =
         f.evaluator->evaluate(Basis::parse(plan.functions(id)), &shadow).overall.mean();
-    int beyond = 0;
-    double squares = 0;
-    const int seeds = 40;
-    for (int seed = 1; seed <= seeds; ++seed) {
-      const ScreenSample sample = f.sample(0.25, uint64_t(seed));
+    for (const ScreenSample& sample : samples) {
       // From the full evaluation: a sampled unit's answers are its optima.
       const ScreenEstimate e =
           estimate_mean_error(sample, sampled_unit_errors(sample, f.views, shadow));
-      ASSERT_GT(e.se, 0.0);
+      ASSERT_GT(e.se, 0.0) << plan.name(id);
       const double z = (e.mean - exact) / e.se;
       squares += z * z;
-      beyond += std::abs(z) > 3;
+      largest = std::max(largest, std::abs(z));
+      beyond3 += std::abs(z) > 3;
+      ++count;
     }
-    const double rms = std::sqrt(squares / seeds);
-    EXPECT_GT(rms, 0.5) << plan.name(id) << ": standard errors far too wide";
-    EXPECT_LT(rms, 2.5) << plan.name(id) << ": standard errors far too narrow";
-    EXPECT_LE(beyond, 4) << plan.name(id) << ": " << beyond << " of 40 beyond 3 SE";
   }
+  const double rms = std::sqrt(squares / count);
+  std::printf("screen calibration: %d estimates, rms %.3f SE, largest %.2f, beyond 3: %d\n", count,
+              rms, largest, beyond3);
+  EXPECT_GT(rms, 0.8) << "standard errors too wide";
+  EXPECT_LT(rms, 1.2) << "standard errors too narrow";
+  EXPECT_LE(largest, 4.5);
 }
 
 // A few hundred seeded candidates, every one exactly and screened on a quarter of the runs.

@@ -5,7 +5,6 @@
 #include <numeric>
 
 #include "eval/error_stats.h"
-#include "eval/warm_runs.h"
 
 namespace mb {
 
@@ -87,13 +86,13 @@ ScreenSample make_screen_sample(const std::vector<ViewData>& views,
     for (uint32_t f : list) lp[f] = true;
     for (size_t f = 0; f < fragments.size(); ++f)
       if (!lp[f]) sample.fixed_error += std::abs(fragments.pcf[f]);
-    // The units: each band of warm-start rows cut into blocks of kScreenUnitColumns columns, its
-    // fragments in texel order (a unit is a run of its own when screened).
-    const int width = views[v].map.width;
+    // The units: each texel row cut into segments of kScreenUnitColumns columns, its fragments in
+    // texel order (a unit is a run of its own when screened).
+    const size_t width = size_t(views[v].map.width);
     const uint64_t blocks = uint64_t(width + kScreenUnitColumns - 1) / kScreenUnitColumns;
     auto unit_of = [&](uint32_t f) {
       const size_t t = fragments.texel[f];
-      return uint64_t(warm_run_of(t, width)) * blocks + (t % size_t(width)) / kScreenUnitColumns;
+      return uint64_t(t / width) * blocks + (t % width) / kScreenUnitColumns;
     };
     std::vector<uint32_t> by_unit = list;  // stable: texel order within a unit
     std::stable_sort(by_unit.begin(), by_unit.end(),

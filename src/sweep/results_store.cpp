@@ -33,9 +33,10 @@ const char* kSchema =
     " PRIMARY KEY (id, stage));";
 
 // Raised whenever the tables change (2: max_dark, darkening_bound, darkening_reason, the reference
-// and per-fragment bias of docs/reference.md §3; 3: estimates, of a screened sweep): an older
+// and per-fragment bias of docs/reference.md §3; 3: estimates, of a screened sweep; 4: an
+// estimate's run_errors are per screening unit of one texel row, screen/screening.h): an older
 // database is refused, not misread.
-constexpr const char* kSchemaVersion = "3";
+constexpr const char* kSchemaVersion = "4";
 
 struct Statement {
   sqlite3_stmt* s = nullptr;
