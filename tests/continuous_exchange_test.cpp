@@ -307,41 +307,55 @@ TEST(BasisDerivatives, ClosedFormsMatchDifferencesAndBoundsHold) {
 // across the kernel, half with an occluder edge in front, against Hamburger's bound in 50 digits
 // from the kernel's own depths and weights. Rounding their raw moments to double moves G by up to
 // ~1e-4; the distribution, solved in its local coordinates, keeps 1e-7.
+// A kernel like a real one on a sloped receiver: a 9x9 Gaussian over a plane whose depth changes by
+// 0.001-0.05 across the kernel, every odd one with an occluder edge in front, and a z_f just in
+// front of the plane.
+struct NarrowKernel {
+  Kernel kernel;
+  double zf = 0, change = 0;
+};
+NarrowKernel narrow_kernel(std::mt19937_64& rng, int n) {
+  std::uniform_real_distribution<double> unit(0, 1);
+  NarrowKernel out;
+  out.change = 0.001 * std::pow(50.0, unit(rng));  // across the kernel: 0.001..0.05
+  const double angle = 6.283185307179586 * unit(rng), centre = 0.3 + 0.5 * unit(rng);
+  const double gx = out.change / 8 * std::cos(angle), gy = out.change / 8 * std::sin(angle);
+  const bool edge = n % 2 == 1;
+  const int edge_column = int(unit(rng) * 7) - 3;  // the occluder covers dx < edge_column
+  Kernel& k = out.kernel;
+  double total = 0;
+  for (int dy = -4; dy <= 4; ++dy)
+    for (int dx = -4; dx <= 4; ++dx) {
+      const bool occluded = edge && dx < edge_column;
+      k.depths.push_back(occluded ? centre - 0.2 + 0.1 * gx * dx : centre + gx * dx + gy * dy);
+      k.weights.push_back(std::exp(-(dx * dx + dy * dy) / (2 * 2.4 * 2.4)));
+      total += k.weights.back();
+    }
+  for (double& w : k.weights) w /= total;
+  out.zf = centre - 0.0001 - 4 * (std::abs(gx) + std::abs(gy)) * unit(rng);
+  return out;
+}
+
 TEST(SolveDistribution, NarrowKernelsAgreeWithFiftyDigitHamburger) {
   std::mt19937_64 rng(45);
-  std::uniform_real_distribution<double> unit(0, 1);
   int compared = 0;
   for (int n = 0; n < 200; ++n) {
-    const double change = 0.001 * std::pow(50.0, unit(rng));  // across the kernel: 0.001..0.05
-    const double angle = 6.283185307179586 * unit(rng), centre = 0.3 + 0.5 * unit(rng);
-    const double gx = change / 8 * std::cos(angle), gy = change / 8 * std::sin(angle);
-    const bool edge = n % 2 == 1;
-    const int edge_column = int(unit(rng) * 7) - 3;  // the occluder covers dx < edge_column
-    Kernel k;
-    double total = 0;
-    for (int dy = -4; dy <= 4; ++dy)
-      for (int dx = -4; dx <= 4; ++dx) {
-        const bool occluded = edge && dx < edge_column;
-        k.depths.push_back(occluded ? centre - 0.2 + 0.1 * gx * dx : centre + gx * dx + gy * dy);
-        k.weights.push_back(std::exp(-(dx * dx + dy * dy) / (2 * 2.4 * 2.4)));
-        total += k.weights.back();
-      }
-    for (double& w : k.weights) w /= total;
-    const double zf = centre - 0.0001 - 4 * (std::abs(gx) + std::abs(gy)) * unit(rng);
+    const NarrowKernel nk = narrow_kernel(rng, n);
+    const Kernel& k = nk.kernel;
     std::vector<HP> nodes;
-    const double reference = double(hamburger4_hp(k, zf, &nodes));
+    const double reference = double(hamburger4_hp(k, nk.zf, &nodes));
     if (nodes[0] < -1 || nodes[1] > 2) continue;  // the extremal support must lie in I
     SolveSettings settings;
     settings.interval = {-1, 2};
     settings.discretization = "continuous";
     settings.depths = k.depths;
     settings.weights = k.weights;
-    settings.zf = zf;
+    settings.zf = nk.zf;
     const nlohmann::json answer = solve_instance(settings);
     ASSERT_EQ(answer["status"], "optimal") << n;
     EXPECT_EQ(answer["moments_from"], "distribution, local coordinates");
     EXPECT_NEAR(answer["G"].get<double>(), reference, 1e-7)
-        << "kernel " << n << " change " << change;
+        << "kernel " << n << " change " << nk.change;
     EXPECT_LE(answer["lower"].get<double>(), reference + 1e-9) << n;
     ++compared;
   }
