@@ -9,6 +9,7 @@
 #include "scene/procedural.h"
 #include "util/eigen.h"
 #include "util/error.h"
+#include "util/number_text.h"
 #include "util/yaml_reader.h"
 
 namespace mb {
@@ -102,7 +103,7 @@ PartDesc parse_part(YamlMap map, const std::filesystem::path& base_dir) {
   }
   if (part.kind.empty()) {
     map.also_suggest(kinds);
-    map.also_suggest({"transform", "two_sided", "fit", "opacity", "opacity_pattern"});
+    map.also_suggest({"transform", "two_sided", "fit", "opacity", "opacity_pattern", "color"});
     map.finish();  // reports a misspelled generator name first
     std::string all;
     for (const auto& k : kinds) all += (all.empty() ? "" : ", ") + k;
@@ -132,6 +133,13 @@ PartDesc parse_part(YamlMap map, const std::filesystem::path& base_dir) {
   }
   part.two_sided = map.boolean("two_sided", false);
   part.opacity = parse_opacity(map);
+  if (auto c = map.numbers("color", 3)) {
+    for (double v : *c)
+      if (!(v >= 0 && v <= 1))
+        map.fail("color",
+                 "expected three numbers in [0, 1] (linear RGB reflectance), got " + round_trip(v));
+    part.color = Eigen::Vector3d((*c)[0], (*c)[1], (*c)[2]);
+  }
   part.transform = parse_transform(map.map("transform"));
   map.finish();
   return part;
@@ -259,6 +267,7 @@ Scene build_scene(const SceneDesc& desc) {
   scene.cameras = desc.cameras;
   for (const auto& part : desc.parts) {
     scene.opacity.push_back(part.opacity);
+    scene.color.push_back(part.color);
     for (const auto& piece : build_part(part)) {
       for (const auto& v : piece.vertices)
         if (!v.allFinite())

@@ -25,6 +25,9 @@ struct PartDesc {
   double fit = 0;  // mesh only: scale so the largest extent is `fit`, centred, resting on y = 0
   bool two_sided = false;
   OpacityDesc opacity;  // opaque unless the part says otherwise
+  // Diffuse reflectance in linear RGB, each in [0, 1]: what a camera frame of `oit` shades
+  // (docs/transparency.md); light views ignore it.
+  Eigen::Vector3d color = Eigen::Vector3d::Constant(0.8);
   TransformDesc transform;
   std::string where;  // "file:line" for errors found while building
 };
@@ -39,11 +42,12 @@ struct SceneDesc {
 
 struct Scene {
   std::string name;
-  TriangleMesh mesh;                 // all parts, world coordinates
-  std::vector<uint8_t> two_sided;    // per triangle
-  std::vector<uint32_t> part;        // per triangle: its part, an index into `opacity`
-  std::vector<OpacityDesc> opacity;  // per part
-  bool translucent() const;          // some part is not opaque
+  TriangleMesh mesh;                   // all parts, world coordinates
+  std::vector<uint8_t> two_sided;      // per triangle
+  std::vector<uint32_t> part;          // per triangle: its part, an index into `opacity`
+  std::vector<OpacityDesc> opacity;    // per part
+  std::vector<Eigen::Vector3d> color;  // per part: PartDesc::color
+  bool translucent() const;            // some part is not opaque
   std::vector<LightViewDesc> views;
   std::vector<CameraDesc> cameras;
 };

@@ -1,0 +1,67 @@
+#pragma once
+// Order-independent transparency techniques (docs/transparency.md §3): each reconstructs the
+// transmittance in front of every transparent fragment of a pixel, and composites with it.
+// Moment-based ones (MBOIT's closed forms, `lp:<basis>`) see only the absorbance moments of the
+// pixel's fragments, summed in a canonical order so that the submission order cannot change them.
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "oit/compositing.h"
+#include "techniques/technique.h"
+
+namespace mb {
+
+struct OitParams {
+  // MBOIT's overestimation beta: A = A- + beta (A+ - A-) (docs/transparency.md §3).
+  double beta = 0.25;
+  // Moment bias of the MBOIT closed forms in double (docs/transparency.md §3, "Constants").
+  double power4_alpha = 1e-10, power6_alpha = 1e-10;
+  // lp:<basis>: the LP's grid, backend and lp.beta (0: the sharp bound e^{-A-}); its interval is
+  // that of the warped depth, [0, 1], unless a caller widens it (the closed forms' R).
+  TechniqueParams lp;
+};
+
+class OitTechnique {
+ public:
+  virtual ~OitTechnique() = default;
+  const std::string& name() const { return name_; }
+  // The transmittance in front of each fragment of `px` (`warped`: each fragment's depth warped
+  // to [0, 1], DepthWarp), as the technique reconstructs it; not thread-safe (LP state).
+  virtual void transmittance(const PixelFragments& px, std::span<const double> warped,
+                             std::span<double> out) = 0;
+  // Whether compositing rescales the transparent fragments' weights so that they sum to
+  // 1 - T_total (MBOIT's and WBOIT's normalisation Gamma); otherwise they are used as they are.
+  virtual bool normalised() const { return false; }
+  // Fragments the technique could not answer (an LP that failed): T = 1 there.
+  virtual size_t failures() const { return 0; }
+
+ protected:
+  explicit OitTechnique(std::string name) : name_(std::move(name)) {}
+
+ private:
+  std::string name_;
+};
+
+// exact, unsorted, wboit, mboit_power4, mboit_power6, lp:<basis>; InputError naming the valid
+// ones otherwise.
+std::unique_ptr<OitTechnique> make_oit_technique(const std::string& name, const OitParams& params);
+std::vector<std::string> oit_technique_names();  // without the lp: family
+
+// The absorbance moments' distribution of a pixel: warped depths and absorbances (weights
+// a_l / b_0), sorted by (depth, absorbance) so that any submission order gives the same sums, and
+// b_0 = sum a_l.
+struct AbsorbanceDistribution {
+  std::vector<double> depths, weights;
+  double total = 0;
+};
+AbsorbanceDistribution absorbance_distribution(const PixelFragments& px,
+                                               std::span<const double> warped);
+
+// The composite of a technique's transmittance: normalised (Gamma, docs/transparency.md §1) or
+// as given, over what lies behind, weighted by prod (1 - alpha_l).
+Rgb composite_with(const OitTechnique& technique, const PixelFragments& px,
+                   std::span<const double> transmittance);
+
+}  // namespace mb
