@@ -19,22 +19,39 @@ namespace {
 // list (oit/deep_frame.h). The exact reference needs no clamp.
 constexpr double kMaxAbsorbance = 10;
 
-class ExactOit : public OitTechnique {
+// `exact` and `unsorted`: a blend of the fragments themselves (oit/compositing.h), no moments.
+class BlendOit : public OitTechnique {
  public:
-  ExactOit() : OitTechnique("exact") {}
+  using Blend = void (*)(const PixelFragments&, std::span<double>);
+  BlendOit(std::string name, Blend blend) : OitTechnique(std::move(name)), blend_(blend) {}
   void transmittance(const PixelFragments& px, std::span<const double>,
                      std::span<double> out) override {
-    exact_transmittance(px, out);
+    blend_(px, out);
   }
+
+ private:
+  Blend blend_;
 };
 
-class UnsortedOit : public OitTechnique {
+// The moment-based techniques: they see the pixel's absorbance distribution only; a pixel without
+// absorbance (every alpha 0) lets everything through.
+class MomentOit : public OitTechnique {
  public:
-  UnsortedOit() : OitTechnique("unsorted") {}
-  void transmittance(const PixelFragments& px, std::span<const double>,
-                     std::span<double> out) override {
-    submission_transmittance(px, out);
+  using OitTechnique::OitTechnique;
+  void transmittance(const PixelFragments& px, std::span<const double> warped,
+                     std::span<double> out) final {
+    const AbsorbanceDistribution d = absorbance_distribution(px, warped);
+    if (!(d.total > 0)) {
+      std::fill(out.begin(), out.end(), 1.0);
+      return;
+    }
+    reconstruct(d, warped, out);
   }
+
+ protected:
+  // T at each fragment (`warped`: their depths on [0, 1]) from the distribution `d`.
+  virtual void reconstruct(const AbsorbanceDistribution& d, std::span<const double> warped,
+                           std::span<double> out) = 0;
 };
 
 // Weighted blended OIT (McGuire and Bavoil 2013, their weight function (7) of the view depth z):
@@ -58,21 +75,18 @@ class WeightedBlendedOit : public OitTechnique {
 // MBOIT with m power moments of the warped depth t = 2u - 1 in [-1, 1] (the seed's warp),
 // Hamburger's canonical bound through t_l (moments/hamburger.h): A = b_0 (G + beta w), w the
 // canonical weight at t_l. Moments are biased towards b* (docs/transparency.md §3, "Constants").
-class MbOitPower : public OitTechnique {
+class MbOitPower : public MomentOit {
  public:
   MbOitPower(int moments, double alpha, double beta)
-      : OitTechnique("mboit_power" + std::to_string(moments)),
+      : MomentOit("mboit_power" + std::to_string(moments)),
         m_(moments),
         alpha_(alpha),
         beta_(beta) {}
   bool normalised() const override { return true; }
-  void transmittance(const PixelFragments& px, std::span<const double> warped,
-                     std::span<double> out) override {
-    const AbsorbanceDistribution d = absorbance_distribution(px, warped);
-    if (!(d.total > 0)) {
-      std::fill(out.begin(), out.end(), 1.0);
-      return;
-    }
+
+ protected:
+  void reconstruct(const AbsorbanceDistribution& d, std::span<const double> warped,
+                   std::span<double> out) override {
     double b[6] = {};
     for (size_t i = 0; i < d.depths.size(); ++i) {
       const double t = 2 * d.depths[i] - 1;
@@ -82,7 +96,7 @@ class MbOitPower : public OitTechnique {
     static constexpr double kStar4[4] = {0, 0.375, 0, 0.375};
     static constexpr double kStar6[6] = {0, 0.48, 0, 0.451, 0, 0.45};
     bias_moments(b, m_, alpha_, m_ == 4 ? kStar4 : kStar6);
-    for (size_t l = 0; l < px.size(); ++l) {
+    for (size_t l = 0; l < warped.size(); ++l) {
       const double t = 2 * warped[l] - 1;
       const MsmBound<double> r = m_ == 4 ? hamburger4(b, t) : hamburger6(b, t);
       const double g = std::clamp(r.lower + beta_ * r.at_zf, 0.0, 1.0);
@@ -98,28 +112,25 @@ class MbOitPower : public OitTechnique {
 // lp:<basis> on the warped depth u in [0, 1]: Problem 1 on the grid and the pixel's own fragment
 // depths (techniques/lp_technique.h), A = b_0 G with G the sharp lower bound, or with lp.beta the
 // blend towards the LP's maximum. e^{-A} >= T_ref at every fragment when lp.beta = 0.
-class LpOit : public OitTechnique {
+class LpOit : public MomentOit {
  public:
   LpOit(const std::string& name, const TechniqueParams& params)
-      : OitTechnique(name), technique_(make_lp_technique(name, params)) {}
-  void transmittance(const PixelFragments& px, std::span<const double> warped,
-                     std::span<double> out) override {
-    const AbsorbanceDistribution d = absorbance_distribution(px, warped);
-    if (!(d.total > 0)) {
-      std::fill(out.begin(), out.end(), 1.0);
-      return;
-    }
+      : MomentOit(name), technique_(make_lp_technique(name, params)) {}
+  size_t failures() const override { return technique_->failures(); }
+
+ protected:
+  void reconstruct(const AbsorbanceDistribution& d, std::span<const double> warped,
+                   std::span<double> out) override {
     FragmentInput in;
     in.kernel_depths = d.depths;
     in.kernel_weights = d.weights;
-    for (size_t l = 0; l < px.size(); ++l) {
+    for (size_t l = 0; l < warped.size(); ++l) {
       in.zf = warped[l];
       const size_t before = technique_->failures();
       const double g = technique_->shadow(in);
       out[l] = technique_->failures() > before ? 1.0 : std::exp(-d.total * g);
     }
   }
-  size_t failures() const override { return technique_->failures(); }
 
  private:
   std::unique_ptr<Technique> technique_;
@@ -160,8 +171,8 @@ std::vector<std::string> oit_technique_names() {
 }
 
 std::unique_ptr<OitTechnique> make_oit_technique(const std::string& name, const OitParams& p) {
-  if (name == "exact") return std::make_unique<ExactOit>();
-  if (name == "unsorted") return std::make_unique<UnsortedOit>();
+  if (name == "exact") return std::make_unique<BlendOit>(name, exact_transmittance);
+  if (name == "unsorted") return std::make_unique<BlendOit>(name, submission_transmittance);
   if (name == "wboit") return std::make_unique<WeightedBlendedOit>();
   if (name == "mboit_power4") return std::make_unique<MbOitPower>(4, p.power4_alpha, p.beta);
   if (name == "mboit_power6") return std::make_unique<MbOitPower>(6, p.power6_alpha, p.beta);

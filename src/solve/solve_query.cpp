@@ -73,6 +73,13 @@ Instance checked_instance(std::vector<double> moments, std::vector<double> depth
   return {{}, std::move(depths), std::move(weights)};
 }
 
+// An interval is two numbers, lo and hi (their order is the factory's to check).
+void check_interval(const std::vector<double>& interval, const std::string& key) {
+  if (interval.size() != 2)
+    throw InputError(key + ": expected [lo, hi], got " + std::to_string(interval.size()) +
+                     (interval.size() == 1 ? " number" : " numbers"));
+}
+
 json solve_one(lp::Backend& backend, FactoryCache& factories,
                const std::vector<std::string>& basis_names, const lp::Discretization& disc,
                const Instance& instance, double zf, const std::vector<double>& points, bool check,
@@ -269,9 +276,7 @@ json solve_line(const std::string& line, int number, const SolveSettings& o, lp:
   }
   std::vector<double> interval =
       query.has("interval") ? query.numbers("interval") : std::vector<double>{0, 1};
-  if (interval.size() != 2)
-    throw InputError("key 'interval': expected [lo, hi], got " + std::to_string(interval.size()) +
-                     (interval.size() == 1 ? " number" : " numbers"));
+  check_interval(interval, "key 'interval'");
   lp::Discretization d{interval[0], interval[1],
                        query.has("grid") ? query.integer("grid", 2, 1 << 24) : o.grid, o.quantize};
   const std::string discretization =
@@ -378,9 +383,7 @@ SolveSettings solve_settings_from(const Config& config) {
 nlohmann::json solve_instance(const SolveSettings& o) {
   if (!o.technique.empty()) return solve_closed_form(o.technique, o.alpha, o.moments, o.zf);
   auto backend = lp::make_backend(o.backend);
-  if (o.interval.size() != 2)
-    throw InputError("interval: expected [lo, hi], got " + std::to_string(o.interval.size()) +
-                     (o.interval.size() == 1 ? " number" : " numbers"));
+  check_interval(o.interval, "interval");
   lp::Discretization disc{o.interval[0], o.interval[1], o.grid, o.quantize};
   disc.continuous = o.discretization == "continuous";
   FactoryCache factories;

@@ -210,11 +210,19 @@ void add_cantelli_support(const VerifyTarget& target, const VerifyInstance& inst
 // G of the grid LP for one instance (NaN when no backend answers it), and its optimal
 // distribution as the witness. The LP sees the exact distribution (its depths join I), so it is
 // feasible and G_LP <= F_Z.
+// The grid's LP of an instance: its distribution's depths among the points, and Cantelli's
+// support where the target needs it.
+lp::Problem grid_problem(const VerifyTarget& target, const VerifyInstance& inst,
+                         const lp::ProblemFactory& factory) {
+  lp::Problem problem = factory.from_distribution(inst.depths, inst.weights, inst.zf);
+  if (target.cantelli_support) add_cantelli_support(target, inst, factory, problem);
+  return problem;
+}
+
 double solve_grid(const VerifyTarget& target, const VerifyInstance& inst,
                   const lp::ProblemFactory& factory, lp::Backend& fast, lp::Backend& glpk,
                   Witness& witness) {
-  lp::Problem problem = factory.from_distribution(inst.depths, inst.weights, inst.zf);
-  if (target.cantelli_support) add_cantelli_support(target, inst, factory, problem);
+  lp::Problem problem = grid_problem(target, inst, factory);
   lp::Solution s = fast.solve(problem);
   if (s.status != lp::ProblemStatus::Optimal) s = glpk.solve(problem);
   if (s.call != lp::CallStatus::Ok || s.status != lp::ProblemStatus::Optimal)
@@ -408,10 +416,7 @@ void arbitrate_worst(const VerifyTarget& target, std::span<const VerifyInstance>
   auto exact = lp::make_exact_backend(lp::ExactRhs::DistributionImage);
   for (auto* list : {&result.worst, &result.worst_above})
     for (VerifyCase& c : *list) {
-      const VerifyInstance& inst = instances[c.instance];
-      lp::Problem problem = finest.from_distribution(inst.depths, inst.weights, inst.zf);
-      if (target.cantelli_support) add_cantelli_support(target, inst, finest, problem);
-      const lp::Solution s = exact->solve(problem);
+      const lp::Solution s = exact->solve(grid_problem(target, instances[c.instance], finest));
       if (s.call == lp::CallStatus::Ok && s.status == lp::ProblemStatus::Optimal) c.lp_exact = s.G;
     }
 }
