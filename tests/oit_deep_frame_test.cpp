@@ -4,8 +4,10 @@
 
 #include "oit/compositing.h"
 #include "oit/deep_frame.h"
+#include "oit/deep_frame_exr.h"
 #include "scene/scene.h"
 #include "test_support.h"
+#include "util/error.h"
 
 namespace mb {
 namespace {
@@ -58,6 +60,29 @@ TEST(DeepFrame, PanesOverGroundAreTheirDepthsOpacitiesAndColours) {
   EXPECT_EQ(pixel_of(frame, 0).size(), 0u);
   EXPECT_NEAR(frame.nearest(), 7.5, 0.05);
   EXPECT_NEAR(frame.farthest(), 8.5, 0.05);
+  // The ground behind lies 10 units below the camera; a pixel beyond it shows the background.
+  EXPECT_NEAR(frame.behind_depth[centre], 10, 1e-3);
+}
+
+// Deep OpenEXR round trip: depths, opacities and the surface behind come back bit for bit, colours
+// to float rounding of the premultiplication; the composite from the file is the frame's.
+TEST(DeepFrame, DeepExrRoundTrip) {
+  const Scene scene = panes();
+  const DeepFrame frame = render_deep_frame(scene, scene.cameras[0], 2);
+  const std::string file = testing_support::write_temp_file("panes_frame.exr", "");
+  write_deep_frame_exr(frame, scene.name, file);
+  const DeepFrame back = read_deep_frame_exr(file);
+  EXPECT_EQ(back.camera, "above");
+  ASSERT_EQ(back.width, frame.width);
+  ASSERT_EQ(back.offsets, frame.offsets);
+  EXPECT_EQ(back.depth, frame.depth);
+  EXPECT_EQ(back.alpha, frame.alpha);
+  EXPECT_EQ(back.behind_depth, frame.behind_depth);
+  for (size_t f = 0; f < frame.fragments(); ++f)
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(back.color[f][c], frame.color[f][c], 1e-6) << f;
+  for (size_t p = 0; p < frame.pixels(); ++p)
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(back.behind[p][c], frame.behind[p][c]) << p;
+  EXPECT_THROW(read_deep_frame_exr(testing_support::write_temp_file("not.exr", "no")), InputError);
 }
 
 }  // namespace

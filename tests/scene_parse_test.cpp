@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "scene/dataset.h"
+#include "scene/mesh_loader.h"
 #include "scene/procedural.h"
 #include "scene/scene.h"
 #include "test_support.h"
@@ -24,12 +25,44 @@ std::string parse_error(const std::string& yaml) {
 }
 
 TEST(SceneParse, BuiltInDatasetsParse) {
-  for (const char* name : {"tiny", "default", "paper", "translucent"}) {
+  for (const char* name : {"tiny", "default", "paper", "translucent", "transparency"}) {
     DatasetDesc dataset = load_dataset(name);
     EXPECT_FALSE(dataset.scene_files.empty());
     for (const auto& file : dataset.scene_files) EXPECT_NO_THROW(parse_scene(file)) << file;
   }
   EXPECT_EQ(load_dataset("default").scene_files.size(), 3u);
+}
+
+// A face listed twice, in either winding, is one surface (mesh_loader.cpp): a translucent surface
+// counted twice would absorb twice.
+TEST(SceneParse, RepeatedFacesAreLoadedOnce) {
+  const std::string file = testing_support::write_temp_file("twice.obj", R"(v 0 0 0
+v 1 0 0
+v 0 1 0
+v 1 1 0
+f 1 2 3
+f 2 4 3
+f 3 2 1
+f 1 2 3
+)");
+  const TriangleMesh mesh = load_mesh(file);
+  EXPECT_EQ(mesh.triangles.size(), 2u);
+}
+
+// A card cloud: `count` two-sided squares of the given size inside the extent.
+TEST(SceneParse, CardCloudHasItsCardsInsideItsExtent) {
+  const TriangleMesh cloud = make_card_cloud(50, 0.4, {2, 1, 3}, 9);
+  EXPECT_EQ(cloud.triangles.size(), 100u);
+  EXPECT_TRUE(cloud.two_sided);
+  const Eigen::AlignedBox3d box = cloud.bounds();
+  EXPECT_GE(box.min().x(), -1 - 0.29);
+  EXPECT_LE(box.max().y(), 1 + 0.29);  // half a diagonal beyond the centres' box at most
+  EXPECT_LE(box.max().z(), 1.5 + 0.29);
+  for (size_t t = 0; t < cloud.triangles.size(); t += 2) {
+    const auto& a = cloud.vertices[cloud.triangles[t][0]];
+    const auto& b = cloud.vertices[cloud.triangles[t][1]];
+    EXPECT_NEAR((b - a).norm(), 0.4, 1e-12);
+  }
 }
 
 TEST(SceneParse, MisspelledKeysAreReportedWithLineAndSuggestion) {

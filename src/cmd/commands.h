@@ -16,6 +16,7 @@ void register_merge_command(CLI::App& app, std::function<int()>& action);
 void register_report_command(CLI::App& app, std::function<int()>& action);
 void register_verify_command(CLI::App& app, std::function<int()>& action);
 void register_bounds_command(CLI::App& app, std::function<int()>& action);
+void register_oit_command(CLI::App& app, std::function<int()>& action);
 // `momentbench options`: every command's option table as Markdown (the README's lists).
 void register_options_command(CLI::App& app, std::function<int()>& action);
 
@@ -28,5 +29,6 @@ std::vector<OptionSpec> merge_specs();
 std::vector<OptionSpec> report_specs();
 std::vector<OptionSpec> verify_specs();
 std::vector<OptionSpec> bounds_specs();
+std::vector<OptionSpec> oit_specs();
 
 }  // namespace mb

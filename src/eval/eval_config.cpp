@@ -172,19 +172,13 @@ std::string lp_backend_from(const Config& config) {
   return o.lp_backend;
 }
 
-EvalSettings shadow_settings_from(const Config& config, int threads) {
-  EvalSettings s;
-  s.kernel = kernel_from(config);
+std::vector<OptionSpec> lp_option_specs() {
+  return option_specs(lp_options());
+}
+
+void read_lp_params(const Config& config, TechniqueParams& t) {
   ShadowOptions o;
-  read_options(config, bias_options(), o);
   read_options(config, lp_options(), o);
-  read_options(config, translucent_options(), o);
-  s.blend = o.blend == "submission" ? BlendOrder::Submission : BlendOrder::Sorted;
-  s.bias.reference = parse_reference(o.reference, "reference");
-  s.bias.slope = o.bias_slope;
-  s.bias.constant = o.bias_constant;
-  auto& t = s.technique;
-  read_technique_options(config, t);
   t.lp = lp_discretization_from(config);
   t.lp_backend = o.lp_backend;
   t.lp_moment_box = o.lp_moment_box;
@@ -194,6 +188,21 @@ EvalSettings shadow_settings_from(const Config& config, int threads) {
         "lp.beta: " + std::to_string(t.lp_beta) +
         " needs the LP's maximum, which is solved on the grid only; expected lp.beta = 0 with "
         "lp.discretization = continuous or an lp.moment_box");
+}
+
+EvalSettings shadow_settings_from(const Config& config, int threads) {
+  EvalSettings s;
+  s.kernel = kernel_from(config);
+  ShadowOptions o;
+  read_options(config, bias_options(), o);
+  read_options(config, translucent_options(), o);
+  s.blend = o.blend == "submission" ? BlendOrder::Submission : BlendOrder::Sorted;
+  s.bias.reference = parse_reference(o.reference, "reference");
+  s.bias.slope = o.bias_slope;
+  s.bias.constant = o.bias_constant;
+  auto& t = s.technique;
+  read_technique_options(config, t);
+  read_lp_params(config, t);
   s.threads = threads;
   return s;
 }

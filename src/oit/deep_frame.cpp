@@ -48,6 +48,7 @@ DeepFrame render_deep_frame(const Scene& scene, const CameraDesc& camera, int th
   const size_t pixels = image.offsets.size() - 1;
   frame.offsets.assign(pixels + 1, 0);
   frame.behind.assign(pixels, kBackground);
+  frame.behind_depth.assign(pixels, std::numeric_limits<double>::infinity());
   std::vector<uint64_t> order;
   for (size_t p = 0; p < pixels; ++p) {
     // Surfaces come nearest first, up to the first opaque one (render_camera).
@@ -55,6 +56,7 @@ DeepFrame render_deep_frame(const Scene& scene, const CameraDesc& camera, int th
     for (uint64_t s = image.offsets[p]; s < image.offsets[p + 1]; ++s) {
       if (image.alpha[s] >= 1) {
         frame.behind[p] = shade(scene, image.triangle[s], image.point[s], eye.position(), to_light);
+        frame.behind_depth[p] = eye.distance(image.point[s]);
         break;
       }
       order.push_back(s);

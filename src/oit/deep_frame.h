@@ -6,6 +6,7 @@
 // compositing method (opaque geometry is drawn first and depth-tested), so they are not kept.
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,7 @@ struct DeepFrame {
   std::vector<double> alpha;  // opacity in [0, 1)
   std::vector<Rgb> color;     // shaded colour, linear RGB
   std::vector<Rgb> behind;    // per pixel: the opaque surface's shaded colour, or kBackground
+  std::vector<double> behind_depth;  // per pixel: the opaque surface's depth; infinity: background
   size_t pixels() const { return offsets.empty() ? 0 : offsets.size() - 1; }
   size_t fragments() const { return depth.size(); }
   // The transparent geometry's depth range (nearest and farthest fragment), for the warp.

@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
+#include <numbers>
 #include <numeric>
 
 #include "moments/canonical.h"
+#include "moments/canonical_bound.h"
 #include "moments/hamburger.h"
 #include "techniques/lp_technique.h"
 #include "util/error.h"
@@ -72,9 +75,11 @@ class WeightedBlendedOit : public OitTechnique {
   }
 };
 
-// MBOIT with m power moments of the warped depth t = 2u - 1 in [-1, 1] (the seed's warp),
-// Hamburger's canonical bound through t_l (moments/hamburger.h): A = b_0 (G + beta w), w the
-// canonical weight at t_l. Moments are biased towards b* (docs/transparency.md §3, "Constants").
+// MBOIT with m power moments of the warped depth t = 2u - 1 in [-1, 1] (the seed's warp): the
+// canonical representation through t_l, A = b_0 (G + beta w), G its mass in front of t_l and w
+// its weight at t_l (Hamburger's bound on R, docs/transparency.md §3). Moments are biased
+// towards b* (docs/transparency.md §3, "Constants"); four and six use the closed forms of
+// moments/hamburger.h, eight the general construction of moments/canonical_bound.h.
 class MbOitPower : public MomentOit {
  public:
   MbOitPower(int moments, double alpha, double beta)
@@ -87,7 +92,7 @@ class MbOitPower : public MomentOit {
  protected:
   void reconstruct(const AbsorbanceDistribution& d, std::span<const double> warped,
                    std::span<double> out) override {
-    double b[6] = {};
+    double b[8] = {};
     for (size_t i = 0; i < d.depths.size(); ++i) {
       const double t = 2 * d.depths[i] - 1;
       double power = 1;
@@ -95,18 +100,80 @@ class MbOitPower : public MomentOit {
     }
     static constexpr double kStar4[4] = {0, 0.375, 0, 0.375};
     static constexpr double kStar6[6] = {0, 0.48, 0, 0.451, 0, 0.45};
-    bias_moments(b, m_, alpha_, m_ == 4 ? kStar4 : kStar6);
+    static constexpr double kStar8[8] = {0, 0.75, 0, 0.676666667, 0, 0.63, 0, 0.6003030303};
+    bias_moments(b, m_, alpha_, m_ == 4 ? kStar4 : m_ == 6 ? kStar6 : kStar8);
     for (size_t l = 0; l < warped.size(); ++l) {
       const double t = 2 * warped[l] - 1;
-      const MsmBound<double> r = m_ == 4 ? hamburger4(b, t) : hamburger6(b, t);
-      const double g = std::clamp(r.lower + beta_ * r.at_zf, 0.0, 1.0);
-      out[l] = std::exp(-d.total * g);
+      double g = 0, at = 0;
+      if (m_ == 8) {
+        CanonicalNodes c;
+        if (!canonical_power(b, 4, t, c)) {
+          out[l] = 1, ++failures_;
+          continue;
+        }
+        for (int k = 1; k < c.count; ++k) g += c.nodes[k] < t ? c.weights[k] : 0;
+        at = c.weights[0];
+      } else {
+        const MsmBound<double> r = m_ == 4 ? hamburger4(b, t) : hamburger6(b, t);
+        g = r.lower, at = r.at_zf;
+      }
+      out[l] = std::exp(-d.total * std::clamp(g + beta_ * at, 0.0, 1.0));
     }
   }
+  size_t failures() const override { return failures_; }
 
  private:
   int m_;
   double alpha_, beta_;
+  size_t failures_ = 0;
+};
+
+// MBOIT with n trigonometric moments (docs/transparency.md §5): the warped depth u in [0, 1] is
+// the angle phi = (2 pi - theta) u, leaving a wrapping zone of angle theta between the farthest
+// and the nearest depth; c_k = E[e^{i k phi}], biased towards the uniform distribution (c = 0).
+// A = b_0 (sum_k w_k f_k + beta w_0) over the canonical representation through phi_l: f_k = 1
+// in front of phi_l, a linear ramp from 0 to 1 across the wrapping zone, 0 behind.
+class MbOitTrig : public MomentOit {
+ public:
+  MbOitTrig(int moments, double alpha, double beta, double zone)
+      : MomentOit("mboit_trig" + std::to_string(moments)),
+        n_(moments),
+        alpha_(alpha),
+        beta_(beta),
+        zone_(zone) {}
+  bool normalised() const override { return true; }
+  size_t failures() const override { return failures_; }
+
+ protected:
+  void reconstruct(const AbsorbanceDistribution& d, std::span<const double> warped,
+                   std::span<double> out) override {
+    const double scale = 2 * std::numbers::pi - zone_;
+    std::complex<double> c[kMaxCanonicalOrder] = {};
+    for (size_t i = 0; i < d.depths.size(); ++i)
+      for (int k = 1; k <= n_; ++k)
+        c[k - 1] += d.weights[i] * std::polar(1.0, k * scale * d.depths[i]);
+    for (int k = 0; k < n_; ++k) c[k] *= 1 - alpha_;
+    for (size_t l = 0; l < warped.size(); ++l) {
+      const double phi = scale * warped[l];
+      CanonicalNodes r;
+      if (!canonical_trigonometric(c, n_, phi, r)) {
+        out[l] = 1, ++failures_;
+        continue;
+      }
+      double g = beta_ * r.weights[0];
+      for (int k = 1; k < r.count; ++k) {
+        const double psi = r.nodes[k];
+        const double f = psi < phi ? 1 : psi > scale ? std::min(1.0, (psi - scale) / zone_) : 0;
+        g += f * r.weights[k];
+      }
+      out[l] = std::exp(-d.total * std::clamp(g, 0.0, 1.0));
+    }
+  }
+
+ private:
+  int n_;
+  double alpha_, beta_, zone_;
+  size_t failures_ = 0;
 };
 
 // lp:<basis> on the warped depth u in [0, 1]: Problem 1 on the grid and the pixel's own fragment
@@ -153,21 +220,26 @@ AbsorbanceDistribution absorbance_distribution(const PixelFragments& px,
   return d;
 }
 
-Rgb composite_with(const OitTechnique& technique, const PixelFragments& px,
-                   std::span<const double> transmittance) {
-  const double total = total_transmittance(px);
-  if (!technique.normalised()) return composite(px, transmittance, total);
+void effective_transmittance(const OitTechnique& technique, const PixelFragments& px,
+                             std::span<double> transmittance) {
+  if (!technique.normalised()) return;
   // Gamma = (1 - T_total) / sum_l alpha_l T_l (weighted blended OIT's normalisation).
   double weight = 0;
   for (size_t l = 0; l < px.size(); ++l) weight += px.alpha[l] * transmittance[l];
-  std::vector<double> scaled(transmittance.begin(), transmittance.end());
-  const double gamma = weight > 0 ? (1 - total) / weight : 0;
-  for (double& t : scaled) t *= gamma;
-  return composite(px, scaled, total);
+  const double gamma = weight > 0 ? (1 - total_transmittance(px)) / weight : 0;
+  for (double& t : transmittance) t *= gamma;
+}
+
+Rgb composite_with(const OitTechnique& technique, const PixelFragments& px,
+                   std::span<const double> transmittance) {
+  std::vector<double> weights(transmittance.begin(), transmittance.end());
+  effective_transmittance(technique, px, weights);
+  return composite(px, weights, total_transmittance(px));
 }
 
 std::vector<std::string> oit_technique_names() {
-  return {"exact", "unsorted", "wboit", "mboit_power4", "mboit_power6"};
+  return {"exact",        "unsorted",    "wboit",       "mboit_power4", "mboit_power6",
+          "mboit_power8", "mboit_trig2", "mboit_trig3", "mboit_trig4"};
 }
 
 std::unique_ptr<OitTechnique> make_oit_technique(const std::string& name, const OitParams& p) {
@@ -176,6 +248,10 @@ std::unique_ptr<OitTechnique> make_oit_technique(const std::string& name, const 
   if (name == "wboit") return std::make_unique<WeightedBlendedOit>();
   if (name == "mboit_power4") return std::make_unique<MbOitPower>(4, p.power4_alpha, p.beta);
   if (name == "mboit_power6") return std::make_unique<MbOitPower>(6, p.power6_alpha, p.beta);
+  if (name == "mboit_power8") return std::make_unique<MbOitPower>(8, p.power8_alpha, p.beta);
+  for (int n = 2; n <= 4; ++n)
+    if (name == "mboit_trig" + std::to_string(n))
+      return std::make_unique<MbOitTrig>(n, p.trig_alpha, p.beta, p.wrapping_zone);
   if (name.rfind("lp:", 0) == 0) return std::make_unique<LpOit>(name, p.lp);
   std::string valid;
   for (const auto& n : oit_technique_names()) valid += n + ", ";

@@ -17,7 +17,10 @@ struct OitParams {
   // MBOIT's overestimation beta: A = A- + beta (A+ - A-) (docs/transparency.md §3).
   double beta = 0.25;
   // Moment bias of the MBOIT closed forms in double (docs/transparency.md §3, "Constants").
-  double power4_alpha = 1e-10, power6_alpha = 1e-10;
+  double power4_alpha = 1e-10, power6_alpha = 1e-10, power8_alpha = 1e-10, trig_alpha = 1e-10;
+  // The trigonometric variants' wrapping zone in radians: 0.1 pi, the authors' code's default
+  // (docs/transparency.md §5).
+  double wrapping_zone = 0.1 * 3.14159265358979323846;
   // lp:<basis>: the LP's grid, backend and lp.beta (0: the sharp bound e^{-A-}); its interval is
   // that of the warped depth, [0, 1], unless a caller widens it (the closed forms' R).
   TechniqueParams lp;
@@ -44,8 +47,8 @@ class OitTechnique {
   std::string name_;
 };
 
-// exact, unsorted, wboit, mboit_power4, mboit_power6, lp:<basis>; InputError naming the valid
-// ones otherwise.
+// exact, unsorted, wboit, mboit_power4/6/8, mboit_trig2/3/4, lp:<basis>; InputError naming the
+// valid ones otherwise.
 std::unique_ptr<OitTechnique> make_oit_technique(const std::string& name, const OitParams& params);
 std::vector<std::string> oit_technique_names();  // without the lp: family
 
@@ -59,8 +62,12 @@ struct AbsorbanceDistribution {
 AbsorbanceDistribution absorbance_distribution(const PixelFragments& px,
                                                std::span<const double> warped);
 
-// The composite of a technique's transmittance: normalised (Gamma, docs/transparency.md §1) or
-// as given, over what lies behind, weighted by prod (1 - alpha_l).
+// The transmittance the composite weighs each fragment with: a normalised technique's scaled by
+// Gamma = (1 - T_total) / sum_l alpha_l T_l (docs/transparency.md §3), others' as given. In place.
+void effective_transmittance(const OitTechnique& technique, const PixelFragments& px,
+                             std::span<double> transmittance);
+// The composite of a technique's transmittance (effective_transmittance, then over what lies
+// behind, weighted by prod (1 - alpha_l)).
 Rgb composite_with(const OitTechnique& technique, const PixelFragments& px,
                    std::span<const double> transmittance);
 

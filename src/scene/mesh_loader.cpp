@@ -3,9 +3,14 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include <algorithm>
+#include <array>
 #include <assimp/Importer.hpp>
 #include <cmath>
 #include <filesystem>
+#include <map>
+#include <set>
+#include <vector>
 
 #include "util/error.h"
 #include "util/number_text.h"
@@ -38,9 +43,25 @@ TriangleMesh load_mesh(const std::string& file) {
                          round_trip(p.y) + ", " + round_trip(p.z) + ")");
       mesh.vertices.emplace_back(p.x, p.y, p.z);
     }
+    // A face listed twice (either winding) is one surface: scanned meshes carry such repeats
+    // (data/dragon.ply: 1 489), and a translucent surface counted twice would absorb twice
+    // (docs/transparency.md §1). The first copy is kept.
+    // Faces are compared by their corners' positions: some importers (OBJ) give every face its
+    // own vertices.
+    std::map<std::array<float, 3>, uint32_t> first_at;
+    std::vector<uint32_t> position_id(part->mNumVertices);
+    for (unsigned v = 0; v < part->mNumVertices; ++v) {
+      const aiVector3D& q = part->mVertices[v];
+      position_id[v] = first_at.try_emplace({q.x, q.y, q.z}, v).first->second;
+    }
+    std::set<std::array<uint32_t, 3>> seen;
     for (unsigned f = 0; f < part->mNumFaces; ++f) {
       const aiFace& face = part->mFaces[f];
       if (face.mNumIndices != 3) continue;
+      std::array<uint32_t, 3> key = {position_id[face.mIndices[0]], position_id[face.mIndices[1]],
+                                     position_id[face.mIndices[2]]};
+      std::sort(key.begin(), key.end());
+      if (!seen.insert(key).second) continue;
       mesh.triangles.push_back(
           {base + face.mIndices[0], base + face.mIndices[1], base + face.mIndices[2]});
     }

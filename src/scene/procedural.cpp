@@ -179,7 +179,29 @@ TriangleMesh make_fence(double length, double height, double post_spacing, int r
   return mesh;
 }
 
+TriangleMesh make_card_cloud(int count, double size, const Vector3d& extent, uint64_t seed) {
+  TriangleMesh mesh;
+  SeededRandom random(seed);
+  for (int c = 0; c < count; ++c) {
+    const Vector3d center(random.uniform(-0.5, 0.5) * extent.x(), random.uniform(0, 1) * extent.y(),
+                          random.uniform(-0.5, 0.5) * extent.z());
+    // Two random directions made orthonormal: a uniformly tilted card.
+    Vector3d u(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1));
+    Vector3d w(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1));
+    if (u.norm() < 1e-3) u = Vector3d::UnitX();
+    u.normalize();
+    w -= w.dot(u) * u;
+    if (w.norm() < 1e-3) w = u.unitOrthogonal();
+    w.normalize();
+    u *= size / 2, w *= size / 2;
+    mesh.add_quad(center - u - w, center + u - w, center + u + w, center - u + w);
+  }
+  mesh.two_sided = true;
+  return mesh;
+}
+
 namespace {
+
 void grow_branch(TreeMeshes& tree, SeededRandom& random, const Vector3d& base,
                  const Vector3d& direction, double length, double radius, int depth, int branches,
                  double leaf_size) {

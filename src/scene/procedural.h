@@ -21,6 +21,9 @@ TriangleMesh make_building_grid(int nx, int nz, double footprint, double spacing
 // A fence along +x: posts every `post_spacing` and `rails` horizontal rails; with `pickets` > 0,
 // also vertical slats between the posts, which makes a lattice of small gaps.
 TriangleMesh make_fence(double length, double height, double post_spacing, int rails, int pickets);
+// A particle volume: `count` square cards of side `size`, randomly oriented, their centres uniform
+// in a box of `extent` (centred in x and z, resting on y = 0). Two-sided.
+TriangleMesh make_card_cloud(int count, double size, const Eigen::Vector3d& extent, uint64_t seed);
 // A recursively branching tree of prism segments with two-sided quad leaves at its tips.
 struct TreeMeshes {
   TriangleMesh wood;

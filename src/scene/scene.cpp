@@ -53,6 +53,11 @@ const std::map<std::string, std::vector<ParamSpec>>& generators() {
         {"post_spacing", 1, {1.5}, 1e-9, kHuge},
         {"rails", 1, {2}, 0, 100},
         {"pickets", 1, {4}, 0, 1000}}},
+      {"card_cloud",
+       {{"count", 1, {64}, 1, 100000},
+        {"size", 1, {0.5}, 1e-9, kHuge},
+        {"extent", 3, {2, 1.5, 2}, 1e-9, kHuge},
+        {"seed", 1, {1}, 0, 1e15}}},
       {"tree",
        {{"height", 1, {3}, 1e-9, kHuge},
         {"depth", 1, {4}, 0, 10},
@@ -65,7 +70,7 @@ const std::map<std::string, std::vector<ParamSpec>>& generators() {
 
 bool is_integer_param(const std::string& name) {
   for (const char* n : {"cells", "rings", "segments", "steps", "nx", "nz", "seed", "rails",
-                        "pickets", "depth", "branches"})
+                        "pickets", "depth", "branches", "count"})
     if (name == n) return true;
   return false;
 }
@@ -182,13 +187,16 @@ std::vector<TriangleMesh> build_part(const PartDesc& part) {
                               p("max_height"), uint64_t(p("seed")));
   } else if (part.kind == "fence") {
     mesh = make_fence(p("length"), p("height"), p("post_spacing"), n("rails"), n("pickets"));
+  } else if (part.kind == "card_cloud") {
+    const auto& e = part.params.at("extent");
+    mesh = make_card_cloud(n("count"), p("size"), {e[0], e[1], e[2]}, uint64_t(p("seed")));
   } else if (part.kind == "tree") {
     TreeMeshes tree =
         make_tree(p("height"), n("depth"), n("branches"), p("leaf_size"), uint64_t(p("seed")));
     mesh = std::move(tree.wood);
     pieces.push_back(std::move(tree.leaves));  // two-sided whatever the part says
   }
-  mesh.two_sided = part.two_sided;
+  mesh.two_sided = part.two_sided || part.kind == "card_cloud";  // cards have no inside
   if (part.fit > 0) {
     // Rotate and scale, then normalise: largest extent `fit`, centred in x and z, resting on
     // y = 0; then translate. Meshes from files come in arbitrary units and origins.

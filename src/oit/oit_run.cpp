@@ -1,0 +1,131 @@
+#include "oit/oit_run.h"
+
+#include <omp.h>
+
+#include <chrono>
+
+#include "util/error.h"
+#include "util/parallel_errors.h"
+#include "util/progress.h"
+
+namespace mb {
+
+const std::vector<OptionRecord<OitRunOptions>>& oit_run_options() {
+  static const std::vector<OptionRecord<OitRunOptions>> records{
+      {{"techniques", OptionType::StringList,
+        "[exact, unsorted, wboit, mboit_power4, mboit_power6, mboit_power8, mboit_trig2, "
+        "mboit_trig3, mboit_trig4, lp:power4]",
+        "Transparency techniques (docs/transparency.md §3): exact, unsorted, wboit, the MBOIT "
+        "closed forms, or lp:<basis> on the warped depth (e.g. lp:power4, lp:trig4)."},
+       &OitRunOptions::techniques},
+      {{"oit.beta", OptionType::Number, "0.25",
+        "MBOIT's overestimation: A = A- + beta (A+ - A-) from the canonical representation "
+        "(0.25 is the value of the authors' code; 0 gives their lower bound of absorbance).",
+        0, 1},
+       &OitRunOptions::beta},
+      {{"images", OptionType::Boolean, "true",
+        "Per camera: the reference and each technique's composite, its CIEDE2000 difference in "
+        "false colour, and a contact sheet (images/)."},
+       &OitRunOptions::images},
+      {{"deep_frames", OptionType::Boolean, "true",
+        "Write each camera's deep frame (every fragment's depth, alpha and colour) as deep "
+        "OpenEXR (frames/)."},
+       &OitRunOptions::deep_frames},
+      {{"delta_e_scale", OptionType::Number, "10",
+        "CIEDE2000 at the top of the difference images' colour bar.", 1e-6, 1e3},
+       &OitRunOptions::delta_e_scale},
+  };
+  return records;
+}
+
+void check_frame_has_transparency(const DeepFrame& frame, const std::string& scene) {
+  if (frame.fragments() > 0) return;
+  throw InputError("camera " + scene + "/" + frame.camera +
+                   ": sees no transparent geometry in front of the opaque surfaces (expected a "
+                   "part with opacity < 1 in its view; oit measures nothing there)");
+}
+
+namespace {
+
+// One technique over the frame; composite, per-pixel errors, in pixel order.
+void run_technique(const DeepFrame& frame, const DepthWarp& warp, const std::string& name,
+                   const OitParams& params, int threads, const LabConverter& lab,
+                   const std::vector<Rgb>& reference, std::vector<Rgb>& composite_out,
+                   std::vector<PixelError>& errors, size_t& failures) {
+  const size_t pixels = frame.pixels();
+  const int rows = frame.height;
+  ParallelErrors parallel;
+  size_t failed = 0;
+#pragma omp parallel num_threads(threads) reduction(+ : failed)
+  {
+    auto technique = make_oit_technique(name, params);
+    std::vector<double> warped, t_ref, t;
+#pragma omp for schedule(dynamic, 1)
+    for (int y = 0; y < rows; ++y)
+      parallel.capture([&] {
+        for (size_t p = size_t(y) * frame.width; p < size_t(y + 1) * frame.width && p < pixels;
+             ++p) {
+          const PixelFragments px = pixel_of(frame, p);
+          const size_t n = px.size();
+          warped.resize(n), t_ref.resize(n), t.resize(n);
+          for (size_t l = 0; l < n; ++l) warped[l] = warp(px.depth[l]);
+          exact_transmittance(px, t_ref);
+          technique->transmittance(px, warped, t);
+          effective_transmittance(*technique, px, t);
+          composite_out[p] = composite(px, t, total_transmittance(px));
+          errors[p] = pixel_error(px, t_ref, t, reference[p], composite_out[p], lab);
+        }
+      });
+    failed += technique->failures();
+  }
+  parallel.rethrow();
+  failures = failed;
+}
+
+}  // namespace
+
+OitFrameResult evaluate_oit_frame(const DeepFrame& frame, const std::string& scene,
+                                  const std::vector<std::string>& techniques,
+                                  const OitParams& params, int threads, const LabConverter& lab,
+                                  bool quiet) {
+  check_frame_has_transparency(frame, scene);
+  const DepthWarp warp = DepthWarp::between(frame.nearest(), frame.farthest());
+  const size_t pixels = frame.pixels();
+  OitFrameResult result;
+  result.scene = scene, result.camera = frame.camera;
+  result.width = frame.width, result.height = frame.height;
+  result.reference.resize(pixels);
+  std::vector<double> t;
+  for (size_t p = 0; p < pixels; ++p) {
+    const PixelFragments px = pixel_of(frame, p);
+    t.resize(px.size());
+    exact_transmittance(px, t);
+    result.reference[p] = composite(px, t, total_transmittance(px));
+  }
+  ProgressBar bar("oit " + scene + "/" + frame.camera, techniques.size(), quiet);
+  std::vector<PixelError> errors(pixels);
+  for (const auto& name : techniques) {
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<Rgb> composite(pixels);
+    size_t failures = 0;
+    run_technique(frame, warp, name, params, threads, lab, result.reference, composite, errors,
+                  failures);
+    OitStats stats;
+    std::vector<float> delta_e(pixels, -1.0f);
+    for (size_t p = 0; p < pixels; ++p) {
+      stats.add(errors[p]);
+      if (errors[p].fragments) delta_e[p] = float(errors[p].delta_e);
+    }
+    stats.failures = failures;
+    result.composites.push_back(std::move(composite));
+    result.delta_e.push_back(std::move(delta_e));
+    result.stats.push_back(std::move(stats));
+    result.seconds.push_back(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    bar.advance();
+  }
+  bar.finish();
+  return result;
+}
+
+}  // namespace mb

@@ -1,0 +1,48 @@
+#pragma once
+// What `oit` runs (docs/transparency.md §4): its options declared once as records, and every
+// technique on one camera's deep frame against the exact composite. The command adds the outputs;
+// this is reachable from tests.
+#include <string>
+#include <vector>
+
+#include "oit/color_difference.h"
+#include "oit/deep_frame.h"
+#include "oit/oit_metrics.h"
+#include "oit/oit_technique.h"
+#include "util/option_record.h"
+
+namespace mb {
+
+struct OitRunOptions {
+  std::vector<std::string> techniques;
+  double beta = 0.25;
+  bool images = true;
+  bool deep_frames = true;
+  double delta_e_scale = 10;
+};
+
+const std::vector<OptionRecord<OitRunOptions>>& oit_run_options();
+
+// Every technique on one deep frame: its composite and per-pixel CIEDE2000 (for images) and its
+// statistics. Bit-identical for any thread count (each pixel is answered on its own and the sums
+// run in pixel order).
+struct OitFrameResult {
+  std::string scene, camera;
+  int width = 0, height = 0;
+  std::vector<Rgb> reference;                // the exact composite, per pixel
+  std::vector<std::vector<Rgb>> composites;  // per technique, per pixel
+  std::vector<std::vector<float>> delta_e;   // per technique, per pixel; -1: no transparency
+  std::vector<OitStats> stats;               // per technique
+  std::vector<double> seconds;               // per technique, wall clock
+};
+
+// InputError naming the camera when its frame holds no transparent fragment (nothing to measure;
+// the warp would have no range).
+void check_frame_has_transparency(const DeepFrame& frame, const std::string& scene);
+
+OitFrameResult evaluate_oit_frame(const DeepFrame& frame, const std::string& scene,
+                                  const std::vector<std::string>& techniques,
+                                  const OitParams& params, int threads, const LabConverter& lab,
+                                  bool quiet);
+
+}  // namespace mb

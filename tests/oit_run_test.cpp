@@ -1,0 +1,107 @@
+// What `oit` measures (oit/oit_run.h, oit/oit_metrics.h, oit/color_difference.h): CIELAB values
+// known by hand, the exact technique's zero error, the split of the transmittance error, and
+// bit-identical numbers for one and two threads on a rendered frame.
+#include "oit/oit_run.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "oit/color_difference.h"
+#include "scene/scene.h"
+#include "test_support.h"
+#include "util/error.h"
+
+namespace mb {
+namespace {
+
+TEST(OitMetrics, LabOfWhiteAndOfTheRedPrimary) {
+  const LabConverter lab;
+  const Lab white = lab.lab({1, 1, 1});
+  EXPECT_NEAR(white[0], 100, 1e-3);
+  EXPECT_NEAR(white[1], 0, 1e-3);
+  EXPECT_NEAR(white[2], 0, 1e-3);
+  // sRGB's red primary adapted to D50 (Bradford): XYZ (0.4361, 0.2225, 0.0139), hence by hand
+  // L* = 116 f(0.2225) - 16 = 54.29, a* = 80.8, b* = 69.9.
+  const Lab red = lab.lab({1, 0, 0});
+  EXPECT_NEAR(red[0], 54.29, 0.3);
+  EXPECT_NEAR(red[1], 80.8, 0.5);
+  EXPECT_NEAR(red[2], 69.9, 0.5);
+  EXPECT_NEAR(delta_e_76(white, red), std::sqrt(45.71 * 45.71 + 80.8 * 80.8 + 69.9 * 69.9), 1);
+  EXPECT_EQ(delta_e_2000(red, red), 0);
+}
+
+TEST(OitMetrics, TransmittanceErrorSplitsIntoOverAndUnder) {
+  const std::vector<double> depth = {1, 2}, alpha = {0.5, 0.25};
+  const std::vector<Rgb> color = {{1, 0, 0}, {0, 1, 0}};
+  const PixelFragments px{depth, alpha, color, {0, 0, 1}};
+  const std::vector<double> reference = {1, 0.5}, technique = {0.8, 0.9};
+  const LabConverter lab;
+  const PixelError e =
+      pixel_error(px, reference, technique, {0.5f, 0.5f, 0.5f}, {0.5f, 0.5f, 0.5f}, lab);
+  EXPECT_DOUBLE_EQ(e.alpha, 0.75);
+  EXPECT_DOUBLE_EQ(e.under, 0.5 * 0.2);
+  EXPECT_DOUBLE_EQ(e.over, 0.25 * 0.4);
+  EXPECT_EQ(e.delta_e, 0);
+  OitStats stats;
+  stats.add(e);
+  EXPECT_NEAR(stats.transmittance_error(), 0.2 / 0.75, 1e-15);
+  EXPECT_NEAR(stats.transmittance_over() + stats.transmittance_under(), stats.transmittance_error(),
+              1e-15);
+}
+
+Scene glass() {
+  return build_scene(parse_scene(testing_support::write_temp_file("glass.yaml", R"(name: glass
+parts:
+  - ground_plane: {size: 8}
+    color: [0.7, 0.7, 0.7]
+  - card_cloud: {count: 40, size: 1.2, extent: [2, 2, 2], seed: 3}
+    opacity: 0.4
+    color: [0.9, 0.3, 0.2]
+views:
+  - {name: sun, azimuth: 30, elevation: 60}
+cameras:
+  - {name: eye, position: [0, 1.5, 6], target: [0, 1, 0], fov: 40, resolution: [48, 32]}
+)")));
+}
+
+TEST(OitRun, ExactHasNoErrorAndThreadsDoNotChangeTheNumbers) {
+  const Scene scene = glass();
+  const DeepFrame frame = render_deep_frame(scene, scene.cameras[0], 2);
+  ASSERT_GT(frame.fragments(), 100u);
+  const std::vector<std::string> techniques = {"exact", "wboit", "mboit_power6", "mboit_trig3",
+                                               "lp:power4"};
+  const LabConverter lab;
+  const OitFrameResult one = evaluate_oit_frame(frame, "glass", techniques, {}, 1, lab, true);
+  const OitFrameResult two = evaluate_oit_frame(frame, "glass", techniques, {}, 2, lab, true);
+  EXPECT_EQ(one.stats[0].transmittance_error(), 0);
+  EXPECT_EQ(one.stats[0].delta_e_quantile(1), 0);
+  for (size_t k = 1; k < techniques.size(); ++k) {
+    EXPECT_GT(one.stats[k].transmittance_error(), 0) << techniques[k];
+    EXPECT_EQ(one.stats[k].transmittance_error(), two.stats[k].transmittance_error());
+    EXPECT_EQ(one.stats[k].delta_e_sum, two.stats[k].delta_e_sum) << techniques[k];
+    EXPECT_EQ(one.stats[k].delta_e, two.stats[k].delta_e) << techniques[k];
+    EXPECT_EQ(0, std::memcmp(one.composites[k].data(), two.composites[k].data(),
+                             one.composites[k].size() * sizeof(Rgb)));
+  }
+}
+
+TEST(OitRun, CameraWithoutTransparentGeometryIsAnError) {
+  const Scene scene = build_scene(parse_scene(testing_support::write_temp_file("opaque.yaml",
+                                                                               R"(name: opaque
+parts:
+  - ground_plane: {size: 8}
+views:
+  - {name: sun, azimuth: 30, elevation: 60}
+cameras:
+  - {name: eye, position: [0, 1.5, 6], target: [0, 1, 0], fov: 40, resolution: [16, 16]}
+)")));
+  const DeepFrame frame = render_deep_frame(scene, scene.cameras[0], 1);
+  const std::string message =
+      testing_support::input_error_of([&] { check_frame_has_transparency(frame, scene.name); });
+  EXPECT_NE(message.find("opaque/eye"), std::string::npos) << message;
+  EXPECT_NE(message.find("no transparent geometry"), std::string::npos) << message;
+}
+
+}  // namespace
+}  // namespace mb
