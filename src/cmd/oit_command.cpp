@@ -46,9 +46,10 @@ struct CameraFrame {
 std::string describe(const OitParams& p) {
   return "depth warp: logarithmic between each camera's nearest and farthest transparent "
          "fragment (docs/transparency.md §2); MBOIT beta " +
-         round_trip(p.beta) + ", moment bias " + round_trip(p.power4_alpha) +
-         " (double); lp: grid " + std::to_string(p.lp.lp.grid) + " on [" + round_trip(p.lp.lp.lo) +
-         ", " + round_trip(p.lp.lp.hi) +
+         round_trip(p.beta) + ", moment bias " + round_trip(p.double_bias.power[0]) +
+         " (double; float and 16-bit variants: the authors' code's biases); lp: grid " +
+         std::to_string(p.lp.lp.grid) + " on [" + round_trip(p.lp.lp.lo) + ", " +
+         round_trip(p.lp.lp.hi) +
          "] of the warped depth and the pixel's fragment depths, "
          "backend " +
          p.lp.lp_backend + ", lp.beta " + round_trip(p.lp.lp_beta);

@@ -57,6 +57,40 @@ class MomentOit : public OitTechnique {
                            std::span<double> out) = 0;
 };
 
+// The pixel's normalised moments as a storage format keeps them (docs/transparency.md §3,
+// "Storage"): `basis(u, row)` fills the m real functions at u. Double: exact sums of the canonical
+// order. Float: b_0 and every unnormalised sum accumulated in 32-bit floats, as a float render
+// target blends them, then normalised. 16-bit: the normalised moments (in [-1, 1]) rounded to
+// signed 16-bit fixed point, b_0 to float. Returns b_0 as stored.
+template <class Basis>
+double stored_moments(const AbsorbanceDistribution& d, OitStorage storage, int m, Basis basis,
+                      double* b) {
+  double row[8];
+  if (storage == OitStorage::Float) {
+    float total = 0, sums[8] = {};
+    for (size_t i = 0; i < d.depths.size(); ++i) {
+      const float a = float(d.total * d.weights[i]);
+      basis(d.depths[i], row);
+      total += a;
+      for (int j = 0; j < m; ++j) sums[j] += a * float(row[j]);
+    }
+    for (int j = 0; j < m; ++j) b[j] = double(sums[j]) / double(total);
+    return total;
+  }
+  std::fill(b, b + m, 0.0);
+  for (size_t i = 0; i < d.depths.size(); ++i) {
+    basis(d.depths[i], row);
+    for (int j = 0; j < m; ++j) b[j] += d.weights[i] * row[j];
+  }
+  if (storage == OitStorage::Double) return d.total;
+  for (int j = 0; j < m; ++j) b[j] = std::round(std::clamp(b[j], -1.0, 1.0) * 32767) / 32767;
+  return float(d.total);
+}
+
+std::string storage_suffix(OitStorage storage) {
+  return storage == OitStorage::Float ? "_float" : storage == OitStorage::Snorm16 ? "_16bit" : "";
+}
+
 // Weighted blended OIT (McGuire and Bavoil 2013, their weight function (7) of the view depth z):
 // w = alpha max(1e-2, min(3e3, 10 / (1e-5 + (z / 5)^2 + (z / 200)^6))). The composite normalises
 // the weights, so only their ratios matter; the scenes' depths (2-20 units) lie where the
@@ -82,9 +116,10 @@ class WeightedBlendedOit : public OitTechnique {
 // moments/hamburger.h, eight the general construction of moments/canonical_bound.h.
 class MbOitPower : public MomentOit {
  public:
-  MbOitPower(int moments, double alpha, double beta)
-      : MomentOit("mboit_power" + std::to_string(moments)),
+  MbOitPower(int moments, OitStorage storage, double alpha, double beta)
+      : MomentOit("mboit_power" + std::to_string(moments) + storage_suffix(storage)),
         m_(moments),
+        storage_(storage),
         alpha_(alpha),
         beta_(beta) {}
   bool normalised() const override { return true; }
@@ -92,12 +127,15 @@ class MbOitPower : public MomentOit {
  protected:
   void reconstruct(const AbsorbanceDistribution& d, std::span<const double> warped,
                    std::span<double> out) override {
-    double b[8] = {};
-    for (size_t i = 0; i < d.depths.size(); ++i) {
-      const double t = 2 * d.depths[i] - 1;
-      double power = 1;
-      for (int j = 0; j < m_; ++j) b[j] += d.weights[i] * (power *= t);
-    }
+    double b[8];
+    const double total = stored_moments(
+        d, storage_, m_,
+        [&](double u, double* row) {
+          const double t = 2 * u - 1;
+          double power = 1;
+          for (int j = 0; j < m_; ++j) row[j] = (power *= t);
+        },
+        b);
     static constexpr double kStar4[4] = {0, 0.375, 0, 0.375};
     static constexpr double kStar6[6] = {0, 0.48, 0, 0.451, 0, 0.45};
     static constexpr double kStar8[8] = {0, 0.75, 0, 0.676666667, 0, 0.63, 0, 0.6003030303};
@@ -117,13 +155,14 @@ class MbOitPower : public MomentOit {
         const MsmBound<double> r = m_ == 4 ? hamburger4(b, t) : hamburger6(b, t);
         g = r.lower, at = r.at_zf;
       }
-      out[l] = std::exp(-d.total * std::clamp(g + beta_ * at, 0.0, 1.0));
+      out[l] = std::exp(-total * std::clamp(g + beta_ * at, 0.0, 1.0));
     }
   }
   size_t failures() const override { return failures_; }
 
  private:
   int m_;
+  OitStorage storage_;
   double alpha_, beta_;
   size_t failures_ = 0;
 };
@@ -135,9 +174,10 @@ class MbOitPower : public MomentOit {
 // in front of phi_l, a linear ramp from 0 to 1 across the wrapping zone, 0 behind.
 class MbOitTrig : public MomentOit {
  public:
-  MbOitTrig(int moments, double alpha, double beta, double zone)
-      : MomentOit("mboit_trig" + std::to_string(moments)),
+  MbOitTrig(int moments, OitStorage storage, double alpha, double beta, double zone)
+      : MomentOit("mboit_trig" + std::to_string(moments) + storage_suffix(storage)),
         n_(moments),
+        storage_(storage),
         alpha_(alpha),
         beta_(beta),
         zone_(zone) {}
@@ -148,10 +188,16 @@ class MbOitTrig : public MomentOit {
   void reconstruct(const AbsorbanceDistribution& d, std::span<const double> warped,
                    std::span<double> out) override {
     const double scale = 2 * std::numbers::pi - zone_;
-    std::complex<double> c[kMaxCanonicalOrder] = {};
-    for (size_t i = 0; i < d.depths.size(); ++i)
-      for (int k = 1; k <= n_; ++k)
-        c[k - 1] += d.weights[i] * std::polar(1.0, k * scale * d.depths[i]);
+    double b[8];
+    const double total = stored_moments(
+        d, storage_, 2 * n_,
+        [&](double u, double* row) {
+          for (int k = 1; k <= n_; ++k)
+            row[2 * k - 2] = std::cos(k * scale * u), row[2 * k - 1] = std::sin(k * scale * u);
+        },
+        b);
+    std::complex<double> c[kMaxCanonicalOrder];
+    for (int k = 0; k < n_; ++k) c[k] = {b[2 * k], b[2 * k + 1]};
     for (int k = 0; k < n_; ++k) c[k] *= 1 - alpha_;
     for (size_t l = 0; l < warped.size(); ++l) {
       const double phi = scale * warped[l];
@@ -166,12 +212,13 @@ class MbOitTrig : public MomentOit {
         const double f = psi < phi ? 1 : psi > scale ? std::min(1.0, (psi - scale) / zone_) : 0;
         g += f * r.weights[k];
       }
-      out[l] = std::exp(-d.total * std::clamp(g, 0.0, 1.0));
+      out[l] = std::exp(-total * std::clamp(g, 0.0, 1.0));
     }
   }
 
  private:
   int n_;
+  OitStorage storage_;
   double alpha_, beta_, zone_;
   size_t failures_ = 0;
 };
@@ -246,12 +293,17 @@ std::unique_ptr<OitTechnique> make_oit_technique(const std::string& name, const 
   if (name == "exact") return std::make_unique<BlendOit>(name, exact_transmittance);
   if (name == "unsorted") return std::make_unique<BlendOit>(name, submission_transmittance);
   if (name == "wboit") return std::make_unique<WeightedBlendedOit>();
-  if (name == "mboit_power4") return std::make_unique<MbOitPower>(4, p.power4_alpha, p.beta);
-  if (name == "mboit_power6") return std::make_unique<MbOitPower>(6, p.power6_alpha, p.beta);
-  if (name == "mboit_power8") return std::make_unique<MbOitPower>(8, p.power8_alpha, p.beta);
-  for (int n = 2; n <= 4; ++n)
-    if (name == "mboit_trig" + std::to_string(n))
-      return std::make_unique<MbOitTrig>(n, p.trig_alpha, p.beta, p.wrapping_zone);
+  for (OitStorage storage : {OitStorage::Double, OitStorage::Float, OitStorage::Snorm16}) {
+    const OitBiases& bias = storage == OitStorage::Double  ? p.double_bias
+                            : storage == OitStorage::Float ? p.float_bias
+                                                           : p.snorm16_bias;
+    for (int m : {4, 6, 8})
+      if (name == "mboit_power" + std::to_string(m) + storage_suffix(storage))
+        return std::make_unique<MbOitPower>(m, storage, bias.power[m / 2 - 2], p.beta);
+    for (int n = 2; n <= 4; ++n)
+      if (name == "mboit_trig" + std::to_string(n) + storage_suffix(storage))
+        return std::make_unique<MbOitTrig>(n, storage, bias.trig[n - 2], p.beta, p.wrapping_zone);
+  }
   if (name.rfind("lp:", 0) == 0) return std::make_unique<LpOit>(name, p.lp);
   std::string valid;
   for (const auto& n : oit_technique_names()) valid += n + ", ";

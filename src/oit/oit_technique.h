@@ -13,11 +13,24 @@
 
 namespace mb {
 
+// How an MBOIT variant stores its moments (docs/transparency.md §3, "Storage").
+enum class OitStorage { Double, Float, Snorm16 };
+
+// Moment biases of one storage format: power[0..2] for 4, 6, 8 power moments, trig[0..2] for 2,
+// 3, 4 trigonometric moments.
+struct OitBiases {
+  double power[3], trig[3];
+};
+
 struct OitParams {
   // MBOIT's overestimation beta: A = A- + beta (A+ - A-) (docs/transparency.md §3).
   double beta = 0.25;
   // Moment bias of the MBOIT closed forms in double (docs/transparency.md §3, "Constants").
-  double power4_alpha = 1e-10, power6_alpha = 1e-10, power8_alpha = 1e-10, trig_alpha = 1e-10;
+  // Moment biases (docs/transparency.md §3, "Constants"): double as the shadow closed forms; float
+  // and 16-bit the values of the authors' code as its public ports carry them.
+  OitBiases double_bias = {{1e-10, 1e-10, 1e-10}, {1e-10, 1e-10, 1e-10}};
+  OitBiases float_bias = {{5e-7, 5e-6, 5e-5}, {4e-7, 8e-7, 1.5e-6}};
+  OitBiases snorm16_bias = {{6e-5, 6e-4, 2.5e-3}, {4e-4, 6.5e-4, 8.5e-4}};
   // The trigonometric variants' wrapping zone in radians: 0.1 pi, the authors' code's default
   // (docs/transparency.md §5).
   double wrapping_zone = 0.1 * 3.14159265358979323846;
@@ -47,8 +60,8 @@ class OitTechnique {
   std::string name_;
 };
 
-// exact, unsorted, wboit, mboit_power4/6/8, mboit_trig2/3/4, lp:<basis>; InputError naming the
-// valid ones otherwise.
+// exact, unsorted, wboit, mboit_power4/6/8 and mboit_trig2/3/4 (each also _float and _16bit),
+// lp:<basis>; InputError naming the valid ones otherwise.
 std::unique_ptr<OitTechnique> make_oit_technique(const std::string& name, const OitParams& params);
 std::vector<std::string> oit_technique_names();  // without the lp: family
 
