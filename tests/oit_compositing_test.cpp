@@ -152,6 +152,33 @@ TEST(Oit, LpBoundsHoldAndMboitIsTheLpOnR) {
       compared, worst_r, worst_interval);
 }
 
+// Six power moments likewise: mboit_power6 with beta = 0 is Hamburger's bound on R, the continuous
+// LP on [-20, 21] (z^6 on a wider interval is numerically dependent with the constant; six
+// moments' closed form loses digits on near-singular Hankel matrices, docs/reference.md §4, and
+// a canonical node may lie beyond 21: hence 1e-5).
+TEST(Oit, MboitPower6IsTheLpOnR) {
+  std::mt19937_64 rng(47);
+  OitParams sharp;
+  sharp.beta = 0;
+  OitParams wide = sharp;
+  wide.lp.lp = lp::Discretization{-20, 21, 256, false};
+  wide.lp.lp.continuous = true;
+  double worst = 0;
+  int compared = 0;
+  for (int n = 0; n < 30; ++n) {
+    const Pixel p = random_pixel(rng, 2 + n % 12);
+    const std::vector<double> closed = run("mboit_power6", p, sharp),
+                              on_r = run("lp:power6", p, wide);
+    for (size_t l = 0; l < closed.size(); ++l, ++compared) {
+      EXPECT_NEAR(closed[l], on_r[l], 1e-5) << n << " fragment " << l;
+      worst = std::max(worst, std::abs(closed[l] - on_r[l]));
+    }
+  }
+  std::printf(
+      "mboit_power6: %d fragments; vs the continuous LP on [-20, 21]: largest |dT| %.2e\n",
+      compared, worst);
+}
+
 // MBOIT's trigonometric reconstruction (beta = 0) is the mass of one distribution with the pixel's
 // moments, the canonical representation through the fragment, with the wrapping zone counted in
 // part: it is never below the sharp lower bound on the circle, the continuous LP (certified) on u

@@ -11,8 +11,11 @@ namespace mb {
 namespace {
 
 using Complex = std::complex<double>;
-using ComplexMatrix = Eigen::MatrixXcd;
-using ComplexVector = Eigen::VectorXcd;
+// At most (n + 1) x (n + 1): fixed maximum sizes keep every matrix on the stack.
+constexpr int kMax = kMaxCanonicalOrder + 1;
+using ComplexMatrix =
+    Eigen::Matrix<std::complex<double>, Eigen::Dynamic, Eigen::Dynamic, 0, kMax, kMax>;
+using ComplexVector = Eigen::Matrix<std::complex<double>, Eigen::Dynamic, 1, 0, kMax, 1>;
 
 // The roots of sum_j a_j x^j (a_0 .. a_degree, complex) as the eigenvalues of the companion
 // matrix; leading coefficients that vanish against the largest are dropped first (a node that

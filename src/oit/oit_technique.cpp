@@ -43,18 +43,21 @@ class MomentOit : public OitTechnique {
   using OitTechnique::OitTechnique;
   void transmittance(const PixelFragments& px, std::span<const double> warped,
                      std::span<double> out) final {
-    const AbsorbanceDistribution d = absorbance_distribution(px, warped);
-    if (!(d.total > 0)) {
+    absorbance_distribution(px, warped, distribution_);
+    if (!(distribution_.total > 0)) {
       std::fill(out.begin(), out.end(), 1.0);
       return;
     }
-    reconstruct(d, warped, out);
+    reconstruct(distribution_, warped, out);
   }
 
  protected:
   // T at each fragment (`warped`: their depths on [0, 1]) from the distribution `d`.
   virtual void reconstruct(const AbsorbanceDistribution& d, std::span<const double> warped,
                            std::span<double> out) = 0;
+
+ private:
+  AbsorbanceDistribution distribution_;  // reused: no allocation per pixel
 };
 
 // The pixel's normalised moments as a storage format keeps them (docs/transparency.md §3,
@@ -252,18 +255,26 @@ class LpOit : public MomentOit {
 
 }  // namespace
 
-AbsorbanceDistribution absorbance_distribution(const PixelFragments& px,
-                                               std::span<const double> warped) {
-  std::vector<std::pair<double, double>> atoms;
+void absorbance_distribution(const PixelFragments& px, std::span<const double> warped,
+                             AbsorbanceDistribution& d) {
+  std::vector<std::pair<double, double>>& atoms = d.scratch;
+  atoms.clear();
   for (size_t l = 0; l < px.size(); ++l) {
     const double a = std::min(absorbance(px.alpha[l]), kMaxAbsorbance);
     if (a > 0) atoms.push_back({warped[l], a});
   }
   // Canonical order: the sums below are then the same for every submission order, bit for bit.
   std::sort(atoms.begin(), atoms.end());
-  AbsorbanceDistribution d;
+  d.total = 0;
+  d.depths.clear(), d.weights.clear();
   for (const auto& [u, a] : atoms) d.total += a;
   for (const auto& [u, a] : atoms) d.depths.push_back(u), d.weights.push_back(a / d.total);
+}
+
+AbsorbanceDistribution absorbance_distribution(const PixelFragments& px,
+                                               std::span<const double> warped) {
+  AbsorbanceDistribution d;
+  absorbance_distribution(px, warped, d);
   return d;
 }
 

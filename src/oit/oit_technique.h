@@ -71,9 +71,13 @@ std::vector<std::string> oit_technique_names();  // without the lp: family
 struct AbsorbanceDistribution {
   std::vector<double> depths, weights;
   double total = 0;
+  std::vector<std::pair<double, double>> scratch;  // (depth, absorbance) while sorting
 };
 AbsorbanceDistribution absorbance_distribution(const PixelFragments& px,
                                                std::span<const double> warped);
+// The same into `d`, reusing its storage.
+void absorbance_distribution(const PixelFragments& px, std::span<const double> warped,
+                             AbsorbanceDistribution& d);
 
 // The transmittance the composite weighs each fragment with: a normalised technique's scaled by
 // Gamma = (1 - T_total) / sum_l alpha_l T_l (docs/transparency.md §3), others' as given. In place.

@@ -1,0 +1,83 @@
+// Order-independent transparency (issue 43): fragments per second of each reconstruction on one
+// core over seeded random pixels of 1-30 fragments (the transparency dataset's range), and the LP
+// per fragment with our engine against GLPK on the same pixels (the ratio of the two rows).
+// The whole-frame number comes from scripts/bench_oit.sh.
+#include <benchmark/benchmark.h>
+
+#include <string>
+#include <vector>
+
+#include "oit/oit_technique.h"
+#include "scene/procedural.h"
+
+namespace mb {
+namespace {
+
+struct Pixels {
+  std::vector<std::vector<double>> depth, alpha, warped;
+  std::vector<std::vector<Rgb>> color;
+  size_t fragments = 0;
+  explicit Pixels(int count) {
+    SeededRandom rng(43);
+    for (int p = 0; p < count; ++p) {
+      const int n = 1 + int(rng.uniform(0, 30));
+      std::vector<double> z, a, u;
+      for (int l = 0; l < n; ++l)
+        z.push_back(rng.uniform(2, 12)), a.push_back(rng.uniform(0.05, 0.9));
+      // The frame's warp maps [2, 12] onto [0, 1] (docs/transparency.md §2).
+      const DepthWarp warp = DepthWarp::between(2, 12);
+      for (double d : z) u.push_back(warp(d));
+      depth.push_back(z), alpha.push_back(a), warped.push_back(u);
+      color.push_back(std::vector<Rgb>(size_t(n), Rgb{0.5f, 0.5f, 0.5f}));
+      fragments += size_t(n);
+    }
+  }
+};
+
+const Pixels& pixels(int count) {
+  static Pixels many(4096), few(256);
+  return count > 256 ? many : few;
+}
+
+void reconstruct(benchmark::State& state, const std::string& name, const OitParams& params,
+                 int count) {
+  const Pixels& px = pixels(count);
+  auto technique = make_oit_technique(name, params);
+  std::vector<double> t;
+  for (auto _ : state) {
+    for (size_t p = 0; p < px.depth.size(); ++p) {
+      t.resize(px.depth[p].size());
+      technique->transmittance({px.depth[p], px.alpha[p], px.color[p], kBackground}, px.warped[p],
+                               t);
+      benchmark::DoNotOptimize(t.data());
+    }
+  }
+  state.counters["fragments/s"] =
+      benchmark::Counter(double(px.fragments) * state.iterations(), benchmark::Counter::kIsRate);
+}
+
+void BM_Reconstruct(benchmark::State& state, const char* name) {
+  reconstruct(state, name, {}, 4096);
+}
+BENCHMARK_CAPTURE(BM_Reconstruct, exact, "exact");
+BENCHMARK_CAPTURE(BM_Reconstruct, wboit, "wboit");
+BENCHMARK_CAPTURE(BM_Reconstruct, mboit_power4, "mboit_power4");
+BENCHMARK_CAPTURE(BM_Reconstruct, mboit_power6, "mboit_power6");
+BENCHMARK_CAPTURE(BM_Reconstruct, mboit_power8, "mboit_power8");
+BENCHMARK_CAPTURE(BM_Reconstruct, mboit_trig2, "mboit_trig2");
+BENCHMARK_CAPTURE(BM_Reconstruct, mboit_trig4, "mboit_trig4");
+BENCHMARK_CAPTURE(BM_Reconstruct, mboit_power4_float, "mboit_power4_float");
+
+// lp:power4 per fragment, our engine (with its GLPK fallback) against GLPK alone, same pixels.
+void BM_Lp(benchmark::State& state, const char* backend) {
+  OitParams params;
+  params.lp.lp_backend = backend;
+  reconstruct(state, "lp:power4", params, 256);
+}
+BENCHMARK_CAPTURE(BM_Lp, fast, "fast")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Lp, glpk, "glpk")->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace mb
+
+BENCHMARK_MAIN();
