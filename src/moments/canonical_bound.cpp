@@ -6,6 +6,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "moments/canonical.h"
+
 namespace mb {
 
 namespace {
@@ -25,6 +27,13 @@ int polynomial_roots(const ComplexVector& a, Complex* roots) {
   const double scale = a.cwiseAbs().maxCoeff();
   while (degree > 0 && std::abs(a[degree]) <= 1e-13 * scale) --degree;
   if (degree == 0) return 0;
+  if (degree == 2) {  // the quadratic formula without cancellation
+    const Complex b = a[1] / a[2], c = a[0] / a[2], root = std::sqrt(b * b - 4.0 * c);
+    const Complex q = -0.5 * (std::real(std::conj(b) * root) >= 0 ? b + root : b - root);
+    roots[0] = q;
+    roots[1] = q != Complex(0) ? c / q : -b - q;
+    return 2;
+  }
   ComplexMatrix companion = ComplexMatrix::Zero(degree, degree);
   for (int i = 1; i < degree; ++i) companion(i, i - 1) = 1;
   for (int i = 0; i < degree; ++i) companion(i, degree - 1) = -a[i] / a[degree];
@@ -42,13 +51,14 @@ int polynomial_roots(const ComplexVector& a, Complex* roots) {
 // circle); `position` gives the node's coordinate.
 template <class V>
 bool canonical(const ComplexMatrix& moments, Complex query, V v, CanonicalNodes& out,
-               Complex (*project)(Complex), double (*position)(Complex)) {
+               Complex (*project)(Complex), double (*position)(Complex),
+               int (*roots_of)(const ComplexVector&, Complex*)) {
   Eigen::LLT<ComplexMatrix> llt(moments);
   if (llt.info() != Eigen::Success) return false;
   const ComplexVector a = llt.solve(v(query));
   // p(x) = sum_j conj(a_j) x^j.
   Complex roots[kMaxCanonicalOrder];
-  const int found = polynomial_roots(a.conjugate(), roots);
+  const int found = roots_of(a.conjugate(), roots);
   if (found < 0) return false;
   out.count = 0;
   const auto add = [&](Complex root) {
@@ -64,6 +74,22 @@ bool canonical(const ComplexMatrix& moments, Complex query, V v, CanonicalNodes&
   for (int i = 0; i < found; ++i)
     if (!add(roots[i])) return false;
   return true;
+}
+
+// A real polynomial's n <= 4 roots, all real for a positive definite Hankel matrix: by the closed
+// forms of moments/canonical.h (Ferrari for four), else (fewer real roots found, from rounding)
+// by the companion matrix.
+int real_polynomial_roots(const ComplexVector& a, Complex* roots) {
+  const int degree = int(a.size()) - 1;
+  double c[kMax], found[kMaxCanonicalOrder];
+  for (int j = 0; j <= degree; ++j) c[j] = a[j].real();
+  int count = 0;
+  if (degree == 4) count = quartic_roots(c[4], c[3], c[2], c[1], c[0], found);
+  if (degree == 3) count = cubic_roots(c[3], c[2], c[1], c[0], found);
+  if (degree == 2 && c[2] != 0) quadratic_roots(c[2], c[1], c[0], found[0], found[1]), count = 2;
+  if (count != degree || !std::isfinite(found[0])) return polynomial_roots(a, roots);
+  for (int i = 0; i < count; ++i) roots[i] = found[i];
+  return count;
 }
 
 }  // namespace
@@ -82,7 +108,7 @@ bool canonical_power(const double* b, int n, double xf, CanonicalNodes& out) {
   // The roots are real for a positive definite Hankel matrix; rounding leaves tiny imaginary parts.
   return canonical(
       hankel, Complex(xf), v, out, [](Complex x) { return Complex(x.real()); },
-      [](Complex x) { return x.real(); });
+      [](Complex x) { return x.real(); }, real_polynomial_roots);
 }
 
 bool canonical_trigonometric(const std::complex<double>* c, int n, double phi_f,
@@ -108,7 +134,8 @@ bool canonical_trigonometric(const std::complex<double>* c, int n, double phi_f,
     return a < 0 ? a + 2 * std::numbers::pi : a;
   };
   return canonical(
-      toeplitz, std::polar(1.0, phi_f), v, out, [](Complex z) { return z / std::abs(z); }, angle);
+      toeplitz, std::polar(1.0, phi_f), v, out, [](Complex z) { return z / std::abs(z); }, angle,
+      polynomial_roots);
 }
 
 }  // namespace mb
