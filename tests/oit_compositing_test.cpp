@@ -174,9 +174,8 @@ TEST(Oit, MboitPower6IsTheLpOnR) {
       worst = std::max(worst, std::abs(closed[l] - on_r[l]));
     }
   }
-  std::printf(
-      "mboit_power6: %d fragments; vs the continuous LP on [-20, 21]: largest |dT| %.2e\n",
-      compared, worst);
+  std::printf("mboit_power6: %d fragments; vs the continuous LP on [-20, 21]: largest |dT| %.2e\n",
+              compared, worst);
 }
 
 // MBOIT's trigonometric reconstruction (beta = 0) is the mass of one distribution with the pixel's

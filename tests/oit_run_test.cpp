@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "oit/color_difference.h"
+#include "oit/oit_verification.h"
 #include "scene/scene.h"
 #include "test_support.h"
 #include "util/error.h"
@@ -101,6 +102,27 @@ cameras:
       testing_support::input_error_of([&] { check_frame_has_transparency(frame, scene.name); });
   EXPECT_NE(message.find("opaque/eye"), std::string::npos) << message;
   EXPECT_NE(message.find("no transparent geometry"), std::string::npos) << message;
+}
+
+}  // namespace
+}  // namespace mb
+
+namespace mb {
+namespace {
+
+// verify's transparency rows (oit/oit_verification.h): each MBOIT closed form passes its check on
+// seeded pixels, the row counts what it compared, and a name without a certified LP is refused.
+TEST(OitVerify, MboitRowsPassAgainstTheLp) {
+  for (const auto& name : oit_verify_names()) {
+    const OitVerifyRow row = verify_mboit(name, 6, 2015);
+    EXPECT_TRUE(row.passed()) << name << ": " << row.beyond << " beyond, largest " << row.largest;
+    EXPECT_EQ(row.pixels, 6u);
+    EXPECT_GT(row.fragments, 12u);
+    EXPECT_LE(row.largest, row.tolerance) << name;
+  }
+  const std::string message =
+      testing_support::input_error_of([] { verify_mboit("mboit_power8", 1, 1); });
+  EXPECT_NE(message.find("expected one of mboit_power4"), std::string::npos) << message;
 }
 
 }  // namespace

@@ -1,12 +1,15 @@
 // `momentbench verify` (docs/reference.md §6): each closed form against the LP with the matching
 // basis and interval, on seeded random distributions and on real kernels of a dataset, at three
 // LP grid sizes. Exit status 5 when a solver that must match (double, alpha = 0) does not.
+#include <algorithm>
 #include <cstdio>
 
 #include "cmd/command_common.h"
 #include "cmd/commands.h"
 #include "eval/eval_config.h"
 #include "eval/evaluation.h"
+#include "oit/oit_verification.h"
+#include "report/oit_report.h"
 #include "report/verify_report.h"
 #include "scene/dataset.h"
 #include "util/error.h"
@@ -54,8 +57,23 @@ int run_verify(const CommonOptions& options) {
   VerifySettings v;
   read_options(config, verify_options(), v);
   const VerifyPlan plan = make_verify_plan(v, settings.technique);
+  const std::vector<std::string> valid = oit_verify_names();
+  for (const auto& name : v.oit_techniques)  // before any output
+    if (std::find(valid.begin(), valid.end(), name) == valid.end()) verify_mboit(name, 0, 0);
   StagedOutputDir out(options.out, options.force);
   const VerifyRun run = run_verification(plan, data, settings, options.quiet);
+  std::vector<OitVerifyRow> oit_rows;
+  for (const auto& name : v.oit_techniques)
+    oit_rows.push_back(verify_mboit(name, v.oit_pixels, v.seed));
+  bool oit_passed = true;
+  for (const auto& r : oit_rows)
+    if (!r.passed()) {
+      oit_passed = false;
+      std::fprintf(stderr,
+                   "momentbench: verify: %s disagrees with the LP (%zu of %zu fragments beyond "
+                   "%g in T, %zu LP failures)\n",
+                   r.technique.c_str(), r.beyond, r.fragments, r.tolerance, r.lp_failures);
+    }
 
   const RunMetadata meta = collect_run_metadata(threads, process_arguments());
   VerifyReportContext context;
@@ -67,7 +85,8 @@ int run_verify(const CommonOptions& options) {
   context.grids = plan.grids;
   if (plan.continuous) context.grids.push_back(0);
   const VerifyReport report = render_verify_report(context, run.results, run.instances);
-  write_file_atomically(out / "verify.md", report.markdown);
+  write_file_atomically(out / "verify.md", report.markdown + oit_verify_section(oit_rows));
+  if (!oit_rows.empty()) write_file_atomically(out / "verify_oit.csv", oit_verify_csv(oit_rows));
   write_file_atomically(out / "verify.csv", report.csv);
   write_file_atomically(out / "worst.csv", report.worst_csv);
   write_run_record(out, config, meta);
@@ -76,7 +95,8 @@ int run_verify(const CommonOptions& options) {
   const std::string& text = report.markdown;
   std::fputs(text.substr(0, text.find("\n## Worst")).c_str(), stdout);
   std::fputs("\n", stdout);
-  return print_verdicts(run, report.all_passed) ? 0 : 5;
+  std::fputs(oit_verify_section(oit_rows).c_str(), stdout);
+  return print_verdicts(run, report.all_passed) && oit_passed ? 0 : 5;
 }
 
 }  // namespace

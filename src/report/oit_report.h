@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "oit/oit_run.h"
+#include "oit/oit_verification.h"
 
 namespace mb {
 
@@ -30,6 +31,11 @@ struct OitReport {
 
 OitReport render_oit_report(const OitReportContext& context, const std::vector<OitRow>& overall,
                             const std::vector<OitRow>& per_camera);
+
+// verify's transparency rows (docs/transparency.md §6): a Markdown section for verify.md and
+// verify_oit.csv.
+std::string oit_verify_section(const std::vector<OitVerifyRow>& rows);
+std::string oit_verify_csv(const std::vector<OitVerifyRow>& rows);
 
 // `<base>_reference.png`, `<base>_<technique>.png`, `<base>_<technique>_diff.png` (CIEDE2000 in
 // false colour up to `scale`, grey where no transparent fragment lies) and `<base>_sheet.png`:

@@ -16,6 +16,9 @@ struct VerifySettings {
   std::string discretization, moment_box;
   double tolerance = 1e-6, esm_c = 10, evsm_c = 5;
   int csm_terms = 3, worst = 5;
+  // Transparency rows (docs/transparency.md §6): MBOIT closed forms against the LP.
+  std::vector<std::string> oit_techniques;
+  int oit_pixels = 20;
 };
 
 const std::vector<OptionRecord<VerifySettings>>& verify_options();
