@@ -10,6 +10,7 @@
 
 #include "oit/compositing.h"
 #include "oit/oit_technique.h"
+#include "oit/oit_verification.h"
 #include "util/error.h"
 #include "util/number_text.h"
 
@@ -192,11 +193,7 @@ TEST(Oit, MboitTrigIsNeverBelowTheSharpBoundOnTheCircle) {
   int compared = 0, sharp = 0;
   double worst_gap = 0;
   for (int n_moments = 2; n_moments <= 3; ++n_moments) {
-    std::string basis = "lp:";
-    for (int k = 1; k <= n_moments; ++k) {
-      const std::string arg = std::to_string(k) + "*" + round_trip(s) + "*z";
-      basis += (k > 1 ? "; " : "") + std::string("cos(") + arg + "); sin(" + arg + ")";
-    }
+    const std::string basis = mboit_trig_lp_basis(n_moments, mboit.wrapping_zone);
     OitParams lower = mboit;
     lower.lp.lp = lp::Discretization{0, period, 256, false};
     lower.lp.lp.continuous = true;

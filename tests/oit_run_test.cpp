@@ -38,8 +38,8 @@ TEST(OitMetrics, TransmittanceErrorSplitsIntoOverAndUnder) {
   const PixelFragments px{depth, alpha, color, {0, 0, 1}};
   const std::vector<double> reference = {1, 0.5}, technique = {0.8, 0.9};
   const LabConverter lab;
-  const PixelError e =
-      pixel_error(px, reference, technique, {0.5f, 0.5f, 0.5f}, {0.5f, 0.5f, 0.5f}, lab);
+  const PixelError e = pixel_error(px, reference, technique, {0.5f, 0.5f, 0.5f},
+                                   lab.lab({0.5f, 0.5f, 0.5f}), {0.5f, 0.5f, 0.5f}, lab);
   EXPECT_DOUBLE_EQ(e.alpha, 0.75);
   EXPECT_DOUBLE_EQ(e.under, 0.5 * 0.2);
   EXPECT_DOUBLE_EQ(e.over, 0.25 * 0.4);

@@ -83,7 +83,8 @@ int run_oit(const OitOptions& options) {
   if (run.images) std::filesystem::create_directories(out.staging() / "images");
   if (run.deep_frames) std::filesystem::create_directories(out.staging() / "frames");
   const LabConverter lab;
-  std::vector<OitRow> overall, per_camera;
+  std::vector<OitRow> overall;
+  std::vector<std::vector<OitRow>> camera_rows(run.techniques.size());  // per technique
   for (const auto& name : run.techniques) overall.push_back({name, "all", {}, 0});
   OitReportContext context;
   for (const auto& [scene, frame] : frames) {
@@ -93,7 +94,7 @@ int run_oit(const OitOptions& options) {
     const OitFrameResult result = evaluate_oit_frame(frame, scene, run.techniques, params, threads,
                                                      lab, options.common.quiet);
     for (size_t k = 0; k < run.techniques.size(); ++k) {
-      per_camera.push_back(
+      camera_rows[k].push_back(
           {run.techniques[k], scene + "/" + frame.camera, result.stats[k], result.seconds[k]});
       overall[k].stats.merge(result.stats[k]);
       overall[k].seconds += result.seconds[k];
@@ -103,12 +104,9 @@ int run_oit(const OitOptions& options) {
           result, run.techniques, (out.staging() / "images" / stem).string(), run.delta_e_scale));
   }
   // Technique-major, as eval's per-view rows.
-  std::stable_sort(per_camera.begin(), per_camera.end(), [&](const OitRow& a, const OitRow& b) {
-    auto rank = [&](const std::string& t) {
-      return std::find(run.techniques.begin(), run.techniques.end(), t) - run.techniques.begin();
-    };
-    return rank(a.technique) < rank(b.technique);
-  });
+  std::vector<OitRow> per_camera;
+  for (const auto& rows : camera_rows)
+    per_camera.insert(per_camera.end(), rows.begin(), rows.end());
 
   const RunMetadata meta = collect_run_metadata(threads, process_arguments());
   context.dataset = dataset.name, context.version = meta.version, context.git_sha = meta.git_sha;

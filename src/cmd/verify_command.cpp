@@ -1,7 +1,6 @@
 // `momentbench verify` (docs/reference.md §6): each closed form against the LP with the matching
 // basis and interval, on seeded random distributions and on real kernels of a dataset, at three
 // LP grid sizes. Exit status 5 when a solver that must match (double, alpha = 0) does not.
-#include <algorithm>
 #include <cstdio>
 
 #include "cmd/command_common.h"
@@ -57,9 +56,7 @@ int run_verify(const CommonOptions& options) {
   VerifySettings v;
   read_options(config, verify_options(), v);
   const VerifyPlan plan = make_verify_plan(v, settings.technique);
-  const std::vector<std::string> valid = oit_verify_names();
-  for (const auto& name : v.oit_techniques)  // before any output
-    if (std::find(valid.begin(), valid.end(), name) == valid.end()) verify_mboit(name, 0, 0);
+  for (const auto& name : v.oit_techniques) check_oit_verify_technique(name);  // before output
   StagedOutputDir out(options.out, options.force);
   const VerifyRun run = run_verification(plan, data, settings, options.quiet);
   std::vector<OitVerifyRow> oit_rows;

@@ -5,6 +5,7 @@
 
 #include <bit>
 
+#include "raster/deep_exr.h"
 #include "util/error.h"
 
 namespace mb {
@@ -17,24 +18,15 @@ const char* const kChannels[] = {"R",        "G",        "B",        "A",       
 constexpr int kChannelCount = 9, kFirstExact = 5;
 constexpr int kFormatVersion = 1;
 
-void split(double value, uint32_t& hi, uint32_t& lo) {
-  const uint64_t bits = std::bit_cast<uint64_t>(value);
-  hi = uint32_t(bits >> 32);
-  lo = uint32_t(bits);
-}
-double join(uint32_t hi, uint32_t lo) {
-  return std::bit_cast<double>((uint64_t(hi) << 32) | lo);
-}
-
 void set_sample(OIIO::DeepData& deep, size_t p, int s, const Rgb& color, double alpha,
                 double depth) {
   for (int c = 0; c < 3; ++c) deep.set_deep_value(p, c, s, float(color[c] * alpha));
   deep.set_deep_value(p, 3, s, float(alpha));
   deep.set_deep_value(p, 4, s, float(depth));
   uint32_t hi, lo;
-  split(depth, hi, lo);
+  split_double(depth, hi, lo);
   deep.set_deep_value(p, 5, s, hi), deep.set_deep_value(p, 6, s, lo);
-  split(alpha, hi, lo);
+  split_double(alpha, hi, lo);
   deep.set_deep_value(p, 7, s, hi), deep.set_deep_value(p, 8, s, lo);
 }
 
@@ -98,7 +90,7 @@ DeepFrame read_deep_frame_exr(const std::string& file) {
     if (samples < 1) throw InputError(file + ": pixel " + std::to_string(p) + " has no sample");
     for (int s = 0; s < samples; ++s) {
       auto u = [&](int c) { return deep.deep_value_uint(p, channel[c], s); };
-      const double depth = join(u(5), u(6)), alpha = join(u(7), u(8));
+      const double depth = join_double(u(5), u(6)), alpha = join_double(u(7), u(8));
       Rgb color;
       // Premultiplied: colours come back to float rounding; an alpha-0 fragment shows nothing
       // and keeps colour 0.

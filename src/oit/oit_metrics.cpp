@@ -34,7 +34,7 @@ double OitStats::delta_e_quantile(double q) const {
 
 PixelError pixel_error(const PixelFragments& px, std::span<const double> reference,
                        std::span<const double> transmittance, const Rgb& reference_color,
-                       const Rgb& color, const LabConverter& lab) {
+                       const Lab& reference_lab, const Rgb& color, const LabConverter& lab) {
   PixelError e;
   e.fragments = uint32_t(px.size());
   if (px.size() == 0) return e;
@@ -45,9 +45,9 @@ PixelError pixel_error(const PixelFragments& px, std::span<const double> referen
     e.under += px.alpha[l] * std::max(-d, 0.0);
   }
   for (int c = 0; c < 3; ++c) e.rgb += std::abs(double(color[c]) - double(reference_color[c])) / 3;
-  const Lab a = lab.lab(reference_color), b = lab.lab(color);
-  e.delta_e = delta_e_2000(a, b);
-  e.delta_e76 = delta_e_76(a, b);
+  const Lab b = lab.lab(color);
+  e.delta_e = delta_e_2000(reference_lab, b);
+  e.delta_e76 = delta_e_76(reference_lab, b);
   return e;
 }
 

@@ -47,11 +47,35 @@ void check_frame_has_transparency(const DeepFrame& frame, const std::string& sce
 
 namespace {
 
+// What every technique is compared with, computed once per frame: per fragment (frame order) the
+// warped depth and the exact transmittance, per pixel the exact composite and its CIELAB value.
+struct FrameReference {
+  std::vector<double> warped, transmittance;
+  std::vector<Rgb> composite;
+  std::vector<Lab> lab;
+};
+
+FrameReference frame_reference(const DeepFrame& frame, const LabConverter& lab) {
+  const DepthWarp warp = DepthWarp::between(frame.nearest(), frame.farthest());
+  FrameReference r;
+  r.warped.resize(frame.fragments()), r.transmittance.resize(frame.fragments());
+  r.composite.resize(frame.pixels()), r.lab.resize(frame.pixels());
+  for (size_t f = 0; f < frame.fragments(); ++f) r.warped[f] = warp(frame.depth[f]);
+  for (size_t p = 0; p < frame.pixels(); ++p) {
+    const PixelFragments px = pixel_of(frame, p);
+    const std::span<double> t(r.transmittance.data() + frame.offsets[p], px.size());
+    exact_transmittance(px, t);
+    r.composite[p] = composite(px, t, total_transmittance(px));
+    r.lab[p] = lab.lab(r.composite[p]);
+  }
+  return r;
+}
+
 // One technique over the frame; composite, per-pixel errors, in pixel order.
-void run_technique(const DeepFrame& frame, const DepthWarp& warp, const std::string& name,
+void run_technique(const DeepFrame& frame, const FrameReference& reference, const std::string& name,
                    const OitParams& params, int threads, const LabConverter& lab,
-                   const std::vector<Rgb>& reference, std::vector<Rgb>& composite_out,
-                   std::vector<PixelError>& errors, size_t& failures) {
+                   std::vector<Rgb>& composite_out, std::vector<PixelError>& errors,
+                   size_t& failures) {
   const size_t pixels = frame.pixels();
   const int rows = frame.height;
   ParallelErrors parallel;
@@ -59,21 +83,22 @@ void run_technique(const DeepFrame& frame, const DepthWarp& warp, const std::str
 #pragma omp parallel num_threads(threads) reduction(+ : failed)
   {
     auto technique = make_oit_technique(name, params);
-    std::vector<double> warped, t_ref, t;
+    std::vector<double> t;
 #pragma omp for schedule(dynamic, 1)
     for (int y = 0; y < rows; ++y)
       parallel.capture([&] {
         for (size_t p = size_t(y) * frame.width; p < size_t(y + 1) * frame.width && p < pixels;
              ++p) {
           const PixelFragments px = pixel_of(frame, p);
-          const size_t n = px.size();
-          warped.resize(n), t_ref.resize(n), t.resize(n);
-          for (size_t l = 0; l < n; ++l) warped[l] = warp(px.depth[l]);
-          exact_transmittance(px, t_ref);
+          const size_t first = frame.offsets[p], n = px.size();
+          const std::span<const double> warped(reference.warped.data() + first, n),
+              t_ref(reference.transmittance.data() + first, n);
+          t.resize(n);
           technique->transmittance(px, warped, t);
           effective_transmittance(*technique, px, t);
           composite_out[p] = composite(px, t, total_transmittance(px));
-          errors[p] = pixel_error(px, t_ref, t, reference[p], composite_out[p], lab);
+          errors[p] = pixel_error(px, t_ref, t, reference.composite[p], reference.lab[p],
+                                  composite_out[p], lab);
         }
       });
     failed += technique->failures();
@@ -89,27 +114,19 @@ OitFrameResult evaluate_oit_frame(const DeepFrame& frame, const std::string& sce
                                   const OitParams& params, int threads, const LabConverter& lab,
                                   bool quiet) {
   check_frame_has_transparency(frame, scene);
-  const DepthWarp warp = DepthWarp::between(frame.nearest(), frame.farthest());
   const size_t pixels = frame.pixels();
+  const FrameReference reference = frame_reference(frame, lab);
   OitFrameResult result;
   result.scene = scene, result.camera = frame.camera;
   result.width = frame.width, result.height = frame.height;
-  result.reference.resize(pixels);
-  std::vector<double> t;
-  for (size_t p = 0; p < pixels; ++p) {
-    const PixelFragments px = pixel_of(frame, p);
-    t.resize(px.size());
-    exact_transmittance(px, t);
-    result.reference[p] = composite(px, t, total_transmittance(px));
-  }
+  result.reference = reference.composite;
   ProgressBar bar("oit " + scene + "/" + frame.camera, techniques.size(), quiet);
   std::vector<PixelError> errors(pixels);
   for (const auto& name : techniques) {
     const auto start = std::chrono::steady_clock::now();
     std::vector<Rgb> composite(pixels);
     size_t failures = 0;
-    run_technique(frame, warp, name, params, threads, lab, result.reference, composite, errors,
-                  failures);
+    run_technique(frame, reference, name, params, threads, lab, composite, errors, failures);
     OitStats stats;
     std::vector<float> delta_e(pixels, -1.0f);
     for (size_t p = 0; p < pixels; ++p) {

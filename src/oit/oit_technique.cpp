@@ -55,6 +55,9 @@ class MomentOit : public OitTechnique {
   // T at each fragment (`warped`: their depths on [0, 1]) from the distribution `d`.
   virtual void reconstruct(const AbsorbanceDistribution& d, std::span<const double> warped,
                            std::span<double> out) = 0;
+  // Closed forms count the fragments whose moment matrix was not positive definite here.
+  size_t failures() const override { return closed_form_failures_; }
+  size_t closed_form_failures_ = 0;
 
  private:
   AbsorbanceDistribution distribution_;  // reused: no allocation per pixel
@@ -149,7 +152,7 @@ class MbOitPower : public MomentOit {
       if (m_ == 8) {
         CanonicalNodes c;
         if (!canonical_power(b, 4, t, c)) {
-          out[l] = 1, ++failures_;
+          out[l] = 1, ++closed_form_failures_;
           continue;
         }
         for (int k = 1; k < c.count; ++k) g += c.nodes[k] < t ? c.weights[k] : 0;
@@ -161,13 +164,11 @@ class MbOitPower : public MomentOit {
       out[l] = std::exp(-total * std::clamp(g + beta_ * at, 0.0, 1.0));
     }
   }
-  size_t failures() const override { return failures_; }
 
  private:
   int m_;
   OitStorage storage_;
   double alpha_, beta_;
-  size_t failures_ = 0;
 };
 
 // MBOIT with n trigonometric moments (docs/transparency.md §5): the warped depth u in [0, 1] is
@@ -185,7 +186,6 @@ class MbOitTrig : public MomentOit {
         beta_(beta),
         zone_(zone) {}
   bool normalised() const override { return true; }
-  size_t failures() const override { return failures_; }
 
  protected:
   void reconstruct(const AbsorbanceDistribution& d, std::span<const double> warped,
@@ -206,7 +206,7 @@ class MbOitTrig : public MomentOit {
       const double phi = scale * warped[l];
       CanonicalNodes r;
       if (!canonical_trigonometric(c, n_, phi, r)) {
-        out[l] = 1, ++failures_;
+        out[l] = 1, ++closed_form_failures_;
         continue;
       }
       double g = beta_ * r.weights[0];
@@ -223,7 +223,6 @@ class MbOitTrig : public MomentOit {
   int n_;
   OitStorage storage_;
   double alpha_, beta_, zone_;
-  size_t failures_ = 0;
 };
 
 // lp:<basis> on the warped depth u in [0, 1]: Problem 1 on the grid and the pixel's own fragment

@@ -46,13 +46,8 @@ OitVerifyRow row_for(const std::string& technique) {
     row.tolerance = six ? 1e-5 : 1e-6;
     return row;
   }
-  const int n = technique == "mboit_trig2" ? 2 : 3;
-  const double s = 2 * std::numbers::pi - OitParams{}.wrapping_zone;
-  row.lp_basis = "lp:";
-  for (int k = 1; k <= n; ++k) {
-    const std::string arg = std::to_string(k) + "*" + round_trip(s) + "*z";
-    row.lp_basis += (k > 1 ? "; " : "") + std::string("cos(") + arg + "); sin(" + arg + ")";
-  }
+  const double zone = OitParams{}.wrapping_zone, s = 2 * std::numbers::pi - zone;
+  row.lp_basis = mboit_trig_lp_basis(technique == "mboit_trig2" ? 2 : 3, zone);
   row.kind = "never below";
   row.lo = 0, row.hi = 2 * std::numbers::pi / s;  // one period, the wrapping zone behind
   row.tolerance = 1e-7;
@@ -65,14 +60,27 @@ std::vector<std::string> oit_verify_names() {
   return {"mboit_power4", "mboit_power6", "mboit_trig2", "mboit_trig3"};
 }
 
-OitVerifyRow verify_mboit(const std::string& technique, int pixels, uint64_t seed) {
-  const auto names = oit_verify_names();
-  if (std::find(names.begin(), names.end(), technique) == names.end()) {
-    std::string valid;
-    for (const auto& n : names) valid += (valid.empty() ? "" : ", ") + n;
-    throw InputError("verify.oit_techniques: '" + technique + "': expected one of " + valid +
-                     " (the certified LP engine takes up to seven functions)");
+std::string mboit_trig_lp_basis(int moments, double wrapping_zone) {
+  const double s = 2 * std::numbers::pi - wrapping_zone;
+  std::string basis = "lp:";
+  for (int k = 1; k <= moments; ++k) {
+    const std::string arg = std::to_string(k) + "*" + round_trip(s) + "*z";
+    basis += (k > 1 ? "; " : "") + std::string("cos(") + arg + "); sin(" + arg + ")";
   }
+  return basis;
+}
+
+void check_oit_verify_technique(const std::string& technique) {
+  const auto names = oit_verify_names();
+  if (std::find(names.begin(), names.end(), technique) != names.end()) return;
+  std::string valid;
+  for (const auto& n : names) valid += (valid.empty() ? "" : ", ") + n;
+  throw InputError("verify.oit_techniques: '" + technique + "': expected one of " + valid +
+                   " (the certified LP engine takes up to seven functions)");
+}
+
+OitVerifyRow verify_mboit(const std::string& technique, int pixels, uint64_t seed) {
+  check_oit_verify_technique(technique);
   OitVerifyRow row = row_for(technique);
   OitParams closed, lp;
   closed.beta = 0;

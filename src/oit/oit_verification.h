@@ -24,6 +24,11 @@ struct OitVerifyRow {
 // otherwise: eight power and four trigonometric moments exceed the certified LP engine's seven
 // functions).
 std::vector<std::string> oit_verify_names();
+void check_oit_verify_technique(const std::string& technique);
 OitVerifyRow verify_mboit(const std::string& technique, int pixels, uint64_t seed);
+
+// The LP technique with the basis of `moments` trigonometric moments as MBOIT takes them on the
+// warped depth u: "lp:cos(1*s*z); sin(1*s*z); ...", s = 2 pi - wrapping_zone (§5).
+std::string mboit_trig_lp_basis(int moments, double wrapping_zone);
 
 }  // namespace mb

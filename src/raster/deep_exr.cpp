@@ -20,14 +20,6 @@ constexpr int kChannelCount = 9;
 constexpr int kAlphaChannel = 8;
 constexpr int kFormatVersion = 1;
 
-void split(double value, uint32_t& hi, uint32_t& lo) {
-  uint64_t bits = std::bit_cast<uint64_t>(value);
-  hi = uint32_t(bits >> 32);
-  lo = uint32_t(bits);
-}
-double join(uint32_t hi, uint32_t lo) {
-  return std::bit_cast<double>((uint64_t(hi) << 32) | lo);
-}
 }  // namespace
 
 void write_deep_exr(const LayerStack& stack, const std::string& file) {
@@ -56,11 +48,11 @@ void write_deep_exr(const LayerStack& stack, const std::string& file) {
       uint32_t hi, lo;
       deep.set_deep_value(t, 0, s, float(stack.depth[f]));
       deep.set_deep_value(t, 1, s, uint32_t(stack.facing[f]));
-      split(stack.depth[f], hi, lo);
+      split_double(stack.depth[f], hi, lo);
       deep.set_deep_value(t, 2, s, hi), deep.set_deep_value(t, 3, s, lo);
-      split(stack.dz_dx[f], hi, lo);
+      split_double(stack.dz_dx[f], hi, lo);
       deep.set_deep_value(t, 4, s, hi), deep.set_deep_value(t, 5, s, lo);
-      split(stack.dz_dy[f], hi, lo);
+      split_double(stack.dz_dy[f], hi, lo);
       deep.set_deep_value(t, 6, s, hi), deep.set_deep_value(t, 7, s, lo);
       deep.set_deep_value(t, kAlphaChannel, s, stack.translucent() ? stack.alpha[f] : 1.0f);
     }
@@ -108,9 +100,9 @@ LayerStack read_deep_exr(const std::string& file) {
       size_t f = stack.offsets[t] + s;
       auto u = [&](int c) { return deep.deep_value_uint(t, channel[c], s); };
       stack.facing[f] = uint8_t(u(1));
-      stack.depth[f] = join(u(2), u(3));
-      stack.dz_dx[f] = join(u(4), u(5));
-      stack.dz_dy[f] = join(u(6), u(7));
+      stack.depth[f] = join_double(u(2), u(3));
+      stack.dz_dx[f] = join_double(u(4), u(5));
+      stack.dz_dy[f] = join_double(u(6), u(7));
       if (channel[kAlphaChannel] >= 0) {
         const float alpha = deep.deep_value(t, channel[kAlphaChannel], s);
         if (alpha != 1.0f && stack.alpha.empty()) stack.alpha.assign(total, 1.0f);
