@@ -46,7 +46,7 @@ const Fixture& fixture() {
 TEST(Screening, EstimateAndStandardErrorByHand) {
   ScreenSample sample;
   sample.fixed_error = 5;
-  sample.fragments = 100;
+  sample.weight = 100;
   ScreenStratum part;
   part.runs = 4;
   part.run_begin = {0, 1, 2};
@@ -110,7 +110,7 @@ TEST(Screening, SampledUnitsAgreeWithTheFullEvaluation) {
   for (const auto& s : sample.strata)
     pilot_runs.insert(pilot_runs.end(), s.pilot.begin(), s.pilot.end());
   const ScreenEstimate pilot = estimate_mean_error(sample, pilot_runs);
-  EXPECT_NEAR(pilot.mean, pilot_total / double(sample.fragments), 1e-15);
+  EXPECT_NEAR(pilot.mean, pilot_total / sample.weight, 1e-15);
   EXPECT_EQ(pilot.se, 0.0);
 }
 

@@ -38,11 +38,6 @@ struct OitOptions {
   CommonOptions common;
 };
 
-struct CameraFrame {
-  std::string scene;
-  DeepFrame frame;
-};
-
 std::string describe(const OitParams& p) {
   return "depth warp: logarithmic between each camera's nearest and farthest transparent "
          "fragment (docs/transparency.md §2); MBOIT beta " +
@@ -67,17 +62,7 @@ int run_oit(const OitOptions& options) {
   if (run.techniques.empty()) throw InputError("techniques: expected at least one technique");
   for (const auto& name : run.techniques) make_oit_technique(name, params);  // names fail here
   const DatasetDesc dataset = load_dataset(config.string("dataset"));
-  const std::vector<Scene> scenes = build_dataset_scenes(dataset);
-  std::vector<CameraFrame> frames;
-  for (const auto& scene : scenes)
-    for (const auto& camera : scene.cameras) {
-      frames.push_back({scene.name, render_deep_frame(scene, camera, threads)});
-      check_frame_has_transparency(frames.back().frame, scene.name);
-    }
-  if (frames.empty())
-    throw InputError("dataset " + dataset.name +
-                     ": no scene names a camera (oit renders cameras; add `cameras:` with "
-                     "position, target, fov and resolution to a scene file)");
+  const std::vector<SceneFrame> frames = render_dataset_frames(dataset, threads);
 
   StagedOutputDir out(options.common.out, options.common.force);
   if (run.images) std::filesystem::create_directories(out.staging() / "images");

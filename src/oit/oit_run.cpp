@@ -45,6 +45,22 @@ void check_frame_has_transparency(const DeepFrame& frame, const std::string& sce
                    "part with opacity < 1 in its view; oit measures nothing there)");
 }
 
+std::vector<SceneFrame> render_dataset_frames(const DatasetDesc& dataset, int threads) {
+  const std::vector<Scene> scenes = build_dataset_scenes(dataset);
+  std::vector<SceneFrame> frames;
+  for (const auto& scene : scenes)
+    for (const auto& camera : scene.cameras) {
+      frames.push_back({scene.name, render_deep_frame(scene, camera, threads)});
+      check_frame_has_transparency(frames.back().frame, scene.name);
+    }
+  if (frames.empty())
+    throw InputError(
+        "dataset " + dataset.name +
+        ": no scene names a camera (transparency is measured on cameras; add `cameras:` with "
+        "position, target, fov and resolution to a scene file)");
+  return frames;
+}
+
 namespace {
 
 // What every technique is compared with, computed once per frame: per fragment (frame order) the

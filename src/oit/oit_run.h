@@ -5,10 +5,12 @@
 #include <string>
 #include <vector>
 
+#include "eval/evaluation.h"
 #include "oit/color_difference.h"
 #include "oit/deep_frame.h"
 #include "oit/oit_metrics.h"
 #include "oit/oit_technique.h"
+#include "scene/dataset.h"
 #include "util/option_record.h"
 
 namespace mb {
@@ -35,6 +37,15 @@ struct OitFrameResult {
   std::vector<OitStats> stats;               // per technique
   std::vector<double> seconds;               // per technique, wall clock
 };
+
+// A camera's deep frame and the scene it shows.
+struct SceneFrame {
+  std::string scene;
+  DeepFrame frame;
+};
+// Every camera of every scene of `dataset`, rendered; InputError when a camera sees no transparent
+// geometry or no scene has a camera.
+std::vector<SceneFrame> render_dataset_frames(const DatasetDesc& dataset, int threads);
 
 // InputError naming the camera when its frame holds no transparent fragment (nothing to measure;
 // the warp would have no range).

@@ -9,6 +9,7 @@
 #include "basis/basis.h"
 #include "eval/error_stats.h"
 #include "report/darkening.h"
+#include "report/sweep_transparency.h"
 #include "shadow/fragments.h"
 #include "sweep/candidates.h"
 #include "sweep/run_identity.h"
@@ -39,27 +40,8 @@ const ResultRow* find_row(const std::vector<ResultRow>& rows, const std::string&
   return it == rows.end() ? nullptr : &*it;
 }
 
-// Candidates strictly better than `mean`.
-size_t better_than(const SweepSeries& s, double mean) {
-  return size_t(std::lower_bound(s.ranked.begin(), s.ranked.end(), mean,
-                                 [](const ResultRow& r, double m) { return r.mean < m; }) -
-                s.ranked.begin());
-}
-
 std::string pct(double fraction) {
   return percent_text(fraction) + " %";
-}
-
-std::string rank_text(const SweepSeries& s, double mean) {
-  const size_t better = better_than(s, mean);
-  std::ostringstream out;
-  if (better == s.ranked.size()) {
-    out << "behind all " << s.ranked.size() << " candidates";
-    return out.str();
-  }
-  out << "rank " << better + 1 << " of " << s.ranked.size() << " (" << better << " better, "
-      << percent_text(double(better) / double(s.ranked.size())) << " %)";
-  return out.str();
 }
 
 uint64_t planned_total(const SweepSeries& s) {
@@ -67,15 +49,16 @@ uint64_t planned_total(const SweepSeries& s) {
   return it == s.meta.end() ? 0 : binomial(std::stoi(it->second), s.size);
 }
 
-std::string row_line(size_t rank, const ResultRow& r) {
+std::string row_line(size_t rank, const ResultRow& r, bool transparency) {
   std::ostringstream s;
+  const std::string name = r.name + (transparency ? mboit_basis_mark(r.name) : "");
   if (r.estimated) {  // an estimate: its standard error, and nothing the sample cannot tell
-    s << "| " << rank << " | " << r.id << " | " << r.name << " | ≈ " << percent_text(r.mean)
-      << " ± " << percent_text(r.se) << " (estimate) | - | - | " << r.solved << " of a sample | "
+    s << "| " << rank << " | " << r.id << " | " << name << " | ≈ " << percent_text(r.mean) << " ± "
+      << percent_text(r.se) << " (estimate) | - | - | " << r.solved << " of a sample | "
       << r.unstable << " |";
     return s.str();
   }
-  s << "| " << rank << " | " << r.id << " | " << r.name << " | " << percent_text(r.mean) << " | "
+  s << "| " << rank << " | " << r.id << " | " << name << " | " << percent_text(r.mean) << " | "
     << percent_text(r.leak) << " | " << darkening_text(r.dark, r.max_dark, r.darkening_bound)
     << " | " << r.solved << " | " << (r.infeasible + r.unstable) << " |";
   return s.str();
@@ -281,6 +264,12 @@ void findings(std::ostringstream& md, const std::vector<SweepSeries>& series) {
 
 }  // namespace
 
+size_t better_than(const SweepSeries& s, double mean) {
+  return size_t(std::lower_bound(s.ranked.begin(), s.ranked.end(), mean,
+                                 [](const ResultRow& r, double m) { return r.mean < m; }) -
+                s.ranked.begin());
+}
+
 double SweepSeries::median() const {
   const size_t n = ranked.size();
   return n % 2 ? ranked[n / 2].mean : 0.5 * (ranked[n / 2 - 1].mean + ranked[n / 2].mean);
@@ -288,6 +277,18 @@ double SweepSeries::median() const {
 
 size_t SweepSeries::within(double margin) const {
   return better_than(*this, best() + margin * (1 + 1e-12));
+}
+
+std::string rank_text(const SweepSeries& s, double mean) {
+  const size_t better = better_than(s, mean);
+  std::ostringstream out;
+  if (better == s.ranked.size()) {
+    out << "behind all " << s.ranked.size() << " candidates";
+    return out.str();
+  }
+  out << "rank " << better + 1 << " of " << s.ranked.size() << " (" << better << " better, "
+      << percent_text(double(better) / double(s.ranked.size())) << " %)";
+  return out.str();
 }
 
 std::vector<SweepSeries> load_sweep_series(const std::vector<std::string>& databases) {
@@ -444,6 +445,7 @@ std::string summary_lines(const std::vector<SweepSeries>& series) {
 std::string sweep_report_markdown(const std::vector<SweepSeries>& series,
                                   const std::string& histogram_note) {
   const SweepSeries& main = main_series(series);
+  const bool transparency = main.transparency();
   std::ostringstream md;
   md << "# Sweep report\n\n" << summary_lines(series);
   for (const auto& s : series) {
@@ -467,8 +469,10 @@ std::string sweep_report_markdown(const std::vector<SweepSeries>& series,
   md << "- LPs: " << lps << ", of which infeasible or unstable: " << failures << " ("
      << percent_text(lps ? double(failures) / double(lps) : 0)
      << " %; these fragments count as lit)\n\n"
-     << protocol_text(meta["reference"] == "receiver_plane" ? Reference::ReceiverPlane
-                                                            : Reference::Biased)
+     << (transparency
+             ? transparency_protocol_text()
+             : protocol_text(meta["reference"] == "receiver_plane" ? Reference::ReceiverPlane
+                                                                   : Reference::Biased))
      << "\n\n";
   if (const ResultRow* oracle = find_row(main.references, "oracle");
       oracle && meta["reference"] == "receiver_plane")
@@ -485,12 +489,15 @@ std::string sweep_report_markdown(const std::vector<SweepSeries>& series,
          << " exact means (the candidates whose interval reached the best ones, and the pilot). "
             "Estimates are marked ≈ with their standard error in the tables.\n\n";
   md << histogram_note;
-  findings(md, series);
+  if (transparency)
+    transparency_findings(md, series);
+  else
+    findings(md, series);
 
-  md << "## Reference techniques on the same dataset\n\n| technique | mean error % | leak % | "
-        "over-darkening % | "
-        "rank among "
-     << main.label << " |\n|---|---|---|---|---|\n";
+  const std::string columns =
+      transparency ? "T too high % | T too low %" : "leak % | over-darkening %";
+  md << "## Reference techniques on the same dataset\n\n| technique | mean error % | " << columns
+     << " | rank among " << main.label << " |\n|---|---|---|---|---|\n";
   std::vector<DarkeningRow> darkening;
   for (const auto& r : main.references) {
     md << "| " << r.name << " | " << percent_text(r.mean) << " | " << percent_text(r.leak) << " | "
@@ -501,9 +508,8 @@ std::string sweep_report_markdown(const std::vector<SweepSeries>& series,
   }
   md << "\n" << darkening_notes(darkening);
 
-  const std::string header =
-      "| rank | id | functions | mean error % | leak % | over-darkening % | LPs solved | failed |\n"
-      "|---|---|---|---|---|---|---|---|\n";
+  const std::string header = "| rank | id | functions | mean error % | " + columns +
+                             " | LPs solved | failed |\n|---|---|---|---|---|---|---|---|\n";
   for (const auto& s : series) {
     const auto& ranked = s.ranked;
     // Each candidate once: the worst 10 start after the best 50 when there are fewer than 60.
@@ -512,11 +518,12 @@ std::string sweep_report_markdown(const std::vector<SweepSeries>& series,
     md << "## " << (best == ranked.size() ? "All " : "Best ") << best << " candidates: " << s.label
        << "\n\n"
        << header;
-    for (size_t i = 0; i < best; ++i) md << row_line(i + 1, ranked[i]) << "\n";
+    for (size_t i = 0; i < best; ++i) md << row_line(i + 1, ranked[i], transparency) << "\n";
     if (worst_from < ranked.size()) {
       md << "\n## Worst " << ranked.size() - worst_from << " candidates: " << s.label << "\n\n"
          << header;
-      for (size_t i = worst_from; i < ranked.size(); ++i) md << row_line(i + 1, ranked[i]) << "\n";
+      for (size_t i = worst_from; i < ranked.size(); ++i)
+        md << row_line(i + 1, ranked[i], transparency) << "\n";
     }
     md << "\n";
   }

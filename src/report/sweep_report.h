@@ -25,7 +25,17 @@ struct SweepSeries {
   double median() const;
   // Candidates whose mean error is at most the best's plus `margin` (absolute, as a fraction).
   size_t within(double margin) const;
+  // A sweep of target transparency (sweep/sweep_target.h); older databases are shadow sweeps.
+  bool transparency() const {
+    const auto it = meta.find("target");
+    return it != meta.end() && it->second == "transparency";
+  }
 };
+
+// Candidates of `s` strictly better than `mean`.
+size_t better_than(const SweepSeries& s, double mean);
+// "rank r of N (b better, p %)", or "behind all N candidates".
+std::string rank_text(const SweepSeries& s, double mean);
 
 // Opens each database (InputError for one with no candidates, or for series that are not
 // comparable: another dataset, reference, kernel, bias or LP discretisation).

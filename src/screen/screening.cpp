@@ -71,6 +71,33 @@ size_t ScreenSample::runs() const {
   return n;
 }
 
+ScreenStratum draw_screen_stratum(const ScreenUnits& units, size_t index, double fraction,
+                                  uint64_t seed) {
+  ScreenStratum s;
+  s.runs = units.units();
+  s.lps = units.lps;
+  for (double p : units.pilot) s.pilot_total += p;
+  const size_t want =
+      fraction >= 1 ? s.runs
+                    : std::min(s.runs, std::max<size_t>(std::min<size_t>(2, s.runs),
+                                                        size_t(std::ceil(fraction * s.runs))));
+  std::vector<std::pair<uint64_t, size_t>> keyed;
+  for (size_t r = 0; r < s.runs; ++r)
+    keyed.push_back({mix(mix(seed ^ (uint64_t(index) << 40)) ^ units.key[r]), r});
+  std::partial_sort(keyed.begin(), keyed.begin() + long(want), keyed.end());
+  std::vector<size_t> chosen;
+  for (size_t i = 0; i < want; ++i) chosen.push_back(keyed[i].second);
+  std::sort(chosen.begin(), chosen.end());
+  for (size_t r : chosen) {
+    s.pilot.push_back(units.pilot[r]);
+    s.run_begin.push_back(s.list.size());
+    s.list.insert(s.list.end(), units.items.begin() + long(units.begin[r]),
+                  units.items.begin() + long(units.begin[r + 1]));
+  }
+  s.run_begin.push_back(s.list.size());
+  return s;
+}
+
 ScreenSample make_screen_sample(const std::vector<ViewData>& views,
                                 const std::vector<std::vector<uint32_t>>& needs_lp,
                                 const std::vector<std::vector<double>>& pilot_shadow,
@@ -80,7 +107,7 @@ ScreenSample make_screen_sample(const std::vector<ViewData>& views,
   for (size_t v = 0; v < views.size(); ++v) {
     const Fragments& fragments = views[v].fragments;
     const std::vector<uint32_t>& list = needs_lp[v];
-    sample.fragments += fragments.size();
+    sample.weight += double(fragments.size());
     // G = 0 for every candidate where no LP is needed: |PCF - 0| once, in fragment order.
     std::vector<bool> lp(fragments.size(), false);
     for (uint32_t f : list) lp[f] = true;
@@ -94,41 +121,23 @@ ScreenSample make_screen_sample(const std::vector<ViewData>& views,
       const size_t t = fragments.texel[f];
       return uint64_t(t / width) * blocks + (t % width) / kScreenUnitColumns;
     };
-    std::vector<uint32_t> by_unit = list;  // stable: texel order within a unit
-    std::stable_sort(by_unit.begin(), by_unit.end(),
+    ScreenUnits units;
+    units.items = list;  // stable: texel order within a unit
+    std::stable_sort(units.items.begin(), units.items.end(),
                      [&](uint32_t a, uint32_t b) { return unit_of(a) < unit_of(b); });
-    std::vector<size_t> begins;
+    const std::vector<uint32_t>& by_unit = units.items;
     for (size_t i = 0; i < by_unit.size(); ++i)
-      if (i == 0 || unit_of(by_unit[i]) != unit_of(by_unit[i - 1])) begins.push_back(i);
-    begins.push_back(by_unit.size());
-    ScreenStratum s;
-    s.runs = begins.size() - 1;
-    s.lps = list.size();
-    std::vector<double> pilot(s.runs);
-    for (size_t r = 0; r < s.runs; ++r) {
-      pilot[r] = unit_error(std::span(by_unit).subspan(begins[r], begins[r + 1] - begins[r]),
-                            fragments.pcf, &pilot_shadow[v]);
-      s.pilot_total += pilot[r];
-    }
-    const size_t want =
-        fraction >= 1 ? s.runs
-                      : std::min(s.runs, std::max<size_t>(std::min<size_t>(2, s.runs),
-                                                          size_t(std::ceil(fraction * s.runs))));
-    std::vector<std::pair<uint64_t, size_t>> keyed;
-    for (size_t r = 0; r < s.runs; ++r)
-      keyed.push_back({mix(mix(seed ^ (uint64_t(v) << 40)) ^ unit_of(by_unit[begins[r]])), r});
-    std::partial_sort(keyed.begin(), keyed.begin() + long(want), keyed.end());
-    std::vector<size_t> chosen;
-    for (size_t i = 0; i < want; ++i) chosen.push_back(keyed[i].second);
-    std::sort(chosen.begin(), chosen.end());
-    for (size_t r : chosen) {
-      s.pilot.push_back(pilot[r]);
-      s.run_begin.push_back(s.list.size());
-      s.list.insert(s.list.end(), by_unit.begin() + long(begins[r]),
-                    by_unit.begin() + long(begins[r + 1]));
-    }
-    s.run_begin.push_back(s.list.size());
-    sample.strata.push_back(std::move(s));
+      if (i == 0 || unit_of(by_unit[i]) != unit_of(by_unit[i - 1])) {
+        units.begin.push_back(i);
+        units.key.push_back(unit_of(by_unit[i]));
+      }
+    units.begin.push_back(by_unit.size());
+    units.lps = list.size();
+    for (size_t r = 0; r < units.units(); ++r)
+      units.pilot.push_back(unit_error(
+          std::span(by_unit).subspan(units.begin[r], units.begin[r + 1] - units.begin[r]),
+          fragments.pcf, &pilot_shadow[v]));
+    sample.strata.push_back(draw_screen_stratum(units, v, fraction, seed));
   }
   return sample;
 }
@@ -172,7 +181,7 @@ ScreenEstimate estimate_mean_error(const ScreenSample& sample,
     for (size_t i = 0; i < n; ++i) residual.push_back(y[i] - (n == s.runs ? 0.0 : s.pilot[i]));
     y += n;
   }
-  const double n = double(std::max<uint64_t>(sample.fragments, 1));
+  const double n = sample.weight > 0 ? sample.weight : 1;
   const double variance = sample_variance(sample, [&](size_t i) { return residual[i]; });
   return {total / n, std::sqrt(variance) / n};
 }
@@ -180,7 +189,7 @@ ScreenEstimate estimate_mean_error(const ScreenSample& sample,
 double paired_standard_error(const ScreenSample& sample, const std::vector<double>& a,
                              const std::vector<double>& b) {
   const double variance = sample_variance(sample, [&](size_t i) { return a[i] - b[i]; });
-  return std::sqrt(variance) / double(std::max<uint64_t>(sample.fragments, 1));
+  return std::sqrt(variance) / (sample.weight > 0 ? sample.weight : 1);
 }
 
 std::vector<size_t> candidates_to_confirm(const ScreenSample& sample,

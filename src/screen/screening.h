@@ -45,11 +45,30 @@ struct ScreenSample {
   double fraction = 0;
   std::vector<ScreenStratum> strata;  // one per view, in view order
   double fixed_error = 0;             // sum of |PCF - 0| over the fragments without an LP
-  uint64_t fragments = 0;             // every receiver of every view
-  size_t sampled_runs() const;        // sampled units over all strata: a run-error vector's size
+  // The mean's denominator: every receiver of every view (shadows), or the opacity of every
+  // transparent fragment (transparency, whose errors are opacity-weighted).
+  double weight = 0;
+  size_t sampled_runs() const;  // sampled units over all strata: a run-error vector's size
   uint64_t sampled_lps() const;
   size_t runs() const;
 };
+
+// One stratum's units before the draw, as a sweep target cuts its work: each unit's LP work items
+// in order (fragments, or pixels for transparency), the key the seeded draw hashes, and the
+// pilot's error sum of each unit.
+struct ScreenUnits {
+  std::vector<uint32_t> items;  // unit by unit
+  std::vector<size_t> begin;    // where each unit begins in `items`, size appended
+  std::vector<uint64_t> key;    // per unit: unique within the stratum
+  std::vector<double> pilot;    // per unit
+  uint64_t lps = 0;             // the stratum's LPs
+  size_t units() const { return begin.empty() ? 0 : begin.size() - 1; }
+};
+// Stratum `index` of a sample: ceil(fraction x its units) of them (at least 2 where it has 2, all
+// with fraction >= 1), chosen by a seeded hash of (seed, index, key), identical for every
+// candidate.
+ScreenStratum draw_screen_stratum(const ScreenUnits& units, size_t index, double fraction,
+                                  uint64_t seed);
 
 // The sample: in each view, ceil(fraction x its units) of them (at least 2 where it has 2, all
 // with fraction >= 1), chosen by a seeded hash of (seed, view, unit), identical for every

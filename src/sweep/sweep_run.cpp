@@ -4,14 +4,18 @@
 #include <chrono>
 #include <cstdio>
 #include <ctime>
+#include <limits>
 #include <map>
 #include <set>
+#include <stdexcept>
 #include <tuple>
 
 #include "eval/eval_config.h"
 #include "lp/solution.h"
+#include "oit/oit_run.h"
 #include "scene/dataset_options.h"
 #include "sweep/candidate_evaluation.h"
+#include "sweep/oit_target.h"
 #include "sweep/results_store.h"
 #include "sweep/run_identity.h"
 #include "sweep/sweep_directory.h"
@@ -19,6 +23,7 @@
 #include "techniques/lp_technique.h"
 #include "techniques/technique.h"
 #include "util/error.h"
+#include "util/number_text.h"
 #include "util/option_record.h"
 #include "util/output_dir.h"
 #include "util/progress.h"
@@ -27,6 +32,8 @@
 namespace mb {
 
 namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 const std::vector<OptionRecord<SweepSettings>>& candidate_options() {
   static const std::vector<OptionRecord<SweepSettings>> records{
@@ -44,6 +51,24 @@ const std::vector<OptionRecord<SweepSettings>>& candidate_options() {
        &SweepSettings::sample},
       {{"sample_seed", OptionType::Integer, "1", "Seed of the sample.", 0, 1e18},
        &SweepSettings::sample_seed},
+      {{"target",
+        OptionType::String,
+        "shadows",
+        "What candidates are measured on (docs/sweeps.md, \"Targets\"): shadows, Problem 1's "
+        "G per receiver of a shadow dataset against PCF; transparency, the LP's sharp "
+        "absorbance bound per fragment of a transparency dataset's cameras against the exact "
+        "transmittance (opacity-weighted, docs/transparency.md §7; `resolution` and the "
+        "kernel's keys do not apply).",
+        -kInfinity,
+        kInfinity,
+        {"shadows", "transparency"}},
+       &SweepSettings::target},
+      {{"oit_references", OptionType::StringList,
+        "[exact, unsorted, wboit, mboit_power4, mboit_power6, mboit_power8, mboit_trig2, "
+        "mboit_trig3, mboit_trig4, lp:power6]",
+        "target transparency: oit techniques evaluated once on the same frames, for the report "
+        "(MBOIT at oit.beta, lp:<basis> at lp.beta)."},
+       &SweepSettings::oit_references},
       {{"references", OptionType::StringList,
         "[pcf, vsm, esm, hamburger4, hausdorff4, hamburger6, tmsm, lp:power4, lp:trig4]",
         "Techniques evaluated once on the same dataset, for the report."},
@@ -55,7 +80,7 @@ const std::vector<OptionRecord<SweepSettings>>& candidate_options() {
 const std::vector<OptionRecord<ScreenSettings>>& screen_options() {
   static const std::vector<OptionRecord<ScreenSettings>> records{
       {{"screen.fraction", OptionType::Number, "0",
-        "Screening: every candidate first on this share of each view's units (8 x 16 "
+        "Screening: every candidate first on this share of each view's units (a row of 16 "
         "texels, the same for all), with a standard error; 0 = every candidate exactly.",
         0, 1},
        &ScreenSettings::fraction},
@@ -88,8 +113,16 @@ const std::vector<OptionRecord<ScreenSettings>>& screen_options() {
 
 }  // namespace
 
+// oit.beta, declared with the oit command's options: the MBOIT reference rows' overestimation.
+OptionSpec oit_beta_spec() {
+  for (const auto& spec : option_specs(oit_run_options()))
+    if (spec.name == "oit.beta") return spec;
+  throw std::logic_error("oit_run_options lacks oit.beta");
+}
+
 std::vector<OptionSpec> sweep_option_specs() {
   std::vector<OptionSpec> specs = option_specs(candidate_options());
+  specs.push_back(oit_beta_spec());
   for (auto& s : option_specs(screen_options())) specs.push_back(s);
   return specs;
 }
@@ -97,16 +130,20 @@ std::vector<OptionSpec> sweep_option_specs() {
 SweepSettings sweep_settings_from(const Config& config, int threads) {
   SweepSettings s;
   s.eval = shadow_settings_from(config, threads);
-  if (s.eval.technique.lp_beta != 0)
-    throw InputError("lp.beta: " + std::to_string(s.eval.technique.lp_beta) +
-                     "; a sweep ranks bases by their sharp lower bound, expected 0 (eval takes "
-                     "lp.beta > 0)");
   const DatasetOptions dataset = dataset_options_from(config);
   s.dataset = dataset.dataset;
   s.resolution = dataset.resolution;
   read_options(config, candidate_options(), s);
+  // A transparency sweep may rank MBOIT's blend A- + beta (A+ - A-) of any basis; a shadow sweep
+  // ranks the sharp bound (the blend over-darkens, docs/reference.md §2).
+  if (s.eval.technique.lp_beta != 0 && s.target != "transparency")
+    throw InputError("lp.beta: " + std::to_string(s.eval.technique.lp_beta) +
+                     "; a shadow sweep ranks bases by their sharp lower bound, expected 0 (eval "
+                     "takes lp.beta > 0; so does a sweep with target transparency)");
   read_options(config, screen_options(), s.screen);
-  s.references = with_oracle_row(s.references, s.eval.bias);
+  s.oit_beta = config.number("oit.beta");
+  s.references =
+      s.target == "transparency" ? s.oit_references : with_oracle_row(s.references, s.eval.bias);
   s.config_yaml = config.to_yaml();
   return s;
 }
@@ -119,11 +156,11 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-std::vector<std::pair<std::string, double>> view_errors(const std::vector<ViewData>& views,
+std::vector<std::pair<std::string, double>> view_errors(const SweepTarget& target,
                                                         const std::vector<ErrorStats>& per_view) {
   std::vector<std::pair<std::string, double>> out;
-  for (size_t v = 0; v < views.size(); ++v)
-    out.push_back({views[v].scene + "/" + views[v].view, per_view[v].mean()});
+  const std::vector<std::string> names = target.view_names();
+  for (size_t v = 0; v < names.size(); ++v) out.push_back({names[v], per_view[v].mean()});
   return out;
 }
 
@@ -165,8 +202,8 @@ void check_plan(const SweepPlan& plan, const EvalSettings& eval) {
 class SweepRun {
  public:
   SweepRun(const SweepSettings& s, const SweepJob& job, const SweepPlan& plan,
-           const std::vector<ViewData>& views, ResultsStore& store)
-      : s_(s), job_(job), plan_(plan), views_(views), store_(store), evaluator_(views, s.eval) {}
+           const SweepTarget& target, ResultsStore& store)
+      : s_(s), job_(job), plan_(plan), target_(target), store_(store) {}
 
   void evaluate_references();
   void run(const std::vector<uint64_t>& mine);
@@ -187,21 +224,21 @@ class SweepRun {
   const SweepSettings& s_;
   const SweepJob& job_;
   const SweepPlan& plan_;
-  const std::vector<ViewData>& views_;
+  const SweepTarget& target_;
   ResultsStore& store_;
-  CandidateEvaluator evaluator_;
 };
 
 // A candidate's committed row from its exact evaluation.
 ResultRow SweepRun::exact_row(uint64_t id, const CandidateResult& result,
                               Clock::time_point start) const {
   ResultRow row =
-      make_result_row(id, plan_.name(id), result.overall, view_errors(views_, result.per_view));
+      make_result_row(id, plan_.name(id), result.overall, view_errors(target_, result.per_view));
   row.solved = result.solved;
   row.skipped = result.skipped;
   row.infeasible = result.infeasible;
   row.unstable = result.unstable;
-  row.darkening_bound = kLpDarkeningBound;
+  row.darkening_bound = target_.candidate_darkening_bound();
+  row.darkening_reason = target_.candidate_darkening_reason();
   row.seconds = seconds_since(start);
   return row;
 }
@@ -213,21 +250,11 @@ void SweepRun::evaluate_references() {
   for (const auto& name : s_.references) {
     if (have.count(name)) continue;
     const auto start = Clock::now();
-    auto technique = make_technique(name, s_.eval.technique);
-    ErrorStats total;
-    std::vector<ErrorStats> per_view;
-    for (const auto& view : views_) {
-      TechniqueResult result = evaluate_technique(view, name, s_.eval, nullptr);
-      ErrorStats stats;
-      stats.add_all(view.fragments.pcf, result.shadow);
-      stats.failures = result.failures;
-      total.merge(stats);
-      per_view.push_back(stats);
-    }
-    ResultRow row = make_result_row(0, name, total, view_errors(views_, per_view));
-    row.unstable = total.failures;
-    row.darkening_bound = technique->darkening_bound();
-    row.darkening_reason = technique->darkening_reason();
+    const ReferenceResult r = target_.reference(name);
+    ResultRow row = make_result_row(0, name, r.overall, view_errors(target_, r.per_view));
+    row.unstable = r.overall.failures;
+    row.darkening_bound = r.darkening_bound;
+    row.darkening_reason = r.darkening_reason;
     row.seconds = seconds_since(start);
     store_.put_reference(row);
   }
@@ -240,16 +267,10 @@ void SweepRun::evaluate_exactly(const std::vector<uint64_t>& todo, const char* w
     const auto start = Clock::now();
     CandidateResult result;
     try {
-      result = evaluator_.evaluate(Basis::parse(plan_.functions(id)));
+      result = target_.evaluate(Basis::parse(plan_.functions(id)));
     } catch (const InputError& e) {
       log("\ncandidate %llu: %s\n", (unsigned long long)id, e.what());
-      result.unstable = evaluator_.lp_fragments();
-      for (const auto& view : views_) {
-        ErrorStats stats;
-        stats.add_all(view.fragments.pcf, std::vector<double>(view.fragments.size(), 0.0));
-        result.overall.merge(stats);
-        result.per_view.push_back(stats);
-      }
+      result = target_.unanswered();
     }
     store_.put_candidate(exact_row(id, result, start));
     return result.solved + result.infeasible + result.unstable;
@@ -261,15 +282,14 @@ void SweepRun::run(const std::vector<uint64_t>& mine) {
   const std::vector<uint64_t> todo = not_done(mine, store_.candidate_ids());
   log("sweep: %zu candidates in this shard, %zu done, %zu to go; %llu LPs per candidate\n",
       mine.size(), mine.size() - todo.size(), todo.size(),
-      (unsigned long long)evaluator_.lp_fragments());
+      (unsigned long long)target_.lp_fragments());
   evaluate_exactly(todo, "sweep");
 }
 
 ScreenSample SweepRun::sample_of(int stage,
                                  const std::vector<std::vector<double>>& pilot_shadow) const {
-  return make_screen_sample(views_, evaluator_.lp_lists(), pilot_shadow,
-                            stage == 1 ? s_.screen.fraction : s_.screen.refine,
-                            s_.screen.seed + uint64_t(stage - 1));
+  return target_.screen_sample(pilot_shadow, stage == 1 ? s_.screen.fraction : s_.screen.refine,
+                               s_.screen.seed + uint64_t(stage - 1));
 }
 
 // One candidate's estimate at `stage` on `sample`.
@@ -281,13 +301,13 @@ EstimateRow SweepRun::estimate(int stage, uint64_t id, const ScreenSample& sampl
   row.name = plan_.name(id);
   CandidateResult counts;
   try {
-    row.run_errors = evaluator_.screen(Basis::parse(plan_.functions(id)), sample, &counts);
+    row.run_errors = target_.screen(Basis::parse(plan_.functions(id)), sample, &counts);
   } catch (const InputError& e) {
     // As in the exact sweep: every LP fragment failed, shown lit (G = 0).
     log("\ncandidate %llu: %s\n", (unsigned long long)id, e.what());
     counts = {};
     counts.unstable = sample.sampled_lps();
-    row.run_errors = sampled_unit_errors(sample, views_, {});
+    row.run_errors = target_.unanswered_unit_errors(sample);
   }
   const ScreenEstimate e = estimate_mean_error(sample, row.run_errors);
   row.mean = e.mean;
@@ -305,7 +325,7 @@ void SweepRun::screen_stage(int stage, const ScreenSample& sample,
   log("sweep: screening stage %d: %zu candidates (%zu done) on %zu of %zu units, %llu of %llu "
       "LPs per candidate\n",
       stage, ids.size(), ids.size() - todo.size(), sample.sampled_runs(), sample.runs(),
-      (unsigned long long)sample.sampled_lps(), (unsigned long long)evaluator_.lp_fragments());
+      (unsigned long long)sample.sampled_lps(), (unsigned long long)target_.lp_fragments());
   for_each_candidate(todo, stage == 1 ? "screen" : "refine", job_.quiet, [&](uint64_t id) {
     const EstimateRow row = estimate(stage, id, sample);
     store_.put_estimate(row);
@@ -350,7 +370,7 @@ void SweepRun::screen_and_confirm(const std::vector<uint64_t>& mine) {
   log("sweep: the screen's pilot %s, exactly\n", plan_.name(pilot).c_str());
   const auto start = Clock::now();
   const CandidateResult result =
-      evaluator_.evaluate(Basis::parse(plan_.functions(pilot)), &pilot_shadow);
+      target_.evaluate(Basis::parse(plan_.functions(pilot)), &pilot_shadow);
   if (std::binary_search(mine.begin(), mine.end(), pilot) && !store_.candidate_ids().count(pilot))
     store_.put_candidate(exact_row(pilot, result, start));
 
@@ -376,31 +396,80 @@ void SweepRun::screen_and_confirm(const std::vector<uint64_t>& mine) {
 
 }  // namespace
 
+namespace {
+
+// The transparency target's settings sentence (the report's and a resume's "settings").
+std::string describe_transparency(const SweepSettings& s) {
+  const auto& lp = s.eval.technique;
+  return "target transparency: lp:<candidate> with lp.beta " + round_trip(lp.lp_beta) +
+         " on the warped depth (logarithmic "
+         "between each camera's nearest and farthest transparent fragment, docs/transparency.md "
+         "§2), grid " +
+         std::to_string(lp.lp.grid) + " on [" + round_trip(lp.lp.lo) + ", " + round_trip(lp.lp.hi) +
+         "] and the pixel's fragment depths, backend " + lp.lp_backend +
+         "; error: opacity-weighted |T_ref - T|; MBOIT references at beta " +
+         round_trip(s.oit_beta);
+}
+
+// What the sweep measures, rendered before anything is written (bad input leaves no output).
+struct PreparedTarget {
+  std::vector<ViewData> views;     // shadows
+  std::vector<SceneFrame> frames;  // transparency
+  std::unique_ptr<SweepTarget> target;
+};
+
+PreparedTarget prepare_target(const SweepSettings& s, const DatasetDesc& dataset, bool quiet) {
+  PreparedTarget p;
+  if (s.target == "transparency") {
+    p.frames = render_dataset_frames(dataset, s.eval.threads);
+    // The warped depth spans [0, 1]: an interval that misses part of it cannot hold the pixels'
+    // own fragments (docs/transparency.md §3).
+    const auto& lp = s.eval.technique.lp;
+    if (lp.lo > 0 || lp.hi < 1)
+      throw InputError("lp.lo, lp.hi: [" + round_trip(lp.lo) + ", " + round_trip(lp.hi) +
+                       "] excludes part of the warped depth [0, 1] of target transparency "
+                       "(expected lp.lo <= 0 and lp.hi >= 1)");
+    OitParams params;
+    params.beta = s.oit_beta;
+    params.lp = s.eval.technique;
+    p.target = make_oit_target(p.frames, params, s.eval.threads);
+  } else {
+    p.views = prepare_views(dataset, s.resolution, s.eval, quiet);
+    check_lp_interval(p.views, s.eval.technique.lp.lo, s.eval.technique.lp.hi);
+    p.target = make_shadow_target(p.views, s.eval);
+  }
+  for (const auto& name : s.references) p.target->check_reference(name);
+  return p;
+}
+
+}  // namespace
+
 void run_sweep(const SweepSettings& s, const SweepJob& job) {
   const SweepPlan plan =
       make_sweep_plan(s.catalog, s.combination_size, s.candidates, s.sample, s.sample_seed);
   check_plan(plan, s.eval);
-  for (const auto& name : s.references) make_technique(name, s.eval.technique);  // names checked
+  if (s.target == "shadows")  // names checked before rendering
+    for (const auto& name : s.references) make_technique(name, s.eval.technique);
   const DatasetDesc dataset = load_dataset(s.dataset);
   if (job.out.empty()) throw InputError("--out: a sweep needs an output directory");
-  // Scenes are read and rendered before anything is written: bad input leaves no output.
-  const auto views = prepare_views(dataset, s.resolution, s.eval, job.quiet);
-  check_lp_interval(views, s.eval.technique.lp.lo, s.eval.technique.lp.hi);
+  const PreparedTarget prepared = prepare_target(s, dataset, job.quiet);
   // The output directory is the sweep's state: new unless resuming, then it must match.
   const std::string shard_text = std::to_string(job.shard) + "/" + std::to_string(job.shards);
   std::map<std::string, std::string> meta = measurement_meta(s.eval);
   meta.insert({{"dataset", dataset.name},
+               {"target", s.target},
                {"git_sha", collect_run_metadata(s.eval.threads, {}).git_sha},
                {"catalog_size", std::to_string(plan.catalog.size())},
                {"combination_size", std::to_string(plan.size)},
                {"planned", std::to_string(plan.ids.size())},
-               {"settings", describe_settings(s.eval)}});
+               {"settings", s.target == "transparency" ? describe_transparency(s)
+                                                       : describe_settings(s.eval)}});
   ResultsStore store = open_sweep_directory(
       job.out, {config_hash(s.config_yaml), shard_text, s.config_yaml, s.defaults_yaml}, meta,
       job.resume, job.force);
   write_file_atomically(job.out / ("run_" + std::to_string(std::time(nullptr)) + ".yaml"),
                         to_yaml(collect_run_metadata(s.eval.threads, job.arguments)));
-  SweepRun run(s, job, plan, views, store);
+  SweepRun run(s, job, plan, *prepared.target, store);
   run.evaluate_references();
   run.run(shard_ids(plan, job.shard, job.shards));
   if (!job.quiet)

@@ -26,6 +26,9 @@ struct ScreenSettings {
 // The sweep's options as typed fields (sweep_specs declares them).
 struct SweepSettings {
   EvalSettings eval;
+  std::string target = "shadows";           // sweep_target.h: shadows or transparency
+  std::vector<std::string> oit_references;  // the transparency target's reference rows
+  double oit_beta = 0.25;                   // their MBOIT overestimation (oit.beta)
   std::string dataset;
   int resolution = 0;
   std::vector<std::string> catalog, candidates, references;

@@ -53,7 +53,7 @@ int run(int argc, char** argv) {
   std::ofstream units;
   if (argc > 6) {
     units.open(argv[6]);
-    units << "# fixed_error " << every.fixed_error << " fragments " << every.fragments << "\n";
+    units << "# fixed_error " << every.fixed_error << " weight " << every.weight << "\n";
     units << "candidate,view,unit,lps,error\n";
     units.precision(17);
   }

@@ -1,0 +1,144 @@
+#include "report/sweep_transparency.h"
+
+#include <algorithm>
+#include <set>
+
+#include "eval/error_stats.h"
+#include "util/number_text.h"
+
+namespace mb {
+
+namespace {
+
+// MBOIT's bases that the catalog holds (docs/transparency.md §7). The power variants' moments
+// (2u - 1)^k span, with the constant, the same functions as u^k, so the LP is the same. The
+// trigonometric variants use frequencies (2 pi - theta) k with the wrapping zone theta = 0.1 pi;
+// the catalog has them for theta = 0 only.
+struct MboitBasis {
+  std::set<std::string> functions;
+  const char* label;
+};
+
+const std::vector<MboitBasis>& mboit_bases() {
+  static const std::vector<MboitBasis> bases = {
+      {{"z", "z^2", "z^3", "z^4"}, "MBOIT power4's basis"},
+      {{"z", "z^2", "z^3", "z^4", "z^5", "z^6"}, "MBOIT power6's basis"},
+      {{"sin(2 pi z)", "cos(2 pi z)", "sin(4 pi z)", "cos(4 pi z)"},
+       "MBOIT trig2's basis without the wrapping zone"},
+  };
+  return bases;
+}
+
+std::set<std::string> function_set(const std::string& candidate) {
+  std::set<std::string> out;
+  size_t at = 0;
+  while (at <= candidate.size()) {
+    size_t end = candidate.find(';', at);
+    if (end == std::string::npos) end = candidate.size();
+    std::string f = candidate.substr(at, end - at);
+    f.erase(0, f.find_first_not_of(' '));
+    f.erase(f.find_last_not_of(' ') + 1);
+    if (!f.empty()) out.insert(f);
+    at = end + 1;
+  }
+  return out;
+}
+
+const ResultRow* find_candidate(const SweepSeries& s, const std::set<std::string>& functions) {
+  for (const auto& r : s.ranked)
+    if (function_set(r.name) == functions) return &r;
+  return nullptr;
+}
+
+std::string pct(double fraction) {
+  return percent_text(fraction) + " %";
+}
+
+void finding_mboit_bases(std::ostringstream& md, const std::vector<SweepSeries>& series) {
+  md << "### MBOIT's bases among the candidates\n\n"
+        "Each candidate is judged by the sharp bound of its moments (lp.beta, default 0): MBOIT's "
+        "bases below are its closed forms' information, without their overestimation beta and "
+        "normalisation.\n\n";
+  bool any = false;
+  for (const auto& s : series)
+    for (const auto& b : mboit_bases()) {
+      if (int(b.functions.size()) != s.size) continue;
+      any = true;
+      const ResultRow* r = find_candidate(s, b.functions);
+      md << "- " << s.label << ", " << b.label << ": ";
+      if (!r) {
+        md << "not among the evaluated candidates\n";
+        continue;
+      }
+      md << r->name << ", " << (r->estimated ? "≈ " : "") << pct(r->mean) << ", "
+         << rank_text(s, r->mean) << "; the best: " << pct(s.best()) << " ("
+         << s.ranked.front().name << ")\n";
+    }
+  if (!any)
+    md << "- no MBOIT basis has " << main_series(series).size
+       << " functions (power4 and trig2 have 4, power6 has 6)\n";
+  md << "\nMBOIT trig2 and trig3 with the authors' wrapping zone use frequencies 1.9 pi k, outside "
+        "the catalog; give `candidates` or `oit_references` their functions to place them.\n\n";
+}
+
+void finding_closed_forms(std::ostringstream& md, const SweepSeries& main) {
+  md << "### The closed forms and references among the candidates\n\n";
+  bool any = false;
+  for (const auto& r : main.references) {
+    if (r.name == "exact") continue;
+    any = true;
+    md << "- " << r.name << ": " << pct(r.mean) << ", " << rank_text(main, r.mean) << "\n";
+  }
+  if (!any) md << "- no reference technique (option `oit_references`)\n";
+  md << "\nMBOIT's rows are its reconstruction (beta and the normalisation Gamma); a candidate's "
+        "row is the sharp bound of its moments, which only ever overestimates transmittance.\n\n";
+}
+
+void finding_deficit(std::ostringstream& md, const std::vector<SweepSeries>& series) {
+  double worst = 0, mean = 0;
+  std::string name;
+  for (const auto& s : series)
+    for (const auto& r : s.ranked) {
+      if (r.estimated) continue;
+      if (r.max_dark > worst) worst = r.max_dark, name = r.name;
+      mean = std::max(mean, r.dark);
+    }
+  md << "### Transmittance below the exact\n\n"
+        "The exact distribution of a pixel's absorbance is feasible for every candidate's LP, so "
+        "the exact LP never puts T below T_ref. The LP is solved for the moments rounded to "
+        "double, and where two fragments of a pixel lie close in warped depth that rounding moves "
+        "the bound (docs/transparency.md §7). Largest T_ref - T at one fragment over the exact "
+        "candidates: "
+     << round_trip(worst) << (name.empty() ? "" : " (" + name + ")")
+     << "; largest mean: " << pct(mean) << ".\n\n";
+}
+
+}  // namespace
+
+std::string transparency_protocol_text() {
+  return "Target transparency (docs/transparency.md §7). Errors are the opacity-weighted mean "
+         "|T_ref - T| over every transparent fragment of every camera, in percent: T_ref the exact "
+         "transmittance in front of the fragment (sorted compositing), T a candidate's e^{-b_0 "
+         "G}, G Problem 1's bound of the absorbance in front of the fragment from the pixel's "
+         "normalised absorbance moments on the warped depth, b_0 the total absorbance. 'T too "
+         "high' is the part where the candidate lets too much through (all of a sharp bound's "
+         "error), 'T too low' the rest. Reference rows are measured as `oit` measures them (the "
+         "transmittance the composite weighs each fragment with). Failures: fragments an LP could "
+         "not answer (T = 1).";
+}
+
+std::string mboit_basis_mark(const std::string& candidate) {
+  const std::set<std::string> functions = function_set(candidate);
+  for (const auto& b : mboit_bases())
+    if (b.functions == functions) return std::string(" (") + b.label + ")";
+  return "";
+}
+
+void transparency_findings(std::ostringstream& md, const std::vector<SweepSeries>& series) {
+  md << "## Findings\n\n";
+  finding_mboit_bases(md, series);
+  finding_closed_forms(md, main_series(series));
+  finding_deficit(md, series);
+}
+
+}  // namespace mb
