@@ -32,6 +32,22 @@ std::vector<double> warped(const Pixel& p) {
   return u;
 }
 
+TEST(OitCompositing, WarpsMapTheRangeOntoTheUnitInterval) {
+  // Logarithmic: the geometric mean of the ends maps to 1/2; linear: the arithmetic mean.
+  const DepthWarp log = DepthWarp::between(2, 8), lin = DepthWarp::between(2, 8, WarpKind::Linear);
+  EXPECT_EQ(log(2), 0);
+  EXPECT_EQ(log(8), 1);
+  EXPECT_NEAR(log(4), 0.5, 1e-15);
+  EXPECT_EQ(lin(2), 0);
+  EXPECT_EQ(lin(8), 1);
+  EXPECT_NEAR(lin(5), 0.5, 1e-15);
+  EXPECT_NEAR(lin(4), 1.0 / 3, 1e-15);
+  EXPECT_EQ(lin(9), 1);  // clamped
+  EXPECT_EQ(DepthWarp::between(3, 3, WarpKind::Linear)(3), 0);
+  EXPECT_EQ(warp_kind("linear"), WarpKind::Linear);
+  EXPECT_THROW(warp_kind("cubic"), InputError);
+}
+
 Pixel random_pixel(std::mt19937_64& rng, int count) {
   std::uniform_real_distribution<double> unit(0, 1);
   Pixel p;

@@ -39,7 +39,8 @@ struct OitOptions {
 };
 
 std::string describe(const OitParams& p) {
-  return "depth warp: logarithmic between each camera's nearest and farthest transparent "
+  return "depth warp: " + std::string(p.warp == WarpKind::Linear ? "linear" : "logarithmic") +
+         " between each camera's nearest and farthest transparent "
          "fragment (docs/transparency.md §2); MBOIT beta " +
          round_trip(p.beta) + ", moment bias " + round_trip(p.double_bias.power[0]) +
          " (double; float and 16-bit variants: the authors' code's biases); lp: grid " +
@@ -58,6 +59,7 @@ int run_oit(const OitOptions& options) {
   const int threads = resolve_thread_count(int(config.integer("threads")));
   OitParams params;
   params.beta = run.beta;
+  params.warp = warp_kind(run.warp);
   read_lp_params(config, params.lp);
   if (run.techniques.empty()) throw InputError("techniques: expected at least one technique");
   for (const auto& name : run.techniques) make_oit_technique(name, params);  // names fail here

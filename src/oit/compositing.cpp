@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "util/error.h"
+
 namespace mb {
 
 PixelFragments pixel_of(const DeepFrame& frame, size_t p) {
@@ -16,16 +18,23 @@ PixelFragments pixel_of(const DeepFrame& frame, size_t p) {
   return px;
 }
 
-DepthWarp DepthWarp::between(double nearest, double farthest) {
+DepthWarp DepthWarp::between(double nearest, double farthest, WarpKind kind) {
   DepthWarp w;
-  w.log_near = std::log(nearest);
-  w.log_range = std::log(farthest) - w.log_near;
+  w.linear = kind == WarpKind::Linear;
+  w.near = w.linear ? nearest : std::log(nearest);
+  w.range = (w.linear ? farthest : std::log(farthest)) - w.near;
   return w;
 }
 
 double DepthWarp::operator()(double z) const {
-  if (!(log_range > 0)) return 0;
-  return std::clamp((std::log(z) - log_near) / log_range, 0.0, 1.0);
+  if (!(range > 0)) return 0;
+  return std::clamp(((linear ? z : std::log(z)) - near) / range, 0.0, 1.0);
+}
+
+WarpKind warp_kind(const std::string& name) {
+  if (name == "logarithmic") return WarpKind::Logarithmic;
+  if (name == "linear") return WarpKind::Linear;
+  throw InputError("oit.warp: '" + name + "': expected logarithmic or linear");
 }
 
 double absorbance(double alpha) {

@@ -3,6 +3,7 @@
 // sorted blending, the composite of any per-fragment transmittance, and the depth warp that maps
 // the fragments' depths to the interval on which the moments are taken.
 #include <span>
+#include <string>
 #include <vector>
 
 #include "oit/deep_frame.h"
@@ -18,15 +19,20 @@ struct PixelFragments {
 };
 PixelFragments pixel_of(const DeepFrame& frame, size_t p);
 
-// The seed's logarithmic depth warp (docs/transparency.md §2) between the transparent geometry's
-// nearest and farthest depth, onto [0, 1]: u(z) = (ln z - ln near) / (ln far - ln near). A range
-// of zero width (every fragment at one depth) maps every depth to 0, which keeps every
-// order-independent method exact there (no fragment lies in front of another).
+// The depth warp (docs/transparency.md §2) between the transparent geometry's nearest and
+// farthest depth, onto [0, 1]: the seed's logarithmic u(z) = (ln z - ln near) / (ln far - ln
+// near), or linear u(z) = (z - near) / (far - near) (oit.warp, to measure what the seed's choice
+// gains). A range of zero width (every fragment at one depth) maps every depth to 0, which keeps
+// every order-independent method exact there (no fragment lies in front of another).
+enum class WarpKind { Logarithmic, Linear };
 struct DepthWarp {
-  double log_near = 0, log_range = 0;
-  static DepthWarp between(double nearest, double farthest);
+  double near = 0, range = 0;  // of ln z (logarithmic) or z (linear)
+  bool linear = false;
+  static DepthWarp between(double nearest, double farthest, WarpKind kind = WarpKind::Logarithmic);
   double operator()(double z) const;
 };
+// "logarithmic" or "linear" (oit.warp).
+WarpKind warp_kind(const std::string& name);
 
 // -ln(1 - alpha): a fragment's absorbance. Infinite for alpha = 1 (an opaque fragment ends the
 // pixel's transparent list, DeepFrame).

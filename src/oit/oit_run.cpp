@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <chrono>
+#include <limits>
 
 #include "util/error.h"
 #include "util/parallel_errors.h"
@@ -23,6 +24,15 @@ const std::vector<OptionRecord<OitRunOptions>>& oit_run_options() {
         "(0.25 is the value of the authors' code; 0 gives their lower bound of absorbance).",
         0, 1},
        &OitRunOptions::beta},
+      {{"oit.warp",
+        OptionType::String,
+        "logarithmic",
+        "Depth warp onto [0, 1] that every moment-based technique takes its moments of "
+        "(docs/transparency.md §2): logarithmic, the seed's; linear, to measure what it gains.",
+        -std::numeric_limits<double>::infinity(),
+        std::numeric_limits<double>::infinity(),
+        {"logarithmic", "linear"}},
+       &OitRunOptions::warp},
       {{"images", OptionType::Boolean, "true",
         "Per camera: the reference and each technique's composite, its CIEDE2000 difference in "
         "false colour, and a contact sheet (images/)."},
@@ -71,8 +81,8 @@ struct FrameReference {
   std::vector<Lab> lab;
 };
 
-FrameReference frame_reference(const DeepFrame& frame, const LabConverter& lab) {
-  const DepthWarp warp = DepthWarp::between(frame.nearest(), frame.farthest());
+FrameReference frame_reference(const DeepFrame& frame, const LabConverter& lab, WarpKind kind) {
+  const DepthWarp warp = DepthWarp::between(frame.nearest(), frame.farthest(), kind);
   FrameReference r;
   r.warped.resize(frame.fragments()), r.transmittance.resize(frame.fragments());
   r.composite.resize(frame.pixels()), r.lab.resize(frame.pixels());
@@ -131,7 +141,7 @@ OitFrameResult evaluate_oit_frame(const DeepFrame& frame, const std::string& sce
                                   bool quiet) {
   check_frame_has_transparency(frame, scene);
   const size_t pixels = frame.pixels();
-  const FrameReference reference = frame_reference(frame, lab);
+  const FrameReference reference = frame_reference(frame, lab, params.warp);
   OitFrameResult result;
   result.scene = scene, result.camera = frame.camera;
   result.width = frame.width, result.height = frame.height;

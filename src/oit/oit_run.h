@@ -18,6 +18,7 @@ namespace mb {
 struct OitRunOptions {
   std::vector<std::string> techniques;
   double beta = 0.25;
+  std::string warp = "logarithmic";
   bool images = true;
   bool deep_frames = true;
   double delta_e_scale = 10;

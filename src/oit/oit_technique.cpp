@@ -161,6 +161,12 @@ class MbOitPower : public MomentOit {
         const MsmBound<double> r = m_ == 4 ? hamburger4(b, t) : hamburger6(b, t);
         g = r.lower, at = r.at_zf;
       }
+      // A closed form that loses every digit (six moments of a nearly singular Hankel matrix)
+      // gives NaN: no answer, counted like the canonical representation's failures.
+      if (!std::isfinite(g + beta_ * at)) {
+        out[l] = 1, ++closed_form_failures_;
+        continue;
+      }
       out[l] = std::exp(-total * std::clamp(g + beta_ * at, 0.0, 1.0));
     }
   }

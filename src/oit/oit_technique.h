@@ -34,6 +34,8 @@ struct OitParams {
   // The trigonometric variants' wrapping zone in radians: 0.1 pi, the authors' code's default
   // (docs/transparency.md §5).
   double wrapping_zone = 0.1 * 3.14159265358979323846;
+  // The depth warp onto [0, 1] the moments are taken of (docs/transparency.md §2; oit.warp).
+  WarpKind warp = WarpKind::Logarithmic;
   // lp:<basis>: the LP's grid, backend and lp.beta (0: the sharp bound e^{-A-}); its interval is
   // that of the warped depth, [0, 1], unless a caller widens it (the closed forms' R).
   TechniqueParams lp;

@@ -22,9 +22,9 @@ struct FramePlan {
   double weight = 0;
 };
 
-FramePlan plan_frame(const DeepFrame& frame) {
+FramePlan plan_frame(const DeepFrame& frame, WarpKind kind) {
   FramePlan plan;
-  const DepthWarp warp = DepthWarp::between(frame.nearest(), frame.farthest());
+  const DepthWarp warp = DepthWarp::between(frame.nearest(), frame.farthest(), kind);
   plan.warped.resize(frame.fragments());
   plan.reference.resize(frame.fragments());
   for (size_t f = 0; f < frame.fragments(); ++f) plan.warped[f] = warp(frame.depth[f]);
@@ -61,7 +61,7 @@ class OitTarget : public SweepTarget {
  public:
   OitTarget(const std::vector<SceneFrame>& frames, const OitParams& params, int threads)
       : frames_(frames), params_(params), threads_(threads) {
-    for (const auto& f : frames_) plans_.push_back(plan_frame(f.frame));
+    for (const auto& f : frames_) plans_.push_back(plan_frame(f.frame, params_.warp));
   }
 
   std::vector<std::string> view_names() const override {

@@ -113,16 +113,18 @@ const std::vector<OptionRecord<ScreenSettings>>& screen_options() {
 
 }  // namespace
 
-// oit.beta, declared with the oit command's options: the MBOIT reference rows' overestimation.
-OptionSpec oit_beta_spec() {
+// oit.beta and oit.warp, declared with the oit command's options: the MBOIT reference rows'
+// overestimation and the depth warp of the transparency target.
+OptionSpec oit_spec(const std::string& name) {
   for (const auto& spec : option_specs(oit_run_options()))
-    if (spec.name == "oit.beta") return spec;
-  throw std::logic_error("oit_run_options lacks oit.beta");
+    if (spec.name == name) return spec;
+  throw std::logic_error("oit_run_options lacks " + name);
 }
 
 std::vector<OptionSpec> sweep_option_specs() {
   std::vector<OptionSpec> specs = option_specs(candidate_options());
-  specs.push_back(oit_beta_spec());
+  specs.push_back(oit_spec("oit.beta"));
+  specs.push_back(oit_spec("oit.warp"));
   for (auto& s : option_specs(screen_options())) specs.push_back(s);
   return specs;
 }
@@ -142,6 +144,7 @@ SweepSettings sweep_settings_from(const Config& config, int threads) {
                      "takes lp.beta > 0; so does a sweep with target transparency)");
   read_options(config, screen_options(), s.screen);
   s.oit_beta = config.number("oit.beta");
+  s.oit_warp = config.string("oit.warp");
   s.references =
       s.target == "transparency" ? s.oit_references : with_oracle_row(s.references, s.eval.bias);
   s.config_yaml = config.to_yaml();
@@ -402,8 +405,8 @@ namespace {
 std::string describe_transparency(const SweepSettings& s) {
   const auto& lp = s.eval.technique;
   return "target transparency: lp:<candidate> with lp.beta " + round_trip(lp.lp_beta) +
-         " on the warped depth (logarithmic "
-         "between each camera's nearest and farthest transparent fragment, docs/transparency.md "
+         " on the warped depth (" + s.oit_warp +
+         " between each camera's nearest and farthest transparent fragment, docs/transparency.md "
          "§2), grid " +
          std::to_string(lp.lp.grid) + " on [" + round_trip(lp.lp.lo) + ", " + round_trip(lp.lp.hi) +
          "] and the pixel's fragment depths, backend " + lp.lp_backend +
@@ -431,6 +434,7 @@ PreparedTarget prepare_target(const SweepSettings& s, const DatasetDesc& dataset
                        "(expected lp.lo <= 0 and lp.hi >= 1)");
     OitParams params;
     params.beta = s.oit_beta;
+    params.warp = warp_kind(s.oit_warp);
     params.lp = s.eval.technique;
     p.target = make_oit_target(p.frames, params, s.eval.threads);
   } else {

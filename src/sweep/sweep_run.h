@@ -29,6 +29,7 @@ struct SweepSettings {
   std::string target = "shadows";           // sweep_target.h: shadows or transparency
   std::vector<std::string> oit_references;  // the transparency target's reference rows
   double oit_beta = 0.25;                   // their MBOIT overestimation (oit.beta)
+  std::string oit_warp = "logarithmic";     // the warped depth of every technique (oit.warp)
   std::string dataset;
   int resolution = 0;
   std::vector<std::string> catalog, candidates, references;
