@@ -7,6 +7,7 @@
 
 #include "continuous/discretized.h"
 #include "continuous/moment_box.h"
+#include "continuous/moment_range.h"
 #include "lp/kkt_checker.h"
 #include "lp/problem.h"
 #include "lp/solution.h"
@@ -80,6 +81,23 @@ void check_interval(const std::vector<double>& interval, const std::string& key)
                      (interval.size() == 1 ? " number" : " numbers"));
 }
 
+// Raw moments stand for every vector within their rounding (docs/reference.md §2): where G moves
+// across that box by more than the answer's own uncertainty (the bracket, or the certificate on a
+// grid), the range says how little the moments determine (continuous/moment_range.h).
+void add_moment_range(json& out, const lp::ProblemFactory& factory,
+                      const std::vector<double>& moments, double zf,
+                      const std::vector<double>& points, lp::Backend& backend, double ulps,
+                      double uncertainty) {
+  const lp::Problem centre = factory.from_moments(moments, zf, points);
+  const std::vector<double> tolerance = lp::ulp_box(factory, centre, ulps);
+  const lp::MomentRange r = lp::moment_range(factory, moments, tolerance, zf, points, backend);
+  if (!r.ok || r.hi - r.lo <= uncertainty) return;
+  out["range"] = {r.lo, r.hi};
+  out["range_vertices"] = std::to_string(r.feasible) + " of " + std::to_string(r.vertices) +
+                          " in the moment cone" +
+                          (r.complete() ? "" : ": the maximum is a lower estimate");
+}
+
 json solve_one(lp::Backend& backend, FactoryCache& factories,
                const std::vector<std::string>& basis_names, const lp::Discretization& disc,
                const Instance& instance, double zf, const std::vector<double>& points, bool check,
@@ -143,6 +161,9 @@ json solve_one(lp::Backend& backend, FactoryCache& factories,
     for (size_t k = 0; k < s.support.size(); ++k)
       support.push_back({problem.point(s.support[k]), s.weights[k]});
     out["support"] = support;
+    if (!instance.from_distribution() && tolerance_ulps > 0)
+      add_moment_range(out, factory, moments, zf, points, backend, tolerance_ulps,
+                       disc.continuous ? answer.width() : lp::kCertifiedError);
   }
   // Defined answers outside I (docs/reference.md §1): every distribution on [lo, hi] lies below a
   // z_f above hi (G = 1) and none strictly below a z_f at or under lo (G = 0).
