@@ -289,5 +289,36 @@ TEST(ClosedForms, BatchHamburgerMatchesTheScalarSolver) {
   }
 }
 
+// MBOIT's four-moment blend for one pixel's moments and many fragments (the resolve pass) equals
+// the scalar solver's G + beta w, and keeps a NaN of degenerate moments for the caller to count.
+TEST(ClosedForms, BatchBlendMatchesTheScalarSolver) {
+  SeededRandom rng(43);
+  const double star[4] = {0, 0.375, 0, 0.375};
+  int compared = 0;
+  for (int pixel = 0; pixel < 300; ++pixel) {
+    Distribution d = random_distribution(rng, 1 + pixel % 12);
+    for (double& z : d.z) z = 2 * z - 1;  // MBOIT's t = 2u - 1
+    std::vector<double> b = d.power_moments(4);
+    bias_moments(b.data(), 4, 1e-10, star);
+    std::vector<double> zf(d.z), out(d.z.size());
+    zf.push_back(rng.uniform(-1, 1));
+    out.resize(zf.size());
+    const double beta = pixel % 3 == 0 ? 0.0 : 0.25;
+    hamburger4_blend_batch(b.data(), zf.data(), zf.size(), beta, out.data());
+    for (size_t k = 0; k < zf.size(); ++k) {
+      const MsmBound<double> r = hamburger4(b.data(), zf[k]);
+      ASSERT_NEAR(out[k], std::clamp(r.lower + beta * r.at_zf, 0.0, 1.0), 1e-12)
+          << "pixel " << pixel << " fragment " << k;
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 1500);
+  // A zero variance (every moment of one atom, no bias): the Hankel matrix is singular.
+  const double atom[4] = {0.5, 0.25, 0.125, 0.0625}, zf = 0.2;
+  double out = 0;
+  hamburger4_blend_batch(atom, &zf, 1, 0.25, &out);
+  EXPECT_TRUE(std::isnan(out));
+}
+
 }  // namespace
 }  // namespace mb

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "moments/canonical.h"
 #include "util/eigen.h"
@@ -81,6 +82,22 @@ void hamburger4_lower_batch(const double* b, const double* zf, double* lower, si
                         (1 - alpha) * m[2] + alpha * 0.5, (1 - alpha) * m[3] + alpha * 0.5, zf[k])
             .lower;
     lower[k] = std::min(1.0, std::max(0.0, g));
+  }
+}
+
+void hamburger4_blend_batch(const double* b, const double* zf, size_t count, double beta,
+                            double* out) {
+  const double b1 = b[0], b2 = b[1], b3 = b[2], b4 = b[3];
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+#pragma omp simd
+  for (size_t k = 0; k < count; ++k) {
+    const Hamburger4Core<double> c = hamburger4_core(b1, b2, b3, b4, zf[k]);
+    // std::clamp's results, NaN kept (hamburger4 returns it; the caller counts it).
+    const bool finite = c.lower == c.lower && c.w_zf == c.w_zf;
+    const double g = std::min(1.0, std::max(0.0, c.lower));
+    const double w = std::min(1.0, std::max(0.0, c.w_zf));
+    const double a = g + beta * w;
+    out[k] = finite ? std::min(1.0, std::max(0.0, a)) : kNaN;
   }
 }
 

@@ -23,6 +23,12 @@ MsmBound<Real> hamburger4(const Real* b, Real zf);
 // available); it runs the same inlined steps as hamburger4.
 void hamburger4_lower_batch(const double* b, const double* zf, double* lower, size_t count,
                             double alpha);
+// MBOIT's four-moment reconstruction (docs/transparency.md §3) for one pixel's moments b (already
+// biased) and many fragments: out[k] = clamp(G + beta w, 0, 1) with G = hamburger4(b, zf[k]).lower
+// and w its at_zf (the same steps, vectorised over the fragments: equal to rounding, the vector
+// code contracting other products); NaN where they are not finite.
+void hamburger4_blend_batch(const double* b, const double* zf, size_t count, double beta,
+                            double* out);
 // b = (b1, .., b6), already biased (double).
 MsmBound<double> hamburger6(const double* b, double zf);
 

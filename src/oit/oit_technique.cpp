@@ -146,6 +146,7 @@ class MbOitPower : public MomentOit {
     static constexpr double kStar6[6] = {0, 0.48, 0, 0.451, 0, 0.45};
     static constexpr double kStar8[8] = {0, 0.75, 0, 0.676666667, 0, 0.63, 0, 0.6003030303};
     bias_moments(b, m_, alpha_, m_ == 4 ? kStar4 : m_ == 6 ? kStar6 : kStar8);
+    if (m_ == 4) return resolve4(b, total, warped, out);
     for (size_t l = 0; l < warped.size(); ++l) {
       const double t = 2 * warped[l] - 1;
       double g = 0, at = 0;
@@ -172,9 +173,27 @@ class MbOitPower : public MomentOit {
   }
 
  private:
+  // Four moments: every fragment of the pixel at once (moments/hamburger.h, vectorised), as
+  // MBOIT's resolve pass reads one pixel's moments for all its fragments.
+  void resolve4(const double* b, double total, std::span<const double> warped,
+                std::span<double> out) {
+    const size_t n = warped.size();
+    t_.resize(n), g_.resize(n);
+    for (size_t l = 0; l < n; ++l) t_[l] = 2 * warped[l] - 1;
+    hamburger4_blend_batch(b, t_.data(), n, beta_, g_.data());
+    for (size_t l = 0; l < n; ++l) {
+      if (!std::isfinite(g_[l])) {
+        out[l] = 1, ++closed_form_failures_;
+        continue;
+      }
+      out[l] = std::exp(-total * g_[l]);
+    }
+  }
+
   int m_;
   OitStorage storage_;
   double alpha_, beta_;
+  std::vector<double> t_, g_;  // per fragment of the pixel: t = 2u - 1, and A / b_0
 };
 
 // MBOIT with n trigonometric moments (docs/transparency.md §5): the warped depth u in [0, 1] is

@@ -4,10 +4,13 @@
 // The whole-frame number comes from scripts/bench_oit.sh.
 #include <benchmark/benchmark.h>
 
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
 
+#include "moments/canonical.h"
+#include "moments/hamburger.h"
 #include "oit/oit_technique.h"
 #include "scene/procedural.h"
 
@@ -68,6 +71,43 @@ BENCHMARK_CAPTURE(BM_Reconstruct, mboit_power8, "mboit_power8");
 BENCHMARK_CAPTURE(BM_Reconstruct, mboit_trig2, "mboit_trig2");
 BENCHMARK_CAPTURE(BM_Reconstruct, mboit_trig4, "mboit_trig4");
 BENCHMARK_CAPTURE(BM_Reconstruct, mboit_power4_float, "mboit_power4_float");
+
+// MBOIT's resolve pass alone for four power moments in double: per pixel its biased moments and
+// total absorbance as the moment pass left them (computed once, outside the timing), per fragment
+// the closed form (moments/hamburger.h, every fragment of the pixel at once) and T = e^{-A}.
+void BM_ResolvePower4(benchmark::State& state) {
+  const Pixels& px = pixels(4096);
+  const double star[4] = {0, 0.375, 0, 0.375};
+  std::vector<std::array<double, 4>> moments;
+  std::vector<double> totals;
+  std::vector<std::vector<double>> t;
+  for (size_t p = 0; p < px.depth.size(); ++p) {
+    const AbsorbanceDistribution d =
+        absorbance_distribution({px.depth[p], px.alpha[p], px.color[p], kBackground}, px.warped[p]);
+    std::array<double, 4> b = {};
+    for (size_t i = 0; i < d.depths.size(); ++i) {
+      double power = 1;
+      for (int j = 0; j < 4; ++j) b[size_t(j)] += d.weights[i] * (power *= 2 * d.depths[i] - 1);
+    }
+    bias_moments(b.data(), 4, 1e-10, star);
+    moments.push_back(b), totals.push_back(d.total);
+    std::vector<double> tp;
+    for (double u : px.warped[p]) tp.push_back(2 * u - 1);
+    t.push_back(tp);
+  }
+  std::vector<double> g(64), out(64);
+  for (auto _ : state) {
+    for (size_t p = 0; p < moments.size(); ++p) {
+      const size_t n = t[p].size();
+      hamburger4_blend_batch(moments[p].data(), t[p].data(), n, 0.25, g.data());
+      for (size_t l = 0; l < n; ++l) out[l] = std::exp(-totals[p] * g[l]);
+      benchmark::DoNotOptimize(out.data());
+    }
+  }
+  state.counters["fragments/s"] =
+      benchmark::Counter(double(px.fragments) * state.iterations(), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_ResolvePower4);
 
 // The floor of any moment-based reconstruction in double with glibc's scalar libm: one log1p per
 // fragment (its absorbance, -ln(1 - alpha)) and one exp (its transmittance, e^{-A}), nothing else.
