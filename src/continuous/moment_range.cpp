@@ -31,13 +31,11 @@ double dual_minimum(const ProblemFactory& factory, const ContinuousSolution& cen
 
 MomentRange moment_range(const ProblemFactory& factory, std::span<const double> moments,
                          std::span<const double> tolerance, double zf,
-                         std::span<const double> points, Backend& backend) {
+                         std::span<const double> points, const Problem& centre_problem,
+                         const ContinuousSolution& centre, Backend& backend) {
   MomentRange r;
   const size_t m = moments.size();
-  if (m > 7) return r;
-  Problem centre_problem = factory.from_moments(moments, zf, points);
-  const ContinuousSolution centre = solve_discretized(factory, centre_problem, backend);
-  if (!centre.ok()) return r;
+  if (m > 7 || !centre.ok()) return r;
   // The least G: the box problem's on a grid; on the continuous interval, whose box problem
   // needs a distribution within a few ulps of raw moments that GLPK cannot certify for a narrow
   // kernel, the dual bound (a lower estimate of the minimum, never above it).

@@ -11,6 +11,7 @@
 // maximum (`complete` false).
 #include <span>
 
+#include "continuous/continuous.h"
 #include "lp/problem.h"
 #include "lp/solution.h"
 
@@ -24,10 +25,12 @@ struct MomentRange {
 };
 
 // The range of G over |b_j - moments_j| <= tolerance_j (tolerance from ulp_box) with z_f and the
-// factory's discretisation (grid and `points`, or the continuous interval); the centre and each
-// vertex are solved with `backend`. At most 2^7 vertices (the certified engine's rows).
+// factory's discretisation (grid and `points`, or the continuous interval). `centre` is
+// factory.from_moments(moments, zf, points), `solved` the caller's solve_discretized of it; each
+// vertex is solved with `backend` as it was. At most 2^7 vertices (the certified engine's rows).
 MomentRange moment_range(const ProblemFactory& factory, std::span<const double> moments,
                          std::span<const double> tolerance, double zf,
-                         std::span<const double> points, Backend& backend);
+                         std::span<const double> points, const Problem& centre,
+                         const ContinuousSolution& solved, Backend& backend);
 
 }  // namespace mb::lp

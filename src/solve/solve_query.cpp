@@ -86,11 +86,13 @@ void check_interval(const std::vector<double>& interval, const std::string& key)
 // grid), the range says how little the moments determine (continuous/moment_range.h).
 void add_moment_range(json& out, const lp::ProblemFactory& factory,
                       const std::vector<double>& moments, double zf,
-                      const std::vector<double>& points, lp::Backend& backend, double ulps,
-                      double uncertainty) {
+                      const std::vector<double>& points, const lp::ContinuousSolution& solved,
+                      lp::Backend& backend, double ulps, double uncertainty) {
+  // The problem as posed (solving may have added the exchange's points to solve_one's).
   const lp::Problem centre = factory.from_moments(moments, zf, points);
   const std::vector<double> tolerance = lp::ulp_box(factory, centre, ulps);
-  const lp::MomentRange r = lp::moment_range(factory, moments, tolerance, zf, points, backend);
+  const lp::MomentRange r =
+      lp::moment_range(factory, moments, tolerance, zf, points, centre, solved, backend);
   if (!r.ok || r.hi - r.lo <= uncertainty) return;
   out["range"] = {r.lo, r.hi};
   out["range_vertices"] = std::to_string(r.feasible) + " of " + std::to_string(r.vertices) +
@@ -162,7 +164,7 @@ json solve_one(lp::Backend& backend, FactoryCache& factories,
       support.push_back({problem.point(s.support[k]), s.weights[k]});
     out["support"] = support;
     if (!instance.from_distribution() && tolerance_ulps > 0)
-      add_moment_range(out, factory, moments, zf, points, backend, tolerance_ulps,
+      add_moment_range(out, factory, moments, zf, points, answer, backend, tolerance_ulps,
                        disc.continuous ? answer.width() : lp::kCertifiedError);
   }
   // Defined answers outside I (docs/reference.md §1): every distribution on [lo, hi] lies below a

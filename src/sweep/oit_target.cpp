@@ -52,11 +52,6 @@ std::string lp_name(const Basis& basis) {
   return name;
 }
 
-// The error a fragment adds (ErrorStats::add_weighted's, so that unit sums and tables agree).
-double fragment_error(double reference, double t, double alpha) {
-  return alpha * std::abs((1 - reference) - (1 - t));
-}
-
 class OitTarget : public SweepTarget {
  public:
   OitTarget(const std::vector<SceneFrame>& frames, const OitParams& params, int threads)
@@ -251,11 +246,11 @@ class OitTarget : public SweepTarget {
   double unit_error(size_t v, const std::vector<uint32_t>& pixels, size_t begin, size_t end,
                     const std::vector<double>* t) const {
     const DeepFrame& frame = frames_[v].frame;
-    double sum = 0;
+    ErrorStats unit;  // the tables' per-fragment error, summed in fragment order
     for (size_t i = begin; i < end; ++i)
       for (uint64_t f = frame.offsets[pixels[i]]; f < frame.offsets[pixels[i] + 1]; ++f)
-        sum += fragment_error(plans_[v].reference[f], t ? (*t)[f] : 1.0, frame.alpha[f]);
-    return sum;
+        unit.add_weighted(1 - plans_[v].reference[f], 1 - (t ? (*t)[f] : 1.0), frame.alpha[f]);
+    return unit.sum_abs;
   }
 
   void finish(CandidateResult& result) const {
