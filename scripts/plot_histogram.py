@@ -14,7 +14,11 @@ import matplotlib.ticker  # noqa: E402
 
 # References drawn as lines; the others stay in the report's table (too many labels overlap).
 SHOWN_REFERENCES = ("vsm", "esm", "hamburger4", "hausdorff4", "hamburger6", "tmsm", "lp:power4",
-                    "lp:trig4", "oracle")
+                    "lp:trig4", "oracle", "wboit", "mboit_power4", "mboit_power6", "mboit_power8",
+                    "mboit_trig2", "mboit_trig3", "mboit_trig4", "lp:power6")
+# What a candidate's mean error is of, and over what (--error, --over: a transparency sweep's
+# differ from a shadow sweep's).
+ERROR = {"of": "mean |PCF - G|", "over": "receiver fragments"}
 
 
 def draw(ax, rows, series, references):
@@ -46,7 +50,7 @@ def draw(ax, rows, series, references):
     ax.set_ylim(0, top * 1.35)  # the labels' pixel widths depend on the axes' final x range
     ax.plot([], [], color="#555555", linestyle="-", label="best (solid), median (dotted)")
     ax.yaxis.set_major_locator(matplotlib.ticker.MaxNLocator(integer=True))
-    ax.set_xlabel("mean |PCF - G| over receiver fragments (%)")
+    ax.set_xlabel(f"{ERROR['of']} over {ERROR['over']} (%)")
     ax.set_ylabel("candidates")
     ax.set_title("Sweep candidates by mean error" + (" and functions per candidate" if several else ""))
     ax.legend(fontsize=7, loc="upper left", ncol=1, frameon=False)
@@ -76,7 +80,7 @@ def draw_zoom(ax, series, references, candidates, lo, hi, bins=60):
         ax.axvline(error, color="#555555", linestyle="--", linewidth=0.8)
     ax.set_xlim(lo, hi)
     ax.yaxis.set_major_locator(matplotlib.ticker.MaxNLocator(integer=True))
-    ax.set_xlabel("mean |PCF - G| (%), zoomed on the bulk of the candidates with the most functions")
+    ax.set_xlabel(f"{ERROR['of']} (%), zoomed on the bulk of the candidates with the most functions")
     ax.set_ylabel("candidates")
     ax.set_ylim(0, top * 1.35)
     return shown, top
@@ -89,7 +93,10 @@ def main():
     parser.add_argument("--references", required=True)
     parser.add_argument("--candidates", help="candidates.csv: adds a panel zoomed on the largest candidates' bulk")
     parser.add_argument("--out", required=True, help="output path without extension")
+    parser.add_argument("--error", default=ERROR["of"], help="what the mean error is of")
+    parser.add_argument("--over", default=ERROR["over"], help="what it is averaged over")
     args = parser.parse_args()
+    ERROR["of"], ERROR["over"] = args.error, args.over
 
     with open(args.histogram) as f:
         rows = list(csv.DictReader(f))

@@ -45,6 +45,14 @@ def main():
     if failures:
         sys.exit("plot_histogram_test: " + "; ".join(failures))
     print(f"plot_histogram_test: {len(boxes)} labels, none overlapping")
+    # A transparency sweep's axis says what its error is, and MBOIT's closed forms are drawn.
+    plot_histogram.ERROR.update({"of": "mean |T_ref - T|", "over": "transparent fragments"})
+    fig, labels = plot_histogram.figure(rows, series, [("mboit_power4", 0.75), ("wboit", 0.9)])
+    label = fig.axes[0].get_xlabel()
+    if not label.startswith("mean |T_ref - T| over transparent fragments"):
+        sys.exit(f"plot_histogram_test: transparency axis reads {label!r}")
+    if {t.get_text().strip() for t in labels} != {"mboit_power4", "wboit"}:
+        sys.exit("plot_histogram_test: MBOIT and WBOIT reference lines are not labelled")
 
 
 if __name__ == "__main__":

@@ -31,14 +31,17 @@ int run_report(const ReportOptions& o) {
   write_file_atomically(out / "references.csv", tables.references_csv);
   write_file_atomically(out / "histogram.csv", tables.histogram_csv);
   std::string plot_note;
+  const bool transparency = main_series(series).transparency();
   if (o.plot)
-    plot_note =
-        run_plot_script("plot_histogram.py",
-                        {"--histogram", (out.staging() / "histogram.csv").string(), "--series",
-                         (out.staging() / "series.csv").string(), "--references",
-                         (out.staging() / "references.csv").string(), "--candidates",
-                         (out.staging() / "candidates.csv").string()},
-                        (out.staging() / "histogram").string(), "candidate histogram", o.quiet);
+    plot_note = run_plot_script(
+        "plot_histogram.py",
+        {"--histogram", (out.staging() / "histogram.csv").string(), "--series",
+         (out.staging() / "series.csv").string(), "--references",
+         (out.staging() / "references.csv").string(), "--candidates",
+         (out.staging() / "candidates.csv").string(), "--error",
+         transparency ? "mean |T_ref - T|" : "mean |PCF - G|", "--over",
+         transparency ? "transparent fragments, opacity-weighted" : "receiver fragments"},
+        (out.staging() / "histogram").string(), "candidate histogram", o.quiet);
   const std::string text = sweep_report_markdown(series, plot_note);
   write_file_atomically(out / "report.md", text);
   out.commit();
