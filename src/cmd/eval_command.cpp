@@ -58,6 +58,10 @@ int run_eval(const EvalOptions& options) {
   const bool quiet = options.common.quiet;
 
   auto views = prepare_views(scenes, dataset, data.resolution, settings, quiet);
+  const std::string soft_text = describe_area_lights(views, settings.light);
+  if (!soft_text.empty())
+    for (auto& [name, reason] : darkening_reason)
+      reason = "the reference is an area light's shadow, which no technique bounds";
   for (const auto& name : techniques)
     if (make_technique(name, settings.technique)->lp_factory())
       check_lp_interval(views, settings.technique.lp.lo, settings.technique.lp.hi);
@@ -68,8 +72,11 @@ int run_eval(const EvalOptions& options) {
     if (!run.images) return;
     const std::string base =
         (out.staging() / "images" / (view.scene + "_" + view.view + "_")).string();
-    write_shadow_images(view, shadow, base + file_stem(name), name == "pcf" ? 0 : run.error_scale);
+    write_shadow_images(view, shadow, base + file_stem(name),
+                        name == "pcf" || name == "area_light" ? 0 : run.error_scale);
   };
+  for (const auto& view : views)
+    if (view.soft.angle_deg > 0) write_images("area_light", view, view.fragments.pcf);
   const EvalRows rows = evaluate_techniques(views, techniques, settings, quiet, write_images);
   for (const auto& total : rows.overall)
     write_file_atomically(out / ("histograms/" + file_stem(total.technique) + ".csv"),
@@ -82,7 +89,8 @@ int run_eval(const EvalOptions& options) {
   EvalReportContext context;
   context.dataset = dataset.name, context.version = meta.version, context.git_sha = meta.git_sha;
   context.compiler = meta.compiler, context.started = meta.started_utc, context.threads = threads;
-  context.settings_text = describe_settings(settings), context.reference = settings.bias.reference;
+  context.settings_text = describe_settings(settings) + soft_text;
+  context.reference = settings.bias.reference;
   context.views = views.size();
   for (const auto& v : views) context.receivers += v.fragments.size();
   context.non_default = config.non_default();

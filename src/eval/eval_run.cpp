@@ -1,6 +1,8 @@
 #include "eval/eval_run.h"
 
+#include <algorithm>
 #include <chrono>
+#include <limits>
 
 namespace mb {
 
@@ -68,6 +70,10 @@ EvalRows evaluate_techniques(const std::vector<ViewData>& views,
       row.stats.add_all(view.fragments.pcf, result.shadow);
       add_regions(view.fragments, result.shadow, row);
       row.stats.failures = result.failures;
+      // A technique's proven bound is on G - F_Z (docs/reference.md §3); an area light's shadow is
+      // no F_Z, and every technique may darken past it (docs/soft-shadows.md §1).
+      if (view.soft.angle_deg > 0) row.darkening_bound = std::numeric_limits<double>::infinity();
+      total.darkening_bound = std::max(total.darkening_bound, row.darkening_bound);
       row.fallbacks = result.fallbacks;
       row.seconds = std::chrono::duration<double>(Clock::now() - start).count();
       total.stats.merge(row.stats);

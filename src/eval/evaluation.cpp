@@ -16,8 +16,42 @@ namespace mb {
 
 ViewData prepare_view(const Scene& scene, const LightViewDesc& view, const EvalSettings& settings) {
   LayerStack stack = render_view(scene, view, settings.threads);
-  return ViewData{scene.name, view.name, layer0_shadow_map(stack, settings.blend),
-                  collect_receivers(stack, settings.kernel, settings.bias, settings.threads)};
+  ViewData data{scene.name,
+                view.name,
+                layer0_shadow_map(stack, settings.blend),
+                collect_receivers(stack, settings.kernel, settings.bias, settings.threads),
+                {}};
+  if (view.light_angle_deg > 0) {
+    AreaLight light = settings.light;
+    light.angle_deg = view.light_angle_deg;
+    data.soft = light_receivers(scene, view, stack, data.fragments, settings.kernel, settings.bias,
+                                light, settings.threads);
+  }
+  return data;
+}
+
+std::vector<LightViewDesc> rendered_views(const Scene& scene, const DatasetDesc& dataset,
+                                          int resolution, const EvalSettings& settings) {
+  std::vector<LightViewDesc> out;
+  for (const auto& desc : scene.views) {
+    LightViewDesc view = as_rendered(desc, dataset, resolution);
+    if (view.light_angle_deg >= 0) {
+      out.push_back(view);
+      continue;
+    }
+    if (settings.light.angle_deg > 0 || dataset.light_angles.empty()) {
+      view.light_angle_deg = settings.light.angle_deg;
+      out.push_back(view);
+      continue;
+    }
+    for (double angle : dataset.light_angles) {
+      LightViewDesc v = view;
+      v.light_angle_deg = angle;
+      v.name = view.name + "_" + round_trip(angle) + "deg";
+      out.push_back(v);
+    }
+  }
+  return out;
 }
 
 LightViewDesc as_rendered(LightViewDesc view, const DatasetDesc& dataset, int resolution) {
@@ -48,11 +82,12 @@ std::vector<ViewData> prepare_views(const std::vector<Scene>& scenes, const Data
                                     int resolution, const EvalSettings& settings, bool quiet) {
   std::vector<ViewData> views;
   size_t total = 0;
-  for (const auto& scene : scenes) total += scene.views.size();
+  for (const auto& scene : scenes)
+    total += rendered_views(scene, dataset, resolution, settings).size();
   ProgressBar bar("render", total, quiet);
   for (const auto& scene : scenes)
-    for (const auto& view : scene.views) {
-      views.push_back(prepare_view(scene, as_rendered(view, dataset, resolution), settings));
+    for (const auto& view : rendered_views(scene, dataset, resolution, settings)) {
+      views.push_back(prepare_view(scene, view, settings));
       bar.advance();
     }
   // A mean over no receivers would print 0 % for every technique (docs/reference.md §3: receivers
@@ -64,6 +99,19 @@ std::vector<ViewData> prepare_views(const std::vector<Scene>& scenes, const Data
         dataset.file + ": dataset " + dataset.name +
         " has no receiver fragments (no surface faces the light in any view); nothing to evaluate");
   return views;
+}
+
+std::string describe_area_lights(const std::vector<ViewData>& views, const AreaLight& light) {
+  std::vector<double> angles;
+  for (const ViewData& v : views)
+    if (v.soft.angle_deg > 0 &&
+        std::find(angles.begin(), angles.end(), v.soft.angle_deg) == angles.end())
+      angles.push_back(v.soft.angle_deg);
+  if (angles.empty()) return "";
+  std::string text = "; reference: the area light's shadow (docs/soft-shadows.md §1), lights of ";
+  for (size_t i = 0; i < angles.size(); ++i) text += (i ? ", " : "") + round_trip(angles[i]);
+  return text + " degrees, " + std::to_string(light.directions) +
+         " directions each; the pcf row is the hard shadow";
 }
 
 void check_lp_interval(const std::vector<ViewData>& views, double lo, double hi) {
@@ -123,7 +171,8 @@ TechniqueResult evaluate_technique(const ViewData& view, const std::string& tech
           FragmentInput in;
           if (moments.m > 0) in.moments = moments.at(texel);
           in.zf = f.ztest[k];
-          in.pcf = f.pcf[k];
+          // Under an area light the `pcf` row is the hard shadow, so its error is the penumbra's.
+          in.pcf = view.soft.hard.empty() ? f.pcf[k] : view.soft.hard[k];
           in.oracle = f.oracle[k];
           if (needs_distribution) {
             kernel_atoms(view.map, settings.kernel, int(texel % f.width), int(texel / f.width),

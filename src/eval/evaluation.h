@@ -7,6 +7,7 @@
 #include "scene/scene.h"
 #include "shadow/fragments.h"
 #include "shadow/gaussian_kernel.h"
+#include "soft/area_light.h"
 #include "techniques/technique.h"
 #include "util/progress.h"
 
@@ -17,6 +18,9 @@ struct ViewData {
   std::string scene, view;
   ShadowMap map;
   Fragments fragments;
+  // Lit by an area light (soft.angle_deg > 0, docs/soft-shadows.md): fragments.pcf is then its
+  // shadow, and `soft` keeps the hard reference and what soft techniques read.
+  SoftReceivers soft;
 };
 
 struct EvalSettings {
@@ -26,11 +30,20 @@ struct EvalSettings {
   TechniqueParams technique;
   // How translucent moment maps blend (translucent.blend; the reference is always exact).
   BlendOrder blend = BlendOrder::Sorted;
+  // The light of every view that names none, unless the dataset lists light_angles (light.angle,
+  // light.directions; docs/soft-shadows.md §1).
+  AreaLight light;
   int threads = 1;
 };
 
-// Renders one view of a scene and collects its receivers with their bias and reference.
+// Renders one view of a scene and collects its receivers with their bias and reference: the hard
+// shadow, or the area light's where view.light_angle_deg > 0.
 ViewData prepare_view(const Scene& scene, const LightViewDesc& view, const EvalSettings& settings);
+// The views of `scene` as prepare_views renders them (as_rendered), each at its light angle: its
+// own, else settings.light's when above 0, else one view per angle the dataset lists (named
+// view_<angle>deg), else 0.
+std::vector<LightViewDesc> rendered_views(const Scene& scene, const DatasetDesc& dataset,
+                                          int resolution, const EvalSettings& settings);
 // A scene's light view as prepare_views renders it: `resolution` > 0 overrides the dataset's,
 // which (when > 0) overrides the scene's.
 LightViewDesc as_rendered(LightViewDesc view, const DatasetDesc& dataset, int resolution);
@@ -43,6 +56,10 @@ std::vector<ViewData> prepare_views(const DatasetDesc& dataset, int resolution,
 std::vector<Scene> build_dataset_scenes(const DatasetDesc& dataset);
 std::vector<ViewData> prepare_views(const std::vector<Scene>& scenes, const DatasetDesc& dataset,
                                     int resolution, const EvalSettings& settings, bool quiet);
+
+// For reports: "; reference: the area light's shadow ..." naming the views' light angles and N, or
+// "" when every view is lit by a hard light.
+std::string describe_area_lights(const std::vector<ViewData>& views, const AreaLight& light);
 
 // The LP's interval [lo, hi] must hold every depth a kernel can see (docs/reference.md §2: the
 // kernel's own distribution is then feasible, and the bound is the one asked for): InputError

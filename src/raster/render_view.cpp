@@ -54,14 +54,20 @@ void check_render_memory(int resolution, const std::string& where) {
 }
 
 LayerStack render_view(const Scene& scene, const LightViewDesc& view, int threads) {
-  check_render_memory(view.resolution, "view " + scene.name + "/" + view.name);
+  return render_view(scene, view, threads, RasterShear{});
+}
+
+LayerStack render_view(const Scene& scene, const LightViewDesc& view, int threads,
+                       const RasterShear& shear) {
+  const int size = view.resolution + 2 * shear.pad;
+  check_render_memory(size, "view " + scene.name + "/" + view.name);
   LightFrame frame(view, scene.mesh.vertices);
   RasterInput input;
-  input.width = input.height = view.resolution;
+  input.width = input.height = size;
   input.vertices.resize(scene.mesh.vertices.size());
 #pragma omp parallel for schedule(static) num_threads(threads)
   for (size_t v = 0; v < scene.mesh.vertices.size(); ++v)
-    input.vertices[v] = frame.to_raster(scene.mesh.vertices[v]);
+    input.vertices[v] = shear.apply(frame.to_raster(scene.mesh.vertices[v]));
   input.triangles = scene.mesh.triangles;
   input.facing.resize(scene.mesh.triangles.size());
 #pragma omp parallel for schedule(static) num_threads(threads)
@@ -83,7 +89,7 @@ LayerStack render_view(const Scene& scene, const LightViewDesc& view, int thread
         const Eigen::Vector3d raster(double(t % stack.width) + 0.5, double(t / stack.width) + 0.5,
                                      stack.depth[f]);
         const OpacityDesc& o = scene.opacity[scene.part[stack.triangle[f]]];
-        stack.alpha[f] = float(o.at(frame.to_world(raster)));
+        stack.alpha[f] = float(o.at(frame.to_world(shear.invert(raster))));
       }
     // The triangles stay: an unsorted blend draws in their order (BlendOrder::Submission).
   }

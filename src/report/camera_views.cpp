@@ -220,13 +220,13 @@ void write_dataset_camera_views(const std::vector<Scene>& scenes, const DatasetD
                                 const EvalSettings& settings, double scale,
                                 const std::filesystem::path& dir, bool quiet) {
   size_t total = 0;
-  for (const auto& scene : scenes) total += scene.cameras.size() * scene.views.size();
+  for (const auto& scene : scenes)
+    total += scene.cameras.size() * rendered_views(scene, dataset, resolution, settings).size();
   std::filesystem::create_directories(dir);
   ProgressBar bar("cameras", total, quiet);
   for (const auto& scene : scenes)
     for (const auto& camera : scene.cameras)
-      for (const auto& desc : scene.views) {
-        const LightViewDesc light = as_rendered(desc, dataset, resolution);
+      for (const LightViewDesc& light : rendered_views(scene, dataset, resolution, settings)) {
         const auto it = std::find_if(views.begin(), views.end(), [&](const ViewData& v) {
           return v.scene == scene.name && v.view == light.name;
         });

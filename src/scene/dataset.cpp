@@ -4,6 +4,7 @@
 
 #include "util/error.h"
 #include "util/install_paths.h"
+#include "util/number_text.h"
 #include "util/yaml_reader.h"
 
 namespace mb {
@@ -32,6 +33,13 @@ DatasetDesc load_dataset(const std::string& name_or_path) {
   YamlMap root = YamlMap::load_file(desc.file, "dataset file");
   desc.name = root.string("name").value_or(fs::path(desc.file).stem().string());
   desc.resolution = int(root.integer("resolution", 0, 0, 16384));
+  if (auto angles = root.numbers("light_angles", 0)) {
+    for (double a : *angles)
+      if (!(a >= 0 && a < 90))
+        root.fail("light_angles",
+                  "expected angular diameters in degrees, in [0, 90), got " + round_trip(a));
+    desc.light_angles = *angles;
+  }
   fs::path base = fs::path(desc.file).parent_path();
   for (const auto& scene : root.strings("scenes")) {
     fs::path path = fs::path(scene).is_absolute() ? fs::path(scene) : base / scene;

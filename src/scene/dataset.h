@@ -11,6 +11,9 @@ struct DatasetDesc {
   std::string file;
   std::vector<std::string> scene_files;  // resolved paths
   int resolution = 0;                    // > 0 overrides every view's resolution
+  // Soft shadows (docs/soft-shadows.md §1): each view that names no light angle of its own is
+  // evaluated once per angle listed here, in degrees; empty: the option light.angle.
+  std::vector<double> light_angles;
 };
 
 // `name_or_path` is a YAML file, or a name looked up in the source tree's configs/datasets/.

@@ -15,6 +15,8 @@ struct LightViewDesc {
   double elevation_deg = 45;  // above the horizon, 90 = straight down
   int resolution = 512;       // square shadow map
   double margin = 0.02;       // added on every side, as a fraction of the scene's extent
+  // The light's angular diameter in degrees (docs/soft-shadows.md §1); below 0: the dataset's.
+  double light_angle_deg = -1;
 };
 
 // Unit vector pointing from the scene towards the light.

@@ -230,6 +230,11 @@ SceneDesc parse_scene(const std::string& file) {
     v.elevation_deg = view.number("elevation", 45, 1, 90);
     v.resolution = int(view.integer("resolution", 512, 1, 16384));
     v.margin = view.number("margin", 0.02, 0, 1);
+    v.light_angle_deg = view.number("light_angle", -1, -1e300, 1e300);
+    if (v.light_angle_deg >= 90 || (v.light_angle_deg < 0 && v.light_angle_deg != -1))
+      view.fail("light_angle",
+                "expected the light's angular diameter in degrees, in [0, 90), got " +
+                    round_trip(v.light_angle_deg));
     // Outputs are named scene_view: two views of one name would overwrite each other's files.
     for (const auto& other : desc.views)
       if (other.name == v.name)
