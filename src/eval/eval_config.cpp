@@ -164,6 +164,7 @@ std::vector<OptionSpec> shadow_option_specs() {
   for (auto& s : option_specs(bias_options())) specs.push_back(s);
   for (auto& s : option_specs(translucent_options())) specs.push_back(s);
   for (auto& s : option_specs(light_options())) specs.push_back(s);
+  for (auto& s : option_specs(soft_option_records())) specs.push_back(s);
   for (auto& s : technique_option_specs()) specs.push_back(s);
   for (auto& s : option_specs(lp_options())) specs.push_back(s);
   return specs;
@@ -222,6 +223,7 @@ EvalSettings shadow_settings_from(const Config& config, int threads) {
   read_options(config, light_options(), o);
   s.light.angle_deg = o.light_angle;
   s.light.directions = o.light_directions;
+  read_options(config, soft_option_records(), s.soft);
   s.bias.reference = parse_reference(o.reference, "reference");
   s.bias.slope = o.bias_slope;
   s.bias.constant = o.bias_constant;

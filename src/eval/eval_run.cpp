@@ -11,7 +11,9 @@ const std::vector<OptionRecord<EvalRunOptions>>& eval_run_options() {
       {{"techniques", OptionType::StringList,
         "[pcf, vsm, esm, hamburger4, hamburger4_float, hamburger4_16bit, hausdorff4, hamburger6, "
         "tmsm, tmsm_float]",
-        "Techniques to evaluate: closed forms, pcf, or lp:<basis> (e.g. lp:power4, lp:trig4)."},
+        "Techniques to evaluate: closed forms, pcf, or lp:<basis> (e.g. lp:power4, lp:trig4); "
+        "under "
+        "an area light also pcss_exact, pcss, pcss_vsm, msm_soft (docs/soft-shadows.md)."},
        &EvalRunOptions::techniques},
       {{"images", OptionType::Boolean, "true",
         "Write shadow and error images per view and technique."},
@@ -58,7 +60,7 @@ EvalRows evaluate_techniques(const std::vector<ViewData>& views,
     EvalRow total;
     total.technique = name;
     total.scene = "all";
-    total.darkening_bound = make_technique(name, settings.technique)->darkening_bound();
+    total.darkening_bound = technique_darkening_bound(name, settings);
     for (const auto& view : views) {
       const auto start = Clock::now();
       TechniqueResult result = evaluate_technique(view, name, settings, &bar);

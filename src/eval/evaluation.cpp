@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <limits>
 
 #include "eval/lp_fragment_solver.h"
 #include "lp/solution.h"
@@ -130,10 +131,29 @@ void check_lp_interval(const std::vector<ViewData>& views, double lo, double hi)
   }
 }
 
+double technique_darkening_bound(const std::string& name, const EvalSettings& settings) {
+  if (is_soft_technique(name)) return std::numeric_limits<double>::infinity();
+  return make_technique(name, settings.technique)->darkening_bound();
+}
+
+std::string technique_darkening_reason(const std::string& name, const EvalSettings& settings) {
+  if (is_soft_technique(name))
+    return "a soft technique estimates its penumbra (docs/soft-shadows.md §2)";
+  return make_technique(name, settings.technique)->darkening_reason();
+}
+
 TechniqueResult evaluate_technique(const ViewData& view, const std::string& technique_name,
                                    const EvalSettings& settings, ProgressBar* progress) {
   const Fragments& f = view.fragments;
   TechniqueResult result;
+  if (is_soft_technique(technique_name)) {
+    SoftResult soft = soft_shadow(technique_name, view.map, f, view.soft, settings.kernel,
+                                  settings.bias, settings.soft, settings.threads);
+    result.shadow = std::move(soft.shadow);
+    result.failures = soft.failures;
+    if (progress) progress->advance(f.size());
+    return result;
+  }
   auto probe = make_technique(technique_name, settings.technique);
   if (const lp::ProblemFactory* factory = probe->lp_factory()) {
     // The sweep's loop, so that eval's lp: and a sweep candidate are one computation.

@@ -8,6 +8,7 @@
 #include "shadow/fragments.h"
 #include "shadow/gaussian_kernel.h"
 #include "soft/area_light.h"
+#include "soft/soft_techniques.h"
 #include "techniques/technique.h"
 #include "util/progress.h"
 
@@ -33,6 +34,7 @@ struct EvalSettings {
   // The light of every view that names none, unless the dataset lists light_angles (light.angle,
   // light.directions; docs/soft-shadows.md §1).
   AreaLight light;
+  SoftParams soft;  // the soft techniques' constants (soft.*)
   int threads = 1;
 };
 
@@ -71,6 +73,11 @@ struct TechniqueResult {
   size_t failures = 0;
   size_t fallbacks = 0;  // Technique::fallbacks
 };
+
+// The technique's proven darkening bound and the reason it has none (Technique::darkening_bound):
+// a soft technique (soft/soft_techniques.h) claims none.
+double technique_darkening_bound(const std::string& name, const EvalSettings& settings);
+std::string technique_darkening_reason(const std::string& name, const EvalSettings& settings);
 
 // Runs `technique_name` on every receiver of `view` with one technique instance per thread.
 TechniqueResult evaluate_technique(const ViewData& view, const std::string& technique_name,

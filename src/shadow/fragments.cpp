@@ -132,10 +132,6 @@ Fragments collect_receivers(const LayerStack& stack, const GaussianKernel& kerne
   return f;
 }
 
-namespace {
-
-// F_{Z_t}(z) of the texel at (x, y): the light its ray loses in front of z (docs/reference.md §7).
-// Opaque texels, and the far plane outside the map, are one atom of mass 1: the hard test.
 double texel_cdf(const ShadowMap& map, int x, int y, double z) {
   if (!map.translucent() || x < 0 || y < 0 || x >= map.width || y >= map.height)
     return map.at(x, y) < z ? 1 : 0;
@@ -145,8 +141,6 @@ double texel_cdf(const ShadowMap& map, int x, int y, double z) {
     if (map.atom_depth[a] < z) cdf += map.atom_mass[a];
   return cdf;
 }
-
-}  // namespace
 
 ReceiverTest receiver_test(const ShadowMap& map, const GaussianKernel& kernel,
                            const BiasParams& bias, int x, int y, double zf, double gx, double gy) {

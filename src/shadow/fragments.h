@@ -102,6 +102,10 @@ inline ShadowRegion shadow_region(const Fragments& f, size_t k) {
                                                  : ShadowRegion::Silhouette;
 }
 
+// F_{Z_t}(z) of the texel at (x, y): the light its ray loses in front of z (docs/reference.md §7).
+// Opaque texels, and the far plane outside the map, are one atom of mass 1: the hard test.
+double texel_cdf(const ShadowMap& map, int x, int y, double z);
+
 // One receiver's test at texel (x, y) of `map`, its depth z_f and plane gradient (dz/dx, dz/dy
 // in texels): z_f - delta_f, F_Z there (the oracle) and the reference (docs/reference.md §3).
 struct ReceiverTest {

@@ -1,0 +1,300 @@
+#include "soft/soft_techniques.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+
+#include "moments/canonical.h"
+#include "moments/chebyshev.h"
+#include "moments/hamburger.h"
+#include "soft/summed_area.h"
+#include "util/error.h"
+#include "util/parallel_errors.h"
+
+namespace mb {
+
+const std::vector<OptionRecord<SoftParams>>& soft_option_records() {
+  static const std::vector<OptionRecord<SoftParams>> records{
+      {{"soft.pcss_search", OptionType::Integer, "15",
+        "Soft shadows: texels a side of PCSS's blocker search (pcss, pcss_exact; seed 004 §3.6 "
+        "uses 15x15).",
+        1, 255},
+       &SoftParams::pcss_search},
+      {{"soft.sat_search", OptionType::Integer, "27",
+        "Soft shadows: texels a side of the summed-area techniques' blocker search (pcss_vsm, "
+        "msm_soft; seed 004 §3.6 uses 27x27).",
+        1, 255},
+       &SoftParams::sat_search},
+      {{"soft.blocker_taps", OptionType::Integer, "5",
+        "pcss: point taps a side spread over the blocker search (seed 001: 4x4 or 5x5 suffice).", 1,
+        255},
+       &SoftParams::blocker_taps},
+      {{"soft.filter_taps", OptionType::Integer, "9",
+        "pcss: PCF taps a side spread over the penumbra's filter (seed 001 shows 5x5, 9x9, 17x17).",
+        1, 255},
+       &SoftParams::filter_taps},
+      {{"soft.min_filter", OptionType::Number, "0",
+        "Soft shadows: the narrowest filter in texels (seed 001: clamped for antialiasing); 0 "
+        "takes the box with the protocol kernel's variance, kernel.sigma sqrt(12).",
+        0, 255},
+       &SoftParams::min_filter},
+      {{"soft.max_filter", OptionType::Integer, "31",
+        "Soft shadows: the widest filter in texels; N = max(sat_search, max_filter + 2)^2 sets the "
+        "fixed-point scale (2^32 - 1) / N of summed-area tables (seed 004 §3.2): 31 keeps 22 bits, "
+        "rounding error 2.5e-7 below what msm_soft's alpha of 5e-6 absorbs.",
+        1, 4093},
+       &SoftParams::max_filter},
+      {{"soft.blocker_epsilon", OptionType::Number, "0.01",
+        "msm_soft: eps_z1, the weight of the receiver's own depth in the blocker average "
+        "(seed 004 §3.3).",
+        1e-12, 1},
+       &SoftParams::blocker_epsilon},
+      {{"soft.umbra_epsilon", OptionType::Number, "0.01",
+        "msm_soft: eps_u; a search region whose blockers weigh above 1 - eps_u is umbra "
+        "(seed 004 §3.4).",
+        0, 1},
+       &SoftParams::umbra_epsilon},
+      {{"soft.msm_alpha", OptionType::Number, "5e-6",
+        "msm_soft: the moment bias alpha of Hamburger 4MSM (seed 004's value for fixed-point "
+        "moments).",
+        0, 1},
+       &SoftParams::msm_alpha},
+      {{"soft.sat",
+        OptionType::String,
+        "fixed32",
+        "Summed-area tables: fixed32 (seed 004 §3.2: 32-bit integers modulo 2^32, scale "
+        "(2^32 - 1) / N) or exact (128-bit integers of 2^53 times each value).",
+        -std::numeric_limits<double>::infinity(),
+        std::numeric_limits<double>::infinity(),
+        {"fixed32", "exact"}},
+       &SoftParams::sat},
+  };
+  return records;
+}
+
+const std::vector<std::string>& soft_technique_names() {
+  static const std::vector<std::string> names{"pcss_exact", "pcss", "pcss_vsm", "msm_soft"};
+  return names;
+}
+
+bool is_soft_technique(const std::string& name) {
+  const auto& names = soft_technique_names();
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+namespace {
+
+struct Receiver {
+  int x = 0, y = 0;
+  double zf = 0, slope = 0;  // slope: |dz/dx| + |dz/dy|
+  double cx() const { return x + 0.5; }
+  double cy() const { return y + 0.5; }
+};
+
+// What a view's receivers share: the map, the light, the protocol's bias and the filter limits.
+struct SoftContext {
+  const ShadowMap& map;
+  const SoftReceivers& soft;
+  const BiasParams& bias;
+  const SoftParams& params;
+  double min_filter = 0;
+  // The protocol's bias (docs/reference.md §3) for a filter reaching `radius` texels: the
+  // receiver's plane stays behind z_f - delta at every texel the filter reads.
+  double test_depth(const Receiver& r, double radius) const {
+    return r.zf - (bias.constant + bias.slope * radius * r.slope);
+  }
+  // PCSS's penumbra for a directional light (seed 001, its directional form): the blockers' light
+  // cone widens by 2 tan(theta / 2) per unit of depth, here in texels; clamped to the filter range.
+  double filter_width(const Receiver& r, double blocker_depth) const {
+    const double w = 2 * soft.rim_shear * std::max(r.zf - blocker_depth, 0.0);
+    return std::clamp(w, min_filter, double(params.max_filter));
+  }
+};
+
+// The exact box filter: every texel the square of side w centred on the receiver overlaps,
+// weighted by the overlap's area.
+double box_pcf(const SoftContext& c, const Receiver& r, double w) {
+  const double z = c.test_depth(r, w / 2);
+  const double ax = r.cx() - w / 2, bx = r.cx() + w / 2, ay = r.cy() - w / 2, by = r.cy() + w / 2;
+  double sum = 0;
+  for (int j = int(std::floor(ay)); j < int(std::ceil(by)); ++j) {
+    const double wy = std::min(by, j + 1.0) - std::max(ay, double(j));
+    for (int i = int(std::floor(ax)); i < int(std::ceil(bx)); ++i) {
+      const double wx = std::min(bx, i + 1.0) - std::max(ax, double(i));
+      sum += wx * wy * texel_cdf(c.map, i, j, z);
+    }
+  }
+  return std::min(sum / (w * w), 1.0);
+}
+
+// PCSS computed exactly (docs/soft-shadows.md §2): every texel of the search region, the exact
+// mean of the blockers' depths, the exact box filter.
+double pcss_exact(const SoftContext& c, const Receiver& r) {
+  const int half = c.params.pcss_search / 2;
+  const double z = c.test_depth(r, half + 0.5);
+  double sum = 0, count = 0;
+  for (int j = r.y - half; j < r.y - half + c.params.pcss_search; ++j)
+    for (int i = r.x - half; i < r.x - half + c.params.pcss_search; ++i) {
+      const double d = c.map.at(i, j);
+      if (d < z) sum += d, count += 1;
+    }
+  if (count == 0) return 0;  // seed 001: no blocker, no shadow
+  return box_pcf(c, r, c.filter_width(r, sum / count));
+}
+
+// PCSS as seed 001 runs it: point taps spread evenly over the search region and over the filter.
+double pcss_sampled(const SoftContext& c, const Receiver& r) {
+  const int nb = c.params.blocker_taps, nf = c.params.filter_taps;
+  const double span = c.params.pcss_search - 1;
+  const double zs = c.test_depth(r, c.params.pcss_search / 2.0);
+  double sum = 0, count = 0;
+  for (int j = 0; j < nb; ++j)
+    for (int i = 0; i < nb; ++i) {
+      const double u = nb == 1 ? 0 : double(i) / (nb - 1) - 0.5,
+                   v = nb == 1 ? 0 : double(j) / (nb - 1) - 0.5;
+      const double d =
+          c.map.at(int(std::floor(r.cx() + u * span)), int(std::floor(r.cy() + v * span)));
+      if (d < zs) sum += d, count += 1;
+    }
+  if (count == 0) return 0;
+  const double w = c.filter_width(r, sum / count), z = c.test_depth(r, w / 2);
+  double shadow = 0;
+  for (int j = 0; j < nf; ++j)
+    for (int i = 0; i < nf; ++i) {
+      const double u = (i + 0.5) / nf - 0.5, v = (j + 0.5) / nf - 0.5;
+      shadow +=
+          texel_cdf(c.map, int(std::floor(r.cx() + u * w)), int(std::floor(r.cy() + v * w)), z);
+    }
+  return std::min(shadow / (nf * nf), 1.0);
+}
+
+// The SAT techniques' per-texel values: E over the texel's atoms of each function of depth
+// (one atom, the layer-0 depth, on an opaque map; docs/reference.md §7 on a translucent one).
+template <class F>
+std::vector<double> texel_values(const ShadowMap& map, int channels, F&& f) {
+  std::vector<double> values(map.depth.size() * channels, 0.0), one(channels);
+  for (size_t t = 0; t < map.depth.size(); ++t) {
+    if (!map.translucent()) {
+      f(map.depth[t], values.data() + t * channels);
+      continue;
+    }
+    for (uint64_t a = map.atom_offsets[t]; a < map.atom_offsets[t + 1]; ++a) {
+      f(map.atom_depth[a], one.data());
+      for (int k = 0; k < channels; ++k) values[t * channels + k] += map.blended_mass()[a] * one[k];
+    }
+  }
+  return values;
+}
+
+// The blocker search's integer box: the search region matched to the texel grid (seed 004 §3.6).
+void search_mean(const SummedAreaTable& sat, const Receiver& r, int side, double* mean) {
+  const int x0 = r.x - side / 2, y0 = r.y - side / 2;
+  sat.box_mean(x0, y0, x0 + side, y0 + side, mean);
+}
+
+void filter_mean(const SummedAreaTable& sat, const Receiver& r, double w, double* mean) {
+  sat.rect_mean(r.cx() - w / 2, r.cy() - w / 2, r.cx() + w / 2, r.cy() + w / 2, mean);
+}
+
+// Variance soft shadows (seed 001 PCSS + SAVSM; the blocker search of Yang et al.'s VSSM): the
+// search region's mean and variance bound the lit share p by Cantelli; the rest, at one depth,
+// must average (mu - p z) / (1 - p).
+double pcss_vsm(const SoftContext& c, const SummedAreaTable& sat, const Receiver& r) {
+  double b[2];
+  search_mean(sat, r, c.params.sat_search, b);
+  const double zs = c.test_depth(r, c.params.sat_search / 2.0);
+  if (zs <= b[0]) return 0;  // the mean lies behind the receiver: Cantelli bounds nothing
+  const double variance = std::max(b[1] - b[0] * b[0], 0.0);
+  const double lit = variance / (variance + (zs - b[0]) * (zs - b[0]));
+  if (1 - lit < 1e-6) return 0;
+  const double blocker = std::clamp((b[0] - lit * zs) / (1 - lit), 0.0, zs);
+  const double w = c.filter_width(r, blocker);
+  filter_mean(sat, r, w, b);
+  return vsm_bound(b, c.test_depth(r, w / 2), 0.0);
+}
+
+// Moment soft shadow mapping (seed 004 §3): the search region's four moments, biased by alpha,
+// give the canonical three-atom distribution through z_s; its atoms in front of z_s are the
+// blockers, their mean depth softened towards z_s by eps_z1; above 1 - eps_u they are umbra.
+double msm_soft(const SoftContext& c, const SummedAreaTable& sat, const Receiver& r) {
+  const double star[4] = {0.5, 0.5, 0.5, 0.5};
+  double b[4];
+  search_mean(sat, r, c.params.sat_search, b);
+  bias_moments(b, 4, c.params.msm_alpha, star);
+  const double zs = c.test_depth(r, c.params.sat_search / 2.0);
+  const MsmBound<double> canonical = hamburger4(b, zs);
+  double weight = 0, sum = 0;
+  for (int i = 1; i < canonical.node_count; ++i)
+    if (canonical.nodes[i] < zs)
+      weight += canonical.weights[i], sum += canonical.weights[i] * canonical.nodes[i];
+  if (weight > 1 - c.params.umbra_epsilon) return 1;
+  const double eps = c.params.blocker_epsilon;
+  const double blocker = (eps * zs + sum) / (eps + weight);
+  const double w = c.filter_width(r, blocker);
+  filter_mean(sat, r, w, b);
+  bias_moments(b, 4, c.params.msm_alpha, star);
+  return std::clamp(hamburger4(b, c.test_depth(r, w / 2)).lower, 0.0, 1.0);
+}
+
+std::unique_ptr<SummedAreaTable> build_sat(const std::string& name, const ShadowMap& map,
+                                           const SoftParams& p) {
+  const SatPrecision precision = p.sat == "exact" ? SatPrecision::Exact : SatPrecision::Fixed32;
+  const int side = std::max(p.sat_search, p.max_filter + 2);
+  const int64_t n = int64_t(side) * side;
+  const int pad = side / 2 + 2;
+  if (name == "pcss_vsm") {
+    auto f = [](double z, double* v) { v[0] = z, v[1] = z * z; };
+    double far[2];
+    f(1.0, far);
+    return std::make_unique<SummedAreaTable>(texel_values(map, 2, f), map.width, map.height, 2,
+                                             std::vector<double>(far, far + 2), pad, n, precision);
+  }
+  auto f = [](double z, double* v) { v[0] = z, v[1] = z * z, v[2] = v[1] * z, v[3] = v[2] * z; };
+  return std::make_unique<SummedAreaTable>(texel_values(map, 4, f), map.width, map.height, 4,
+                                           std::vector<double>(4, 1.0), pad, n, precision);
+}
+
+}  // namespace
+
+SoftResult soft_shadow(const std::string& name, const ShadowMap& map, const Fragments& fragments,
+                       const SoftReceivers& soft, const GaussianKernel& kernel,
+                       const BiasParams& bias, const SoftParams& params, int threads) {
+  if (!is_soft_technique(name)) throw InputError("technique '" + name + "' is no soft technique");
+  if (soft.angle_deg <= 0)
+    throw InputError("techniques: " + name +
+                     " estimates a penumbra and needs a light with an extent; expected "
+                     "light.angle > 0 or a dataset with light_angles (docs/soft-shadows.md)");
+  SoftContext context{map, soft, bias, params};
+  context.min_filter =
+      params.min_filter > 0 ? params.min_filter : std::min(kernel.sigma * std::sqrt(12.0), 255.0);
+  std::unique_ptr<SummedAreaTable> sat;
+  if (name != "pcss" && name != "pcss_exact") sat = build_sat(name, map, params);
+  std::vector<double> shadow(fragments.size());
+  ParallelErrors errors;
+  size_t failures = 0;
+#pragma omp parallel for schedule(dynamic, 1024) num_threads(threads) reduction(+ : failures)
+  for (size_t k = 0; k < fragments.size(); ++k)
+    errors.capture([&] {
+      Receiver r;
+      r.x = int(fragments.texel[k] % fragments.width);
+      r.y = int(fragments.texel[k] / fragments.width);
+      r.zf = fragments.zf[k];
+      r.slope = std::abs(soft.gx[k]) + std::abs(soft.gy[k]);
+      if (name == "pcss_exact")
+        shadow[k] = pcss_exact(context, r);
+      else if (name == "pcss")
+        shadow[k] = pcss_sampled(context, r);
+      else if (name == "pcss_vsm")
+        shadow[k] = pcss_vsm(context, *sat, r);
+      else
+        shadow[k] = msm_soft(context, *sat, r);
+      // A closed form on rounded moments can leave its domain (a Hankel matrix no longer positive
+      // definite): no answer, counted, and the receiver left unshadowed.
+      if (!std::isfinite(shadow[k])) shadow[k] = 0, ++failures;
+    });
+  errors.rethrow();
+  return {std::move(shadow), failures};
+}
+
+}  // namespace mb

@@ -1,0 +1,47 @@
+#pragma once
+// Soft-shadow techniques (docs/soft-shadows.md §2): percentage-closer soft shadows (seed 001) with
+// PCF, exactly and as sampled in practice, and through summed-area tables of VSM and four
+// power moments (seed 004 §3, moment soft shadow mapping). Each searches the shadow map around the
+// receiver for blockers, estimates the penumbra's width from their mean depth and the light's
+// angle, and filters the map over a box that wide.
+#include <string>
+#include <vector>
+
+#include "shadow/fragments.h"
+#include "soft/area_light.h"
+#include "util/option_record.h"
+
+namespace mb {
+
+// The seeds' constants as defaults; each option record states its source.
+struct SoftParams {
+  int pcss_search = 15;           // texels a side of PCSS's blocker search (seed 004 §3.6)
+  int sat_search = 27;            // ... of the SAT techniques' (seed 004 §3.6)
+  int blocker_taps = 5;           // pcss: point taps a side in the blocker search (seed 001)
+  int filter_taps = 9;            // pcss: PCF taps a side (seed 001's 9x9)
+  double min_filter = 0;          // texels; 0: the kernel's box of equal variance, sigma sqrt 12
+  int max_filter = 31;            // texels: the widest filter; N = (max_filter + 2)^2 at least
+  double blocker_epsilon = 0.01;  // msm_soft: eps_z1 (seed 004 §3.3)
+  double umbra_epsilon = 0.01;    // msm_soft: eps_u, the umbra skip (seed 004 §3.4)
+  double msm_alpha = 5e-6;        // msm_soft: moment bias (seed 004's alpha)
+  std::string sat = "fixed32";    // fixed32 (seed 004 §3.2) or exact
+};
+
+const std::vector<OptionRecord<SoftParams>>& soft_option_records();
+
+// pcss_exact, pcss, pcss_vsm, msm_soft.
+const std::vector<std::string>& soft_technique_names();
+bool is_soft_technique(const std::string& name);
+
+// One shadow per receiver of `fragments` for the technique `name`, on the view's shadow map, lit
+// by the light `soft` describes; every receiver on its own, so any thread count gives these bits.
+// InputError when the light has no extent (soft.angle_deg = 0).
+struct SoftResult {
+  std::vector<double> shadow;
+  size_t failures = 0;  // receivers whose answer was not a number (left at 0)
+};
+SoftResult soft_shadow(const std::string& name, const ShadowMap& map, const Fragments& fragments,
+                       const SoftReceivers& soft, const GaussianKernel& kernel,
+                       const BiasParams& bias, const SoftParams& params, int threads);
+
+}  // namespace mb

@@ -1,0 +1,203 @@
+// Summed-area tables and the soft techniques (soft/summed_area.h, soft/soft_techniques.h,
+// docs/soft-shadows.md §2).
+#include "soft/soft_techniques.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "raster/render_view.h"
+#include "scene/scene.h"
+#include "soft/summed_area.h"
+#include "test_support.h"
+
+namespace mb {
+namespace {
+
+struct Map {
+  int width = 37, height = 29, channels = 2;
+  std::vector<double> values;
+  Map() {
+    std::mt19937_64 rng(44);
+    std::uniform_real_distribution<double> u(0, 1);
+    values.resize(size_t(width) * height * channels);
+    for (double& v : values) v = u(rng);
+  }
+  double at(int x, int y, int c, const std::vector<double>& outside) const {
+    if (x < 0 || y < 0 || x >= width || y >= height) return outside[c];
+    return values[(size_t(y) * width + x) * channels + c];
+  }
+};
+
+// Exact: a box query is the direct sum of the same texels' integers (2^53 times each value,
+// rounded), bit for bit, also where the box leaves the map for the outside value.
+TEST(SummedAreaTable, ExactBoxEqualsTheDirectSumBitForBit) {
+  const Map m;
+  const std::vector<double> outside{1.0, 0.25};
+  const SummedAreaTable sat(m.values, m.width, m.height, 2, outside, 8, 30 * 30,
+                            SatPrecision::Exact);
+  std::mt19937_64 rng(1);
+  for (int q = 0; q < 500; ++q) {
+    const int x0 = int(rng() % 30) - 6, y0 = int(rng() % 22) - 6;  // within the pad
+    const int x1 = x0 + 1 + int(rng() % 14), y1 = y0 + 1 + int(rng() % 14);
+    double mean[2];
+    sat.box_mean(x0, y0, x1, y1, mean);
+    for (int c = 0; c < 2; ++c) {
+      unsigned __int128 sum = 0;
+      for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x)
+          sum += static_cast<unsigned __int128>(std::nearbyint(m.at(x, y, c, outside) * 0x1p53));
+      const double direct = double(sum) / 0x1p53 / (double(x1 - x0) * (y1 - y0));
+      ASSERT_EQ(mean[c], direct) << "box " << x0 << "," << y0 << " - " << x1 << "," << y1;
+    }
+  }
+}
+
+// Fixed32 (seed 004 §3.2): the prefix sums wrap modulo 2^32 many times over the map, yet every box
+// of at most N texels comes out within the rounding of its texels, half a unit of 1/scale each.
+TEST(SummedAreaTable, FixedPointBoxesOfUpToNTexelsWithinTheirRounding) {
+  const Map m;
+  const std::vector<double> outside{1.0, 1.0};
+  const int64_t n = 12 * 12;
+  const SummedAreaTable sat(m.values, m.width, m.height, 2, outside, 8, n, SatPrecision::Fixed32);
+  EXPECT_EQ(sat.scale(), std::floor(4294967295.0 / 144));
+  std::mt19937_64 rng(2);
+  double worst = 0;
+  for (int q = 0; q < 500; ++q) {
+    const int w = 1 + int(rng() % 12), h = 1 + int(rng() % 12);
+    const int x0 = int(rng() % 30) - 4, y0 = int(rng() % 22) - 4;  // within the pad
+    double mean[2];
+    sat.box_mean(x0, y0, x0 + w, y0 + h, mean);
+    for (int c = 0; c < 2; ++c) {
+      double direct = 0;
+      for (int y = y0; y < y0 + h; ++y)
+        for (int x = x0; x < x0 + w; ++x) direct += m.at(x, y, c, outside);
+      direct /= w * h;
+      worst = std::max(worst, std::abs(mean[c] - direct));
+      ASSERT_LE(std::abs(mean[c] - direct), 0.5 / sat.scale() + 1e-15);
+    }
+  }
+  std::printf("fixed32, N = 144: worst |SAT - direct| %.3g (bound %.3g)\n", worst,
+              0.5 / sat.scale());
+}
+
+// A fractional rectangle is the area-weighted mean of the texels it overlaps.
+TEST(SummedAreaTable, FractionalRectangleIsTheAreaWeightedMean) {
+  const Map m;
+  const std::vector<double> outside{1.0, 0.5};
+  const SummedAreaTable sat(m.values, m.width, m.height, 2, outside, 10, 40 * 40,
+                            SatPrecision::Exact);
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> ux(-5, 28), uy(-5, 21), len(0.05, 17);
+  for (int q = 0; q < 300; ++q) {  // within the pad of 10
+    const double ax = ux(rng), ay = uy(rng), bx = ax + len(rng), by = ay + len(rng);
+    double mean[2];
+    sat.rect_mean(ax, ay, bx, by, mean);
+    for (int c = 0; c < 2; ++c) {
+      double sum = 0;
+      for (int y = int(std::floor(ay)); y < int(std::ceil(by)); ++y)
+        for (int x = int(std::floor(ax)); x < int(std::ceil(bx)); ++x) {
+          const double wx = std::min(bx, x + 1.0) - std::max(ax, double(x));
+          const double wy = std::min(by, y + 1.0) - std::max(ay, double(y));
+          sum += wx * wy * sat.stored(x, y, c);
+        }
+      ASSERT_NEAR(mean[c], sum / ((bx - ax) * (by - ay)), 1e-13) << q;
+    }
+  }
+}
+
+struct Slab {
+  Scene scene;
+  LayerStack stack;
+  Fragments fragments;
+  ShadowMap map;
+  SoftReceivers soft;
+  LightFrame frame;
+};
+
+// The half-plane of the area light test (soft_area_light_test.cpp), lit by a 20-degree light.
+Slab slab() {
+  Scene scene = build_scene(parse_scene(testing_support::write_temp_file("slab.yaml", R"(
+name: slab
+parts:
+  - ground_plane: {size: 8}
+  - box: {size: [4, 0.01, 4]}
+    transform: {translate: [-2, 1, 0]}
+views:
+  - {name: top, azimuth: 0, elevation: 90, resolution: 256}
+)")));
+  const LightViewDesc view = scene.views.at(0);
+  LayerStack stack = render_view(scene, view, 2);
+  const GaussianKernel kernel = make_gaussian_kernel(1, 1);
+  Fragments fragments = collect_receivers(stack, kernel, BiasParams{}, 2);
+  SoftReceivers soft =
+      light_receivers(scene, view, stack, fragments, kernel, BiasParams{}, AreaLight{20, 16}, 2);
+  ShadowMap map = layer0_shadow_map(stack);
+  LightFrame frame(view, scene.mesh.vertices);
+  return {std::move(scene), std::move(stack), std::move(fragments),
+          std::move(map),   std::move(soft),  frame};
+}
+
+// PCSS's premise holds exactly for a blocker parallel to the receiver: every blocker found lies at
+// the slab's depth, the penumbra is 2 h tan(theta / 2) wide, and the box filter of a step is the
+// linear ramp across it. pcss_exact gives that ramp wherever its search region reaches the edge.
+TEST(SoftTechniques, ExactPcssOfAHalfPlaneIsTheLinearRamp) {
+  const Slab s = slab();
+  SoftParams params;
+  params.min_filter = 1;
+  const GaussianKernel kernel = make_gaussian_kernel(1, 1);
+  const std::vector<double> shadow =
+      soft_shadow("pcss_exact", s.map, s.fragments, s.soft, kernel, BiasParams{}, params, 2).shadow;
+  const double radius_texels =
+      1.01 * std::tan(10 * std::numbers::pi / 180) / s.frame.world_per_texel();
+  int checked = 0;
+  double worst = 0;
+  for (size_t k = 0; k < s.fragments.size(); ++k) {
+    const size_t t = s.fragments.texel[k];
+    const Eigen::Vector3d world = s.frame.to_world(
+        {double(t % s.stack.width) + 0.5, double(t / s.stack.width) + 0.5, s.fragments.zf[k]});
+    if (std::abs(world.y()) > 1e-6 || std::abs(world.z()) > 1.5 || world.x() < -3) continue;
+    const double d = world.x() / s.frame.world_per_texel();  // texels outside the edge
+    if (std::abs(d) > params.pcss_search / 2 - 1) continue;  // the search must reach the slab
+    const double ramp = std::clamp(0.5 - d / (2 * radius_texels), 0.0, 1.0);
+    worst = std::max(worst, std::abs(shadow[k] - ramp));
+    ++checked;
+  }
+  std::printf("pcss_exact on a half-plane: %d receivers, worst |G - ramp| %.4f\n", checked, worst);
+  EXPECT_GT(checked, 1000);
+  EXPECT_LT(worst, 0.05);  // half a texel of the rasterised edge over a 5.6-texel ramp's half
+}
+
+// Every receiver is answered on its own: 1 and 3 threads give the same bits.
+TEST(SoftTechniques, BitIdenticalForAnyThreadCount) {
+  const Slab s = slab();
+  const GaussianKernel kernel = make_gaussian_kernel(9, 2.4);
+  for (const std::string& name : soft_technique_names())
+    for (const std::string sat : {"fixed32", "exact"}) {
+      SoftParams params;
+      params.sat = sat;
+      const SoftResult one =
+          soft_shadow(name, s.map, s.fragments, s.soft, kernel, BiasParams{}, params, 1);
+      const SoftResult three =
+          soft_shadow(name, s.map, s.fragments, s.soft, kernel, BiasParams{}, params, 3);
+      EXPECT_EQ(one.failures, 0u) << name << " " << sat;
+      ASSERT_EQ(one.shadow, three.shadow) << name << " " << sat;
+    }
+}
+
+// A light without extent has no penumbra to estimate: a named error, not hard shadows.
+TEST(SoftTechniques, RefuseAHardLight) {
+  const Slab s = slab();
+  SoftReceivers hard = s.soft;
+  hard.angle_deg = 0;
+  const std::string message = testing_support::input_error_of([&] {
+    soft_shadow("pcss", s.map, s.fragments, hard, make_gaussian_kernel(9, 2.4), BiasParams{},
+                SoftParams{}, 1);
+  });
+  EXPECT_NE(message.find("light.angle > 0"), std::string::npos) << message;
+}
+
+}  // namespace
+}  // namespace mb
