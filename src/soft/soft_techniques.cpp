@@ -8,6 +8,7 @@
 #include "moments/canonical.h"
 #include "moments/chebyshev.h"
 #include "moments/hamburger.h"
+#include "soft/blocker_bounds.h"
 #include "soft/summed_area.h"
 #include "util/error.h"
 #include "util/parallel_errors.h"
@@ -69,6 +70,11 @@ const std::vector<OptionRecord<SoftParams>>& soft_option_records() {
         std::numeric_limits<double>::infinity(),
         {"fixed32", "exact"}},
        &SoftParams::sat},
+      {{"soft.audit", OptionType::Integer, "500",
+        "msm_soft: receivers per view whose blocker estimate is set beside its sharp bounds "
+        "(docs/soft-shadows.md §3; blocker_audit.csv); 0: none.",
+        0, 1000000},
+       &SoftParams::audit},
   };
   return records;
 }
@@ -217,21 +223,35 @@ double pcss_vsm(const SoftContext& c, const SummedAreaTable& sat, const Receiver
 // Moment soft shadow mapping (seed 004 §3): the search region's four moments, biased by alpha,
 // give the canonical three-atom distribution through z_s; its atoms in front of z_s are the
 // blockers, their mean depth softened towards z_s by eps_z1; above 1 - eps_u they are umbra.
-double msm_soft(const SoftContext& c, const SummedAreaTable& sat, const Receiver& r) {
+struct MsmBlocker {
+  double depth = 0;   // seed 004's estimate, eps_z1 included
+  double weight = 0;  // the canonical distribution's mass in front of z_s
+  double zs = 0;
+};
+
+MsmBlocker msm_blocker(const SoftContext& c, const SummedAreaTable& sat, const Receiver& r) {
   const double star[4] = {0.5, 0.5, 0.5, 0.5};
   double b[4];
   search_mean(sat, r, c.params.sat_search, b);
   bias_moments(b, 4, c.params.msm_alpha, star);
-  const double zs = c.test_depth(r, c.params.sat_search / 2.0);
-  const MsmBound<double> canonical = hamburger4(b, zs);
-  double weight = 0, sum = 0;
+  MsmBlocker out;
+  out.zs = c.test_depth(r, c.params.sat_search / 2.0);
+  const MsmBound<double> canonical = hamburger4(b, out.zs);
+  double sum = 0;
   for (int i = 1; i < canonical.node_count; ++i)
-    if (canonical.nodes[i] < zs)
-      weight += canonical.weights[i], sum += canonical.weights[i] * canonical.nodes[i];
-  if (weight > 1 - c.params.umbra_epsilon) return 1;
+    if (canonical.nodes[i] < out.zs)
+      out.weight += canonical.weights[i], sum += canonical.weights[i] * canonical.nodes[i];
   const double eps = c.params.blocker_epsilon;
-  const double blocker = (eps * zs + sum) / (eps + weight);
-  const double w = c.filter_width(r, blocker);
+  out.depth = (eps * out.zs + sum) / (eps + out.weight);
+  return out;
+}
+
+double msm_soft(const SoftContext& c, const SummedAreaTable& sat, const Receiver& r) {
+  const MsmBlocker blocker = msm_blocker(c, sat, r);
+  if (blocker.weight > 1 - c.params.umbra_epsilon) return 1;
+  const double w = c.filter_width(r, blocker.depth);
+  const double star[4] = {0.5, 0.5, 0.5, 0.5};
+  double b[4];
   filter_mean(sat, r, w, b);
   bias_moments(b, 4, c.params.msm_alpha, star);
   return std::clamp(hamburger4(b, c.test_depth(r, w / 2)).lower, 0.0, 1.0);
@@ -257,6 +277,28 @@ std::unique_ptr<SummedAreaTable> build_sat(const std::string& name, const Shadow
 
 }  // namespace
 
+namespace {
+
+SoftContext make_context(const ShadowMap& map, const SoftReceivers& soft,
+                         const GaussianKernel& kernel, const BiasParams& bias,
+                         const SoftParams& params) {
+  SoftContext context{map, soft, bias, params};
+  context.min_filter =
+      params.min_filter > 0 ? params.min_filter : std::min(kernel.sigma * std::sqrt(12.0), 255.0);
+  return context;
+}
+
+Receiver receiver_of(const Fragments& f, const SoftReceivers& soft, size_t k) {
+  Receiver r;
+  r.x = int(f.texel[k] % f.width);
+  r.y = int(f.texel[k] / f.width);
+  r.zf = f.zf[k];
+  r.slope = std::abs(soft.gx[k]) + std::abs(soft.gy[k]);
+  return r;
+}
+
+}  // namespace
+
 SoftResult soft_shadow(const std::string& name, const ShadowMap& map, const Fragments& fragments,
                        const SoftReceivers& soft, const GaussianKernel& kernel,
                        const BiasParams& bias, const SoftParams& params, int threads) {
@@ -265,9 +307,7 @@ SoftResult soft_shadow(const std::string& name, const ShadowMap& map, const Frag
     throw InputError("techniques: " + name +
                      " estimates a penumbra and needs a light with an extent; expected "
                      "light.angle > 0 or a dataset with light_angles (docs/soft-shadows.md)");
-  SoftContext context{map, soft, bias, params};
-  context.min_filter =
-      params.min_filter > 0 ? params.min_filter : std::min(kernel.sigma * std::sqrt(12.0), 255.0);
+  const SoftContext context = make_context(map, soft, kernel, bias, params);
   std::unique_ptr<SummedAreaTable> sat;
   if (name != "pcss" && name != "pcss_exact") sat = build_sat(name, map, params);
   std::vector<double> shadow(fragments.size());
@@ -276,11 +316,7 @@ SoftResult soft_shadow(const std::string& name, const ShadowMap& map, const Frag
 #pragma omp parallel for schedule(dynamic, 1024) num_threads(threads) reduction(+ : failures)
   for (size_t k = 0; k < fragments.size(); ++k)
     errors.capture([&] {
-      Receiver r;
-      r.x = int(fragments.texel[k] % fragments.width);
-      r.y = int(fragments.texel[k] / fragments.width);
-      r.zf = fragments.zf[k];
-      r.slope = std::abs(soft.gx[k]) + std::abs(soft.gy[k]);
+      const Receiver r = receiver_of(fragments, soft, k);
       if (name == "pcss_exact")
         shadow[k] = pcss_exact(context, r);
       else if (name == "pcss")
@@ -295,6 +331,63 @@ SoftResult soft_shadow(const std::string& name, const ShadowMap& map, const Frag
     });
   errors.rethrow();
   return {std::move(shadow), failures};
+}
+
+std::vector<BlockerAuditRow> blocker_audit(const ShadowMap& map, const Fragments& fragments,
+                                           const SoftReceivers& soft, const GaussianKernel& kernel,
+                                           const BiasParams& bias, const SoftParams& params,
+                                           int threads) {
+  std::vector<BlockerAuditRow> rows;
+  if (params.audit == 0 || fragments.size() == 0) return rows;
+  const SoftContext context = make_context(map, soft, kernel, bias, params);
+  const auto sat = build_sat("msm_soft", map, params);
+  lp::Discretization grid;
+  grid.grid = 256;
+  const lp::ProblemFactory factory(Basis::parse({"power4"}), grid);
+  const size_t stride = std::max<size_t>(1, fragments.size() / size_t(params.audit));
+  std::vector<size_t> picked;
+  for (size_t k = stride / 2; k < fragments.size(); k += stride) picked.push_back(k);
+  std::vector<BlockerAuditRow> found(picked.size());
+  std::vector<char> kept(picked.size(), 0);
+  ParallelErrors errors;
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+  for (size_t p = 0; p < picked.size(); ++p)
+    errors.capture([&] {
+      const Receiver r = receiver_of(fragments, soft, picked[p]);
+      const MsmBlocker seed = msm_blocker(context, *sat, r);
+      // The search region as its texels: their depths join the grid, their moments are exact sums.
+      const int side = params.sat_search, x0 = r.x - side / 2, y0 = r.y - side / 2;
+      std::vector<double> depths, points;
+      double moments[4] = {0, 0, 0, 0}, mass = 0, sum = 0;
+      for (int y = y0; y < y0 + side; ++y)
+        for (int x = x0; x < x0 + side; ++x) {
+          const double z = map.at(x, y), w = 1.0 / (side * side);
+          depths.push_back(z);
+          double zk = 1;
+          for (double& m : moments) zk *= z, m += w * zk;
+          if (z < seed.zs) mass += w, sum += w * z;
+        }
+      if (mass == 0) return;
+      for (int i = 0; i < grid.grid; ++i) points.push_back(double(i) / (grid.grid - 1));
+      std::sort(depths.begin(), depths.end());
+      depths.erase(std::unique(depths.begin(), depths.end()), depths.end());
+      points.insert(points.end(), depths.begin(), depths.end());
+      const BlockerBounds bounds = blocker_bounds(factory, points, moments, seed.zs);
+      if (!bounds.feasible) return;
+      BlockerAuditRow& row = found[p];
+      row.receiver = picked[p];
+      row.zs = seed.zs;
+      row.exact = sum / mass;
+      row.seed = seed.depth;
+      row.lo = bounds.lo, row.hi = bounds.hi;
+      row.penumbra_lo = 2 * soft.rim_shear * std::max(r.zf - bounds.hi, 0.0);
+      row.penumbra_hi = 2 * soft.rim_shear * std::max(r.zf - bounds.lo, 0.0);
+      kept[p] = 1;
+    });
+  errors.rethrow();
+  for (size_t p = 0; p < picked.size(); ++p)
+    if (kept[p]) rows.push_back(found[p]);
+  return rows;
 }
 
 }  // namespace mb

@@ -25,6 +25,7 @@ struct SoftParams {
   double umbra_epsilon = 0.01;    // msm_soft: eps_u, the umbra skip (seed 004 §3.4)
   double msm_alpha = 5e-6;        // msm_soft: moment bias (seed 004's alpha)
   std::string sat = "fixed32";    // fixed32 (seed 004 §3.2) or exact
+  int audit = 500;                // receivers per view whose blocker search is audited (§3)
 };
 
 const std::vector<OptionRecord<SoftParams>>& soft_option_records();
@@ -43,5 +44,22 @@ struct SoftResult {
 SoftResult soft_shadow(const std::string& name, const ShadowMap& map, const Fragments& fragments,
                        const SoftReceivers& soft, const GaussianKernel& kernel,
                        const BiasParams& bias, const SoftParams& params, int threads);
+
+// msm_soft's blocker search against its sharp bounds (docs/soft-shadows.md §3) on evenly spaced
+// receivers of a view (about `count`) whose search region holds a blocker: the region's own mean
+// blocker depth, seed 004's estimate from the region's fixed-point moments, and the smallest and
+// largest mean any distribution on the grid and the region's depths with the region's four power
+// moments allows (blocker_bounds), with the penumbra widths those allow. Layer-0 depths: on a
+// translucent map the audit reads the first surfaces only.
+struct BlockerAuditRow {
+  size_t receiver = 0;
+  double zs = 0, exact = 0, seed = 0, lo = 0, hi = 0;
+  double penumbra_lo = 0, penumbra_hi = 0;  // texels, from hi and lo
+  bool outside() const { return seed < lo - 1e-9 || seed > hi + 1e-9; }
+};
+std::vector<BlockerAuditRow> blocker_audit(const ShadowMap& map, const Fragments& fragments,
+                                           const SoftReceivers& soft, const GaussianKernel& kernel,
+                                           const BiasParams& bias, const SoftParams& params,
+                                           int threads);
 
 }  // namespace mb

@@ -1,0 +1,67 @@
+#include "soft/blocker_bounds.h"
+
+#include <glpk.h>
+
+#include <stdexcept>
+
+namespace mb {
+
+namespace {
+
+struct GlpkProblem {
+  glp_prob* lp = glp_create_prob();
+  ~GlpkProblem() { glp_delete_prob(lp); }
+};
+
+}  // namespace
+
+BlockerBounds blocker_bounds(const lp::ProblemFactory& factory, std::span<const double> points,
+                             std::span<const double> moments, double zs) {
+  const int m = factory.rows() - 1, n = int(points.size());
+  if (int(moments.size()) != m)
+    throw std::invalid_argument("blocker_bounds: one moment per basis function");
+  // Rows: T (1, b(z)) y - t T (1, b) = 0 (the mass and moment rows, transformed), the blocker
+  // mass 1. Columns: y_i, then t.
+  GlpkProblem p;
+  glp_add_rows(p.lp, m + 2);
+  for (int r = 1; r <= m + 1; ++r) glp_set_row_bnds(p.lp, r, GLP_FX, 0, 0);
+  std::vector<double> column(size_t(m) + 1), rhs(size_t(m) + 1), raw{1.0};
+  raw.insert(raw.end(), moments.begin(), moments.end());
+  factory.transform(raw.data(), rhs.data());
+  glp_set_row_bnds(p.lp, m + 2, GLP_FX, 1, 1);
+  glp_add_cols(p.lp, n + 1);
+  std::vector<int> ia{0}, ja{0};
+  std::vector<double> ar{0};
+  const auto add = [&](int row, int col, double v) {
+    if (v == 0) return;
+    ia.push_back(row), ja.push_back(col), ar.push_back(v);
+  };
+  for (int i = 0; i < n; ++i) {
+    const int col = i + 1;
+    glp_set_col_bnds(p.lp, col, GLP_LO, 0, 0);
+    factory.column(points[size_t(i)], column.data());
+    for (int r = 0; r <= m; ++r) add(r + 1, col, column[size_t(r)]);
+    const bool blocker = points[size_t(i)] < zs;
+    if (blocker) add(m + 2, col, 1);
+    glp_set_obj_coef(p.lp, col, blocker ? points[size_t(i)] : 0);
+  }
+  glp_set_col_bnds(p.lp, n + 1, GLP_LO, 0, 0);
+  for (int r = 0; r <= m; ++r) add(r + 1, n + 1, -rhs[size_t(r)]);
+  glp_load_matrix(p.lp, int(ia.size()) - 1, ia.data(), ja.data(), ar.data());
+  glp_smcp params;
+  glp_init_smcp(&params);
+  params.msg_lev = GLP_MSG_OFF;
+  params.presolve = GLP_OFF;
+  BlockerBounds out;
+  double bound[2];
+  for (int side = 0; side < 2; ++side) {
+    glp_set_obj_dir(p.lp, side == 0 ? GLP_MIN : GLP_MAX);
+    if (glp_simplex(p.lp, &params) != 0 || glp_get_status(p.lp) != GLP_OPT) return out;
+    bound[side] = glp_get_obj_val(p.lp);
+  }
+  out.feasible = true;
+  out.lo = bound[0], out.hi = bound[1];
+  return out;
+}
+
+}  // namespace mb

@@ -1,0 +1,102 @@
+// Sharp bounds on the mean blocker depth (soft/blocker_bounds.h, docs/soft-shadows.md §3).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+#include "soft/blocker_bounds.h"
+
+namespace mb {
+namespace {
+
+lp::ProblemFactory factory_of(const Basis& basis) {
+  lp::Discretization d;
+  d.grid = 256;
+  return lp::ProblemFactory(basis, d);
+}
+
+std::vector<double> grid_with(const std::vector<double>& depths) {
+  std::vector<double> points;
+  for (int i = 0; i < 256; ++i) points.push_back(i / 255.0);
+  points.insert(points.end(), depths.begin(), depths.end());
+  return points;
+}
+
+std::vector<double> moments_of(const Basis& basis, const std::vector<double>& z,
+                               const std::vector<double>& w) {
+  std::vector<double> b(basis.size(), 0.0);
+  for (size_t i = 0; i < z.size(); ++i)
+    for (size_t k = 0; k < basis.size(); ++k) b[k] += w[i] * basis[k](z[i]);
+  return b;
+}
+
+// The region's own blockers are one of the distributions the bounds range over: their mean depth
+// lies inside, for power and trigonometric moments, on regions of two to four surfaces.
+TEST(BlockerBounds, TheRegionsOwnMeanLiesInside) {
+  std::mt19937_64 rng(44);
+  std::uniform_real_distribution<double> u(0.05, 0.95), jitter(-0.01, 0.01), weight(0.2, 1);
+  int checked = 0;
+  for (const char* name : {"power4", "trig4"}) {
+    const Basis basis = Basis::parse({name});
+    const lp::ProblemFactory factory = factory_of(basis);
+    for (int n = 0; n < 60; ++n) {
+      const int surfaces = 2 + int(rng() % 3);
+      std::vector<double> z, w, centres;
+      for (int s = 0; s < surfaces; ++s) centres.push_back(u(rng));
+      double total = 0;
+      for (int i = 0; i < 25; ++i) {
+        z.push_back(std::clamp(centres[i % surfaces] + jitter(rng), 0.0, 1.0));
+        w.push_back(weight(rng));
+        total += w.back();
+      }
+      for (double& v : w) v /= total;
+      const double zs = u(rng);
+      double mass = 0, sum = 0;
+      for (size_t i = 0; i < z.size(); ++i)
+        if (z[i] < zs) mass += w[i], sum += w[i] * z[i];
+      if (mass == 0) continue;
+      const BlockerBounds b = blocker_bounds(factory, grid_with(z), moments_of(basis, z, w), zs);
+      ASSERT_TRUE(b.feasible) << name << " " << n;
+      EXPECT_LE(b.lo, sum / mass + 1e-7) << name << " " << n;
+      EXPECT_GE(b.hi, sum / mass - 1e-7) << name << " " << n;
+      EXPECT_LE(b.hi, zs);
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 80);
+}
+
+// Two atoms have moments on the boundary of power4's moment cone, which only they represent: the
+// interval closes on the blocker atom's depth.
+TEST(BlockerBounds, TwoAtomsCloseTheInterval) {
+  const Basis basis = Basis::parse({"power4"});
+  const lp::ProblemFactory factory = factory_of(basis);
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(0.05, 0.95), weight(0.1, 0.9);
+  double widest = 0;
+  for (int n = 0; n < 50; ++n) {
+    double a = u(rng), c = u(rng);
+    if (std::abs(a - c) < 0.05) continue;
+    if (a > c) std::swap(a, c);
+    const double wa = weight(rng), zs = (a + c) / 2;
+    const BlockerBounds b =
+        blocker_bounds(factory, grid_with({a, c}), moments_of(basis, {a, c}, {wa, 1 - wa}), zs);
+    ASSERT_TRUE(b.feasible) << n << " a " << a << " c " << c << " wa " << wa;
+    EXPECT_NEAR(b.lo, a, 1e-6) << n;
+    EXPECT_NEAR(b.hi, a, 1e-6) << n;
+    widest = std::max(widest, b.hi - b.lo);
+  }
+  std::printf("two atoms: widest interval %.3g\n", widest);
+}
+
+// Without mass in front of z_s no distribution has blockers.
+TEST(BlockerBounds, NoBlockersNoBounds) {
+  const Basis basis = Basis::parse({"power4"});
+  const BlockerBounds b =
+      blocker_bounds(factory_of(basis), grid_with({0.6}), moments_of(basis, {0.6}, {1.0}), 0.3);
+  EXPECT_FALSE(b.feasible);
+}
+
+}  // namespace
+}  // namespace mb
