@@ -10,6 +10,7 @@
 #include "scene/dataset.h"
 #include "scene/scene.h"
 #include "soft/area_light.h"
+#include "soft_test_scenes.h"
 #include "test_support.h"
 
 namespace mb {
@@ -69,15 +70,7 @@ double hidden_fraction(double d) {
 // degrees: across the slab's edge the plane's shadow follows the disk-segment profile over a
 // penumbra of 2 h tan(10 deg), here 22 texels (one tap, so the kernel does not blur it).
 TEST(AreaLight, HalfPlanePenumbraFollowsTheDiskSegment) {
-  const Scene scene = build_scene(parse_scene(testing_support::write_temp_file("slab.yaml", R"(
-name: slab
-parts:
-  - ground_plane: {size: 8}
-  - box: {size: [4, 0.01, 4]}
-    transform: {translate: [-2, 1, 0]}
-views:
-  - {name: top, azimuth: 0, elevation: 90, resolution: 512, margin: 0}
-)")));
+  const Scene scene = testing_support::slab_scene(512, 0);
   const GaussianKernel kernel = make_gaussian_kernel(1, 1);
   const BiasParams bias;
   const LightViewDesc& view = scene.views.at(0);

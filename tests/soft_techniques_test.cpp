@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -11,6 +12,7 @@
 #include "raster/render_view.h"
 #include "scene/scene.h"
 #include "soft/summed_area.h"
+#include "soft_test_scenes.h"
 #include "test_support.h"
 
 namespace mb {
@@ -119,15 +121,7 @@ struct Slab {
 
 // The half-plane of the area light test (soft_area_light_test.cpp), lit by a 20-degree light.
 Slab slab() {
-  Scene scene = build_scene(parse_scene(testing_support::write_temp_file("slab.yaml", R"(
-name: slab
-parts:
-  - ground_plane: {size: 8}
-  - box: {size: [4, 0.01, 4]}
-    transform: {translate: [-2, 1, 0]}
-views:
-  - {name: top, azimuth: 0, elevation: 90, resolution: 256}
-)")));
+  Scene scene = testing_support::slab_scene(256, 0.02);
   const LightViewDesc view = scene.views.at(0);
   LayerStack stack = render_view(scene, view, 2);
   const GaussianKernel kernel = make_gaussian_kernel(1, 1);
@@ -185,6 +179,43 @@ TEST(SoftTechniques, BitIdenticalForAnyThreadCount) {
       EXPECT_EQ(one.failures, 0u) << name << " " << sat;
       ASSERT_EQ(one.shadow, three.shadow) << name << " " << sat;
     }
+}
+
+// The audit's bounds range over every distribution with the region's moments, the region's own
+// among them: its mean blocker depth lies inside on every audited receiver. Where the region holds
+// two depths (the slab and the ground) its power moments admit no other distribution, and the
+// interval closes on the slab's depth.
+TEST(SoftTechniques, BlockerAuditBoundsHoldTheRegionsOwnMean) {
+  const Slab s = slab();
+  SoftParams params;
+  params.audit = 400;
+  const auto rows = blocker_audit(s.map, s.fragments, s.soft, make_gaussian_kernel(9, 2.4),
+                                  BiasParams{}, params, 2);
+  int two_depths = 0, outside = 0;
+  for (const BlockerAuditRow& row : rows) {
+    EXPECT_LE(row.lo, row.exact + 1e-7) << row.receiver;
+    EXPECT_GE(row.hi, row.exact - 1e-7) << row.receiver;
+    EXPECT_LE(row.penumbra_lo, row.penumbra_hi);
+    outside += row.outside();
+    const size_t t = s.fragments.texel[row.receiver];
+    const int x = int(t % s.map.width), y = int(t / s.map.width), half = params.sat_search / 2;
+    std::vector<double> depths;
+    for (int j = y - half; j <= y + half; ++j)
+      for (int i = x - half; i <= x + half; ++i) depths.push_back(s.map.at(i, j));
+    // Surfaces: depths more than 1e-9 apart (one plane's texels differ in their last bits).
+    std::sort(depths.begin(), depths.end());
+    int surfaces = 1;
+    for (size_t i = 1; i < depths.size(); ++i) surfaces += depths[i] - depths[i - 1] > 1e-9;
+    if (surfaces != 2) continue;
+    EXPECT_NEAR(row.hi - row.lo, 0, 1e-6) << row.receiver;
+    ++two_depths;
+  }
+  std::printf(
+      "blocker audit on the slab: %zu receivers with blockers, %d of two depths, "
+      "msm_soft's estimate outside the bounds on %d\n",
+      rows.size(), two_depths, outside);
+  EXPECT_GT(rows.size(), 20u);
+  EXPECT_GT(two_depths, 10);
 }
 
 // A light without extent has no penumbra to estimate: a named error, not hard shadows.

@@ -52,11 +52,17 @@ BlockerBounds blocker_bounds(const lp::ProblemFactory& factory, std::span<const 
   glp_init_smcp(&params);
   params.msg_lev = GLP_MSG_OFF;
   params.presolve = GLP_OFF;
+  // Regions of two or three surfaces make the LP highly degenerate, where GLPK's primal simplex
+  // can stall; an answer not reached within the limit is no answer (`solved` false).
+  params.it_lim = 20000;
   BlockerBounds out;
   double bound[2];
   for (int side = 0; side < 2; ++side) {
     glp_set_obj_dir(p.lp, side == 0 ? GLP_MIN : GLP_MAX);
-    if (glp_simplex(p.lp, &params) != 0 || glp_get_status(p.lp) != GLP_OPT) return out;
+    const int rc = glp_simplex(p.lp, &params);
+    if (rc == GLP_EITLIM || rc == GLP_EFAIL || rc == GLP_ESING || rc == GLP_ECOND) return out;
+    out.solved = true;
+    if (rc != 0 || glp_get_status(p.lp) != GLP_OPT) return out;
     bound[side] = glp_get_obj_val(p.lp);
   }
   out.feasible = true;

@@ -15,7 +15,8 @@
 namespace mb {
 
 struct BlockerBounds {
-  bool feasible = false;  // false: no distribution with these moments has mass in front of z_s
+  bool solved = false;    // false: GLPK gave no answer (iteration limit, singular basis)
+  bool feasible = false;  // solved and false: no distribution with these moments has blockers
   double lo = 0, hi = 0;  // the smallest and largest mean blocker depth
 };
 

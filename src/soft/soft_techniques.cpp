@@ -357,7 +357,7 @@ std::vector<BlockerAuditRow> blocker_audit(const ShadowMap& map, const Fragments
       const MsmBlocker seed = msm_blocker(context, *sat, r);
       // The search region as its texels: their depths join the grid, their moments are exact sums.
       const int side = params.sat_search, x0 = r.x - side / 2, y0 = r.y - side / 2;
-      std::vector<double> depths, points;
+      std::vector<double> depths, points = factory.grid()->points;
       double moments[4] = {0, 0, 0, 0}, mass = 0, sum = 0;
       for (int y = y0; y < y0 + side; ++y)
         for (int x = x0; x < x0 + side; ++x) {
@@ -368,7 +368,6 @@ std::vector<BlockerAuditRow> blocker_audit(const ShadowMap& map, const Fragments
           if (z < seed.zs) mass += w, sum += w * z;
         }
       if (mass == 0) return;
-      for (int i = 0; i < grid.grid; ++i) points.push_back(double(i) / (grid.grid - 1));
       std::sort(depths.begin(), depths.end());
       depths.erase(std::unique(depths.begin(), depths.end()), depths.end());
       points.insert(points.end(), depths.begin(), depths.end());
@@ -380,8 +379,10 @@ std::vector<BlockerAuditRow> blocker_audit(const ShadowMap& map, const Fragments
       row.exact = sum / mass;
       row.seed = seed.depth;
       row.lo = bounds.lo, row.hi = bounds.hi;
-      row.penumbra_lo = 2 * soft.rim_shear * std::max(r.zf - bounds.hi, 0.0);
-      row.penumbra_hi = 2 * soft.rim_shear * std::max(r.zf - bounds.lo, 0.0);
+      // The two LPs are solved apart: where the interval closes, their optima may cross by an ulp.
+      const auto [lo, hi] = std::minmax(bounds.lo, bounds.hi);
+      row.penumbra_lo = 2 * soft.rim_shear * std::max(r.zf - hi, 0.0);
+      row.penumbra_hi = 2 * soft.rim_shear * std::max(r.zf - lo, 0.0);
       kept[p] = 1;
     });
   errors.rethrow();
