@@ -2,7 +2,8 @@
 # Reproduces results/FINDINGS.md: the sweeps of configs/sweeps/findings-{2,3,4}.yaml on the default
 # dataset (every two-function candidate, 300 of three and 600 of four; about 45 minutes on two
 # cores, each resumable), their joint report, and eval of every classic technique under both
-# references. Writes into OUTROOT (default out/findings).
+# references, and eval of the soft techniques on the soft dataset. Writes into OUTROOT (default
+# out/findings).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=${1:-out/findings}
@@ -19,4 +20,8 @@ for reference in biased receiver_plane; do
   $mb eval -q --set dataset=default --set reference=$reference --set "techniques=$techniques" --set images=false \
     --out "$root/eval-$reference" --force >/dev/null
 done
+# Soft shadows (FINDINGS §11): the soft dataset's 36 view-angles against their area lights.
+$mb eval -q --set dataset=soft --set 'techniques=[pcf, hamburger4, vsm, pcss_exact, pcss, pcss_vsm, msm_soft]' \
+  --out "$root/eval-soft" --force >/dev/null
+echo "findings: $root/eval-soft/report.md"
 echo "findings: $root/report/report.md, $root/eval-biased/report.md, $root/eval-receiver_plane/report.md"

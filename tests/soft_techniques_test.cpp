@@ -165,6 +165,68 @@ TEST(SoftTechniques, ExactPcssOfAHalfPlaneIsTheLinearRamp) {
 }
 
 // Every receiver is answered on its own: 1 and 3 threads give the same bits.
+// The slab lit from 60 degrees: ground and slab slope in light space, so a filter that tested
+// them against one depth would need a bias that grows with its width.
+struct TiltedSlab {
+  LayerStack stack;
+  Fragments fragments;
+  ShadowMap map;
+  SoftReceivers soft;
+};
+TiltedSlab tilted_slab(const AreaLight& light, const GaussianKernel& kernel) {
+  const Scene scene = testing_support::slab_scene(256, 0.02, 60);
+  const LightViewDesc view = scene.views.at(0);
+  TiltedSlab s{render_view(scene, view, 2)};
+  s.fragments = collect_receivers(s.stack, kernel, BiasParams{}, 2);
+  s.soft = light_receivers(scene, view, s.stack, s.fragments, kernel, BiasParams{}, light, 2);
+  s.map = layer0_shadow_map(s.stack);
+  return s;
+}
+
+// A light of next to no extent leaves pcss_exact nothing but the protocol's kernel at the
+// protocol's bias: the hard reference, to the rounding of a sum in another order, on sloped
+// receivers too (docs/soft-shadows.md §2).
+TEST(SoftTechniques, ExactPcssOfAPointLikeLightIsTheProtocolsPcf) {
+  const GaussianKernel kernel = make_gaussian_kernel(9, 2.4);
+  const TiltedSlab s = tilted_slab(AreaLight{1e-9, 1}, kernel);
+  const std::vector<double> shadow =
+      soft_shadow("pcss_exact", s.map, s.fragments, s.soft, kernel, BiasParams{}, SoftParams{}, 2)
+          .shadow;
+  double worst = 0;
+  int penumbra = 0;
+  for (size_t k = 0; k < shadow.size(); ++k) {
+    worst = std::max(worst, std::abs(shadow[k] - s.soft.hard[k]));
+    penumbra += s.soft.hard[k] > 0.01 && s.soft.hard[k] < 0.99;
+  }
+  std::printf(
+      "pcss_exact at 1e-9 degrees: %zu receivers, %d in the kernel's penumbra, worst "
+      "|G - pcf| %.3g\n",
+      shadow.size(), penumbra, worst);
+  EXPECT_GT(penumbra, 200);
+  EXPECT_LT(worst, 1e-12);
+}
+
+// Where PCSS's premise holds (one blocker depth), PCSS must be nearer the area light than the hard
+// shadow is, also on sloped receivers and under the protocol's 9x9 kernel; the sampled PCSS too.
+TEST(SoftTechniques, PcssOfAHalfPlaneIsNearerTheAreaLightThanTheHardShadow) {
+  const GaussianKernel kernel = make_gaussian_kernel(9, 2.4);
+  const TiltedSlab s = tilted_slab(AreaLight{20, 64}, kernel);
+  double hard = 0;
+  for (size_t k = 0; k < s.fragments.size(); ++k)
+    hard += std::abs(s.soft.hard[k] - s.fragments.pcf[k]);
+  hard /= double(s.fragments.size());
+  for (const std::string name : {"pcss_exact", "pcss"}) {
+    const std::vector<double> shadow =
+        soft_shadow(name, s.map, s.fragments, s.soft, kernel, BiasParams{}, SoftParams{}, 2).shadow;
+    double error = 0;
+    for (size_t k = 0; k < shadow.size(); ++k) error += std::abs(shadow[k] - s.fragments.pcf[k]);
+    error /= double(shadow.size());
+    std::printf("%s on a tilted half-plane at 20 degrees: mean error %.5f, hard shadow %.5f\n",
+                name.c_str(), error, hard);
+    EXPECT_LT(error, 0.5 * hard) << name;
+  }
+}
+
 TEST(SoftTechniques, BitIdenticalForAnyThreadCount) {
   const Slab s = slab();
   const GaussianKernel kernel = make_gaussian_kernel(9, 2.4);

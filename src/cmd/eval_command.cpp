@@ -1,5 +1,6 @@
 // `momentbench eval`: techniques x dataset -> error table (stdout, report.md), errors.csv, one
-// error histogram CSV per technique, shadow and error images per view (issue 3).
+// error histogram CSV per technique, shadow and error images per view, and under area lights with
+// msm_soft, blocker_audit.csv (docs/soft-shadows.md §3).
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -8,10 +9,12 @@
 
 #include "cmd/command_common.h"
 #include "cmd/commands.h"
+#include "eval/blocker_audit_run.h"
 #include "eval/error_stats.h"
 #include "eval/eval_config.h"
 #include "eval/eval_run.h"
 #include "eval/evaluation.h"
+#include "report/blocker_audit_report.h"
 #include "report/camera_views.h"
 #include "report/darkening.h"
 #include "report/eval_report.h"
@@ -72,8 +75,9 @@ int run_eval(const EvalOptions& options) {
     if (!run.images) return;
     const std::string base =
         (out.staging() / "images" / (view.scene + "_" + view.view + "_")).string();
-    write_shadow_images(view, shadow, base + file_stem(name),
-                        name == "pcf" || name == "area_light" ? 0 : run.error_scale);
+    // The reference has no error image; under an area light pcf is the hard shadow, which has.
+    const bool reference = name == "area_light" || (name == "pcf" && !(view.soft.angle_deg > 0));
+    write_shadow_images(view, shadow, base + file_stem(name), reference ? 0 : run.error_scale);
   };
   for (const auto& view : views)
     if (view.soft.angle_deg > 0) write_images("area_light", view, view.fragments.pcf);
@@ -85,6 +89,12 @@ int run_eval(const EvalOptions& options) {
     write_dataset_camera_views(scenes, dataset, views, techniques, data.resolution, settings,
                                run.error_scale, out.staging() / "cameras", quiet);
 
+  // msm_soft's blocker search against its sharp bounds (docs/soft-shadows.md §3).
+  std::vector<ViewBlockerAudit> audits;
+  if (std::find(techniques.begin(), techniques.end(), "msm_soft") != techniques.end())
+    audits = audit_blocker_searches(views, settings);
+  if (!audits.empty()) write_file_atomically(out / "blocker_audit.csv", blocker_audit_csv(audits));
+
   const RunMetadata meta = collect_run_metadata(threads, process_arguments());
   EvalReportContext context;
   context.dataset = dataset.name, context.version = meta.version, context.git_sha = meta.git_sha;
@@ -95,6 +105,7 @@ int run_eval(const EvalOptions& options) {
   for (const auto& v : views) context.receivers += v.fragments.size();
   context.non_default = config.non_default();
   context.images = run.images, context.error_scale = run.error_scale;
+  context.sections = blocker_audit_section(audits);
   const EvalReport report =
       render_eval_report(context, rows.overall, rows.per_view, darkening_reason);
   write_file_atomically(out / "report.md", report.markdown);

@@ -67,6 +67,8 @@ EvalRows evaluate_techniques(const std::vector<ViewData>& views,
       EvalRow row = total;
       row.scene = view.scene;
       row.view = view.view;
+      row.light_angle = view.soft.angle_deg;
+      total.light_angle = std::max(total.light_angle, row.light_angle);
       row.stats = ErrorStats();
       row.interior = row.silhouette = ErrorStats();
       row.stats.add_all(view.fragments.pcf, result.shadow);

@@ -24,6 +24,7 @@ const std::vector<OptionRecord<EvalRunOptions>>& eval_run_options();
 // One technique on one view ("all" rows sum its views).
 struct EvalRow {
   std::string technique, scene, view;
+  double light_angle = 0;  // degrees: the view's area light (0: hard); on "all" rows the largest
   ErrorStats stats;
   ErrorStats interior, silhouette;  // the receivers of each ShadowRegion (shadow/fragments.h)
   double seconds = 0;

@@ -1,7 +1,9 @@
 #include "report/eval_report.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cstdio>
+#include <map>
 #include <sstream>
 
 #include "report/darkening.h"
@@ -67,6 +69,39 @@ std::string regions_csv(const std::vector<EvalRow>& overall, const std::vector<E
 
 // Three lines before the tables: what ran, the headline numbers, what needs attention (failed
 // fragments, an exact technique above its proven bound).
+// Under area lights, each technique's views merged per light angle (scene "all", view "<a>deg"):
+// a penumbra's error grows with the angle, and one mean over all angles would hide how.
+std::vector<EvalRow> per_angle_rows(const std::vector<EvalRow>& overall,
+                                    const std::vector<EvalRow>& per_view) {
+  std::vector<EvalRow> rows;
+  bool soft = false;
+  for (const auto& r : per_view) soft |= r.light_angle > 0;
+  if (!soft) return rows;
+  for (const auto& total : overall) {
+    std::map<double, EvalRow> by_angle;
+    for (const auto& r : per_view) {
+      if (r.technique != total.technique) continue;
+      auto [it, fresh] = by_angle.try_emplace(r.light_angle);
+      EvalRow& row = it->second;
+      if (fresh) {
+        row = total;
+        row.view = round_trip(r.light_angle) + "deg";
+        row.light_angle = r.light_angle;
+        row.stats = row.interior = row.silhouette = ErrorStats();
+        row.fallbacks = 0, row.seconds = 0, row.darkening_bound = r.darkening_bound;
+      }
+      row.darkening_bound = std::max(row.darkening_bound, r.darkening_bound);
+      row.stats.merge(r.stats);
+      row.interior.merge(r.interior);
+      row.silhouette.merge(r.silhouette);
+      row.fallbacks += r.fallbacks;
+      row.seconds += r.seconds;
+    }
+    for (auto& [angle, row] : by_angle) rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
 std::string summary_lines(const EvalReportContext& ctx, const std::vector<EvalRow>& overall) {
   std::ostringstream s, headline, attention;
   s << "**Summary.** " << overall.size() << " techniques on dataset " << ctx.dataset << ": "
@@ -149,9 +184,16 @@ EvalReport render_eval_report(const EvalReportContext& ctx, const std::vector<Ev
         {r.technique, r.stats.dark(), r.stats.max_dark, r.darkening_bound, reason_of(r.technique)});
   report << darkening_notes(darkening) << "## All views\n\n"
          << table.str() << "\n"
-         << regions_section(overall) << "## Per view\n\n"
-         << header;
+         << regions_section(overall);
+  const std::vector<EvalRow> per_angle = per_angle_rows(overall, per_view);
+  if (!per_angle.empty()) {
+    report << "## Per light angle\n\n" << header;
+    for (const auto& r : per_angle) report << table_row(r) << "\n";
+    report << "\n";
+  }
+  report << "## Per view\n\n" << header;
   for (const auto& r : per_view) report << table_row(r) << "\n";
+  report << (ctx.sections.empty() ? "" : "\n" + ctx.sections);
   for (const auto& r : overall)
     if (r.stats.failures)
       report << "\n**" << r.technique << "**: " << r.stats.failures
@@ -172,7 +214,7 @@ EvalReport render_eval_report(const EvalReportContext& ctx, const std::vector<Ev
   csv << "technique,scene,view,receivers,mean_error,leak,over_darkening,max_over_darkening,max_"
          "error,share_over_0.1,"
          "failures,reference\n";
-  for (const auto* rows : {&overall, &per_view})
+  for (const auto* rows : {&overall, &per_angle, &per_view})
     for (const auto& r : *rows)
       csv << '"' << r.technique << "\"," << r.scene << "," << (r.view.empty() ? "all" : r.view)
           << "," << r.stats.count << "," << number(r.stats.mean()) << "," << number(r.stats.leak())

@@ -21,6 +21,7 @@ struct EvalReportContext {
   std::vector<std::string> non_default;  // "key: value" of the options that differ
   bool images = false;
   double error_scale = 0;
+  std::string sections;  // markdown appended after the per-view table (e.g. the blocker audit)
 };
 
 struct EvalReport {

@@ -36,8 +36,9 @@ const std::vector<OptionRecord<SoftParams>>& soft_option_records() {
         1, 255},
        &SoftParams::filter_taps},
       {{"soft.min_filter", OptionType::Number, "0",
-        "Soft shadows: the narrowest filter in texels (seed 001: clamped for antialiasing); 0 "
-        "takes the box with the protocol kernel's variance, kernel.sigma sqrt(12).",
+        "Soft shadows: the narrowest penumbra box in texels (seed 001 clamps for antialiasing); "
+        "0, none: every technique filters with the protocol's kernel besides (docs/soft-shadows.md "
+        "§2).",
         0, 255},
        &SoftParams::min_filter},
       {{"soft.max_filter", OptionType::Integer, "31",
@@ -94,51 +95,82 @@ namespace {
 struct Receiver {
   int x = 0, y = 0;
   double zf = 0, slope = 0;  // slope: |dz/dx| + |dz/dy|
+  double gx = 0, gy = 0;
   double cx() const { return x + 0.5; }
   double cy() const { return y + 0.5; }
 };
 
-// What a view's receivers share: the map, the light, the protocol's bias and the filter limits.
+// What a view's receivers share: the map, the light, the protocol's bias and kernel, and the
+// filter limits.
 struct SoftContext {
   const ShadowMap& map;
   const SoftReceivers& soft;
+  const GaussianKernel& kernel;
   const BiasParams& bias;
   const SoftParams& params;
-  double min_filter = 0;
+  double kernel_variance = 0;  // per axis, of the protocol's discrete kernel
   // The protocol's bias (docs/reference.md §3) for a filter reaching `radius` texels: the
   // receiver's plane stays behind z_f - delta at every texel the filter reads.
   double test_depth(const Receiver& r, double radius) const {
     return r.zf - (bias.constant + bias.slope * radius * r.slope);
   }
+  // A search-region texel is a blocker where the protocol's own test would count it, the bias of
+  // the kernel's reach (docs/soft-shadows.md §2): a bias grown with the region drops the nearest
+  // blockers, and with them the contact shadows, while the reference keeps them.
+  double search_depth(const Receiver& r) const { return test_depth(r, kernel.radius()); }
   // PCSS's penumbra for a directional light (seed 001, its directional form): the blockers' light
   // cone widens by 2 tan(theta / 2) per unit of depth, here in texels; clamped to the filter range.
-  double filter_width(const Receiver& r, double blocker_depth) const {
+  double penumbra(const Receiver& r, double blocker_depth) const {
     const double w = 2 * soft.rim_shear * std::max(r.zf - blocker_depth, 0.0);
-    return std::clamp(w, min_filter, double(params.max_filter));
+    return std::clamp(w, params.min_filter, double(params.max_filter));
+  }
+  // The box a technique that filters with one box uses for the penumbra w: the variance of the
+  // penumbra's box and the protocol's kernel together (docs/soft-shadows.md §2), the box of
+  // width W over texels having (W^2 - 1) / 12.
+  double box_width(double w) const {
+    return std::min(std::sqrt(w * w + 12 * kernel_variance + 1), double(params.max_filter));
   }
 };
 
-// The exact box filter: every texel the square of side w centred on the receiver overlaps,
-// weighted by the overlap's area.
-double box_pcf(const SoftContext& c, const Receiver& r, double w) {
-  const double z = c.test_depth(r, w / 2);
-  const double ax = r.cx() - w / 2, bx = r.cx() + w / 2, ay = r.cy() - w / 2, by = r.cy() + w / 2;
+// The exact box filter: every texel the square of side w centred on (cx, cy) overlaps, weighted
+// by the overlap's area, tested against the receiver's plane through depth z at the centre
+// (gradient g in depth per texel); below a texel's width, the texel under the centre.
+double box_pcf(const ShadowMap& map, double cx, double cy, double w, double z, double gx,
+               double gy) {
+  if (w < 1e-9) return texel_cdf(map, int(std::floor(cx)), int(std::floor(cy)), z);
+  const double ax = cx - w / 2, bx = cx + w / 2, ay = cy - w / 2, by = cy + w / 2;
   double sum = 0;
   for (int j = int(std::floor(ay)); j < int(std::ceil(by)); ++j) {
     const double wy = std::min(by, j + 1.0) - std::max(ay, double(j));
+    const double zj = z + gy * (j + 0.5 - cy);
     for (int i = int(std::floor(ax)); i < int(std::ceil(bx)); ++i) {
       const double wx = std::min(bx, i + 1.0) - std::max(ax, double(i));
-      sum += wx * wy * texel_cdf(c.map, i, j, z);
+      sum += wx * wy * texel_cdf(map, i, j, zj + gx * (i + 0.5 - cx));
     }
   }
   return std::min(sum / (w * w), 1.0);
 }
 
+// The penumbra's box seen through the protocol's kernel: each kernel tap at the protocol's biased
+// depth, as the reference tests it, widened to the exact box of width w over which the depth
+// follows the receiver's plane (docs/soft-shadows.md §2). The reference is the area light's
+// visibility under the kernel, so a light of no extent gives the protocol's PCF exactly; the
+// plane keeps a wide box off the receiver's own surface without a bias grown with the box.
+double kernel_box_pcf(const SoftContext& c, const Receiver& r, double w) {
+  const int k = c.kernel.radius();
+  const double z = c.test_depth(r, k);
+  double sum = 0;
+  for (int dy = -k; dy <= k; ++dy)
+    for (int dx = -k; dx <= k; ++dx)
+      sum += c.kernel.weight(dx, dy) * box_pcf(c.map, r.cx() + dx, r.cy() + dy, w, z, r.gx, r.gy);
+  return std::min(sum, 1.0);
+}
+
 // PCSS computed exactly (docs/soft-shadows.md §2): every texel of the search region, the exact
-// mean of the blockers' depths, the exact box filter.
+// mean of the blockers' depths, the exact box filter under the protocol's kernel.
 double pcss_exact(const SoftContext& c, const Receiver& r) {
   const int half = c.params.pcss_search / 2;
-  const double z = c.test_depth(r, half + 0.5);
+  const double z = c.search_depth(r);
   double sum = 0, count = 0;
   for (int j = r.y - half; j < r.y - half + c.params.pcss_search; ++j)
     for (int i = r.x - half; i < r.x - half + c.params.pcss_search; ++i) {
@@ -146,14 +178,14 @@ double pcss_exact(const SoftContext& c, const Receiver& r) {
       if (d < z) sum += d, count += 1;
     }
   if (count == 0) return 0;  // seed 001: no blocker, no shadow
-  return box_pcf(c, r, c.filter_width(r, sum / count));
+  return kernel_box_pcf(c, r, c.penumbra(r, sum / count));
 }
 
 // PCSS as seed 001 runs it: point taps spread evenly over the search region and over the filter.
 double pcss_sampled(const SoftContext& c, const Receiver& r) {
   const int nb = c.params.blocker_taps, nf = c.params.filter_taps;
   const double span = c.params.pcss_search - 1;
-  const double zs = c.test_depth(r, c.params.pcss_search / 2.0);
+  const double zs = c.search_depth(r);
   double sum = 0, count = 0;
   for (int j = 0; j < nb; ++j)
     for (int i = 0; i < nb; ++i) {
@@ -164,13 +196,14 @@ double pcss_sampled(const SoftContext& c, const Receiver& r) {
       if (d < zs) sum += d, count += 1;
     }
   if (count == 0) return 0;
-  const double w = c.filter_width(r, sum / count), z = c.test_depth(r, w / 2);
+  // Taps over the penumbra's box widened by the kernel, against the receiver's plane.
+  const double w = c.box_width(c.penumbra(r, sum / count)), z = c.test_depth(r, c.kernel.radius());
   double shadow = 0;
   for (int j = 0; j < nf; ++j)
     for (int i = 0; i < nf; ++i) {
       const double u = (i + 0.5) / nf - 0.5, v = (j + 0.5) / nf - 0.5;
-      shadow +=
-          texel_cdf(c.map, int(std::floor(r.cx() + u * w)), int(std::floor(r.cy() + v * w)), z);
+      const int tx = int(std::floor(r.cx() + u * w)), ty = int(std::floor(r.cy() + v * w));
+      shadow += texel_cdf(c.map, tx, ty, z + r.gx * (tx - r.x) + r.gy * (ty - r.y));
     }
   return std::min(shadow / (nf * nf), 1.0);
 }
@@ -209,13 +242,13 @@ void filter_mean(const SummedAreaTable& sat, const Receiver& r, double w, double
 double pcss_vsm(const SoftContext& c, const SummedAreaTable& sat, const Receiver& r) {
   double b[2];
   search_mean(sat, r, c.params.sat_search, b);
-  const double zs = c.test_depth(r, c.params.sat_search / 2.0);
+  const double zs = c.search_depth(r);
   if (zs <= b[0]) return 0;  // the mean lies behind the receiver: Cantelli bounds nothing
   const double variance = std::max(b[1] - b[0] * b[0], 0.0);
   const double lit = variance / (variance + (zs - b[0]) * (zs - b[0]));
   if (1 - lit < 1e-6) return 0;
   const double blocker = std::clamp((b[0] - lit * zs) / (1 - lit), 0.0, zs);
-  const double w = c.filter_width(r, blocker);
+  const double w = c.box_width(c.penumbra(r, blocker));
   filter_mean(sat, r, w, b);
   return vsm_bound(b, c.test_depth(r, w / 2), 0.0);
 }
@@ -235,7 +268,7 @@ MsmBlocker msm_blocker(const SoftContext& c, const SummedAreaTable& sat, const R
   search_mean(sat, r, c.params.sat_search, b);
   bias_moments(b, 4, c.params.msm_alpha, star);
   MsmBlocker out;
-  out.zs = c.test_depth(r, c.params.sat_search / 2.0);
+  out.zs = c.search_depth(r);
   const MsmBound<double> canonical = hamburger4(b, out.zs);
   double sum = 0;
   for (int i = 1; i < canonical.node_count; ++i)
@@ -249,7 +282,7 @@ MsmBlocker msm_blocker(const SoftContext& c, const SummedAreaTable& sat, const R
 double msm_soft(const SoftContext& c, const SummedAreaTable& sat, const Receiver& r) {
   const MsmBlocker blocker = msm_blocker(c, sat, r);
   if (blocker.weight > 1 - c.params.umbra_epsilon) return 1;
-  const double w = c.filter_width(r, blocker.depth);
+  const double w = c.box_width(c.penumbra(r, blocker.depth));
   const double star[4] = {0.5, 0.5, 0.5, 0.5};
   double b[4];
   filter_mean(sat, r, w, b);
@@ -282,9 +315,9 @@ namespace {
 SoftContext make_context(const ShadowMap& map, const SoftReceivers& soft,
                          const GaussianKernel& kernel, const BiasParams& bias,
                          const SoftParams& params) {
-  SoftContext context{map, soft, bias, params};
-  context.min_filter =
-      params.min_filter > 0 ? params.min_filter : std::min(kernel.sigma * std::sqrt(12.0), 255.0);
+  SoftContext context{map, soft, kernel, bias, params};
+  for (int d = -kernel.radius(); d <= kernel.radius(); ++d)
+    context.kernel_variance += kernel.weights[d + kernel.radius()] * d * d;
   return context;
 }
 
@@ -294,6 +327,7 @@ Receiver receiver_of(const Fragments& f, const SoftReceivers& soft, size_t k) {
   r.y = int(f.texel[k] / f.width);
   r.zf = f.zf[k];
   r.slope = std::abs(soft.gx[k]) + std::abs(soft.gy[k]);
+  r.gx = soft.gx[k], r.gy = soft.gy[k];
   return r;
 }
 
@@ -383,6 +417,8 @@ std::vector<BlockerAuditRow> blocker_audit(const ShadowMap& map, const Fragments
       const auto [lo, hi] = std::minmax(bounds.lo, bounds.hi);
       row.penumbra_lo = 2 * soft.rim_shear * std::max(r.zf - hi, 0.0);
       row.penumbra_hi = 2 * soft.rim_shear * std::max(r.zf - lo, 0.0);
+      row.penumbra_exact = 2 * soft.rim_shear * std::max(r.zf - row.exact, 0.0);
+      row.penumbra_seed = 2 * soft.rim_shear * std::max(r.zf - row.seed, 0.0);
       kept[p] = 1;
     });
   errors.rethrow();

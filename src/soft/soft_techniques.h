@@ -19,7 +19,7 @@ struct SoftParams {
   int sat_search = 27;            // ... of the SAT techniques' (seed 004 §3.6)
   int blocker_taps = 5;           // pcss: point taps a side in the blocker search (seed 001)
   int filter_taps = 9;            // pcss: PCF taps a side (seed 001's 9x9)
-  double min_filter = 0;          // texels; 0: the kernel's box of equal variance, sigma sqrt 12
+  double min_filter = 0;          // texels: the narrowest penumbra box; the kernel filters besides
   int max_filter = 31;            // texels: the widest filter; N = (max_filter + 2)^2 at least
   double blocker_epsilon = 0.01;  // msm_soft: eps_z1 (seed 004 §3.3)
   double umbra_epsilon = 0.01;    // msm_soft: eps_u, the umbra skip (seed 004 §3.4)
@@ -54,7 +54,8 @@ SoftResult soft_shadow(const std::string& name, const ShadowMap& map, const Frag
 struct BlockerAuditRow {
   size_t receiver = 0;
   double zs = 0, exact = 0, seed = 0, lo = 0, hi = 0;
-  double penumbra_lo = 0, penumbra_hi = 0;  // texels, from hi and lo
+  double penumbra_lo = 0, penumbra_hi = 0;       // texels, from hi and lo
+  double penumbra_exact = 0, penumbra_seed = 0;  // texels, from exact and seed
   bool outside() const { return seed < lo - 1e-9 || seed > hi + 1e-9; }
 };
 std::vector<BlockerAuditRow> blocker_audit(const ShadowMap& map, const Fragments& fragments,

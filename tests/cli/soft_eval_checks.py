@@ -1,0 +1,41 @@
+"""Checks one `eval` run under area lights (tests/cli/CMakeLists.txt, cli.eval_soft):
+each per-angle row of errors.csv is its views merged (receiver-weighted means, the maximum), the
+report has the per-angle table and the blocker audit, and blocker_audit.csv's rows keep the
+audit's own invariants (the bounds ordered, their penumbrae ordered, `outside` as stated)."""
+import csv
+import sys
+from collections import defaultdict
+
+out = sys.argv[1]
+rows = list(csv.DictReader(open(out + "/errors.csv")))
+angle_rows = {(r["technique"], r["view"]): r for r in rows
+              if r["scene"] == "all" and r["view"] != "all"}
+views = defaultdict(list)
+for r in rows:
+    if r["scene"] != "all":
+        views[(r["technique"], r["view"].rsplit("_", 1)[1])].append(r)
+assert angle_rows, "no per-angle rows in errors.csv"
+assert set(angle_rows) == set(views), (sorted(angle_rows), sorted(views))
+for key, merged in angle_rows.items():
+    parts = views[key]
+    n = sum(int(p["receivers"]) for p in parts)
+    assert int(merged["receivers"]) == n, key
+    for column in ("mean_error", "leak", "over_darkening"):
+        mean = sum(int(p["receivers"]) * float(p[column]) for p in parts) / n
+        assert abs(mean - float(merged[column])) <= 1e-12, (key, column, mean, merged[column])
+    assert float(merged["max_error"]) == max(float(p["max_error"]) for p in parts), key
+
+report = open(out + "/report.md").read()
+assert "## Per light angle" in report
+assert "## msm_soft's blocker search against its sharp bounds" in report
+
+audit = list(csv.DictReader(open(out + "/blocker_audit.csv")))
+assert len(audit) > 20, len(audit)
+for a in audit:
+    lo, hi = sorted((float(a["blocker_lo"]), float(a["blocker_hi"])))
+    assert lo <= float(a["blocker_exact"]) + 1e-7 and float(a["blocker_exact"]) <= hi + 1e-7, a
+    assert float(a["penumbra_lo"]) <= float(a["penumbra_hi"]), a
+    seed = float(a["blocker_seed"])
+    outside = seed < float(a["blocker_lo"]) - 1e-9 or seed > float(a["blocker_hi"]) + 1e-9
+    assert int(a["outside"]) == outside, a
+print("soft eval: %d per-angle rows, %d audited receivers" % (len(angle_rows), len(audit)))
