@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <numbers>
 
 #include "moments/canonical.h"
 #include "moments/chebyshev.h"
@@ -19,8 +20,9 @@ const std::vector<OptionRecord<SoftParams>>& soft_option_records() {
   static const std::vector<OptionRecord<SoftParams>> records{
       {{"soft.pcss_search", OptionType::Integer, "15",
         "Soft shadows: texels a side of PCSS's blocker search (pcss, pcss_exact; seed 004 §3.6 "
-        "uses 15x15).",
-        1, 255},
+        "uses 15x15); 0 takes it from the light's size as seed 001 does: the light's cone at the "
+        "receiver's depth, 2 ceil(rim_shear z_f) + 1, at most 255.",
+        0, 255},
        &SoftParams::pcss_search},
       {{"soft.sat_search", OptionType::Integer, "27",
         "Soft shadows: texels a side of the summed-area techniques' blocker search (pcss_vsm, "
@@ -71,6 +73,21 @@ const std::vector<OptionRecord<SoftParams>>& soft_option_records() {
         std::numeric_limits<double>::infinity(),
         {"fixed32", "exact"}},
        &SoftParams::sat},
+      {{"soft.esm_c", OptionType::Number, "30",
+        "pcss_esm: c in exp(c (z - 1)), stored in the summed-area table (seed 001 tunes 10 to 30; "
+        "seed 002's 80 underflows a fixed-point table's 2^-22 beyond depth differences of 0.19).",
+        0.1, 200},
+       &SoftParams::esm_c},
+      {{"soft.csm_terms", OptionType::Integer, "8",
+        "pcss_csm: Fourier terms M of the shadow test (seed 001: M = 8); the table holds 4M + 1 "
+        "channels (the blocker search needs z cos and z sin too).",
+        1, 32},
+       &SoftParams::csm_terms},
+      {{"soft.csm_absorption", OptionType::Number, "1",
+        "pcss_csm: alpha of the ringing attenuation exp(-alpha (k / M)^2) of term k (seed 001's "
+        "AbsorptionFactor; it names no value); 0: none.",
+        0, 100},
+       &SoftParams::csm_absorption},
       {{"soft.audit", OptionType::Integer, "500",
         "msm_soft: receivers per view whose blocker estimate is set beside its sharp bounds "
         "(docs/soft-shadows.md §3; blocker_audit.csv); 0: none.",
@@ -81,7 +98,8 @@ const std::vector<OptionRecord<SoftParams>>& soft_option_records() {
 }
 
 const std::vector<std::string>& soft_technique_names() {
-  static const std::vector<std::string> names{"pcss_exact", "pcss", "pcss_vsm", "msm_soft"};
+  static const std::vector<std::string> names{"pcss_exact", "pcss",     "pcss_vsm",
+                                              "pcss_esm",   "pcss_csm", "msm_soft"};
   return names;
 }
 
@@ -118,6 +136,12 @@ struct SoftContext {
   // the kernel's reach (docs/soft-shadows.md §2): a bias grown with the region drops the nearest
   // blockers, and with them the contact shadows, while the reference keeps them.
   double search_depth(const Receiver& r) const { return test_depth(r, kernel.radius()); }
+  // Texels a side of PCSS's search region: the option, or (0) seed 001's region from the light's
+  // size, the light's cone from the receiver back to the depth range's near end (z = 0).
+  int pcss_search(const Receiver& r) const {
+    if (params.pcss_search > 0) return params.pcss_search;
+    return int(std::min(2 * std::ceil(soft.rim_shear * r.zf) + 1, 255.0));
+  }
   // PCSS's penumbra for a directional light (seed 001, its directional form): the blockers' light
   // cone widens by 2 tan(theta / 2) per unit of depth, here in texels; clamped to the filter range.
   double penumbra(const Receiver& r, double blocker_depth) const {
@@ -169,11 +193,11 @@ double kernel_box_pcf(const SoftContext& c, const Receiver& r, double w) {
 // PCSS computed exactly (docs/soft-shadows.md §2): every texel of the search region, the exact
 // mean of the blockers' depths, the exact box filter under the protocol's kernel.
 double pcss_exact(const SoftContext& c, const Receiver& r) {
-  const int half = c.params.pcss_search / 2;
+  const int side = c.pcss_search(r), half = side / 2;
   const double z = c.search_depth(r);
   double sum = 0, count = 0;
-  for (int j = r.y - half; j < r.y - half + c.params.pcss_search; ++j)
-    for (int i = r.x - half; i < r.x - half + c.params.pcss_search; ++i) {
+  for (int j = r.y - half; j < r.y - half + side; ++j)
+    for (int i = r.x - half; i < r.x - half + side; ++i) {
       const double d = c.map.at(i, j);
       if (d < z) sum += d, count += 1;
     }
@@ -184,7 +208,7 @@ double pcss_exact(const SoftContext& c, const Receiver& r) {
 // PCSS as seed 001 runs it: point taps spread evenly over the search region and over the filter.
 double pcss_sampled(const SoftContext& c, const Receiver& r) {
   const int nb = c.params.blocker_taps, nf = c.params.filter_taps;
-  const double span = c.params.pcss_search - 1;
+  const double span = c.pcss_search(r) - 1;
   const double zs = c.search_depth(r);
   double sum = 0, count = 0;
   for (int j = 0; j < nb; ++j)
@@ -253,6 +277,81 @@ double pcss_vsm(const SoftContext& c, const SummedAreaTable& sat, const Receiver
   return vsm_bound(b, c.test_depth(r, w / 2), 0.0);
 }
 
+// The one-depth blocker estimate of a region whose lit share is p at z_s and whose mean depth
+// is mu: the rest, at one depth, averages (mu - p z_s) / (1 - p); none when p is (nearly) 1.
+bool blocker_from_lit_share(double mu, double p, double zs, double* blocker) {
+  if (1 - p < 1e-6) return false;
+  *blocker = std::clamp((mu - p * zs) / (1 - p), 0.0, zs);
+  return true;
+}
+
+// ESM through a summed-area table (seed 001 "PCSS + ESM"): channels exp(c (z - 1)) and z. The lit
+// share at depth d is E[exp(c (z - d))], clamped to 1 (seed 002); the blocker search takes it at
+// z_s and the rest of the region at one depth, as pcss_vsm does.
+double pcss_esm(const SoftContext& c, const SummedAreaTable& sat, const Receiver& r) {
+  const double k = c.params.esm_c;
+  const auto lit = [&](const double* b, double d) {
+    return std::min(b[0] * std::exp(k * (1 - d)), 1.0);
+  };
+  double b[2];
+  search_mean(sat, r, c.params.sat_search, b);
+  const double zs = c.search_depth(r);
+  double blocker = 0;
+  if (!blocker_from_lit_share(b[1], lit(b, zs), zs, &blocker)) return 0;
+  const double w = c.box_width(c.penumbra(r, blocker));
+  filter_mean(sat, r, w, b);
+  return 1 - lit(b, c.test_depth(r, w / 2));
+}
+
+// CSM's channels per term k = 1..M, c_k = (2k - 1) pi: cos(c_k z), sin(c_k z), z cos(c_k z),
+// z sin(c_k z); then z. Each in [-1, 1], stored as (v + 1) / 2 in the table.
+void csm_channels(int terms, double z, double* v) {
+  for (int k = 0; k < terms; ++k) {
+    const double ck = (2 * k + 1) * std::numbers::pi;
+    v[4 * k] = std::cos(ck * z), v[4 * k + 1] = std::sin(ck * z);
+    v[4 * k + 2] = z * v[4 * k], v[4 * k + 3] = z * v[4 * k + 1];
+  }
+  v[4 * terms] = z;
+  for (int i = 0; i <= 4 * terms; ++i) v[i] = (v[i] + 1) / 2;
+}
+
+// Seed 001's CSM test, the Fourier series of the step H(z - d) truncated at M terms, each
+// attenuated by exp(-alpha (k / M)^2) against ringing, on filtered channels `m` (unscaled):
+// f = 1/2 + 2 sum_k a_k / c_k (cos(c_k d) E[sin(c_k z)] - sin(c_k d) E[cos(c_k z)]). `offset`
+// 2 reads E[z cos], E[z sin] instead, giving E[z f] without its 1/2 E[z] term.
+double csm_series(const SoftContext& c, const double* m, double d, int offset) {
+  const int terms = c.params.csm_terms;
+  double sum = 0;
+  for (int k = 0; k < terms; ++k) {
+    const double ck = (2 * k + 1) * std::numbers::pi;
+    const double a = std::exp(-c.params.csm_absorption * double(k + 1) * (k + 1) / (terms * terms));
+    sum +=
+        a / ck * (std::cos(ck * d) * m[4 * k + offset + 1] - std::sin(ck * d) * m[4 * k + offset]);
+  }
+  return 2 * sum;
+}
+
+// CSM through a summed-area table (seed 001 "SACSM"): the lit share saturate(2 f) (seed 001 scales
+// by 2 so that f = 1/2 at d = z reads lit); the blocker search averages z over the region weighted
+// by CSM's own shadow estimate 1 - f at z_s, E[z (1 - f)] / E[1 - f], from the z cos and z sin
+// channels (docs/soft-shadows.md §2).
+double pcss_csm(const SoftContext& c, const SummedAreaTable& sat, const Receiver& r) {
+  const int n = 4 * c.params.csm_terms + 1;
+  std::vector<double> m(n);
+  search_mean(sat, r, c.params.sat_search, m.data());
+  for (double& v : m) v = 2 * v - 1;
+  const double zs = c.search_depth(r), mu = m[n - 1];
+  const double shadowed = 0.5 - csm_series(c, m.data(), zs, 0);       // E[1 - f]
+  const double weighted = 0.5 * mu - csm_series(c, m.data(), zs, 2);  // E[z (1 - f)]
+  if (shadowed < 1e-6) return 0;
+  const double blocker = std::clamp(weighted / shadowed, 0.0, zs);
+  const double w = c.box_width(c.penumbra(r, blocker));
+  filter_mean(sat, r, w, m.data());
+  for (double& v : m) v = 2 * v - 1;
+  const double f = 0.5 + csm_series(c, m.data(), c.test_depth(r, w / 2), 0);
+  return 1 - std::clamp(2 * f, 0.0, 1.0);
+}
+
 // Moment soft shadow mapping (seed 004 §3): the search region's four moments, biased by alpha,
 // give the canonical three-atom distribution through z_s; its atoms in front of z_s are the
 // blockers, their mean depth softened towards z_s by eps_z1; above 1 - eps_u they are umbra.
@@ -302,6 +401,19 @@ std::unique_ptr<SummedAreaTable> build_sat(const std::string& name, const Shadow
     f(1.0, far);
     return std::make_unique<SummedAreaTable>(texel_values(map, 2, f), map.width, map.height, 2,
                                              std::vector<double>(far, far + 2), pad, n, precision);
+  }
+  if (name == "pcss_esm") {
+    auto f = [c = p.esm_c](double z, double* v) { v[0] = std::exp(c * (z - 1)), v[1] = z; };
+    return std::make_unique<SummedAreaTable>(texel_values(map, 2, f), map.width, map.height, 2,
+                                             std::vector<double>{1.0, 1.0}, pad, n, precision);
+  }
+  if (name == "pcss_csm") {
+    const int channels = 4 * p.csm_terms + 1;
+    auto f = [terms = p.csm_terms](double z, double* v) { csm_channels(terms, z, v); };
+    std::vector<double> far(channels);
+    csm_channels(p.csm_terms, 1.0, far.data());
+    return std::make_unique<SummedAreaTable>(texel_values(map, channels, f), map.width, map.height,
+                                             channels, far, pad, n, precision);
   }
   auto f = [](double z, double* v) { v[0] = z, v[1] = z * z, v[2] = v[1] * z, v[3] = v[2] * z; };
   return std::make_unique<SummedAreaTable>(texel_values(map, 4, f), map.width, map.height, 4,
@@ -357,6 +469,10 @@ SoftResult soft_shadow(const std::string& name, const ShadowMap& map, const Frag
         shadow[k] = pcss_sampled(context, r);
       else if (name == "pcss_vsm")
         shadow[k] = pcss_vsm(context, *sat, r);
+      else if (name == "pcss_esm")
+        shadow[k] = pcss_esm(context, *sat, r);
+      else if (name == "pcss_csm")
+        shadow[k] = pcss_csm(context, *sat, r);
       else
         shadow[k] = msm_soft(context, *sat, r);
       // A closed form on rounded moments can leave its domain (a Hankel matrix no longer positive

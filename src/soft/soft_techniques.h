@@ -25,12 +25,15 @@ struct SoftParams {
   double umbra_epsilon = 0.01;    // msm_soft: eps_u, the umbra skip (seed 004 §3.4)
   double msm_alpha = 5e-6;        // msm_soft: moment bias (seed 004's alpha)
   std::string sat = "fixed32";    // fixed32 (seed 004 §3.2) or exact
+  double esm_c = 30;              // pcss_esm: the exponent's scale (seed 001 tunes 10 to 30)
+  int csm_terms = 8;              // pcss_csm: Fourier terms M (seed 001: M = 8)
+  double csm_absorption = 1;      // pcss_csm: alpha of the ringing attenuation exp(-alpha (k/M)^2)
   int audit = 500;                // receivers per view whose blocker search is audited (§3)
 };
 
 const std::vector<OptionRecord<SoftParams>>& soft_option_records();
 
-// pcss_exact, pcss, pcss_vsm, msm_soft.
+// pcss_exact, pcss, pcss_vsm, pcss_esm, pcss_csm, msm_soft.
 const std::vector<std::string>& soft_technique_names();
 bool is_soft_technique(const std::string& name);
 

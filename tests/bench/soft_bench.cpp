@@ -55,7 +55,8 @@ void BM_Reference(benchmark::State& state) {
 }
 BENCHMARK(BM_Reference)->Arg(0)->Arg(16)->Arg(64)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-const char* const kTechniques[] = {"pcss_exact", "pcss", "pcss_vsm", "msm_soft"};
+const char* const kTechniques[] = {"pcss_exact", "pcss",     "pcss_vsm",
+                                   "pcss_esm",   "pcss_csm", "msm_soft"};
 
 void BM_Technique(benchmark::State& state) {
   const Garden& g = garden();
@@ -72,7 +73,7 @@ void BM_Technique(benchmark::State& state) {
       benchmark::Counter(double(f.size()) * state.iterations(), benchmark::Counter::kIsRate);
   state.SetLabel(name);
 }
-BENCHMARK(BM_Technique)->DenseRange(0, 3)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Technique)->DenseRange(0, 5)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 }  // namespace mb
