@@ -103,3 +103,47 @@ TEST(CameraViews, ImagesShadeThePcfShadowDarker) {
 
 }  // namespace
 }  // namespace mb
+
+namespace mb {
+namespace {
+
+// Under an area light a camera pixel is still its light texel's receiver: its reference is the
+// area light's shadow computed for the light view's fragment of that texel at that depth, its
+// hard test is kept for the pcf row, and the penumbra widens the shadow beyond the hard one.
+TEST(CameraViews, AnAreaLightsShadowIsTheLightViewsAtTheSameTexel) {
+  SquareScene s;
+  EvalSettings settings;
+  settings.threads = 2;
+  settings.light.directions = 16;
+  LightViewDesc slant = s.scene.views[0];
+  slant.light_angle_deg = 6;
+  const ViewData light = prepare_view(s.scene, slant, settings);
+  const CameraView view = camera_view(s.scene, slant, light, s.camera, settings);
+  const Fragments& f = view.receivers.fragments;
+  ASSERT_EQ(view.receivers.soft.angle_deg, 6);
+  ASSERT_EQ(view.receivers.soft.hard.size(), f.size());
+  size_t matched = 0, penumbra = 0;
+  for (size_t k = 0, j = 0; k < f.size(); ++k) {
+    while (j < light.fragments.size() && light.fragments.texel[j] < f.texel[k]) ++j;
+    for (size_t i = j; i < light.fragments.size() && light.fragments.texel[i] == f.texel[k]; ++i)
+      if (std::abs(light.fragments.zf[i] - f.zf[k]) < 1e-9) {
+        EXPECT_NEAR(f.pcf[k], light.fragments.pcf[i], 1e-6);
+        EXPECT_EQ(view.receivers.soft.hard[k], light.soft.hard[i]);
+        ++matched;
+      }
+    penumbra += f.pcf[k] > 0.02 && view.receivers.soft.hard[k] < 0.02;
+  }
+  EXPECT_GT(matched, f.size() / 2);
+  EXPECT_GT(penumbra, 100u);  // lit by the hard light, partly shadowed by the area light
+  // The soft techniques run on camera receivers as on the light view's.
+  const TechniqueResult pcss = evaluate_technique(view.receivers, "pcss_exact", settings, nullptr);
+  double soft = 0, hard = 0;
+  for (size_t k = 0; k < f.size(); ++k) {
+    soft += std::abs(pcss.shadow[k] - f.pcf[k]);
+    hard += std::abs(view.receivers.soft.hard[k] - f.pcf[k]);
+  }
+  EXPECT_LT(soft, 0.5 * hard);
+}
+
+}  // namespace
+}  // namespace mb

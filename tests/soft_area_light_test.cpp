@@ -28,6 +28,19 @@ Lit lit(const Scene& scene, const LightViewDesc& view, const GaussianKernel& ker
   return out;
 }
 
+// The area light's shadow of a view's own receivers, their planes read from its stack.
+AreaLightShadow area_light_shadow(const Scene& scene, const LightViewDesc& view, const Lit& l,
+                                  const GaussianKernel& kernel, const BiasParams& bias,
+                                  const AreaLight& light) {
+  std::vector<double> gx, gy;
+  for (size_t k = 0; k < l.fragments.size(); ++k) {
+    const uint64_t i = l.stack.offsets[l.fragments.texel[k]] + l.fragments.layer[k];
+    gx.push_back(l.stack.dz_dx[i]);
+    gy.push_back(l.stack.dz_dy[i]);
+  }
+  return area_light_shadow(scene, view, l.fragments, gx, gy, kernel, bias, light, 2);
+}
+
 Scene blocks() {
   const DatasetDesc tiny = load_dataset("tiny");
   return build_scene(parse_scene(tiny.scene_files.at(0)));
@@ -45,8 +58,7 @@ TEST(AreaLight, AngleZeroIsTheHardReferenceBitForBit) {
       LightViewDesc v = view;
       v.resolution = 96;
       const Lit l = lit(scene, v, kernel, bias);
-      const AreaLightShadow area =
-          area_light_shadow(scene, v, l.stack, l.fragments, kernel, bias, {0, 16}, 2);
+      const AreaLightShadow area = area_light_shadow(scene, v, l, kernel, bias, {0, 16});
       ASSERT_EQ(area.shadow.size(), l.fragments.size());
       for (size_t k = 0; k < l.fragments.size(); ++k) {
         ASSERT_EQ(area.shadow[k], l.fragments.pcf[k]) << view.name << " receiver " << k;
@@ -76,8 +88,7 @@ TEST(AreaLight, HalfPlanePenumbraFollowsTheDiskSegment) {
   const LightViewDesc& view = scene.views.at(0);
   const Lit l = lit(scene, view, kernel, bias);
   const AreaLight light{20, 64};
-  const AreaLightShadow area =
-      area_light_shadow(scene, view, l.stack, l.fragments, kernel, bias, light, 2);
+  const AreaLightShadow area = area_light_shadow(scene, view, l, kernel, bias, light);
   const LightFrame frame(view, scene.mesh.vertices);
   const double radius_world = 1.01 * std::tan(10 * std::numbers::pi / 180);
   const double radius_texels = radius_world / frame.world_per_texel();
@@ -134,8 +145,7 @@ TEST(AreaLight, ConvergesAtLeastAsOneOverSqrtN) {
   const Lit l = lit(scene, view, kernel, bias);
   std::vector<std::vector<double>> shadows;
   for (int n : {4, 16, 64, 256})
-    shadows.push_back(
-        area_light_shadow(scene, view, l.stack, l.fragments, kernel, bias, {8, n}, 2).shadow);
+    shadows.push_back(area_light_shadow(scene, view, l, kernel, bias, {8, n}).shadow);
   std::vector<double> error;
   for (size_t i = 0; i + 1 < shadows.size(); ++i) {
     double sum = 0;

@@ -114,6 +114,15 @@ CameraView camera_view(const Scene& scene, const LightViewDesc& light, const Vie
     f.pcf.push_back(test.pcf);
     f.covered_taps.push_back(uint32_t(test.covered_taps));
   }
+  // Under an area light the camera's receivers take its shadow as their reference, and keep what
+  // the soft techniques read (docs/soft-shadows.md §1), as the light view's own receivers do.
+  if (light_view.soft.angle_deg > 0) {
+    std::vector<double> gx, gy;
+    for (const Receiver& r : receivers) gx.push_back(r.gx), gy.push_back(r.gy);
+    out.receivers.soft = light_receivers(
+        scene, light, f, std::move(gx), std::move(gy), settings.kernel, settings.bias,
+        AreaLight{light_view.soft.angle_deg, settings.light.directions}, settings.threads);
+  }
   return out;
 }
 
@@ -186,7 +195,10 @@ void write_camera_images(const CameraView& view, const std::vector<std::string>&
     const std::vector<float> image = shade_camera_view(view, shadows[k]);
     write_image(base + "_" + file_stem(names[k]) + ".png", w, h, 3, image);
     std::vector<float> diff = difference_image(view, shadows[k], scale);
-    if (names[k] != "pcf")
+    // The reference has no difference: PCF, or under an area light its shadow (pcf is then the
+    // hard shadow, which has).
+    const bool soft = view.receivers.soft.angle_deg > 0;
+    if (!(names[k] == "area_light" || (names[k] == "pcf" && !soft)))
       write_image(base + "_" + file_stem(names[k]) + "_diff.png", w, h, 3, diff);
     const int x0 = int(k % columns) * cell_w, y0 = int(k / columns) * cell_h;
     const auto paste = [&](const std::vector<float>& pixels, int y) {
@@ -234,10 +246,17 @@ void write_dataset_camera_views(const std::vector<Scene>& scenes, const DatasetD
           throw std::logic_error("camera views: light view " + scene.name + "/" + light.name +
                                  " was not rendered");
         const CameraView view = camera_view(scene, light, *it, camera, settings);
+        std::vector<std::string> names;
         std::vector<std::vector<double>> shadows;
-        for (const auto& name : techniques)
+        if (view.receivers.soft.angle_deg > 0) {  // the area light's shadow leads the sheet
+          names.push_back("area_light");
+          shadows.push_back(view.receivers.fragments.pcf);
+        }
+        for (const auto& name : techniques) {
+          names.push_back(name);
           shadows.push_back(evaluate_technique(view.receivers, name, settings, nullptr).shadow);
-        write_camera_images(view, techniques, shadows,
+        }
+        write_camera_images(view, names, shadows,
                             (dir / (scene.name + "_" + light.name + "_" + camera.name)).string(),
                             scale);
         bar.advance();

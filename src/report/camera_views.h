@@ -3,9 +3,9 @@
 // camera sees of a scene, lit by one light view, with each technique's shadow. Every visible point
 // that faces the light becomes a receiver of that light view: projected into its shadow map
 // (nearest texel), with its own depth z_f and bias delta_f from its triangle's plane
-// (docs/reference.md §3) and the evaluation's reference (shadow/fragments.h, receiver_test). The
-// techniques then run through evaluate_technique unchanged, and simple diffuse shading makes the
-// image.
+// (docs/reference.md §3) and the evaluation's reference (shadow/fragments.h, receiver_test), or
+// under an area light that light's shadow at the same point (soft/area_light.h). The techniques
+// then run through evaluate_technique unchanged, and simple diffuse shading makes the image.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -45,8 +45,9 @@ std::vector<float> shade_camera_view(const CameraView& view, const std::vector<d
 std::vector<float> difference_image(const CameraView& view, const std::vector<double>& shadow,
                                     double scale);
 
-// Writes `<base>_<stem>.png` and `<base>_<stem>_diff.png` per technique (PCF first, no
-// difference) and `<base>_sheet.png`: every technique's image above its difference, labelled.
+// Writes `<base>_<stem>.png` and `<base>_<stem>_diff.png` per technique (the reference first, no
+// difference: PCF, or under an area light `area_light`, its shadow) and `<base>_sheet.png`: every
+// technique's image above its difference, labelled.
 void write_camera_images(const CameraView& view, const std::vector<std::string>& names,
                          const std::vector<std::vector<double>>& shadows, const std::string& base,
                          double scale);

@@ -58,9 +58,9 @@ std::vector<Eigen::Vector2d> light_shears(const LightFrame& frame, const AreaLig
 }
 
 AreaLightShadow area_light_shadow(const Scene& scene, const LightViewDesc& view,
-                                  const LayerStack& central, const Fragments& fragments,
-                                  const GaussianKernel& kernel, const BiasParams& bias,
-                                  const AreaLight& light, int threads) {
+                                  const Fragments& fragments, const std::vector<double>& gx,
+                                  const std::vector<double>& gy, const GaussianKernel& kernel,
+                                  const BiasParams& bias, const AreaLight& light, int threads) {
   const LightFrame frame(view, scene.mesh.vertices);
   const std::vector<Eigen::Vector2d> shears = light_shears(frame, light);
   const int pad = shear_pad(shears, kernel.radius());
@@ -75,21 +75,20 @@ AreaLightShadow area_light_shadow(const Scene& scene, const LightViewDesc& view,
 #pragma omp parallel for schedule(static) num_threads(threads)
     for (size_t k = 0; k < count; ++k) {
       const size_t t = fragments.texel[k];
-      const uint64_t i = central.offsets[t] + fragments.layer[k];
-      const double gx = central.dz_dx[i], gy = central.dz_dy[i], zf = central.depth[i];
+      const double zf = fragments.zf[k];
       // The receiver's plane z = zf + g . (dx, dy) in the sheared raster: dx' = dx + s dz gives
       // g' = g / (1 + g . s). At or below 0 the direction lies behind the receiver's own plane,
       // which it therefore does not light (an attached shadow).
-      const double facing = 1 + gx * s.x() + gy * s.y();
+      const double facing = 1 + gx[k] * s.x() + gy[k] * s.y();
       if (!(facing > 0)) {
         out.shadow[k] += 1;
         out.covered_taps[k] += uint32_t(fragments.kernel_taps);
         continue;
       }
       const Eigen::Vector3d p =
-          shear.apply({double(t % central.width) + 0.5, double(t / central.width) + 0.5, zf});
+          shear.apply({double(t % fragments.width) + 0.5, double(t / fragments.width) + 0.5, zf});
       const int x = int(std::floor(p.x())), y = int(std::floor(p.y()));
-      const double sgx = gx / facing, sgy = gy / facing;
+      const double sgx = gx[k] / facing, sgy = gy[k] / facing;
       const double z = zf + sgx * ((x + 0.5) - p.x()) + sgy * ((y + 0.5) - p.y());
       const ReceiverTest test = receiver_test(map, kernel, bias, x, y, z, sgx, sgy);
       out.shadow[k] += test.pcf;
@@ -101,27 +100,37 @@ AreaLightShadow area_light_shadow(const Scene& scene, const LightViewDesc& view,
   return out;
 }
 
-SoftReceivers light_receivers(const Scene& scene, const LightViewDesc& view,
-                              const LayerStack& central, Fragments& fragments,
+SoftReceivers light_receivers(const Scene& scene, const LightViewDesc& view, Fragments& fragments,
+                              std::vector<double> gx, std::vector<double> gy,
                               const GaussianKernel& kernel, const BiasParams& bias,
                               const AreaLight& light, int threads) {
+  const LightFrame frame(view, scene.mesh.vertices);
+  AreaLightShadow area =
+      area_light_shadow(scene, view, fragments, gx, gy, kernel, bias, light, threads);
   SoftReceivers soft;
   soft.angle_deg = light.angle_deg;
-  soft.rim_shear = rim_shear(LightFrame(view, scene.mesh.vertices), light.angle_deg);
-  soft.gx.resize(fragments.size());
-  soft.gy.resize(fragments.size());
-  for (size_t k = 0; k < fragments.size(); ++k) {
-    const uint64_t i = central.offsets[fragments.texel[k]] + fragments.layer[k];
-    soft.gx[k] = central.dz_dx[i];
-    soft.gy[k] = central.dz_dy[i];
-  }
-  AreaLightShadow area =
-      area_light_shadow(scene, view, central, fragments, kernel, bias, light, threads);
+  soft.rim_shear = rim_shear(frame, light.angle_deg);
+  soft.gx = std::move(gx);
+  soft.gy = std::move(gy);
   soft.hard = std::move(fragments.pcf);
   fragments.pcf = std::move(area.shadow);
   fragments.covered_taps = std::move(area.covered_taps);
   fragments.kernel_taps = area.taps;
   return soft;
+}
+
+SoftReceivers light_receivers(const Scene& scene, const LightViewDesc& view,
+                              const LayerStack& central, Fragments& fragments,
+                              const GaussianKernel& kernel, const BiasParams& bias,
+                              const AreaLight& light, int threads) {
+  std::vector<double> gx(fragments.size()), gy(fragments.size());
+  for (size_t k = 0; k < fragments.size(); ++k) {
+    const uint64_t i = central.offsets[fragments.texel[k]] + fragments.layer[k];
+    gx[k] = central.dz_dx[i];
+    gy[k] = central.dz_dy[i];
+  }
+  return light_receivers(scene, view, fragments, std::move(gx), std::move(gy), kernel, bias, light,
+                         threads);
 }
 
 }  // namespace mb

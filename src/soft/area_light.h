@@ -51,19 +51,25 @@ struct AreaLightShadow {
   int taps = 0;                        // kernel taps times N
 };
 
-// The receivers of `fragments` (collected from `central`, the view's own stack) under `light`:
-// each direction's stack is rendered, the receiver moved to its sheared position, tested at the
-// nearest texel centre with its depth carried along its own plane, and the N answers averaged in
-// direction order (identical for every thread count).
+// The receivers of `fragments` (texel, z_f) with their planes' depth gradients (gx, gy, depth per
+// texel) under `light`: each direction's stack is rendered, the receiver moved to its sheared
+// position, tested at the nearest texel centre with its depth carried along its own plane, and
+// the N answers averaged in direction order (identical for every thread count).
 AreaLightShadow area_light_shadow(const Scene& scene, const LightViewDesc& view,
-                                  const LayerStack& central, const Fragments& fragments,
-                                  const GaussianKernel& kernel, const BiasParams& bias,
-                                  const AreaLight& light, int threads);
+                                  const Fragments& fragments, const std::vector<double>& gx,
+                                  const std::vector<double>& gy, const GaussianKernel& kernel,
+                                  const BiasParams& bias, const AreaLight& light, int threads);
 
 // Replaces the hard reference of `fragments` by the area light's shadow (its covered taps too, so
-// ShadowRegion splits umbra, penumbra and lit) and returns what the hard protocol lacked.
+// ShadowRegion splits umbra, penumbra and lit) and returns what the hard protocol lacked. The
+// receivers' gradients: from `central`, the view's own stack they were collected from; or given
+// (a camera's receivers, which lie on no stack).
 SoftReceivers light_receivers(const Scene& scene, const LightViewDesc& view,
                               const LayerStack& central, Fragments& fragments,
+                              const GaussianKernel& kernel, const BiasParams& bias,
+                              const AreaLight& light, int threads);
+SoftReceivers light_receivers(const Scene& scene, const LightViewDesc& view, Fragments& fragments,
+                              std::vector<double> gx, std::vector<double> gy,
                               const GaussianKernel& kernel, const BiasParams& bias,
                               const AreaLight& light, int threads);
 
