@@ -49,6 +49,14 @@ void add_regions(const Fragments& f, const std::vector<double>& shadow, EvalRow&
 
 }  // namespace
 
+void merge_row(EvalRow& total, const EvalRow& row) {
+  total.stats.merge(row.stats);
+  total.interior.merge(row.interior);
+  total.silhouette.merge(row.silhouette);
+  total.fallbacks += row.fallbacks;
+  total.seconds += row.seconds;
+}
+
 EvalRows evaluate_techniques(const std::vector<ViewData>& views,
                              const std::vector<std::string>& techniques,
                              const EvalSettings& settings, bool quiet,
@@ -81,11 +89,7 @@ EvalRows evaluate_techniques(const std::vector<ViewData>& views,
       total.darkening_bound = std::max(total.darkening_bound, row.darkening_bound);
       row.fallbacks = result.fallbacks;
       row.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-      total.stats.merge(row.stats);
-      total.interior.merge(row.interior);
-      total.silhouette.merge(row.silhouette);
-      total.fallbacks += row.fallbacks;
-      total.seconds += row.seconds;
+      merge_row(total, row);
       if (on_view) on_view(name, view, result.shadow);
       rows.per_view.push_back(std::move(row));
     }

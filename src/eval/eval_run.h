@@ -32,6 +32,10 @@ struct EvalRow {
   size_t fallbacks = 0;        // Technique::fallbacks
 };
 
+// Adds `row`'s receivers to `total`: its errors (overall and per region), fallbacks and time.
+// The darkening bound is the caller's: it depends on what the rows stand for.
+void merge_row(EvalRow& total, const EvalRow& row);
+
 struct EvalRows {
   std::vector<EvalRow> overall;   // one per technique, in the order given
   std::vector<EvalRow> per_view;  // technique-major, views in order

@@ -84,18 +84,12 @@ std::vector<EvalRow> per_angle_rows(const std::vector<EvalRow>& overall,
       auto [it, fresh] = by_angle.try_emplace(r.light_angle);
       EvalRow& row = it->second;
       if (fresh) {
-        row = total;
+        row.technique = total.technique, row.scene = "all";
         row.view = round_trip(r.light_angle) + "deg";
-        row.light_angle = r.light_angle;
-        row.stats = row.interior = row.silhouette = ErrorStats();
-        row.fallbacks = 0, row.seconds = 0, row.darkening_bound = r.darkening_bound;
+        row.light_angle = r.light_angle, row.darkening_bound = r.darkening_bound;
       }
       row.darkening_bound = std::max(row.darkening_bound, r.darkening_bound);
-      row.stats.merge(r.stats);
-      row.interior.merge(r.interior);
-      row.silhouette.merge(r.silhouette);
-      row.fallbacks += r.fallbacks;
-      row.seconds += r.seconds;
+      merge_row(row, r);
     }
     for (auto& [angle, row] : by_angle) rows.push_back(std::move(row));
   }

@@ -260,6 +260,14 @@ void filter_mean(const SummedAreaTable& sat, const Receiver& r, double w, double
   sat.rect_mean(r.cx() - w / 2, r.cy() - w / 2, r.cx() + w / 2, r.cy() + w / 2, mean);
 }
 
+// The one-depth blocker estimate of a region whose lit share is p at z_s and whose mean depth
+// is mu: the rest, at one depth, averages (mu - p z_s) / (1 - p); none when p is (nearly) 1.
+bool blocker_from_lit_share(double mu, double p, double zs, double* blocker) {
+  if (1 - p < 1e-6) return false;
+  *blocker = std::clamp((mu - p * zs) / (1 - p), 0.0, zs);
+  return true;
+}
+
 // Variance soft shadows (seed 001 PCSS + SAVSM; the blocker search of Yang et al.'s VSSM): the
 // search region's mean and variance bound the lit share p by Cantelli; the rest, at one depth,
 // must average (mu - p z) / (1 - p).
@@ -270,19 +278,11 @@ double pcss_vsm(const SoftContext& c, const SummedAreaTable& sat, const Receiver
   if (zs <= b[0]) return 0;  // the mean lies behind the receiver: Cantelli bounds nothing
   const double variance = std::max(b[1] - b[0] * b[0], 0.0);
   const double lit = variance / (variance + (zs - b[0]) * (zs - b[0]));
-  if (1 - lit < 1e-6) return 0;
-  const double blocker = std::clamp((b[0] - lit * zs) / (1 - lit), 0.0, zs);
+  double blocker = 0;
+  if (!blocker_from_lit_share(b[0], lit, zs, &blocker)) return 0;
   const double w = c.box_width(c.penumbra(r, blocker));
   filter_mean(sat, r, w, b);
   return vsm_bound(b, c.test_depth(r, w / 2), 0.0);
-}
-
-// The one-depth blocker estimate of a region whose lit share is p at z_s and whose mean depth
-// is mu: the rest, at one depth, averages (mu - p z_s) / (1 - p); none when p is (nearly) 1.
-bool blocker_from_lit_share(double mu, double p, double zs, double* blocker) {
-  if (1 - p < 1e-6) return false;
-  *blocker = std::clamp((mu - p * zs) / (1 - p), 0.0, zs);
-  return true;
 }
 
 // ESM through a summed-area table (seed 001 "PCSS + ESM"): channels exp(c (z - 1)) and z. The lit
