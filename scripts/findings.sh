@@ -21,7 +21,7 @@ for reference in biased receiver_plane; do
     --out "$root/eval-$reference" --force >/dev/null
 done
 # Soft shadows (FINDINGS §11): the soft dataset's 36 view-angles against their area lights.
-$mb eval -q --set dataset=soft --set 'techniques=[pcf, hamburger4, vsm, pcss_exact, pcss, pcss_vsm, pcss_esm, pcss_csm, msm_soft]' \
+$mb eval -q --set dataset=soft --set 'techniques=[pcf, hamburger4, vsm, pcss_exact, pcss, pcss_vsm, pcss_esm, pcss_csm, msm_soft, msm_soft:lp:power4, msm_soft:lp:trig4]' \
   --out "$root/eval-soft" --force >/dev/null
 echo "findings: $root/eval-soft/report.md"
 echo "findings: $root/report/report.md, $root/eval-biased/report.md, $root/eval-receiver_plane/report.md"

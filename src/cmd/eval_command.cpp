@@ -52,8 +52,10 @@ int run_eval(const EvalOptions& options) {
   const auto techniques = with_oracle_row(run.techniques, settings.bias);
   // Construct every technique once before any work: unknown names fail here, with no output.
   std::map<std::string, std::string> darkening_reason;
-  for (const auto& name : techniques)
+  for (const auto& name : techniques) {
+    check_soft_technique(name, settings.technique);
     darkening_reason[name] = technique_darkening_reason(name, settings);
+  }
   DatasetDesc dataset = load_dataset(data.dataset);
   const std::vector<Scene> scenes = build_dataset_scenes(dataset);
   if (run.camera_images) check_dataset_cameras(scenes, dataset);
@@ -66,7 +68,8 @@ int run_eval(const EvalOptions& options) {
     for (auto& [name, reason] : darkening_reason)
       reason = "the reference is an area light's shadow, which no technique bounds";
   for (const auto& name : techniques)
-    if (!is_soft_technique(name) && make_technique(name, settings.technique)->lp_factory())
+    if (soft_technique_solves_lp(name) ||
+        (!is_soft_technique(name) && make_technique(name, settings.technique)->lp_factory()))
       check_lp_interval(views, settings.technique.lp.lo, settings.technique.lp.hi);
   std::filesystem::create_directories(out.staging() / "histograms");
   if (run.images) std::filesystem::create_directories(out.staging() / "images");

@@ -13,8 +13,8 @@ const std::vector<OptionRecord<EvalRunOptions>>& eval_run_options() {
         "tmsm, tmsm_float]",
         "Techniques to evaluate: closed forms, pcf, or lp:<basis> (e.g. lp:power4, lp:trig4); "
         "under "
-        "an area light also pcss_exact, pcss, pcss_vsm, pcss_esm, pcss_csm, msm_soft "
-        "(docs/soft-shadows.md)."},
+        "an area light also pcss_exact, pcss, pcss_vsm, pcss_esm, pcss_csm, msm_soft, and "
+        "msm_soft:lp:<basis>, msm_soft with Problem 1 as its final step (docs/soft-shadows.md)."},
        &EvalRunOptions::techniques},
       {{"images", OptionType::Boolean, "true",
         "Write shadow and error images per view and technique."},

@@ -147,8 +147,9 @@ TechniqueResult evaluate_technique(const ViewData& view, const std::string& tech
   const Fragments& f = view.fragments;
   TechniqueResult result;
   if (is_soft_technique(technique_name)) {
-    SoftResult soft = soft_shadow(technique_name, view.map, f, view.soft, settings.kernel,
-                                  settings.bias, settings.soft, settings.threads);
+    SoftResult soft =
+        soft_shadow(technique_name, view.map, f, view.soft, settings.kernel, settings.bias,
+                    settings.soft, settings.threads, settings.technique);
     result.shadow = std::move(soft.shadow);
     result.failures = soft.failures;
     if (progress) progress->advance(f.size());

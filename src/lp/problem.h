@@ -66,6 +66,11 @@ struct Problem {
   // front of z_f (G, the sharp lower bound); true the mass strictly behind it, whose minimum m
   // gives the sharp upper bound G+ = 1 - m on the mass at or in front of z_f.
   bool behind = false;
+  // Any other linear objective: when not empty, column j's cost (the grid's, then the extra
+  // points'), in place of the indicator. The blocker bounds' Dinkelbach steps
+  // (soft/blocker_bounds.h) minimise the blockers' depth minus a ratio this way, on Problem 1's
+  // feasible set.
+  std::vector<double> objective;
 
   int grid_size() const { return grid ? grid->size() : 0; }
   int cols() const { return grid_size() + extra.size(); }
@@ -80,6 +85,7 @@ struct Problem {
   // The objective: 1 for mass strictly in front of z_f (docs/reference.md §1), or strictly behind
   // it when `behind`.
   double cost(int j) const {
+    if (!objective.empty()) return objective[size_t(j)];
     const double z = point(j);
     return (behind ? z > zf : z < zf) ? 1.0 : 0.0;
   }

@@ -70,4 +70,81 @@ BlockerBounds blocker_bounds(const lp::ProblemFactory& factory, std::span<const 
   return out;
 }
 
+namespace {
+
+// The blocker mass and mean depth of an LP's support; false when it holds no blocker.
+bool support_mean(const lp::Problem& p, const lp::Solution& s, double zs, double& mean) {
+  double mass = 0, sum = 0;
+  for (size_t i = 0; i < s.support.size(); ++i) {
+    const double z = p.point(s.support[i]);
+    if (z < zs) mass += s.weights[i], sum += s.weights[i] * z;
+  }
+  if (!(mass > 0)) return false;
+  mean = sum / mass;
+  return true;
+}
+
+// Costs on the blockers: c (z - lambda), c = 1 for the least mean, -1 for the largest.
+void set_objective(lp::Problem& p, double zs, double lambda, double c) {
+  p.objective.resize(size_t(p.cols()));
+  for (int j = 0; j < p.cols(); ++j) {
+    const double z = p.point(j);
+    p.objective[size_t(j)] = z < zs ? c * (z - lambda) : 0.0;
+  }
+}
+
+bool solved(const lp::Solution& s) {
+  return s.call == lp::CallStatus::Ok && s.status == lp::ProblemStatus::Optimal;
+}
+
+}  // namespace
+
+BlockerBounds blocker_bounds_dinkelbach(const lp::ProblemFactory& factory,
+                                        std::span<const double> depths,
+                                        std::span<const double> weights, double zs,
+                                        lp::Backend& backend) {
+  // Dinkelbach's steps converge superlinearly; the limit only guards against rounding cycling.
+  constexpr int kMaxSteps = 50;
+  // A step that lowers F(lambda) = min sum (z - lambda) w by less than this changes lambda by
+  // rounding only.
+  constexpr double kNoGain = 1e-15;
+  BlockerBounds out;
+  lp::Problem p = factory.from_distribution(depths, weights, zs);
+  lp::Solution s;
+  // A first distribution with blockers: the region's own, else the one of most blocker mass.
+  double start = 0, mass = 0, sum = 0;
+  for (size_t t = 0; t < depths.size(); ++t)
+    if (depths[t] < zs) mass += weights[t], sum += weights[t] * depths[t];
+  if (mass > 0) {
+    start = sum / mass;
+  } else {
+    p.objective.assign(size_t(p.cols()), 0.0);
+    for (int j = 0; j < p.cols(); ++j)
+      if (p.point(j) < zs) p.objective[size_t(j)] = -1;
+    backend.solve_into(p, nullptr, s);
+    ++out.lps;
+    if (!solved(s)) return out;
+    out.solved = true;
+    if (!support_mean(p, s, zs, start)) return out;
+  }
+  double bound[2];
+  for (int side = 0; side < 2; ++side) {
+    const double c = side == 0 ? 1.0 : -1.0;
+    double lambda = start;
+    for (int step = 0; step < kMaxSteps; ++step) {
+      set_objective(p, zs, lambda, c);
+      backend.solve_into(p, nullptr, s);
+      ++out.lps;
+      if (!solved(s)) return out;
+      double next = 0;
+      if (!(s.G < -kNoGain) || !support_mean(p, s, zs, next) || !(c * (next - lambda) < 0)) break;
+      lambda = next;
+    }
+    bound[side] = lambda;
+  }
+  out.solved = out.feasible = true;
+  out.lo = bound[0], out.hi = bound[1];
+  return out;
+}
+
 }  // namespace mb

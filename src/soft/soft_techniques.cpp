@@ -1,5 +1,7 @@
 #include "soft/soft_techniques.h"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -11,91 +13,11 @@
 #include "moments/hamburger.h"
 #include "soft/blocker_bounds.h"
 #include "soft/summed_area.h"
+#include "techniques/lp_technique.h"
 #include "util/error.h"
 #include "util/parallel_errors.h"
 
 namespace mb {
-
-const std::vector<OptionRecord<SoftParams>>& soft_option_records() {
-  static const std::vector<OptionRecord<SoftParams>> records{
-      {{"soft.pcss_search", OptionType::Integer, "15",
-        "Soft shadows: texels a side of PCSS's blocker search (pcss, pcss_exact; seed 004 §3.6 "
-        "uses 15x15); 0 takes it from the light's size as seed 001 does: the light's cone at the "
-        "receiver's depth, 2 ceil(rim_shear z_f) + 1, at most 255.",
-        0, 255},
-       &SoftParams::pcss_search},
-      {{"soft.sat_search", OptionType::Integer, "27",
-        "Soft shadows: texels a side of the summed-area techniques' blocker search (pcss_vsm, "
-        "msm_soft; seed 004 §3.6 uses 27x27).",
-        1, 255},
-       &SoftParams::sat_search},
-      {{"soft.blocker_taps", OptionType::Integer, "5",
-        "pcss: point taps a side spread over the blocker search (seed 001: 4x4 or 5x5 suffice).", 1,
-        255},
-       &SoftParams::blocker_taps},
-      {{"soft.filter_taps", OptionType::Integer, "9",
-        "pcss: PCF taps a side spread over the penumbra's filter (seed 001 shows 5x5, 9x9, 17x17).",
-        1, 255},
-       &SoftParams::filter_taps},
-      {{"soft.min_filter", OptionType::Number, "0",
-        "Soft shadows: the narrowest penumbra box in texels (seed 001 clamps for antialiasing); "
-        "0, none: every technique filters with the protocol's kernel besides (docs/soft-shadows.md "
-        "§2).",
-        0, 255},
-       &SoftParams::min_filter},
-      {{"soft.max_filter", OptionType::Integer, "31",
-        "Soft shadows: the widest filter in texels; N = max(sat_search, max_filter + 2)^2 sets the "
-        "fixed-point scale (2^32 - 1) / N of summed-area tables (seed 004 §3.2): 31 keeps 22 bits, "
-        "rounding error 2.5e-7 below what msm_soft's alpha of 5e-6 absorbs.",
-        1, 4093},
-       &SoftParams::max_filter},
-      {{"soft.blocker_epsilon", OptionType::Number, "0.01",
-        "msm_soft: eps_z1, the weight of the receiver's own depth in the blocker average "
-        "(seed 004 §3.3).",
-        1e-12, 1},
-       &SoftParams::blocker_epsilon},
-      {{"soft.umbra_epsilon", OptionType::Number, "0.01",
-        "msm_soft: eps_u; a search region whose blockers weigh above 1 - eps_u is umbra "
-        "(seed 004 §3.4).",
-        0, 1},
-       &SoftParams::umbra_epsilon},
-      {{"soft.msm_alpha", OptionType::Number, "5e-6",
-        "msm_soft: the moment bias alpha of Hamburger 4MSM (seed 004's value for fixed-point "
-        "moments).",
-        0, 1},
-       &SoftParams::msm_alpha},
-      {{"soft.sat",
-        OptionType::String,
-        "fixed32",
-        "Summed-area tables: fixed32 (seed 004 §3.2: 32-bit integers modulo 2^32, scale "
-        "(2^32 - 1) / N) or exact (128-bit integers of 2^53 times each value).",
-        -std::numeric_limits<double>::infinity(),
-        std::numeric_limits<double>::infinity(),
-        {"fixed32", "exact"}},
-       &SoftParams::sat},
-      {{"soft.esm_c", OptionType::Number, "30",
-        "pcss_esm: c in exp(c (z - 1)), stored in the summed-area table (seed 001 tunes 10 to 30; "
-        "seed 002's 80 underflows a fixed-point table's 2^-22 beyond depth differences of 0.19).",
-        0.1, 200},
-       &SoftParams::esm_c},
-      {{"soft.csm_terms", OptionType::Integer, "8",
-        "pcss_csm: Fourier terms M of the shadow test (seed 001: M = 8); the table holds 4M + 1 "
-        "channels (the blocker search needs z cos and z sin too).",
-        1, 32},
-       &SoftParams::csm_terms},
-      {{"soft.csm_absorption", OptionType::Number, "1",
-        "pcss_csm: alpha of the ringing attenuation exp(-alpha (k / M)^2) of term k (seed 001's "
-        "AbsorptionFactor; it names no value); 0: none.",
-        0, 100},
-       &SoftParams::csm_absorption},
-      {{"soft.audit", OptionType::Integer, "500",
-        "msm_soft: receivers per view whose blocker estimate is set beside its sharp bounds "
-        "(docs/soft-shadows.md §3; blocker_audit.csv); 0: none.",
-        0, 1000000},
-       &SoftParams::audit},
-  };
-  return records;
-}
 
 const std::vector<std::string>& soft_technique_names() {
   static const std::vector<std::string> names{"pcss_exact", "pcss",     "pcss_vsm",
@@ -105,7 +27,12 @@ const std::vector<std::string>& soft_technique_names() {
 
 bool is_soft_technique(const std::string& name) {
   const auto& names = soft_technique_names();
-  return std::find(names.begin(), names.end(), name) != names.end();
+  return std::find(names.begin(), names.end(), name) != names.end() ||
+         soft_technique_solves_lp(name);
+}
+
+bool soft_technique_solves_lp(const std::string& name) {
+  return name.rfind(kMsmSoftLp, 0) == 0;
 }
 
 namespace {
@@ -389,6 +316,60 @@ double msm_soft(const SoftContext& c, const SummedAreaTable& sat, const Receiver
   return std::clamp(hamburger4(b, c.test_depth(r, w / 2)).lower, 0.0, 1.0);
 }
 
+// The box's own distribution: every texel (each atom, on a translucent map) the square of side w
+// centred on the receiver overlaps, weighted by the overlap over w^2, the weights with which
+// seed 004's interpolated query takes the box's moments from the table (docs/soft-shadows.md §2).
+void box_distribution(const ShadowMap& map, double cx, double cy, double w,
+                      std::vector<double>& depths, std::vector<double>& weights) {
+  depths.clear(), weights.clear();
+  const double ax = cx - w / 2, bx = cx + w / 2, ay = cy - w / 2, by = cy + w / 2;
+  for (int j = int(std::floor(ay)); j < int(std::ceil(by)); ++j) {
+    const double wy = std::min(by, j + 1.0) - std::max(ay, double(j));
+    for (int i = int(std::floor(ax)); i < int(std::ceil(bx)); ++i) {
+      const double share = (std::min(bx, i + 1.0) - std::max(ax, double(i))) * wy / (w * w);
+      if (!(share > 0)) continue;
+      if (!map.translucent() || i < 0 || j < 0 || i >= map.width || j >= map.height) {
+        depths.push_back(map.at(i, j)), weights.push_back(share);
+        continue;
+      }
+      const size_t t = size_t(j) * map.width + i;
+      for (uint64_t a = map.atom_offsets[t]; a < map.atom_offsets[t + 1]; ++a)
+        depths.push_back(map.atom_depth[a]), weights.push_back(share * map.blended_mass()[a]);
+    }
+  }
+}
+
+// One thread's LP state for msm_soft:lp:<basis>: its backend and the storage every receiver
+// reuses.
+struct LpFinalStep {
+  std::unique_ptr<lp::Backend> backend;
+  std::vector<double> depths, weights;
+  lp::Problem problem;
+  lp::Solution solution;
+};
+
+// msm_soft with Problem 1 as its final step (docs/soft-shadows.md §2): seed 004's blocker search
+// and box, then the sharpest lower bound the box's moments in `factory`'s basis allow, on the grid
+// and the box's own depths, solved cold (any schedule gives these bits). The box's distribution is
+// one of those the LP ranges over, so below the umbra skip the answer never exceeds the box filter
+// at the same depth. NaN when the LP gives no certified answer.
+double msm_soft_lp(const SoftContext& c, const SummedAreaTable& sat, const Receiver& r,
+                   const lp::ProblemFactory& factory, LpFinalStep& step) {
+  const MsmBlocker blocker = msm_blocker(c, sat, r);
+  if (blocker.weight > 1 - c.params.umbra_epsilon) return 1;
+  const double w = c.box_width(c.penumbra(r, blocker.depth)), z = c.test_depth(r, w / 2);
+  box_distribution(c.map, r.cx(), r.cy(), w, step.depths, step.weights);
+  // F_Z(z) = 0: no distribution with these moments needs mass in front of z (the LP's exact skip).
+  if (std::all_of(step.depths.begin(), step.depths.end(), [&](double d) { return d >= z; }))
+    return 0;
+  step.problem = factory.from_distribution(step.depths, step.weights, z);
+  step.backend->solve_into(step.problem, nullptr, step.solution);
+  const lp::Solution& s = step.solution;
+  if (s.call != lp::CallStatus::Ok || s.status != lp::ProblemStatus::Optimal)
+    return std::numeric_limits<double>::quiet_NaN();
+  return std::clamp(s.G, 0.0, 1.0);
+}
+
 std::unique_ptr<SummedAreaTable> build_sat(const std::string& name, const ShadowMap& map,
                                            const SoftParams& p) {
   const SatPrecision precision = p.sat == "exact" ? SatPrecision::Exact : SatPrecision::Fixed32;
@@ -445,9 +426,34 @@ Receiver receiver_of(const Fragments& f, const SoftReceivers& soft, size_t k) {
 
 }  // namespace
 
+namespace {
+
+// msm_soft:lp:<basis>'s factory: the basis of its lp: part on lp.lo, lp.hi and lp.grid.
+std::unique_ptr<lp::ProblemFactory> lp_final_step_factory(const std::string& name,
+                                                          const TechniqueParams& technique) {
+  const std::string lp_name = name.substr(std::string(kMsmSoftLp).size() - 3);
+  if (lp_name == "lp:")
+    throw InputError("technique '" + name + "': expected " + kMsmSoftLp + "<basis>, e.g. " +
+                     kMsmSoftLp + "power4");
+  if (technique.lp.continuous || technique.lp.quantize)
+    throw InputError("lp.discretization: " + name +
+                     " solves on the grid and the box's own depths; expected lp.discretization "
+                     "grid (docs/soft-shadows.md §2)");
+  const Basis basis = Basis::parse(lp_technique_basis(lp_name));
+  lp::check_backend_rows(technique.lp_backend, int(basis.size()), "techniques: " + name);
+  return std::make_unique<lp::ProblemFactory>(basis, technique.lp);
+}
+
+}  // namespace
+
+void check_soft_technique(const std::string& name, const TechniqueParams& technique) {
+  if (soft_technique_solves_lp(name)) lp_final_step_factory(name, technique);
+}
+
 SoftResult soft_shadow(const std::string& name, const ShadowMap& map, const Fragments& fragments,
                        const SoftReceivers& soft, const GaussianKernel& kernel,
-                       const BiasParams& bias, const SoftParams& params, int threads) {
+                       const BiasParams& bias, const SoftParams& params, int threads,
+                       const TechniqueParams& technique) {
   if (!is_soft_technique(name)) throw InputError("technique '" + name + "' is no soft technique");
   if (soft.angle_deg <= 0)
     throw InputError("techniques: " + name +
@@ -456,6 +462,13 @@ SoftResult soft_shadow(const std::string& name, const ShadowMap& map, const Frag
   const SoftContext context = make_context(map, soft, kernel, bias, params);
   std::unique_ptr<SummedAreaTable> sat;
   if (name != "pcss" && name != "pcss_exact") sat = build_sat(name, map, params);
+  const bool lp_step = soft_technique_solves_lp(name);
+  std::unique_ptr<lp::ProblemFactory> factory;
+  std::vector<LpFinalStep> steps(lp_step ? size_t(std::max(threads, 1)) : 0);
+  if (lp_step) {
+    factory = lp_final_step_factory(name, technique);
+    for (auto& step : steps) step.backend = lp::make_backend(technique.lp_backend);
+  }
   std::vector<double> shadow(fragments.size());
   ParallelErrors errors;
   size_t failures = 0;
@@ -473,6 +486,8 @@ SoftResult soft_shadow(const std::string& name, const ShadowMap& map, const Frag
         shadow[k] = pcss_esm(context, *sat, r);
       else if (name == "pcss_csm")
         shadow[k] = pcss_csm(context, *sat, r);
+      else if (lp_step)
+        shadow[k] = msm_soft_lp(context, *sat, r, *factory, steps[size_t(omp_get_thread_num())]);
       else
         shadow[k] = msm_soft(context, *sat, r);
       // A closed form on rounded moments can leave its domain (a Hankel matrix no longer positive
@@ -505,23 +520,21 @@ std::vector<BlockerAuditRow> blocker_audit(const ShadowMap& map, const Fragments
     errors.capture([&] {
       const Receiver r = receiver_of(fragments, soft, picked[p]);
       const MsmBlocker seed = msm_blocker(context, *sat, r);
-      // The search region as its texels: their depths join the grid, their moments are exact sums.
+      // The search region as its texels: their depths join the grid, its moments are theirs.
       const int side = params.sat_search, x0 = r.x - side / 2, y0 = r.y - side / 2;
-      std::vector<double> depths, points = factory.grid()->points;
-      double moments[4] = {0, 0, 0, 0}, mass = 0, sum = 0;
+      std::vector<double> depths;
+      double mass = 0, sum = 0;
       for (int y = y0; y < y0 + side; ++y)
         for (int x = x0; x < x0 + side; ++x) {
-          const double z = map.at(x, y), w = 1.0 / (side * side);
+          const double z = map.at(x, y);
           depths.push_back(z);
-          double zk = 1;
-          for (double& m : moments) zk *= z, m += w * zk;
-          if (z < seed.zs) mass += w, sum += w * z;
+          if (z < seed.zs) mass += 1, sum += z;
         }
       if (mass == 0) return;
-      std::sort(depths.begin(), depths.end());
-      depths.erase(std::unique(depths.begin(), depths.end()), depths.end());
-      points.insert(points.end(), depths.begin(), depths.end());
-      const BlockerBounds bounds = blocker_bounds(factory, points, moments, seed.zs);
+      const std::vector<double> weights(depths.size(), 1.0 / double(depths.size()));
+      const auto backend = lp::make_backend("fast");
+      const BlockerBounds bounds =
+          blocker_bounds_dinkelbach(factory, depths, weights, seed.zs, *backend);
       if (!bounds.feasible) return;
       BlockerAuditRow& row = found[p];
       row.receiver = picked[p];
@@ -529,10 +542,9 @@ std::vector<BlockerAuditRow> blocker_audit(const ShadowMap& map, const Fragments
       row.exact = sum / mass;
       row.seed = seed.depth;
       row.lo = bounds.lo, row.hi = bounds.hi;
-      // The two LPs are solved apart: where the interval closes, their optima may cross by an ulp.
-      const auto [lo, hi] = std::minmax(bounds.lo, bounds.hi);
-      row.penumbra_lo = 2 * soft.rim_shear * std::max(r.zf - hi, 0.0);
-      row.penumbra_hi = 2 * soft.rim_shear * std::max(r.zf - lo, 0.0);
+      // Both sides start from the region's own mean, so lo <= exact <= hi.
+      row.penumbra_lo = 2 * soft.rim_shear * std::max(r.zf - bounds.hi, 0.0);
+      row.penumbra_hi = 2 * soft.rim_shear * std::max(r.zf - bounds.lo, 0.0);
       row.penumbra_exact = 2 * soft.rim_shear * std::max(r.zf - row.exact, 0.0);
       row.penumbra_seed = 2 * soft.rim_shear * std::max(r.zf - row.seed, 0.0);
       kept[p] = 1;

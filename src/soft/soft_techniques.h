@@ -9,6 +9,7 @@
 
 #include "shadow/fragments.h"
 #include "soft/area_light.h"
+#include "techniques/technique.h"
 #include "util/option_record.h"
 
 namespace mb {
@@ -35,18 +36,27 @@ const std::vector<OptionRecord<SoftParams>>& soft_option_records();
 
 // pcss_exact, pcss, pcss_vsm, pcss_esm, pcss_csm, msm_soft.
 const std::vector<std::string>& soft_technique_names();
+// One of those, or msm_soft:lp:<basis>: msm_soft's blocker search and penumbra box with Problem 1
+// for <basis> (an lp: technique's basis) on the box's moments as its final step.
 bool is_soft_technique(const std::string& name);
+constexpr const char* kMsmSoftLp = "msm_soft:lp:";
+bool soft_technique_solves_lp(const std::string& name);
+// InputError, before any work, when msm_soft:lp:<basis> names no basis or cannot be solved with
+// `technique`'s LP settings.
+void check_soft_technique(const std::string& name, const TechniqueParams& technique);
 
 // One shadow per receiver of `fragments` for the technique `name`, on the view's shadow map, lit
 // by the light `soft` describes; every receiver on its own, so any thread count gives these bits.
-// InputError when the light has no extent (soft.angle_deg = 0).
+// InputError when the light has no extent (soft.angle_deg = 0). msm_soft:lp:<basis> solves its LPs
+// on `technique`'s lp.lo, lp.hi, lp.grid with its lp.backend.
 struct SoftResult {
   std::vector<double> shadow;
   size_t failures = 0;  // receivers whose answer was not a number (left at 0)
 };
 SoftResult soft_shadow(const std::string& name, const ShadowMap& map, const Fragments& fragments,
                        const SoftReceivers& soft, const GaussianKernel& kernel,
-                       const BiasParams& bias, const SoftParams& params, int threads);
+                       const BiasParams& bias, const SoftParams& params, int threads,
+                       const TechniqueParams& technique = {});
 
 // msm_soft's blocker search against its sharp bounds (docs/soft-shadows.md §3) on evenly spaced
 // receivers of a view (about `count`) whose search region holds a blocker: the region's own mean

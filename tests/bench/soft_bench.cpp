@@ -1,6 +1,7 @@
 // Soft shadows' costs (issue 44, docs/soft-shadows.md): the area light's shadow against the hard
 // reference per direction count N, and each soft technique per receiver, on the garden scene's
-// `high` view at 512^2 under a 3-degree light, 2 threads, in one run.
+// `high` view at 512^2 under a 3-degree light, 2 threads, in one run; and the blocker bounds by
+// GLPK against our engine.
 #include <benchmark/benchmark.h>
 
 #include <string>
@@ -9,6 +10,7 @@
 #include "scene/dataset.h"
 #include "shadow/fragments.h"
 #include "soft/area_light.h"
+#include "soft/blocker_bounds.h"
 #include "soft/soft_techniques.h"
 
 namespace mb {
@@ -55,8 +57,8 @@ void BM_Reference(benchmark::State& state) {
 }
 BENCHMARK(BM_Reference)->Arg(0)->Arg(16)->Arg(64)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-const char* const kTechniques[] = {"pcss_exact", "pcss",     "pcss_vsm",
-                                   "pcss_esm",   "pcss_csm", "msm_soft"};
+const char* const kTechniques[] = {"pcss_exact", "pcss",     "pcss_vsm",          "pcss_esm",
+                                   "pcss_csm",   "msm_soft", "msm_soft:lp:power4"};
 
 void BM_Technique(benchmark::State& state) {
   const Garden& g = garden();
@@ -73,7 +75,66 @@ void BM_Technique(benchmark::State& state) {
       benchmark::Counter(double(f.size()) * state.iterations(), benchmark::Counter::kIsRate);
   state.SetLabel(name);
 }
-BENCHMARK(BM_Technique)->DenseRange(0, 5)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Technique)->DenseRange(0, 6)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The blocker bounds of 27^2 search regions (docs/soft-shadows.md §3) with power4 on a 256 grid:
+// Charnes and Cooper's LP by GLPK (0) against Dinkelbach's steps on our engine (1), on the same
+// regions of receivers spread evenly over the view, those with a blocker in front of z_f.
+void BM_BlockerBounds(benchmark::State& state) {
+  const Garden& g = garden();
+  static const Fragments f = collect_receivers(g.stack, g.kernel, g.bias, kThreads);
+  static const ShadowMap map = layer0_shadow_map(g.stack);
+  struct Region {
+    std::vector<double> depths, points, moments;
+    double zs = 0;
+  };
+  static const std::vector<Region> regions = [] {
+    std::vector<Region> out;
+    for (size_t k = 0; k < f.size() && out.size() < 200; k += 997) {
+      const int x = int(f.texel[k] % f.width), y = int(f.texel[k] / f.width);
+      Region r;
+      r.zs = f.ztest[k];
+      r.moments.assign(4, 0.0);
+      bool blocker = false;
+      for (int j = y - 13; j <= y + 13; ++j)
+        for (int i = x - 13; i <= x + 13; ++i) {
+          const double z = map.at(i, j);
+          r.depths.push_back(z);
+          blocker = blocker || z < r.zs;
+          double zk = 1;
+          for (double& m : r.moments) zk *= z, m += zk / 729;
+        }
+      if (!blocker) continue;
+      for (int i = 0; i < 256; ++i) r.points.push_back(i / 255.0);
+      r.points.insert(r.points.end(), r.depths.begin(), r.depths.end());
+      r.points.push_back(r.zs);
+      out.push_back(std::move(r));
+    }
+    return out;
+  }();
+  lp::Discretization grid;
+  grid.grid = 256;
+  const lp::ProblemFactory factory(Basis::parse({"power4"}), grid);
+  const auto backend = lp::make_backend("fast");
+  const std::vector<double> weights(729, 1.0 / 729);
+  const bool ours = state.range(0) == 1;
+  int lps = 0;
+  for (auto _ : state) {
+    lps = 0;
+    for (const Region& r : regions) {
+      const BlockerBounds b =
+          ours ? blocker_bounds_dinkelbach(factory, r.depths, weights, r.zs, *backend)
+               : blocker_bounds(factory, r.points, r.moments, r.zs);
+      lps += b.lps;
+      benchmark::DoNotOptimize(b.lo);
+    }
+  }
+  state.counters["regions_per_s"] =
+      benchmark::Counter(double(regions.size()) * state.iterations(), benchmark::Counter::kIsRate);
+  state.counters["lps_per_region"] = double(lps) / double(regions.size());
+  state.SetLabel(ours ? "Dinkelbach, our engine" : "Charnes-Cooper, GLPK");
+}
+BENCHMARK(BM_BlockerBounds)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 }  // namespace mb

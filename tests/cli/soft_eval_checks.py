@@ -15,6 +15,8 @@ for r in rows:
     if r["scene"] != "all":
         views[(r["technique"], r["view"].rsplit("_", 1)[1])].append(r)
 assert angle_rows, "no per-angle rows in errors.csv"
+lp_rows = [r for r in rows if r["technique"] == "msm_soft:lp:power4" and r["scene"] == "all"]
+assert lp_rows and all(int(r["failures"]) == 0 for r in lp_rows), lp_rows
 assert set(angle_rows) == set(views), (sorted(angle_rows), sorted(views))
 for key, merged in angle_rows.items():
     parts = views[key]

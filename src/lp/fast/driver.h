@@ -75,7 +75,9 @@ inline void FastSimplex<K>::solve(const Problem& p, WarmOffers& warm, Solution& 
   grid_points_ = grid.data();
   extra_points_ = p.extra.points.data();
   cell_scale_ = grid.back() > grid.front() ? (g_ - 1) / (grid.back() - grid.front()) : 0.0;
-  if (p.behind) {
+  if (!p.objective.empty()) {
+    cost_given(p);
+  } else if (p.behind) {
     cost_behind(p);
   } else {
     const int in_front = grid_bound(grid, p.zf, false, cell_scale_);
@@ -130,6 +132,14 @@ inline void FastSimplex<K>::cost_behind(const Problem& p) {
   std::fill(cost_.begin(), cost_.begin() + at_or_front, 0.0);
   std::fill(cost_.begin() + at_or_front, cost_.begin() + g_, 1.0);
   for (int e = 0; e < e_; ++e) cost_[g_ + e] = extra_points_[e] > p.zf ? 1.0 : 0.0;
+  grid_first_row_ = constant_first_row(p.grid->values.data(), g_);
+  costed_grid_ = nullptr;
+}
+
+// Problem::objective, copied whole; the front prefix cache is dropped as for the maximum.
+template <int K>
+inline void FastSimplex<K>::cost_given(const Problem& p) {
+  std::copy(p.objective.begin(), p.objective.end(), cost_.begin());
   grid_first_row_ = constant_first_row(p.grid->values.data(), g_);
   costed_grid_ = nullptr;
 }

@@ -63,6 +63,7 @@ class FastSimplex {
   void solve(const Problem& p, WarmOffers& warm, Solution& s);
   static void start_over(Solution& s);
   void cost_behind(const Problem& p);
+  void cost_given(const Problem& p);
   bool repair_with_composite(Solution& s);
   void unstable(Solution& s) const;
   bool solve_phase2(Solution& s);
