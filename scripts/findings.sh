@@ -2,7 +2,7 @@
 # Reproduces results/FINDINGS.md: the sweeps of configs/sweeps/findings-{2,3,4}.yaml on the default
 # dataset (every two-function candidate, 300 of three and 600 of four; about 45 minutes on two
 # cores, each resumable), their joint report, and eval of every classic technique under both
-# references, and eval of the soft techniques on the soft dataset. Writes into OUTROOT (default
+# references, and eval of the soft techniques on the soft and fusion datasets. Writes into OUTROOT (default
 # out/findings).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -24,4 +24,9 @@ done
 $mb eval -q --set dataset=soft --set 'techniques=[pcf, hamburger4, vsm, pcss_exact, pcss, pcss_vsm, pcss_esm, pcss_csm, msm_soft, msm_soft:lp:power4, msm_soft:lp:trig4]' \
   --out "$root/eval-soft" --force >/dev/null
 echo "findings: $root/eval-soft/report.md"
+# Seed 004's failure modes (FINDINGS §11): occluder fusion and short-range leaking.
+$mb eval -q --set dataset=configs/datasets/fusion.yaml --set images=false \
+  --set 'techniques=[pcf, pcss_exact, pcss, pcss_vsm, msm_soft, msm_soft:lp:power4]' --out "$root/eval-fusion" --force >/dev/null
+/usr/bin/python3 scripts/fusion_interaction.py "$root/eval-fusion" > "$root/eval-fusion/fusion.md"
+echo "findings: $root/eval-fusion/fusion.md"
 echo "findings: $root/report/report.md, $root/eval-biased/report.md, $root/eval-receiver_plane/report.md"

@@ -34,6 +34,35 @@ struct Rational {
   Rational& operator=(const Rational&) = delete;
 };
 
+// n mpq_t that free themselves; data() is what QSopt_ex's array calls take.
+class RationalArray {
+ public:
+  explicit RationalArray(size_t n) : values_(n) {
+    for (auto& v : values_) mpq_init(&v);
+  }
+  ~RationalArray() {
+    for (auto& v : values_) mpq_clear(&v);
+  }
+  RationalArray(const RationalArray&) = delete;
+  RationalArray& operator=(const RationalArray&) = delete;
+  mpq_t* data() { return reinterpret_cast<mpq_t*>(values_.data()); }
+  mpq_ptr operator[](size_t i) { return &values_[i]; }
+
+ private:
+  std::vector<__mpq_struct> values_;
+};
+
+// A QSopt_ex problem that frees itself, also when an exception leaves the solve.
+struct ExactProblem {
+  mpq_QSprob lp = mpq_QScreate_prob("problem1", QS_MIN);
+  ~ExactProblem() {
+    if (lp) mpq_QSfree_prob(lp);
+  }
+  ExactProblem() = default;
+  ExactProblem(const ExactProblem&) = delete;
+  ExactProblem& operator=(const ExactProblem&) = delete;
+};
+
 class ExactBackend : public Backend {
  public:
   explicit ExactBackend(ExactRhs rhs) : rhs_(rhs) {}
@@ -42,7 +71,8 @@ class ExactBackend : public Backend {
 
   Solution solve(const Problem& p) override {
     std::lock_guard<std::mutex> guard(library_lock());
-    mpq_QSprob lp = mpq_QScreate_prob("problem1", QS_MIN);
+    ExactProblem problem;
+    mpq_QSprob lp = problem.lp;
     mpq_QSset_param(lp, QS_PARAM_SIMPLEX_DISPLAY, 0);
     Rational zero;  // QSopt_ex takes non-const mpq_t
     Rational infinity;
@@ -54,14 +84,12 @@ class ExactBackend : public Backend {
     }
     std::vector<int> rows(p.rows);
     for (int r = 0; r < p.rows; ++r) rows[r] = r;
-    std::vector<mpq_t> column(p.rows);
-    for (auto& v : column) mpq_init(v);
+    RationalArray column(size_t(p.rows));
     for (int j = 0; j < p.cols(); ++j) {
-      for (int r = 0; r < p.rows; ++r) mpq_set_d(column[r], p.at(r, j));
+      for (int r = 0; r < p.rows; ++r) mpq_set_d(column[size_t(r)], p.at(r, j));
       Rational cost(p.cost(j));
       mpq_QSadd_col(lp, p.rows, rows.data(), column.data(), cost.q, zero.q, infinity.q, nullptr);
     }
-    for (auto& v : column) mpq_clear(v);
 
     Solution s;
     s.engine = Engine::Exact;
@@ -75,7 +103,6 @@ class ExactBackend : public Backend {
     } else {
       s.status = status == QS_LP_INFEASIBLE ? ProblemStatus::Infeasible : ProblemStatus::Unstable;
     }
-    mpq_QSfree_prob(lp);
     return s;
   }
 
@@ -105,17 +132,14 @@ class ExactBackend : public Backend {
     Rational objective;
     mpq_QSget_objval(lp, &objective.q);
     s.G = mpq_get_d(objective.q);
-    std::vector<mpq_t> x(p.cols()), pi(p.rows);
-    for (auto& v : x) mpq_init(v);
-    for (auto& v : pi) mpq_init(v);
+    RationalArray x(size_t(p.cols())), pi(size_t(p.rows));
     mpq_QSget_x_array(lp, x.data());
     mpq_QSget_pi_array(lp, pi.data());
     for (int j = 0; j < p.cols(); ++j)
-      if (mpq_sgn(x[j]) > 0) s.support.push_back(j), s.weights.push_back(mpq_get_d(x[j]));
+      if (mpq_sgn(x[size_t(j)]) > 0)
+        s.support.push_back(j), s.weights.push_back(mpq_get_d(x[size_t(j)]));
     s.duals.resize(p.rows);
-    for (int r = 0; r < p.rows; ++r) s.duals[r] = mpq_get_d(pi[r]);
-    for (auto& v : x) mpq_clear(v);
-    for (auto& v : pi) mpq_clear(v);
+    for (int r = 0; r < p.rows; ++r) s.duals[r] = mpq_get_d(pi[size_t(r)]);
   }
 };
 

@@ -464,36 +464,39 @@ SoftResult soft_shadow(const std::string& name, const ShadowMap& map, const Frag
   if (name != "pcss" && name != "pcss_exact") sat = build_sat(name, map, params);
   const bool lp_step = soft_technique_solves_lp(name);
   std::unique_ptr<lp::ProblemFactory> factory;
-  std::vector<LpFinalStep> steps(lp_step ? size_t(std::max(threads, 1)) : 0);
-  if (lp_step) {
-    factory = lp_final_step_factory(name, technique);
-    for (auto& step : steps) step.backend = lp::make_backend(technique.lp_backend);
-  }
+  if (lp_step) factory = lp_final_step_factory(name, technique);
   std::vector<double> shadow(fragments.size());
   ParallelErrors errors;
   size_t failures = 0;
-#pragma omp parallel for schedule(dynamic, 1024) num_threads(threads) reduction(+ : failures)
-  for (size_t k = 0; k < fragments.size(); ++k)
-    errors.capture([&] {
-      const Receiver r = receiver_of(fragments, soft, k);
-      if (name == "pcss_exact")
-        shadow[k] = pcss_exact(context, r);
-      else if (name == "pcss")
-        shadow[k] = pcss_sampled(context, r);
-      else if (name == "pcss_vsm")
-        shadow[k] = pcss_vsm(context, *sat, r);
-      else if (name == "pcss_esm")
-        shadow[k] = pcss_esm(context, *sat, r);
-      else if (name == "pcss_csm")
-        shadow[k] = pcss_csm(context, *sat, r);
-      else if (lp_step)
-        shadow[k] = msm_soft_lp(context, *sat, r, *factory, steps[size_t(omp_get_thread_num())]);
-      else
-        shadow[k] = msm_soft(context, *sat, r);
-      // A closed form on rounded moments can leave its domain (a Hankel matrix no longer positive
-      // definite): no answer, counted, and the receiver left unshadowed.
-      if (!std::isfinite(shadow[k])) shadow[k] = 0, ++failures;
-    });
+#pragma omp parallel num_threads(threads) reduction(+ : failures)
+  {
+    // GLPK, the fast backend's fallback, frees memory only in the thread that allocated it: each
+    // thread makes, uses and drops its own LP state.
+    LpFinalStep step;
+    if (lp_step) errors.capture([&] { step.backend = lp::make_backend(technique.lp_backend); });
+#pragma omp for schedule(dynamic, 1024)
+    for (size_t k = 0; k < fragments.size(); ++k)
+      errors.capture([&] {
+        const Receiver r = receiver_of(fragments, soft, k);
+        if (name == "pcss_exact")
+          shadow[k] = pcss_exact(context, r);
+        else if (name == "pcss")
+          shadow[k] = pcss_sampled(context, r);
+        else if (name == "pcss_vsm")
+          shadow[k] = pcss_vsm(context, *sat, r);
+        else if (name == "pcss_esm")
+          shadow[k] = pcss_esm(context, *sat, r);
+        else if (name == "pcss_csm")
+          shadow[k] = pcss_csm(context, *sat, r);
+        else if (lp_step && step.backend)
+          shadow[k] = msm_soft_lp(context, *sat, r, *factory, step);
+        else
+          shadow[k] = msm_soft(context, *sat, r);
+        // A closed form on rounded moments can leave its domain (a Hankel matrix no longer
+        // positive definite), an LP its certificate: no answer, counted, the receiver unshadowed.
+        if (!std::isfinite(shadow[k])) shadow[k] = 0, ++failures;
+      });
+  }
   errors.rethrow();
   return {std::move(shadow), failures};
 }

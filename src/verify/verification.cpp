@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 
 #include "continuous/continuous.h"
 #include "continuous/discretized.h"
@@ -414,10 +415,17 @@ void reduce_cases(const VerifyTarget& target, const std::vector<VerifyCase>& cas
 void arbitrate_worst(const VerifyTarget& target, std::span<const VerifyInstance> instances,
                      const lp::ProblemFactory& finest, VerifySolverResult& result) {
   auto exact = lp::make_exact_backend(lp::ExactRhs::DistributionImage);
+  // A case often heads both lists: each instance is solved once.
+  std::map<size_t, double> arbitrated;
   for (auto* list : {&result.worst, &result.worst_above})
     for (VerifyCase& c : *list) {
-      const lp::Solution s = exact->solve(grid_problem(target, instances[c.instance], finest));
-      if (s.call == lp::CallStatus::Ok && s.status == lp::ProblemStatus::Optimal) c.lp_exact = s.G;
+      auto [at, fresh] = arbitrated.try_emplace(c.instance, c.lp_exact);
+      if (fresh) {
+        const lp::Solution s = exact->solve(grid_problem(target, instances[c.instance], finest));
+        if (s.call == lp::CallStatus::Ok && s.status == lp::ProblemStatus::Optimal)
+          at->second = s.G;
+      }
+      c.lp_exact = at->second;
     }
 }
 
