@@ -190,8 +190,11 @@ EvalReport render_eval_report(const EvalReportContext& ctx, const std::vector<Ev
   report << (ctx.sections.empty() ? "" : "\n" + ctx.sections);
   for (const auto& r : overall)
     if (r.stats.failures)
-      report << "\n**" << r.technique << "**: " << r.stats.failures
-             << " fragments failed; raise the technique's alpha, or the LP grid, and re-run.\n";
+      report << "\n**" << r.technique << "**: " << r.stats.failures << " fragments failed; "
+             << (r.technique.find("lp:") != std::string::npos
+                     ? "their LPs had no certified answer (shown lit); another lp.grid or "
+                       "lp.backend may solve them.\n"
+                     : "raise the technique's alpha, or the LP grid, and re-run.\n");
   for (const auto& r : overall)
     if (r.fallbacks)
       report << "\n**" << r.technique << "**: " << r.fallbacks << " of " << r.stats.count

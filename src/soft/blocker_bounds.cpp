@@ -67,6 +67,7 @@ BlockerBounds blocker_bounds(const lp::ProblemFactory& factory, std::span<const 
   }
   out.feasible = true;
   out.lo = bound[0], out.hi = bound[1];
+  out.lps = 2;
   return out;
 }
 
