@@ -114,6 +114,7 @@ int run_eval(const EvalOptions& options) {
   write_file_atomically(out / "report.md", report.markdown);
   write_file_atomically(out / "errors.csv", report.errors_csv);
   write_file_atomically(out / "regions.csv", report.regions_csv);
+  if (!report.pcss_csv.empty()) write_file_atomically(out / "pcss_errors.csv", report.pcss_csv);
   write_run_record(out, config, meta);
   out.commit();
   std::fputs(report.table.c_str(), stdout);

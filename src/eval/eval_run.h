@@ -27,6 +27,10 @@ struct EvalRow {
   double light_angle = 0;  // degrees: the view's area light (0: hard); on "all" rows the largest
   ErrorStats stats;
   ErrorStats interior, silhouette;  // the receivers of each ShadowRegion (shadow/fragments.h)
+  // Under an area light: the same shadow against pcss_exact's, PCSS with nothing sampled
+  // (docs/soft-shadows.md §2), which separates the heuristic's error from the technique's own
+  // sampling or moments. Empty on views with a hard light.
+  ErrorStats against_pcss;
   double seconds = 0;
   double darkening_bound = 0;  // Technique::darkening_bound
   size_t fallbacks = 0;        // Technique::fallbacks

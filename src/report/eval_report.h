@@ -28,6 +28,8 @@ struct EvalReport {
   std::string table;  // the overall table (stdout)
   std::string markdown, errors_csv;
   std::string regions_csv;  // each row's error split by ShadowRegion (regions.csv)
+  // Under area lights, each row's shadow against pcss_exact's (pcss_errors.csv); else empty.
+  std::string pcss_csv;
 };
 
 EvalReport render_eval_report(const EvalReportContext& ctx, const std::vector<EvalRow>& overall,

@@ -40,4 +40,14 @@ for a in audit:
     seed = float(a["blocker_seed"])
     outside = seed < float(a["blocker_lo"]) - 1e-9 or seed > float(a["blocker_hi"]) + 1e-9
     assert int(a["outside"]) == outside, a
+pcss = {(r["technique"], r["scene"], r["view"]): r
+        for r in csv.DictReader(open(out + "/pcss_errors.csv"))}
+assert set(pcss) == {(r["technique"], r["scene"], r["view"]) for r in rows}, "pcss_errors rows"
+for key, r in pcss.items():
+    assert r["receivers"] == next(e["receivers"] for e in rows
+                                  if (e["technique"], e["scene"], e["view"]) == key), key
+    if key[0] == "pcss_exact":
+        assert float(r["mean_error"]) == 0 and float(r["max_error"]) == 0, r
+assert any(float(r["mean_error"]) > 0 for r in pcss.values())
+assert "## Against exact PCSS" in report
 print("soft eval: %d per-angle rows, %d audited receivers" % (len(angle_rows), len(audit)))
