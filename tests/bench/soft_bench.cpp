@@ -4,6 +4,7 @@
 // GLPK against our engine.
 #include <benchmark/benchmark.h>
 
+#include <map>
 #include <string>
 
 #include "raster/render_view.h"
@@ -26,23 +27,28 @@ struct Garden {
   BiasParams bias;
 };
 
-const Garden& garden() {
-  static const Garden g = [] {
-    Garden g{build_scene(
-        parse_scene(std::string(MOMENTBENCH_SOURCE_DIR) + "/configs/scenes/garden.yaml"))};
-    for (const auto& v : g.scene.views)
-      if (v.name == "high") g.view = v;
-    g.view.resolution = 512;
-    g.stack = render_view(g.scene, g.view, kThreads);
-    return g;
-  }();
+Garden make_garden(int resolution) {
+  Garden g{build_scene(
+      parse_scene(std::string(MOMENTBENCH_SOURCE_DIR) + "/configs/scenes/garden.yaml"))};
+  for (const auto& v : g.scene.views)
+    if (v.name == "high") g.view = v;
+  g.view.resolution = resolution;
+  g.stack = render_view(g.scene, g.view, kThreads);
   return g;
+}
+
+// The `high` view at 512^2, or at `resolution`.
+const Garden& garden(int resolution = 512) {
+  static std::map<int, Garden> gardens;
+  auto it = gardens.find(resolution);
+  if (it == gardens.end()) it = gardens.emplace(resolution, make_garden(resolution)).first;
+  return it->second;
 }
 
 // N = 0: the hard reference alone (the receivers and their filtered test); N > 0 adds the area
 // light's N directions, each a rasterized stack and a filtered test per receiver.
 void BM_Reference(benchmark::State& state) {
-  const Garden& g = garden();
+  const Garden& g = garden(int(state.range(1)));
   const int n = int(state.range(0));
   size_t receivers = 0;
   for (auto _ : state) {
@@ -53,9 +59,13 @@ void BM_Reference(benchmark::State& state) {
     benchmark::DoNotOptimize(f.pcf.data());
   }
   state.counters["receivers"] = double(receivers);
-  state.SetLabel(n == 0 ? "hard reference" : "area light, N = " + std::to_string(n));
+  state.SetLabel((n == 0 ? "hard reference" : "area light, N = " + std::to_string(n)) + " at " +
+                 std::to_string(state.range(1)) + "^2");
 }
-BENCHMARK(BM_Reference)->Arg(0)->Arg(16)->Arg(64)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Reference)
+    ->ArgsProduct({{0, 16, 64}, {256, 512, 1024}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 const char* const kTechniques[] = {"pcss_exact", "pcss",     "pcss_vsm",          "pcss_esm",
                                    "pcss_csm",   "msm_soft", "msm_soft:lp:power4"};
