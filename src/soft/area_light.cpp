@@ -69,6 +69,7 @@ AreaLightShadow area_light_shadow(const Scene& scene, const LightViewDesc& view,
   out.shadow.assign(count, 0.0);
   out.covered_taps.assign(count, 0);
   out.taps = fragments.kernel_taps * int(shears.size());
+  out.rim_shear = rim_shear(frame, light.angle_deg);
   for (const Eigen::Vector2d& s : shears) {
     const RasterShear shear{s.x(), s.y(), pad};
     const ShadowMap map = layer0_shadow_map(render_view(scene, view, threads, shear));
@@ -104,12 +105,11 @@ SoftReceivers light_receivers(const Scene& scene, const LightViewDesc& view, Fra
                               std::vector<double> gx, std::vector<double> gy,
                               const GaussianKernel& kernel, const BiasParams& bias,
                               const AreaLight& light, int threads) {
-  const LightFrame frame(view, scene.mesh.vertices);
   AreaLightShadow area =
       area_light_shadow(scene, view, fragments, gx, gy, kernel, bias, light, threads);
   SoftReceivers soft;
   soft.angle_deg = light.angle_deg;
-  soft.rim_shear = rim_shear(frame, light.angle_deg);
+  soft.rim_shear = area.rim_shear;
   soft.gx = std::move(gx);
   soft.gy = std::move(gy);
   soft.hard = std::move(fragments.pcf);

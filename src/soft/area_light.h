@@ -49,6 +49,7 @@ struct AreaLightShadow {
   std::vector<double> shadow;          // per receiver: the mean of the N filtered hard tests
   std::vector<uint32_t> covered_taps;  // per receiver: taps with a surface in front, over all N
   int taps = 0;                        // kernel taps times N
+  double rim_shear = 0;                // rim_shear of the view's frame at the light's angle
 };
 
 // The receivers of `fragments` (texel, z_f) with their planes' depth gradients (gx, gy, depth per
