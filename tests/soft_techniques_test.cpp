@@ -324,6 +324,46 @@ TEST(SoftTechniques, LpFinalStepIsAtLeastHamburgersBoundAndEqualOnTwoDepths) {
   }
 }
 
+// The LP's answer is a lower bound for the box's own distribution, which it ranges over: with the
+// box fixed at 9 texels (min_filter = max_filter = 9, so the box is x - 4 .. x + 4 whatever the
+// blocker search finds) and no umbra skip, msm_soft:lp:power4 never exceeds the box filter at its
+// test depth z_f - (c + s 4.5 (|dz/dx| + |dz/dy|)), computed here texel by texel; on sloped
+// receivers, whose boxes hold many depths, it lies below it where the moments leave room.
+TEST(SoftTechniques, LpFinalStepNeverExceedsTheBoxFilterItBounds) {
+  const GaussianKernel kernel = make_gaussian_kernel(9, 2.4);
+  const TiltedSlab s = tilted_slab(AreaLight{8, 16}, kernel);
+  SoftParams params;
+  params.sat = "exact";
+  params.min_filter = 9;
+  params.max_filter = 9;
+  params.umbra_epsilon = 0;
+  const BiasParams bias;
+  const SoftResult lp =
+      soft_shadow("msm_soft:lp:power4", s.map, s.fragments, s.soft, kernel, bias, params, 2);
+  ASSERT_EQ(lp.failures, 0u);
+  double worst = -1;
+  int below = 0;
+  for (size_t k = 0; k < lp.shadow.size(); ++k) {
+    const int x = int(s.fragments.texel[k] % s.map.width),
+              y = int(s.fragments.texel[k] / s.map.width);
+    const double z =
+        s.fragments.zf[k] -
+        (bias.constant + bias.slope * 4.5 * (std::abs(s.soft.gx[k]) + std::abs(s.soft.gy[k])));
+    int in_front = 0;
+    for (int j = y - 4; j <= y + 4; ++j)
+      for (int i = x - 4; i <= x + 4; ++i) in_front += s.map.at(i, j) < z;
+    const double box = in_front / 81.0;
+    worst = std::max(worst, lp.shadow[k] - box);
+    below += lp.shadow[k] < box - 1e-3;
+  }
+  std::printf(
+      "msm_soft:lp:power4 on a 9-texel box: %zu receivers, largest excess over the box "
+      "filter %.3g, %d more than 1e-3 below it\n",
+      lp.shadow.size(), worst, below);
+  EXPECT_LE(worst, 1e-9);
+  EXPECT_GT(below, 100);
+}
+
 TEST(SoftTechniques, BitIdenticalForAnyThreadCount) {
   const Slab s = slab();
   const GaussianKernel kernel = make_gaussian_kernel(9, 2.4);
