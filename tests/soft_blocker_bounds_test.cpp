@@ -31,27 +31,41 @@ std::vector<double> moments_of(const Basis& basis, const std::vector<double>& z,
   return b;
 }
 
+// A search region of 25 texels on two to four surfaces (each jittered by 0.01), random weights
+// summing to 1, and a search depth z_s.
+struct Region {
+  std::vector<double> z, w;
+  double zs = 0;
+};
+Region random_region(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(0.05, 0.95), jitter(-0.01, 0.01), weight(0.2, 1);
+  Region r;
+  const int surfaces = 2 + int(rng() % 3);
+  std::vector<double> centres;
+  for (int s = 0; s < surfaces; ++s) centres.push_back(u(rng));
+  double total = 0;
+  for (int i = 0; i < 25; ++i) {
+    r.z.push_back(std::clamp(centres[i % surfaces] + jitter(rng), 0.0, 1.0));
+    r.w.push_back(weight(rng));
+    total += r.w.back();
+  }
+  for (double& v : r.w) v /= total;
+  r.zs = u(rng);
+  return r;
+}
+
 // The region's own blockers are one of the distributions the bounds range over: their mean depth
 // lies inside, for power and trigonometric moments, on regions of two to four surfaces.
 TEST(BlockerBounds, TheRegionsOwnMeanLiesInside) {
   std::mt19937_64 rng(44);
-  std::uniform_real_distribution<double> u(0.05, 0.95), jitter(-0.01, 0.01), weight(0.2, 1);
   int checked = 0;
   for (const char* name : {"power4", "trig4"}) {
     const Basis basis = Basis::parse({name});
     const lp::ProblemFactory factory = factory_of(basis);
     for (int n = 0; n < 60; ++n) {
-      const int surfaces = 2 + int(rng() % 3);
-      std::vector<double> z, w, centres;
-      for (int s = 0; s < surfaces; ++s) centres.push_back(u(rng));
-      double total = 0;
-      for (int i = 0; i < 25; ++i) {
-        z.push_back(std::clamp(centres[i % surfaces] + jitter(rng), 0.0, 1.0));
-        w.push_back(weight(rng));
-        total += w.back();
-      }
-      for (double& v : w) v /= total;
-      const double zs = u(rng);
+      const Region region = random_region(rng);
+      const std::vector<double>&z = region.z, &w = region.w;
+      const double zs = region.zs;
       double mass = 0, sum = 0;
       for (size_t i = 0; i < z.size(); ++i)
         if (z[i] < zs) mass += w[i], sum += w[i] * z[i];
@@ -103,7 +117,6 @@ TEST(BlockerBounds, NoBlockersNoBounds) {
 // and z_s), for power and trigonometric moments.
 TEST(BlockerBounds, DinkelbachOnOurEngineAgreesWithCharnesCooper) {
   std::mt19937_64 rng(45);
-  std::uniform_real_distribution<double> u(0.05, 0.95), jitter(-0.01, 0.01), weight(0.2, 1);
   const auto backend = lp::make_backend("fast");
   int checked = 0, steps = 0;
   double worst = 0;
@@ -111,17 +124,9 @@ TEST(BlockerBounds, DinkelbachOnOurEngineAgreesWithCharnesCooper) {
     const Basis basis = Basis::parse({name});
     const lp::ProblemFactory factory = factory_of(basis);
     for (int n = 0; n < 60; ++n) {
-      const int surfaces = 2 + int(rng() % 3);
-      std::vector<double> z, w, centres;
-      for (int s = 0; s < surfaces; ++s) centres.push_back(u(rng));
-      double total = 0;
-      for (int i = 0; i < 25; ++i) {
-        z.push_back(std::clamp(centres[i % surfaces] + jitter(rng), 0.0, 1.0));
-        w.push_back(weight(rng));
-        total += w.back();
-      }
-      for (double& v : w) v /= total;
-      const double zs = u(rng);
+      const Region region = random_region(rng);
+      const std::vector<double>&z = region.z, &w = region.w;
+      const double zs = region.zs;
       std::vector<double> points = grid_with(z);
       points.push_back(zs);
       const BlockerBounds glpk = blocker_bounds(factory, points, moments_of(basis, z, w), zs);

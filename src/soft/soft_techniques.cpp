@@ -83,22 +83,29 @@ struct SoftContext {
   }
 };
 
+// Every texel (i, j) the square of side w centred on (cx, cy) overlaps, with the overlap's extent
+// along x and y: the exact box filter weights it by wx wy / w^2.
+template <class F>
+void for_each_box_texel(double cx, double cy, double w, F&& f) {
+  const double ax = cx - w / 2, bx = cx + w / 2, ay = cy - w / 2, by = cy + w / 2;
+  for (int j = int(std::floor(ay)); j < int(std::ceil(by)); ++j) {
+    const double wy = std::min(by, j + 1.0) - std::max(ay, double(j));
+    for (int i = int(std::floor(ax)); i < int(std::ceil(bx)); ++i)
+      f(i, j, std::min(bx, i + 1.0) - std::max(ax, double(i)), wy);
+  }
+}
+
 // The exact box filter: every texel the square of side w centred on (cx, cy) overlaps, weighted
 // by the overlap's area, tested against the receiver's plane through depth z at the centre
 // (gradient g in depth per texel); below a texel's width, the texel under the centre.
 double box_pcf(const ShadowMap& map, double cx, double cy, double w, double z, double gx,
                double gy) {
   if (w < 1e-9) return texel_cdf(map, int(std::floor(cx)), int(std::floor(cy)), z);
-  const double ax = cx - w / 2, bx = cx + w / 2, ay = cy - w / 2, by = cy + w / 2;
   double sum = 0;
-  for (int j = int(std::floor(ay)); j < int(std::ceil(by)); ++j) {
-    const double wy = std::min(by, j + 1.0) - std::max(ay, double(j));
+  for_each_box_texel(cx, cy, w, [&](int i, int j, double wx, double wy) {
     const double zj = z + gy * (j + 0.5 - cy);
-    for (int i = int(std::floor(ax)); i < int(std::ceil(bx)); ++i) {
-      const double wx = std::min(bx, i + 1.0) - std::max(ax, double(i));
-      sum += wx * wy * texel_cdf(map, i, j, zj + gx * (i + 0.5 - cx));
-    }
-  }
+    sum += wx * wy * texel_cdf(map, i, j, zj + gx * (i + 0.5 - cx));
+  });
   return std::min(sum / (w * w), 1.0);
 }
 
@@ -322,21 +329,17 @@ double msm_soft(const SoftContext& c, const SummedAreaTable& sat, const Receiver
 void box_distribution(const ShadowMap& map, double cx, double cy, double w,
                       std::vector<double>& depths, std::vector<double>& weights) {
   depths.clear(), weights.clear();
-  const double ax = cx - w / 2, bx = cx + w / 2, ay = cy - w / 2, by = cy + w / 2;
-  for (int j = int(std::floor(ay)); j < int(std::ceil(by)); ++j) {
-    const double wy = std::min(by, j + 1.0) - std::max(ay, double(j));
-    for (int i = int(std::floor(ax)); i < int(std::ceil(bx)); ++i) {
-      const double share = (std::min(bx, i + 1.0) - std::max(ax, double(i))) * wy / (w * w);
-      if (!(share > 0)) continue;
-      if (!map.translucent() || i < 0 || j < 0 || i >= map.width || j >= map.height) {
-        depths.push_back(map.at(i, j)), weights.push_back(share);
-        continue;
-      }
-      const size_t t = size_t(j) * map.width + i;
-      for (uint64_t a = map.atom_offsets[t]; a < map.atom_offsets[t + 1]; ++a)
-        depths.push_back(map.atom_depth[a]), weights.push_back(share * map.blended_mass()[a]);
+  for_each_box_texel(cx, cy, w, [&](int i, int j, double wx, double wy) {
+    const double share = wx * wy / (w * w);
+    if (!(share > 0)) return;
+    if (!map.translucent() || i < 0 || j < 0 || i >= map.width || j >= map.height) {
+      depths.push_back(map.at(i, j)), weights.push_back(share);
+      return;
     }
-  }
+    const size_t t = size_t(j) * map.width + i;
+    for (uint64_t a = map.atom_offsets[t]; a < map.atom_offsets[t + 1]; ++a)
+      depths.push_back(map.atom_depth[a]), weights.push_back(share * map.blended_mass()[a]);
+  });
 }
 
 // One thread's LP state for msm_soft:lp:<basis>: its backend and the storage every receiver
@@ -477,6 +480,7 @@ SoftResult soft_shadow(const std::string& name, const ShadowMap& map, const Frag
 #pragma omp for schedule(dynamic, 1024)
     for (size_t k = 0; k < fragments.size(); ++k)
       errors.capture([&] {
+        if (lp_step && !step.backend) return;  // its error is captured already
         const Receiver r = receiver_of(fragments, soft, k);
         if (name == "pcss_exact")
           shadow[k] = pcss_exact(context, r);
@@ -488,7 +492,7 @@ SoftResult soft_shadow(const std::string& name, const ShadowMap& map, const Frag
           shadow[k] = pcss_esm(context, *sat, r);
         else if (name == "pcss_csm")
           shadow[k] = pcss_csm(context, *sat, r);
-        else if (lp_step && step.backend)
+        else if (lp_step)
           shadow[k] = msm_soft_lp(context, *sat, r, *factory, step);
         else
           shadow[k] = msm_soft(context, *sat, r);
@@ -518,40 +522,47 @@ std::vector<BlockerAuditRow> blocker_audit(const ShadowMap& map, const Fragments
   std::vector<BlockerAuditRow> found(picked.size());
   std::vector<char> kept(picked.size(), 0);
   ParallelErrors errors;
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-  for (size_t p = 0; p < picked.size(); ++p)
-    errors.capture([&] {
-      const Receiver r = receiver_of(fragments, soft, picked[p]);
-      const MsmBlocker seed = msm_blocker(context, *sat, r);
-      // The search region as its texels: their depths join the grid, its moments are theirs.
-      const int side = params.sat_search, x0 = r.x - side / 2, y0 = r.y - side / 2;
-      std::vector<double> depths;
-      double mass = 0, sum = 0;
-      for (int y = y0; y < y0 + side; ++y)
-        for (int x = x0; x < x0 + side; ++x) {
-          const double z = map.at(x, y);
-          depths.push_back(z);
-          if (z < seed.zs) mass += 1, sum += z;
-        }
-      if (mass == 0) return;
-      const std::vector<double> weights(depths.size(), 1.0 / double(depths.size()));
-      const auto backend = lp::make_backend("fast");
-      const BlockerBounds bounds =
-          blocker_bounds_dinkelbach(factory, depths, weights, seed.zs, *backend);
-      if (!bounds.feasible) return;
-      BlockerAuditRow& row = found[p];
-      row.receiver = picked[p];
-      row.zs = seed.zs;
-      row.exact = sum / mass;
-      row.seed = seed.depth;
-      row.lo = bounds.lo, row.hi = bounds.hi;
-      // Both sides start from the region's own mean, so lo <= exact <= hi.
-      row.penumbra_lo = 2 * soft.rim_shear * std::max(r.zf - bounds.hi, 0.0);
-      row.penumbra_hi = 2 * soft.rim_shear * std::max(r.zf - bounds.lo, 0.0);
-      row.penumbra_exact = 2 * soft.rim_shear * std::max(r.zf - row.exact, 0.0);
-      row.penumbra_seed = 2 * soft.rim_shear * std::max(r.zf - row.seed, 0.0);
-      kept[p] = 1;
-    });
+#pragma omp parallel num_threads(threads)
+  {
+    // One backend per thread, made and dropped in it (GLPK's memory is the thread's); every solve
+    // starts cold, so the schedule changes no answer.
+    std::unique_ptr<lp::Backend> backend;
+    errors.capture([&] { backend = lp::make_backend("fast"); });
+#pragma omp for schedule(dynamic, 1)
+    for (size_t p = 0; p < picked.size(); ++p)
+      errors.capture([&] {
+        if (!backend) return;
+        const Receiver r = receiver_of(fragments, soft, picked[p]);
+        const MsmBlocker seed = msm_blocker(context, *sat, r);
+        // The search region as its texels: their depths join the grid, its moments are theirs.
+        const int side = params.sat_search, x0 = r.x - side / 2, y0 = r.y - side / 2;
+        std::vector<double> depths;
+        double mass = 0, sum = 0;
+        for (int y = y0; y < y0 + side; ++y)
+          for (int x = x0; x < x0 + side; ++x) {
+            const double z = map.at(x, y);
+            depths.push_back(z);
+            if (z < seed.zs) mass += 1, sum += z;
+          }
+        if (mass == 0) return;
+        const std::vector<double> weights(depths.size(), 1.0 / double(depths.size()));
+        const BlockerBounds bounds =
+            blocker_bounds_dinkelbach(factory, depths, weights, seed.zs, *backend);
+        if (!bounds.feasible) return;
+        BlockerAuditRow& row = found[p];
+        row.receiver = picked[p];
+        row.zs = seed.zs;
+        row.exact = sum / mass;
+        row.seed = seed.depth;
+        row.lo = bounds.lo, row.hi = bounds.hi;
+        // Both sides start from the region's own mean, so lo <= exact <= hi.
+        row.penumbra_lo = 2 * soft.rim_shear * std::max(r.zf - bounds.hi, 0.0);
+        row.penumbra_hi = 2 * soft.rim_shear * std::max(r.zf - bounds.lo, 0.0);
+        row.penumbra_exact = 2 * soft.rim_shear * std::max(r.zf - row.exact, 0.0);
+        row.penumbra_seed = 2 * soft.rim_shear * std::max(r.zf - row.seed, 0.0);
+        kept[p] = 1;
+      });
+  }
   errors.rethrow();
   for (size_t p = 0; p < picked.size(); ++p)
     if (kept[p]) rows.push_back(found[p]);
