@@ -60,6 +60,9 @@ void check_box(const Basis& basis, const MomentBox& box) {
 }
 
 constexpr int kIterationLimit = 20000;
+// Phase 1's t (in units of each row's scale) that counts as inside the box: GLPK's bound
+// tolerance, with which the box LP reads the same points.
+constexpr double kElasticFeasible = 1e-12;
 
 // The box LP in GLPK: columns are the points' weights; row 1 is sum w = 1, row i + 2 the stored
 // value i scaled by 1 / scale_i (its largest magnitude over the first points). Points added later
@@ -205,6 +208,112 @@ class BoxLp {
   std::vector<double> scale_, points_;
 };
 
+// Phase 1 of the box problem: minimise t over distributions on the points with
+// c_i - eps_i - t scale_i <= E[s_i] <= c_i + eps_i + t scale_i, two rows per stored value (rows
+// scaled as BoxLp's), t the first column. Points added later enter at zero weight: a warm start.
+class ElasticLp {
+ public:
+  ElasticLp(const Basis& basis, const MomentBox& box, std::span<const double> points)
+      : basis_(basis), box_(box), lp_(glp_create_prob()) {
+    check_box(basis, box);
+    const int m = int(basis.size());
+    scale_ = row_scales(stored_rows(basis, box, points), size_t(m), points.size());
+    glp_add_rows(lp_, 2 * m + 1);
+    glp_set_row_bnds(lp_, 1, GLP_FX, 1, 1);
+    glp_add_cols(lp_, 1);
+    std::vector<int> rows{0};
+    std::vector<double> values{0};
+    for (int i = 0; i < m; ++i) {
+      const double c = box.center[i] / scale_[i], e = box.tolerance[i] / scale_[i];
+      glp_set_row_bnds(lp_, i + 2, GLP_LO, c - e, 0);
+      glp_set_row_bnds(lp_, m + i + 2, GLP_UP, 0, c + e);
+      rows.push_back(i + 2), values.push_back(1);
+      rows.push_back(m + i + 2), values.push_back(-1);
+    }
+    glp_set_mat_col(lp_, 1, 2 * m, rows.data(), values.data());
+    glp_set_col_bnds(lp_, 1, GLP_LO, 0, 0);
+    glp_set_obj_coef(lp_, 1, 1);
+    glp_set_obj_dir(lp_, GLP_MIN);
+    add_points(points);
+  }
+  ~ElasticLp() { glp_delete_prob(lp_); }
+  ElasticLp(const ElasticLp&) = delete;
+  ElasticLp& operator=(const ElasticLp&) = delete;
+
+  void add_points(std::span<const double> points) {
+    if (points.empty()) return;
+    const int m = int(basis_.size()), n = int(points.size());
+    const std::vector<double> s = stored_rows(basis_, box_, points);
+    const int first = glp_add_cols(lp_, n);
+    std::vector<int> rows(2 * m + 2);
+    std::vector<double> values(2 * m + 2);
+    for (int p = 0; p < n; ++p) {
+      rows[1] = 1, values[1] = 1;
+      for (int i = 0; i < m; ++i) {
+        const double a = s[size_t(i) * n + p] / scale_[i];
+        rows[i + 2] = i + 2, values[i + 2] = a;
+        rows[m + i + 2] = m + i + 2, values[m + i + 2] = a;
+      }
+      glp_set_mat_col(lp_, first + p, 2 * m + 1, rows.data(), values.data());
+      glp_set_col_bnds(lp_, first + p, GLP_LO, 0, 0);
+      points_.push_back(points[p]);
+    }
+  }
+
+  // The least t, or NaN when GLPK gives up.
+  double solve() {
+    glp_smcp params;
+    glp_init_smcp(&params);
+    params.msg_lev = GLP_MSG_OFF;
+    params.presolve = GLP_OFF;
+    params.tol_bnd = 1e-12;
+    params.tol_dj = 1e-10;
+    params.it_lim = kIterationLimit;
+    if (!solved_) glp_adv_basis(lp_, 0);
+    solved_ = true;
+    const int rc = glp_simplex(lp_, &params);
+    if (rc != 0 || glp_get_status(lp_) != GLP_OPT) return std::numeric_limits<double>::quiet_NaN();
+    return std::max(0.0, glp_get_obj_val(lp_));
+  }
+
+  // The points of positive weight.
+  std::vector<double> support() const {
+    std::vector<double> out;
+    for (size_t j = 0; j < points_.size(); ++j)
+      if (glp_get_col_prim(lp_, int(j) + 2) > 0) out.push_back(points_[j]);
+    return out;
+  }
+
+  // The dual function psi(z) = y_1 + sum_i (y_i^lo + y_i^hi) s_i(z) / scale_i in the basis: a
+  // point where psi > 0 lowers t (its reduced cost is -psi).
+  std::vector<long double> coefficients() const {
+    const int m = int(basis_.size());
+    std::vector<long double> c(m + 1, 0.0L);
+    c[0] = glp_get_row_dual(lp_, 1);
+    for (int i = 0; i < m; ++i) {
+      const long double pi =
+          ((long double)glp_get_row_dual(lp_, i + 2) + glp_get_row_dual(lp_, m + i + 2)) /
+          scale_[i];
+      if (box_.transform.size() == 0) {
+        c[i + 1] += pi;
+        continue;
+      }
+      if (box_.offset.size()) c[0] += pi * box_.offset(i);
+      for (int j = 0; j < m; ++j) c[j + 1] += pi * box_.transform(i, j);
+    }
+    return c;
+  }
+
+  const std::vector<double>& points() const { return points_; }
+
+ private:
+  const Basis& basis_;
+  const MomentBox& box_;
+  glp_prob* lp_;
+  bool solved_ = false;
+  std::vector<double> scale_, points_;
+};
+
 // How far outside the cone the box's centre lies: minimise t with
 // |E[s_i] - c_i| <= t max(|c_i|, eps_i) for every i, as two rows per value,
 // E + t u >= c and E - t u <= c; t is the last column.
@@ -289,6 +398,38 @@ std::vector<double> ulp_box(const ProblemFactory& factory, const Problem& proble
   for (size_t k = 0; k < eps.size(); ++k)
     eps[k] = ulps * kUlp * std::max(std::abs(problem.moments[k]), scale[k]);
   return eps;
+}
+
+BoxPoints find_box_points(const Basis& basis, const MomentBox& box, const ContinuousDomain& domain,
+                          std::span<const double> seed_points, const ContinuousSettings& settings) {
+  std::vector<double> points(seed_points.begin(), seed_points.end());
+  points.push_back(domain.lo);
+  points.push_back(domain.hi);
+  std::sort(points.begin(), points.end());
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  ElasticLp lp(basis, box, points);
+  const int per_round =
+      settings.points_per_round > 0 ? settings.points_per_round : 2 * int(basis.size() + 1);
+  // The step is 0 everywhere (z_f below every point): the certificate then bounds psi itself.
+  constexpr double kNoStep = -std::numeric_limits<double>::infinity();
+  BoxPoints out;
+  for (;;) {
+    out.distance = lp.solve();
+    ++out.rounds;
+    if (std::isnan(out.distance)) return out;
+    // Within GLPK's bound tolerance, as the box LP on these points will read it.
+    if (out.distance <= kElasticFeasible) {
+      out.found = true;
+      out.points = lp.support();
+      return out;
+    }
+    if (out.rounds >= settings.max_rounds) return out;
+    const DualCertificate found =
+        certify_dual(basis, lp.coefficients(), kNoStep, lp.points(), domain, settings);
+    if (found.violators.empty()) return out;  // no point of the domain lowers t
+    lp.add_points(std::span<const double>(found.violators.data(),
+                                          std::min<size_t>(per_round, found.violators.size())));
+  }
 }
 
 ContinuousBoxAnswer solve_moment_box_continuous(const Basis& basis, const MomentBox& box, double zf,

@@ -61,6 +61,19 @@ struct ContinuousBoxAnswer {
   double width() const { return upper - lower; }
 };
 
+// Phase 1 of the box problem on the continuous domain: points of it that carry a distribution in
+// the box. The exchange method on the elastic LP (minimise t with
+// |E[s_i] - c_i| <= eps_i + t scale_i), adding points where its dual function rises above 0.
+struct BoxPoints {
+  bool found = false;
+  std::vector<double> points;  // found: the support of a distribution in the box
+  double distance = 0;         // the last t (NaN: GLPK gave up); 0 when found
+  int rounds = 0;
+};
+BoxPoints find_box_points(const Basis& basis, const MomentBox& box, const ContinuousDomain& domain,
+                          std::span<const double> seed_points,
+                          const ContinuousSettings& settings = {});
+
 // The box problem on the continuous domain, starting from `seed_points` (points of I that admit
 // a distribution in the box, e.g. the atoms of the one that was stored: the exchange has no
 // phase 1; z_f and the interval's ends join them). The bracket [lower, upper] holds the box
