@@ -20,30 +20,20 @@
 #ifdef __AVX2__
 #include "util/simd_intrinsics.h"
 #endif
-#ifdef __x86_64__
-#include <x86intrin.h>
-#endif
 
-#include "eval/evaluation.h"
-#include "eval/warm_runs.h"
-#include "lp/problem.h"
-#include "lp/solution.h"
+#include "bench_runs.h"
 
 namespace mb {
 namespace {
 
-constexpr int kInstances = 1500;
-
-const std::vector<ViewData>& views() {
-  static std::vector<ViewData> v = [] {
-    bool have_data =
-        std::filesystem::exists(std::string(MOMENTBENCH_SOURCE_DIR) + "/data/buildings.obj");
-    EvalSettings settings;
-    settings.threads = 2;
-    return prepare_views(load_dataset(have_data ? "default" : "tiny"), 0, settings, true);
-  }();
-  return v;
+using bench::Run;
+using bench::TimedSolver;
+using bench::views;
+const std::vector<Run>& runs(const std::string& basis, int grid) {
+  return bench::runs({basis}, grid);
 }
+
+constexpr int kInstances = 1500;
 
 const std::vector<lp::Problem>& problems(const std::string& basis_name, int grid) {
   static std::map<std::pair<std::string, int>, std::vector<lp::Problem>> cache;
@@ -70,102 +60,6 @@ const std::vector<lp::Problem>& problems(const std::string& basis_name, int grid
     }
   return out;
 }
-
-// Runs as the sweep solves them: the fragments of a warm-start band (kWarmRunRows texel rows)
-// in fragment order, the LP ones among them, within a window of kRunColumns columns so that a pass
-// stays short; three windows at evenly spaced places of every view.
-// The sweep's atom map for its 9 x 9 kernel (eval/warm_runs.h).
-const KernelAtomMap& atom_map() {
-  static const KernelAtomMap map(9);
-  return map;
-}
-struct Run {
-  std::vector<lp::Problem> problems;
-  std::vector<lp::WarmStart> positions;
-};
-const std::vector<Run>& runs(const std::string& basis_name, int grid) {
-  static std::map<std::pair<std::string, int>, std::vector<Run>> cache;
-  auto& out = cache[{basis_name, grid}];
-  if (!out.empty()) return out;
-  lp::ProblemFactory factory(Basis::parse({basis_name}), lp::Discretization{0, 1, grid, false});
-  GaussianKernel kernel = make_gaussian_kernel(9, 2.4);
-  std::vector<double> depths(81), weights(81);
-  constexpr int kRunsPerView = 3, kRunColumns = 48;
-  for (const auto& v : views()) {
-    const int bands = v.map.height / kWarmRunRows;
-    for (int r = 0; r < kRunsPerView && bands > 0; ++r) {
-      Run run;
-      const int band = bands * (2 * r + 1) / (2 * kRunsPerView);
-      const int x0 = std::max(0, v.map.width * (2 * r + 1) / (2 * kRunsPerView) - kRunColumns / 2);
-      for (size_t k = 0; k < v.fragments.size(); ++k) {
-        const size_t t = v.fragments.texel[k];
-        const int x = int(t % v.map.width), y = int(t / v.map.width);
-        if (warm_run_of(t, v.map.width) != band || x < x0 || x >= x0 + kRunColumns) continue;
-        const double zf = v.fragments.ztest[k];
-        if (v.fragments.oracle[k] == 0) continue;
-        kernel_distribution(v.map, kernel, x, y, depths, weights);
-        run.problems.push_back(factory.from_distribution(depths, weights, zf));
-        run.positions.push_back(warm_start_at(v.fragments.layer[k], x, y, &atom_map()));
-      }
-      out.push_back(std::move(run));
-    }
-  }
-  return out;
-}
-
-// The sweep builds each problem into one reused Problem right before solving it, so its columns are
-// in cache when the solver reads them; read from the bench's ~55 MB of stored problems instead,
-// they were not, and the misses were ~25 % of our solver's time (~0.3 % of GLPK's). So each LP is
-// copied into one reused Problem first, as the sweep's factory would write it, and only the solve
-// is timed (manual time around solve_into, the same for both backends).
-// The clock: two steady_clock reads cost ~110 ns on this VM (~5 % of one of our LPs, 0.1 % of
-// GLPK's), two TSC reads ~60 ns; so on x86 the solves are timed in TSC ticks, converted to seconds
-// by the ratio of steady_clock to TSC over the whole pass (no assumption on the TSC's rate).
-// The TSC reads are fenced (mfence, lfence): unfenced, the read before a solve executed while the
-// copy's stores were still in flight, and ~5 % of our solver's measured time was the copy's
-// (session 18: fencing raised our rate 1.04-1.05x and GLPK's 1.01x, 4 paired runs).
-struct TimedSolver {
-  std::unique_ptr<lp::Backend> backend;
-  lp::Problem problem;  // the in-cache copy
-  lp::Solution solution;
-#ifdef __x86_64__
-  using Ticks = unsigned long long;
-  static Ticks now() {
-    _mm_mfence();
-    _mm_lfence();
-    const Ticks t = __rdtsc();
-    _mm_lfence();
-    return t;
-  }
-#else
-  using Ticks = std::chrono::steady_clock::rep;
-  static Ticks now() {
-    return std::chrono::steady_clock::now().time_since_epoch().count();
-  }
-#endif
-  Ticks solving = 0;
-  Ticks pass_ticks = now();
-  std::chrono::steady_clock::time_point pass_start = std::chrono::steady_clock::now();
-  Ticks last = 0;  // the last solve's ticks
-  const lp::Solution& solve(const lp::Problem& stored, const lp::WarmStart* at) {
-    problem = stored;
-    const Ticks start = now();
-    backend->solve_into(problem, at, solution);
-    last = now() - start;
-    solving += last;
-    return solution;
-  }
-  // The solving time since the last call, for State::SetIterationTime.
-  double take_seconds() {
-    const Ticks ticks = now();
-    const auto clock = std::chrono::steady_clock::now();
-    const double seconds_per_tick =
-        std::chrono::duration<double>(clock - pass_start).count() / double(ticks - pass_ticks);
-    const double seconds = double(solving) * seconds_per_tick;
-    solving = 0, pass_ticks = ticks, pass_start = clock;
-    return seconds;
-  }
-};
 
 // `warm`: solve_next within a run (what the sweep does); otherwise every LP from scratch.
 void BM_SolveRuns(benchmark::State& state, const std::string& backend, const std::string& basis,
