@@ -19,8 +19,8 @@
 // the kernel's speed, and the rest as today (what a block cannot share: each lane's own pivots,
 // with the other lanes masked). The ceiling T / (b + T - s0) is the go/no-go number (counter
 // `ceiling`); `batched_agree` counts the lanes whose G is the engine's to 1e-9 (the kernel is
-// checked, not only timed). Two more bounds, below: `ceiling_lockstep` and
-// `ceiling_at_kernel_gain`.
+// checked, not only timed). More bounds, below: `ceiling_free_common_path`, `ceiling_lockstep`,
+// `ceiling_at_kernel_gain` and `ceiling_lockstep_at_kernel_gain`.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -260,10 +260,11 @@ void BM_Block(benchmark::State& state, int grid) {
   for (const auto& functions : block_candidates()) runs.push_back(&bench::runs(functions, grid));
   using Ticks = bench::TimedSolver::Ticks;
   double single = 0, resolve = 0, batched = 0, kernel = 0;
-  double lockstep = 0;  // the lockstep bound's ticks (below)
-  double passes = 0;    // one pricing pass of every LP
-  double priced = 0;    // every LP's pricing passes (one per pivot and one to prove the optimum)
-  double pivoting = 0;  // the single solves of the LPs that took a pivot
+  double lockstep = 0;     // the lockstep bound's ticks (below)
+  double longest_sum = 0;  // of it, the blocks' longest lanes' work other than pricing
+  double passes = 0;       // one pricing pass of every LP
+  double priced = 0;       // every LP's pricing passes (one per pivot and one to prove the optimum)
+  double pivoting = 0;     // the single solves of the LPs that took a pivot
   size_t without_pivot = 0;
   size_t lps = 0, pivots = 0, lanes_full = 0, lanes_certified = 0, agree = 0, not_optimal = 0;
   std::vector<bench::TimedSolver> solvers;
@@ -272,7 +273,7 @@ void BM_Block(benchmark::State& state, int grid) {
   std::vector<lp::Problem> copies(kLanes);
   std::vector<double> cost, reduced;
   for (auto _ : state) {
-    single = resolve = batched = kernel = lockstep = passes = priced = pivoting = 0;
+    single = resolve = batched = kernel = lockstep = passes = priced = pivoting = longest_sum = 0;
     without_pivot = 0;
     lps = pivots = lanes_full = lanes_certified = agree = not_optimal = 0;
     engine_pass(runs, solvers, answers);
@@ -322,6 +323,7 @@ void BM_Block(benchmark::State& state, int grid) {
           agree += std::abs(g[c] - a.G) <= 1e-9;
         }
         lockstep += longest + pricing;
+        longest_sum += longest;
       }
     // Manual time: the engine's single solves (pass 1's share of its solving time).
     double seconds = 0;
@@ -354,6 +356,11 @@ void BM_Block(benchmark::State& state, int grid) {
   const double gain = (s0 - pass) / std::max(1e-9, kernel / double(lps) - pass);
   state.counters["kernel_gain_beyond_pricing"] = gain;
   state.counters["ceiling_at_kernel_gain"] = t / (pricing + (t - pricing) / gain);
+  // The lockstep bound with an instruction stream for kLanes lanes costing kLanes / gain times a
+  // lane's scalar one (the lockstep bound takes gain = kLanes): divergence and the measured
+  // efficiency together.
+  state.counters["ceiling_lockstep_at_kernel_gain"] =
+      single / (priced + longest_sum * kLanes / gain);
 }
 BENCHMARK_CAPTURE(BM_Block, grid256, 256)->UseManualTime()->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Block, grid1024, 1024)->UseManualTime()->Unit(benchmark::kMillisecond);
