@@ -5,18 +5,12 @@
 #include <cmath>
 #include <string>
 
+#include "continuous/local_power.h"
 #include "lp/solution.h"
 
 namespace mb::lp {
 
 namespace {
-
-// The power basis u, .., u^n.
-Basis power_basis(int degree) {
-  std::vector<std::string> powers;
-  for (int k = 1; k <= degree; ++k) powers.push_back(k == 1 ? "z" : "z^" + std::to_string(k));
-  return Basis::parse(powers);
-}
 
 // x rounded to double, then two ulps further in the direction `dir`: I's ends in u, outward.
 double round_outward(long double x, int dir) {
@@ -97,14 +91,13 @@ LocalBoxAnswer solve_power_box_locally(double lo, double hi, std::span<const dou
   const double u_lo = round_outward((lo - f.mean) * f.inverse, -1);
   const double u_hi = round_outward((hi - f.mean) * f.inverse, 1);
   const double zf_u = f.to_u(zf);
-  constexpr double kSeedReach = 8;
-  const double reach = std::max(kSeedReach, std::abs(zf_u));
+  const double reach = std::max(kLocalSeedReach, std::abs(zf_u));
   ContinuousDomain domain{std::max(u_lo, -reach), std::min(u_hi, reach), u_lo, u_hi};
   domain.even_degree = degree % 2 == 0 ? degree : 0;
   domain.probe_limit = 4 * std::pow(10.0, 8.0 / degree);
   if (!(domain.lo < domain.hi)) domain.lo = u_lo, domain.hi = u_hi;  // I lies beyond the reach
-  const double seed_lo = std::max(domain.lo, -kSeedReach),
-               seed_hi = std::min(domain.hi, kSeedReach);
+  const double seed_lo = std::max(domain.lo, -kLocalSeedReach),
+               seed_hi = std::min(domain.hi, kLocalSeedReach);
   std::vector<double> seeds;
   for (int i = 0; i <= kContinuousSeedGrid; ++i)
     seeds.push_back(seed_lo + (seed_hi - seed_lo) * i / kContinuousSeedGrid);

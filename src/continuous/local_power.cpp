@@ -6,6 +6,12 @@
 
 namespace mb::lp {
 
+Basis power_basis(int degree) {
+  std::vector<std::string> powers;
+  for (int k = 1; k <= degree; ++k) powers.push_back(k == 1 ? "z" : "z^" + std::to_string(k));
+  return Basis::parse(powers);
+}
+
 LocalPowerSolution solve_power_locally(const LocalPowerProblem& problem,
                                        std::span<const double> depths,
                                        std::span<const double> weights, double zf, Backend& backend,
@@ -20,19 +26,15 @@ LocalPowerSolution solve_power_locally(const LocalPowerProblem& problem,
   if (!(scale > 1e-12 * std::max(1.0, std::abs(mean))))
     scale = zf != mean ? std::abs(zf - mean) : 1.0;
   const auto to_u = [&](double z) { return (z - mean) / scale; };
-  std::vector<std::string> powers;
-  for (int k = 1; k <= problem.degree; ++k)
-    powers.push_back(k == 1 ? "z" : "z^" + std::to_string(k));
-  // The seed grid covers the distribution's scale (|u| <= kSeedReach) within [lo, hi]; the ends of
-  // [lo, hi] join as points, and the exchange adds what lies between where phi needs it. A grid
-  // over all of a wide [lo, hi] would give the LP columns of size (hi / 4)^n for no gain.
-  constexpr double kSeedReach = 8;
+  // The seed grid covers the distribution's scale (|u| <= kLocalSeedReach) within [lo, hi]; the
+  // ends of [lo, hi] join as points, and the exchange adds what lies between where phi needs it. A
+  // grid over all of a wide [lo, hi] would give the LP columns of size (hi / 4)^n for no gain.
   const double u_lo = to_u(problem.lo), u_hi = to_u(problem.hi);
-  Discretization disc{std::max(u_lo, -kSeedReach), std::min(u_hi, kSeedReach), problem.seed_grid,
-                      false};
+  Discretization disc{std::max(u_lo, -kLocalSeedReach), std::min(u_hi, kLocalSeedReach),
+                      problem.seed_grid, false};
   if (!(disc.lo < disc.hi)) disc.lo = u_lo, disc.hi = u_hi;  // [lo, hi] beyond the reach
   disc.window_lo = -4, disc.window_hi = 4;
-  const ProblemFactory factory(Basis::parse(powers), disc);
+  const ProblemFactory factory(power_basis(problem.degree), disc);
   std::vector<double> u(depths.size());
   std::transform(depths.begin(), depths.end(), u.begin(), to_u);
   Problem p = factory.from_distribution(u, weights, to_u(zf));
@@ -42,7 +44,7 @@ LocalPowerSolution solve_power_locally(const LocalPowerProblem& problem,
   // the rest as tails, and where phi rises above the step there, the exchange adds points out to
   // where columns reach ~1e8 ((u / 4)^n, rows being orthonormal on [-4, 4]). The LP's optimality
   // tolerance scales with its largest column, so columns are kept as small as the answer allows.
-  double reach = std::max(kSeedReach, std::abs(to_u(zf)));
+  double reach = std::max(kLocalSeedReach, std::abs(to_u(zf)));
   for (double z : u) reach = std::max(reach, std::abs(z));
   const double inner_lo = std::max(u_lo, -reach), inner_hi = std::min(u_hi, reach);
   extra.push_back(inner_lo);

@@ -9,9 +9,17 @@
 #include <span>
 #include <vector>
 
+#include "basis/basis.h"
 #include "continuous/continuous.h"
 
 namespace mb::lp {
+
+// The basis z, .., z^n under its catalog names (the span local coordinates keep).
+Basis power_basis(int degree);
+
+// How many deviations from the mean the seed grid of a local problem reaches: the distribution's
+// own scale, where the exchange starts; it adds points beyond where phi needs them.
+constexpr double kLocalSeedReach = 8;
 
 struct LocalPowerProblem {
   int degree = 4;         // n: the basis z, .., z^n

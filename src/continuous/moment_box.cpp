@@ -64,6 +64,42 @@ constexpr int kIterationLimit = 20000;
 // tolerance, with which the box LP reads the same points.
 constexpr double kElasticFeasible = 1e-12;
 
+// GLPK's simplex for the box LP and its phase 1: bounds read to 1e-12 of a row's scale (the
+// rows are scaled), reduced costs to 1e-10. An LP that does not settle (far points make columns
+// of very different sizes) counts as unstable, and the exchange keeps its last certified round,
+// instead of running on; an iteration limit, not a time limit, so that answers do not depend on
+// the machine load.
+glp_smcp box_simplex_parameters() {
+  glp_smcp params;
+  glp_init_smcp(&params);
+  params.msg_lev = GLP_MSG_OFF;
+  params.presolve = GLP_OFF;
+  params.tol_bnd = 1e-12;
+  params.tol_dj = 1e-10;
+  params.it_lim = kIterationLimit;
+  return params;
+}
+
+// A dual function in the basis from the duals of a box LP's rows: `constant` that of sum w = 1,
+// pi[i] that of stored value i over its scale. phi(z) = constant + sum_i pi_i s_i(z), with
+// s = transform b + offset when the box stores transformed values: c_0 = constant + pi . offset,
+// c_j = (transform^T pi)_j.
+std::vector<long double> dual_in_basis(const MomentBox& box, long double constant,
+                                       const std::vector<long double>& pi) {
+  const int m = int(pi.size());
+  std::vector<long double> c(m + 1, 0.0L);
+  c[0] = constant;
+  for (int i = 0; i < m; ++i) {
+    if (box.transform.size() == 0) {
+      c[i + 1] = pi[i];
+      continue;
+    }
+    if (box.offset.size()) c[0] += pi[i] * box.offset(i);
+    for (int j = 0; j < m; ++j) c[j + 1] += pi[i] * box.transform(i, j);
+  }
+  return c;
+}
+
 // The box LP in GLPK: columns are the points' weights; row 1 is sum w = 1, row i + 2 the stored
 // value i scaled by 1 / scale_i (its largest magnitude over the first points). Points added later
 // enter as nonbasic columns at zero, so the last basis stays feasible: a warm start.
@@ -108,16 +144,7 @@ class BoxLp {
 
   // Optimal, Infeasible or Unstable (GLPK gave up).
   ProblemStatus solve() {
-    glp_smcp params;
-    glp_init_smcp(&params);
-    params.msg_lev = GLP_MSG_OFF;
-    params.presolve = GLP_OFF;
-    params.tol_bnd = 1e-12;
-    params.tol_dj = 1e-10;
-    // An LP that does not settle (far points make columns of very different sizes) counts as
-    // unstable, and the exchange keeps its last certified round, instead of running on; an
-    // iteration limit, not a time limit, so that answers do not depend on the machine load.
-    params.it_lim = kIterationLimit;
+    glp_smcp params = box_simplex_parameters();
     if (!solved_) glp_std_basis(lp_);
     solved_ = true;
     int rc = glp_simplex(lp_, &params);
@@ -145,20 +172,9 @@ class BoxLp {
   }
 
   // The dual phi(z) = pi_1 + sum_i pi_i' s_i(z) (pi' = the row duals over the scales) in the
-  // basis: c_0 = pi_1 + pi' . offset, c_j = (transform^T pi')_j.
+  // basis.
   std::vector<long double> coefficients() const {
-    const int m = int(basis_.size());
-    std::vector<long double> c(m + 1, 0.0L), pi = scaled_duals();
-    c[0] = glp_get_row_dual(lp_, 1);
-    for (int i = 0; i < m; ++i) {
-      if (box_.transform.size() == 0) {
-        c[i + 1] = pi[i];
-        continue;
-      }
-      if (box_.offset.size()) c[0] += pi[i] * box_.offset(i);
-      for (int j = 0; j < m; ++j) c[j + 1] += pi[i] * box_.transform(i, j);
-    }
-    return c;
+    return dual_in_basis(box_, glp_get_row_dual(lp_, 1), scaled_duals());
   }
 
   // min over the box of E[phi] = pi_1 + sum_i (pi_i' c_i - |pi_i'| eps_i), and the magnitude of
@@ -262,13 +278,7 @@ class ElasticLp {
 
   // The least t, or NaN when GLPK gives up.
   double solve() {
-    glp_smcp params;
-    glp_init_smcp(&params);
-    params.msg_lev = GLP_MSG_OFF;
-    params.presolve = GLP_OFF;
-    params.tol_bnd = 1e-12;
-    params.tol_dj = 1e-10;
-    params.it_lim = kIterationLimit;
+    const glp_smcp params = box_simplex_parameters();
     if (!solved_) glp_adv_basis(lp_, 0);
     solved_ = true;
     const int rc = glp_simplex(lp_, &params);
@@ -288,20 +298,12 @@ class ElasticLp {
   // point where psi > 0 lowers t (its reduced cost is -psi).
   std::vector<long double> coefficients() const {
     const int m = int(basis_.size());
-    std::vector<long double> c(m + 1, 0.0L);
-    c[0] = glp_get_row_dual(lp_, 1);
-    for (int i = 0; i < m; ++i) {
-      const long double pi =
+    std::vector<long double> pi(static_cast<size_t>(m));
+    for (int i = 0; i < m; ++i)
+      pi[size_t(i)] =
           ((long double)glp_get_row_dual(lp_, i + 2) + glp_get_row_dual(lp_, m + i + 2)) /
           scale_[i];
-      if (box_.transform.size() == 0) {
-        c[i + 1] += pi;
-        continue;
-      }
-      if (box_.offset.size()) c[0] += pi * box_.offset(i);
-      for (int j = 0; j < m; ++j) c[j + 1] += pi * box_.transform(i, j);
-    }
-    return c;
+    return dual_in_basis(box_, glp_get_row_dual(lp_, 1), pi);
   }
 
   const std::vector<double>& points() const { return points_; }

@@ -101,6 +101,13 @@ void add_moment_range(json& out, const lp::ProblemFactory& factory,
                           (r.complete() ? "" : ": the maximum is a lower estimate");
 }
 
+// A distribution as the answer's "support": [point, weight] pairs.
+json support_json(const std::vector<double>& points, const std::vector<double>& weights) {
+  json support = json::array();
+  for (size_t k = 0; k < points.size(); ++k) support.push_back({points[k], weights[k]});
+  return support;
+}
+
 // Raw power moments outside the cone on the continuous interval: the box problem in the moments'
 // local coordinates (continuous/local_box.h), which an LP resolves where the box in z is a few ulps
 // of the columns' leading digits. False when its phase 1 finds no distribution in the box (the
@@ -118,10 +125,7 @@ bool answer_box_locally(json& out, const lp::Discretization& disc,
   out["bracket"] = local.box.width();
   out["proven"] = local.box.proven;
   out["exchange_rounds"] = local.phase1.rounds + local.box.rounds;
-  json support = json::array();
-  for (size_t k = 0; k < local.support.size(); ++k)
-    support.push_back({local.support[k], local.weights[k]});
-  out["support"] = support;
+  out["support"] = support_json(local.support, local.weights);
   out["backend"] = "glpk";
   return true;
 }
@@ -153,23 +157,17 @@ json solve_one(lp::Backend& backend, FactoryCache& factories,
     // box of `tolerance_ulps` ulps answers it; a vector outside the box reports its distance.
     const lp::Problem exact = factory.from_moments(moments, zf, points);
     const std::vector<double> tolerance = lp::ulp_box(factory, exact, tolerance_ulps);
-    if (disc.continuous && lp::power_basis_degree(factory.basis()) > 0 &&
-        answer_box_locally(out, disc, moments, tolerance, zf)) {
-      out["exact_status"] = lp::to_string(s.status);
-      out["moment_box_ulps"] = tolerance_ulps;
-      return out;
-    }
-    const lp::MomentBoxAnswer box = lp::solve_moment_box(factory, exact, tolerance);
     out["exact_status"] = lp::to_string(s.status);
     out["moment_box_ulps"] = tolerance_ulps;
+    if (disc.continuous && lp::power_basis_degree(factory.basis()) > 0 &&
+        answer_box_locally(out, disc, moments, tolerance, zf))
+      return out;
+    const lp::MomentBoxAnswer box = lp::solve_moment_box(factory, exact, tolerance);
     out["status"] = lp::to_string(box.status);
     out["backend"] = "glpk";
     if (box.status == lp::ProblemStatus::Optimal) {
       out["G"] = box.G;
-      json support = json::array();
-      for (size_t k = 0; k < box.support.size(); ++k)
-        support.push_back({box.support[k], box.weights[k]});
-      out["support"] = support;
+      out["support"] = support_json(box.support, box.weights);
     } else if (box.status == lp::ProblemStatus::Infeasible) {
       out["relative_distance"] = box.relative_distance;
     }
