@@ -1,5 +1,8 @@
-// Run identity: the config hash sees option values only, so documentation can change without
-// making a sweep unresumable, while any changed value still refuses a resume or a merge.
+// Run identity (docs/sweeps.md "Identity"): the option records say which options make a run what
+// it is. The config hash sees option values only and leaves out the options that change no
+// measured number (threads); a resume or merge names every other differing option; a report
+// compares every measurement option, reading older databases through their stored config, their
+// twelve measurement keys or their settings sentence.
 #include <gtest/gtest.h>
 
 #include "sweep/run_identity.h"
@@ -7,85 +10,133 @@
 namespace mb {
 namespace {
 
-const std::string kYaml =
-    "# Dataset: a YAML file.\ndataset: tiny\n# OpenMP threads.\nthreads: 0\n# Grid.\nlp.grid: "
-    "256\n";
-
-TEST(RunIdentity, HashIgnoresCommentsAndThreads) {
-  const std::string reworded =
-      "# Dataset: reworded prose.\ndataset: tiny\n# Threads.\nthreads: 7\n# Grid points.\nlp.grid: "
-      "256\n";
-  EXPECT_EQ(config_hash(kYaml), config_hash(reworded));
-  EXPECT_EQ(config_values(kYaml), "dataset: tiny\nlp.grid: 256\n");
+// A small option table: one option of each effect and two measurement options.
+const std::vector<OptionSpec>& specs() {
+  static const std::vector<OptionSpec> s{
+      {"dataset", OptionType::String, "default", "Dataset."},
+      measures_nothing({"threads", OptionType::Integer, "0", "Threads."}),
+      {"lp.grid", OptionType::Integer, "256", "Grid."},
+      {"light.angle", OptionType::Number, "0", "Area light."},
+      selects_runs({"sample", OptionType::Integer, "0", "Sample."}),
+  };
+  return s;
 }
 
-TEST(RunIdentity, AnyValueChangesTheHash) {
-  const std::string other = "# Dataset.\ndataset: tiny\nthreads: 0\nlp.grid: 257\n";
-  EXPECT_NE(config_hash(kYaml), config_hash(other));
-  EXPECT_FALSE(same_config({{"config_hash", config_hash(other)}, {"config", other}}, kYaml));
+const std::string kYaml =
+    "# Dataset: a YAML file.\ndataset: tiny\n# OpenMP threads.\nthreads: 0\n# Grid.\nlp.grid: "
+    "256\n# Area light.\nlight.angle: 0\nsample: 0\n";
+
+TEST(RunIdentity, HashIgnoresCommentsAndOptionsThatMeasureNothing) {
+  const std::string reworded =
+      "# Dataset: reworded prose.\ndataset: tiny\n# Threads.\nthreads: 7\n# Grid points.\nlp.grid: "
+      "256\nlight.angle: 0\nsample: 0\n";
+  EXPECT_EQ(config_hash(kYaml, specs()), config_hash(reworded, specs()));
+  EXPECT_EQ(config_values(kYaml, specs()),
+            "dataset: tiny\nlp.grid: 256\nlight.angle: 0\nsample: 0\n");
+  // The same config with threads declared as measuring: then threads is part of the hash.
+  std::vector<OptionSpec> measuring = specs();
+  measuring[1].effect = OptionEffect::Measures;
+  EXPECT_NE(config_hash(kYaml, measuring), config_hash(reworded, measuring));
+}
+
+TEST(RunIdentity, AResumeNamesEveryDifferingOptionButThreads) {
+  const Meta stored{{"config_hash", config_hash(kYaml, specs())}, {"config", kYaml}};
+  std::string now = kYaml;
+  now.replace(now.find("threads: 0"), 10, "threads: 3");
+  EXPECT_TRUE(same_config(stored, now, specs()));
+  now.replace(now.find("light.angle: 0"), 14, "light.angle: 3");
+  now.replace(now.find("sample: 0"), 9, "sample: 8");
+  const auto d = config_differences(stored, now, specs());
+  ASSERT_EQ(d.size(), 2u);
+  EXPECT_EQ(d[0].key, "light.angle");
+  EXPECT_EQ(d[0].first, "0");
+  EXPECT_EQ(d[0].second, "3");
+  EXPECT_EQ(d[1].key, "sample");
+  EXPECT_EQ(differences_text(d, "that sweep", "this one"),
+            "light.angle is 0 in that sweep, 3 in this one; sample is 0 in that sweep, 8 in this "
+            "one");
 }
 
 TEST(RunIdentity, DatabasesWithTheOlderHashAreRecognisedByTheirValues) {
   // Before the value-only hash, the hash covered the comments too: a reworded doc changed it.
-  const std::map<std::string, std::string> legacy{{"config_hash", "086f6f348efb6a84"},
-                                                  {"config", "# Old prose.\n" + kYaml}};
-  EXPECT_TRUE(same_config(legacy, kYaml));
-  EXPECT_FALSE(same_config(legacy, "dataset: default\nlp.grid: 256\n"));
+  const Meta legacy{{"config_hash", "086f6f348efb6a84"}, {"config", "# Old prose.\n" + kYaml}};
+  EXPECT_TRUE(same_config(legacy, kYaml, specs()));
+  EXPECT_FALSE(
+      same_config(legacy, "dataset: default\nlp.grid: 256\nlight.angle: 0\nsample: 0\n", specs()));
 }
 
 // A sweep begun before an option existed resumes when the option is at its default (which keeps the
-// old behaviour), and not when it was changed.
+// old behaviour), and not when it was changed; an option the stored config has and the table no
+// longer declares is a difference.
 TEST(RunIdentity, OptionsAddedSinceCountAtTheirDefault) {
-  const std::map<std::string, std::string> old{{"config_hash", "0000000000000000"},
-                                               {"config", kYaml}};
-  const std::string defaults = "dataset: default\nthreads: 0\nlp.grid: 256\nesm.threshold: 0.01\n";
-  const std::string now = kYaml + "# New.\nesm.threshold: 0.01\n";
-  EXPECT_TRUE(same_config(old, now, defaults));
-  EXPECT_FALSE(same_config(old, now));  // without the defaults, a new key is a difference
-  EXPECT_FALSE(same_config(old, kYaml + "esm.threshold: 0.5\n", defaults));
-  EXPECT_FALSE(same_config(old, "dataset: tiny\n",
-                           defaults));  // a key removed  // a key removed is a difference
+  const std::string before = "dataset: tiny\nthreads: 0\nlp.grid: 256\nsample: 0\n";
+  const Meta old{{"config_hash", "0000000000000000"}, {"config", before}};
+  EXPECT_TRUE(same_config(old, kYaml, specs()));
+  std::string changed = kYaml;
+  changed.replace(changed.find("light.angle: 0"), 14, "light.angle: 0.5");
+  const auto d = config_differences(old, changed, specs());
+  ASSERT_EQ(d.size(), 1u);
+  EXPECT_EQ(d[0].key, "light.angle");
+  EXPECT_EQ(d[0].first, "0");
+  const Meta removed{{"config", before + "esm.threshold: 0.5\n"}};
+  EXPECT_FALSE(same_config(removed, kYaml, specs()));
 }
 
-TEST(RunIdentity, MeasurementKeysHoldExactValues) {
-  EvalSettings settings;
-  settings.technique.lp.grid = 300;
-  settings.technique.lp.lo = 0.1;
-  settings.technique.lp.hi = 0.30000000000000004;  // %g would print 0.3
-  auto meta = measurement_meta(settings);
-  meta["dataset"] = "tiny";
-  const auto grid = lp_grid_of(meta);
-  ASSERT_TRUE(grid);
-  EXPECT_EQ(grid->grid, 300);
-  EXPECT_EQ(grid->lo, 0.1);
-  EXPECT_EQ(grid->hi, 0.30000000000000004);
-  EXPECT_EQ(incomparable_key(meta, meta), "");
-  auto other = meta;
-  other["lp.hi"] = "0.3";
-  EXPECT_EQ(incomparable_key(meta, other), "lp.hi");
-  other = meta;
+TEST(RunIdentity, MeasurementMetaHoldsEveryMeasurementOption) {
+  const Meta meta = measurement_meta(kYaml, specs());
+  EXPECT_EQ(meta, (Meta{{"dataset", "tiny"}, {"lp.grid", "256"}, {"light.angle", "0"}}));
+  EXPECT_TRUE(measurement_differences(meta, meta, specs()).empty());
+  Meta other = meta;
+  other["light.angle"] = "3";
   other["dataset"] = "default";
-  EXPECT_EQ(incomparable_key(meta, other), "dataset");
+  const auto d = measurement_differences(other, meta, specs());
+  ASSERT_EQ(d.size(), 2u);
+  EXPECT_EQ(d[0].key, "dataset");  // first, whatever the table's order
+  EXPECT_EQ(d[1].key, "light.angle");
+  EXPECT_EQ(d[1].first, "3");
+  EXPECT_EQ(d[1].second, "0");
 }
 
-// Databases from before the measurement keys: the settings sentence decides, and the LP grid is
+// Databases from before every measurement option was stored (the twelve keys and the config): a
+// key they lack is read from their stored config, then taken at its default.
+TEST(RunIdentity, OlderDatabasesAreReadThroughTheirStoredConfig) {
+  const Meta twelve{{"dataset", "tiny"},
+                    {"lp.grid", "256"},
+                    {"lp.lo", "0"},
+                    {"lp.hi", "0.30000000000000004"},
+                    {"config", "dataset: tiny\nlp.grid: 256\nlight.angle: 3\n"}};
+  const Meta now = measurement_meta(kYaml, specs());
+  EXPECT_EQ(measurement_value(twelve, "light.angle", specs()), "3");
+  const auto d = measurement_differences(twelve, now, specs());
+  ASSERT_EQ(d.size(), 1u);
+  EXPECT_EQ(d[0].key, "light.angle");
+  Meta without_config = twelve;
+  without_config.erase("config");  // the option's default, the behaviour before it existed
+  EXPECT_TRUE(measurement_differences(without_config, now, specs()).empty());
+  const auto grid = lp_grid_of(twelve);
+  ASSERT_TRUE(grid);
+  EXPECT_EQ(grid->grid, 256);
+  EXPECT_EQ(grid->hi, 0.30000000000000004);
+}
+
+// Databases from before the measurement keys: the settings sentence decides too, and the LP grid is
 // read back out of it.
-TEST(RunIdentity, OlderDatabasesAreReadFromTheirSettingsSentence) {
-  const std::map<std::string, std::string> old{
-      {"dataset", "tiny"},
-      {"reference", "biased"},
-      {"settings",
-       "kernel 9x9 Gaussian, sigma 2.4 texels; reference biased; LP grid 256 on [0, "
-       "1], backend fast"}};
+TEST(RunIdentity, OldestDatabasesAreReadFromTheirSettingsSentence) {
+  const Meta old{{"dataset", "tiny"},
+                 {"settings",
+                  "kernel 9x9 Gaussian, sigma 2.4 texels; reference biased; LP grid 256 on [0, "
+                  "1], backend fast"}};
   const auto grid = lp_grid_of(old);
   ASSERT_TRUE(grid);
   EXPECT_EQ(grid->grid, 256);
   EXPECT_EQ(grid->hi, 1);
-  EXPECT_EQ(incomparable_key(old, old), "");
-  auto other = old;
+  EXPECT_TRUE(measurement_differences(old, old, specs()).empty());
+  Meta other = old;
   other["settings"] =
       "kernel 9x9 Gaussian, sigma 2.4 texels; reference biased; LP grid 512 on [0, 1]";
-  EXPECT_EQ(incomparable_key(old, other), "settings");
+  const auto d = measurement_differences(old, other, specs());
+  ASSERT_EQ(d.size(), 1u);
+  EXPECT_EQ(d[0].key, "settings");
   EXPECT_FALSE(lp_grid_of({{"dataset", "tiny"}}));
 }
 

@@ -32,9 +32,12 @@ int run_merge(const MergeOptions& o) {
   std::set<std::string> shard_names;
   for (size_t i = 0; i < inputs.size(); ++i) {
     auto meta = inputs[i].meta();
-    if (!same_config(meta, first["config"]))
+    if (const auto differences = config_differences(meta, first["config"], sweep_specs());
+        !differences.empty())
       throw InputError(o.shards[i] + ": config hash " + meta["config_hash"] + " differs from " +
-                       o.shards[0] + "'s " + first["config_hash"] + ": not shards of one sweep");
+                       o.shards[0] + "'s " + first["config_hash"] + " (" +
+                       differences_text(differences, o.shards[i], o.shards[0]) +
+                       "): not shards of one sweep");
     if (!shard_names.insert(meta["shard"]).second)
       throw InputError(o.shards[i] + ": shard " + meta["shard"] + " is given twice");
     // Candidates, and a screened sweep's estimates (sweep --screen), each in one shard only.
@@ -99,8 +102,9 @@ namespace {
 
 const std::vector<OptionRecord<MergeOptions>>& merge_options() {
   static const std::vector<OptionRecord<MergeOptions>> records{
-      {{"partial", OptionType::Boolean, "false",
-        "Merge even when some shards of the sweep are missing (the report names them)."},
+      {measures_nothing(
+           {"partial", OptionType::Boolean, "false",
+            "Merge even when some shards of the sweep are missing (the report names them)."}),
        &MergeOptions::partial},
   };
   return records;

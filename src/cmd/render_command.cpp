@@ -25,8 +25,8 @@ struct RenderSettings {
 
 const std::vector<OptionRecord<RenderSettings>>& render_options() {
   static const std::vector<OptionRecord<RenderSettings>> records{
-      {{"previews", OptionType::Boolean, "true",
-        "Write PNG previews (layer-0 depth, layer counts)."},
+      {measures_nothing({"previews", OptionType::Boolean, "true",
+                         "Write PNG previews (layer-0 depth, layer counts)."}),
        &RenderSettings::previews},
   };
   return records;

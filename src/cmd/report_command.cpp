@@ -20,10 +20,12 @@ struct ReportOptions {
   std::string out;
   bool force = false, quiet = false, plot = true;
   int bins = 60;
+  std::vector<std::string> allow_different;
 };
 
 int run_report(const ReportOptions& o) {
-  const std::vector<SweepSeries> series = load_sweep_series(o.results);
+  const std::vector<SweepSeries> series =
+      load_sweep_series(o.results, {sweep_specs(), o.allow_different});
   StagedOutputDir out(o.out, o.force);
   const SweepReportTables tables = sweep_report_tables(series, o.bins);
   write_file_atomically(out / "candidates.csv", tables.candidates_csv);
@@ -55,10 +57,17 @@ namespace {
 
 const std::vector<OptionRecord<ReportOptions>>& report_options() {
   static const std::vector<OptionRecord<ReportOptions>> records{
-      {{"bins", OptionType::Integer, "60", "Histogram bins.", 1, 10000}, &ReportOptions::bins},
-      {{"plot", OptionType::Boolean, "true",
-        "Draw histogram.png/pdf with scripts/plot_histogram.py (needs matplotlib)."},
+      {measures_nothing({"bins", OptionType::Integer, "60", "Histogram bins.", 1, 10000}),
+       &ReportOptions::bins},
+      {measures_nothing(
+           {"plot", OptionType::Boolean, "true",
+            "Draw histogram.png/pdf with scripts/plot_histogram.py (needs matplotlib)."}),
        &ReportOptions::plot},
+      {measures_nothing({"allow_different", OptionType::StringList, "[]",
+                         "Measurement options (identity 'measured' in the sweep's table) whose "
+                         "values may differ between the series; each series then states its "
+                         "own. Any other difference is refused (docs/sweeps.md, \"Identity\")."}),
+       &ReportOptions::allow_different},
   };
   return records;
 }
@@ -80,12 +89,19 @@ void register_report_command(CLI::App& app, std::function<int()>& action) {
                       "Sweep output directories (or their results.sqlite files)");
   command->add_flag("!--no-plot", options->plot, "= --set plot=false");
   command->add_option("--bins", options->bins, "= --set bins=N")->check(CLI::Range(1, 10000));
+  command
+      ->add_option("--allow-different", options->allow_different,
+                   "= --set allow_different=KEY,...: series may differ in KEY (repeatable)")
+      ->expected(1)
+      ->delimiter(',');
   command->callback([options, common, command, &action] {
     action = [options, common, command] {
       Config config = resolve_config(report_specs(), *common);
       apply_flags(*command, config,
                   {{"--no-plot", "plot", [&] { return YAML::Node(options->plot); }},
-                   {"--bins", "bins", [&] { return YAML::Node(options->bins); }}});
+                   {"--bins", "bins", [&] { return YAML::Node(options->bins); }},
+                   {"--allow-different", "allow_different",
+                    [&] { return YAML::Node(options->allow_different); }}});
       if (print_config_if_asked(config, *common)) return 0;
       ReportOptions o = *options;
       o.out = common->out, o.force = common->force, o.quiet = common->quiet;

@@ -43,7 +43,7 @@ int run_sweep_command(const SweepOptions& options) {
   job.arguments = process_arguments();
   SweepSettings settings =
       sweep_settings_from(config, resolve_thread_count(dataset_options_from(config).threads));
-  settings.defaults_yaml = Config(sweep_specs()).to_yaml();
+  settings.specs = sweep_specs();
   run_sweep(settings, job);
   return 0;
 }

@@ -10,23 +10,28 @@ namespace mb {
 
 const std::vector<OptionRecord<EvalRunOptions>>& eval_run_options() {
   static const std::vector<OptionRecord<EvalRunOptions>> records{
-      {{"techniques", OptionType::StringList,
-        "[pcf, vsm, esm, hamburger4, hamburger4_float, hamburger4_16bit, hausdorff4, hamburger6, "
-        "tmsm, tmsm_float]",
-        "Techniques to evaluate: closed forms, pcf, or lp:<basis> (e.g. lp:power4, lp:trig4); "
-        "under "
-        "an area light also pcss_exact, pcss, pcss_vsm, pcss_esm, pcss_csm, msm_soft, and "
-        "msm_soft:lp:<basis>, msm_soft with Problem 1 as its final step (docs/soft-shadows.md)."},
+      {selects_runs(
+           {"techniques", OptionType::StringList,
+            "[pcf, vsm, esm, hamburger4, hamburger4_float, hamburger4_16bit, hausdorff4, "
+            "hamburger6, "
+            "tmsm, tmsm_float]",
+            "Techniques to evaluate: closed forms, pcf, or lp:<basis> (e.g. lp:power4, lp:trig4); "
+            "under "
+            "an area light also pcss_exact, pcss, pcss_vsm, pcss_esm, pcss_csm, msm_soft, and "
+            "msm_soft:lp:<basis>, msm_soft with Problem 1 as its final step "
+            "(docs/soft-shadows.md)."}),
        &EvalRunOptions::techniques},
-      {{"images", OptionType::Boolean, "true",
-        "Write shadow and error images per view and technique."},
+      {measures_nothing({"images", OptionType::Boolean, "true",
+                         "Write shadow and error images per view and technique."}),
        &EvalRunOptions::images},
-      {{"camera_images", OptionType::Boolean, "false",
-        "For every camera a scene names and each of its light views: the camera's image with each "
-        "technique's shadow, its difference from PCF, and one contact sheet (cameras/)."},
+      {measures_nothing(
+           {"camera_images", OptionType::Boolean, "false",
+            "For every camera a scene names and each of its light views: the camera's image with "
+            "each "
+            "technique's shadow, its difference from PCF, and one contact sheet (cameras/)."}),
        &EvalRunOptions::camera_images},
-      {{"error_scale", OptionType::Number, "0.5", "|PCF - G| at the top of the error colour bar.",
-        1e-6, 1},
+      {measures_nothing({"error_scale", OptionType::Number, "0.5",
+                         "|PCF - G| at the top of the error colour bar.", 1e-6, 1}),
        &EvalRunOptions::error_scale},
   };
   return records;

@@ -13,11 +13,12 @@ namespace mb {
 
 const std::vector<OptionRecord<OitRunOptions>>& oit_run_options() {
   static const std::vector<OptionRecord<OitRunOptions>> records{
-      {{"techniques", OptionType::StringList,
-        "[exact, unsorted, wboit, mboit_power4, mboit_power6, mboit_power8, mboit_trig2, "
-        "mboit_trig3, mboit_trig4, lp:power4]",
-        "Transparency techniques (docs/transparency.md §3): exact, unsorted, wboit, the MBOIT "
-        "closed forms, or lp:<basis> on the warped depth (e.g. lp:power4, lp:trig4)."},
+      {selects_runs(
+           {"techniques", OptionType::StringList,
+            "[exact, unsorted, wboit, mboit_power4, mboit_power6, mboit_power8, mboit_trig2, "
+            "mboit_trig3, mboit_trig4, lp:power4]",
+            "Transparency techniques (docs/transparency.md §3): exact, unsorted, wboit, the MBOIT "
+            "closed forms, or lp:<basis> on the warped depth (e.g. lp:power4, lp:trig4)."}),
        &OitRunOptions::techniques},
       {{"oit.beta", OptionType::Number, "0.25",
         "MBOIT's overestimation: A = A- + beta (A+ - A-) from the canonical representation "
@@ -33,16 +34,18 @@ const std::vector<OptionRecord<OitRunOptions>>& oit_run_options() {
         std::numeric_limits<double>::infinity(),
         {"logarithmic", "linear"}},
        &OitRunOptions::warp},
-      {{"images", OptionType::Boolean, "true",
-        "Per camera: the reference and each technique's composite, its CIEDE2000 difference in "
-        "false colour, and a contact sheet (images/)."},
+      {measures_nothing(
+           {"images", OptionType::Boolean, "true",
+            "Per camera: the reference and each technique's composite, its CIEDE2000 difference in "
+            "false colour, and a contact sheet (images/)."}),
        &OitRunOptions::images},
-      {{"deep_frames", OptionType::Boolean, "true",
-        "Write each camera's deep frame (every fragment's depth, alpha and colour) as deep "
-        "OpenEXR (frames/)."},
+      {measures_nothing(
+           {"deep_frames", OptionType::Boolean, "true",
+            "Write each camera's deep frame (every fragment's depth, alpha and colour) as deep "
+            "OpenEXR (frames/)."}),
        &OitRunOptions::deep_frames},
-      {{"delta_e_scale", OptionType::Number, "10",
-        "CIEDE2000 at the top of the difference images' colour bar.", 1e-6, 1e3},
+      {measures_nothing({"delta_e_scale", OptionType::Number, "10",
+                         "CIEDE2000 at the top of the difference images' colour bar.", 1e-6, 1e3}),
        &OitRunOptions::delta_e_scale},
   };
   return records;

@@ -9,6 +9,7 @@
 #include "basis/basis.h"
 #include "eval/error_stats.h"
 #include "report/darkening.h"
+#include "report/series_identity.h"
 #include "report/sweep_transparency.h"
 #include "shadow/fragments.h"
 #include "sweep/candidates.h"
@@ -42,6 +43,12 @@ const ResultRow* find_row(const std::vector<ResultRow>& rows, const std::string&
 
 std::string pct(double fraction) {
   return percent_text(fraction) + " %";
+}
+
+std::string joined(const std::vector<std::string>& items) {
+  std::string text;
+  for (const auto& item : items) text += (text.empty() ? "" : ", ") + item;
+  return text;
 }
 
 uint64_t planned_total(const SweepSeries& s) {
@@ -291,7 +298,8 @@ std::string rank_text(const SweepSeries& s, double mean) {
   return out.str();
 }
 
-std::vector<SweepSeries> load_sweep_series(const std::vector<std::string>& databases) {
+std::vector<SweepSeries> load_sweep_series(const std::vector<std::string>& databases,
+                                           const SeriesIdentity& identity) {
   if (databases.empty()) throw InputError("report: expected at least one results database");
   std::vector<SweepSeries> out;
   std::map<std::string, int> labels;
@@ -328,14 +336,11 @@ std::vector<SweepSeries> load_sweep_series(const std::vector<std::string>& datab
     s.size = std::stoi(s.meta["combination_size"]);
     s.label = std::to_string(s.size) + (s.size == 1 ? " function" : " functions");
     if (s.estimated) s.label += " (screened)";
-    // What the errors are measured with must agree (sweep/run_identity.h).
-    if (const std::string key = out.empty() ? "" : incomparable_key(s.meta, out.front().meta);
-        !key.empty())
-      throw InputError(s.database + ": " + key + " '" + s.meta[key] + "' differs from " +
-                       out.front().database + "'s '" + out.front().meta[key] +
-                       "': errors measured differently cannot share a report");
+    drop_bounds_under_area_light(s, identity);
     out.push_back(std::move(s));
   }
+  // What the errors are measured with must agree (report/series_identity.h).
+  check_series_identity(out, identity);
   // Two series of one size (two samples, say) are told apart by their position.
   for (const auto& s : out) ++labels[s.label];
   std::map<std::string, int> seen;
@@ -457,7 +462,15 @@ std::string sweep_report_markdown(const std::vector<SweepSeries>& series,
        << (meta.count("git_sha") ? ", momentbench git " + meta["git_sha"] : "")
        << (meta.count("missing_shards")
                ? "; **merged without shards " + meta["missing_shards"] + "**"
-               : "")
+               : "");
+    for (const auto& value : s.own_values) md << "; " << value;
+    md << "; "
+       << (s.off_default.empty()
+               ? std::string(s.own_values.empty() ? "every measurement option at its default"
+                                                  : "every other measurement option at its default")
+               : (s.own_values.empty() ? "measurement options off their defaults: "
+                                       : "other measurement options off their defaults: ") +
+                     joined(s.off_default))
        << "\n";
   }
   auto meta = main.meta;

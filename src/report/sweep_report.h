@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "sweep/results_store.h"
+#include "util/config.h"
 
 namespace mb {
 
@@ -21,6 +22,9 @@ struct SweepSeries {
   size_t exact = 0, estimated = 0;    // rows of each kind in `ranked`
   std::vector<ResultRow> references;  // by name
   int size = 0;                       // functions per candidate
+  // Its identity as the report states it (report/series_identity.h): "key value" of the options
+  // allowed to differ between series, and of the other measurement options off their defaults.
+  std::vector<std::string> own_values, off_default;
   double best() const { return ranked.front().mean; }
   double median() const;
   // Candidates whose mean error is at most the best's plus `margin` (absolute, as a fraction).
@@ -37,9 +41,17 @@ size_t better_than(const SweepSeries& s, double mean);
 // "rank r of N (b better, p %)", or "behind all N candidates".
 std::string rank_text(const SweepSeries& s, double mean);
 
-// Opens each database (InputError for one with no candidates, or for series that are not
-// comparable: another dataset, reference, kernel, bias or LP discretisation).
-std::vector<SweepSeries> load_sweep_series(const std::vector<std::string>& databases);
+// What the series of one report must share: the value of every measurement option of `specs`
+// (the sweep's option records, sweep/run_identity.h) but those in `allow_different`.
+struct SeriesIdentity {
+  std::vector<OptionSpec> specs;
+  std::vector<std::string> allow_different;  // report --allow-different
+};
+
+// Opens each database (InputError for one with no candidates, or for series whose measurement
+// options differ: each differing key with both values, unless the identity allows it).
+std::vector<SweepSeries> load_sweep_series(const std::vector<std::string>& databases,
+                                           const SeriesIdentity& identity);
 
 // The series the ranked tables and reference rows come from: the most functions per candidate.
 const SweepSeries& main_series(const std::vector<SweepSeries>& series);

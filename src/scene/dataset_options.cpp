@@ -10,7 +10,8 @@ const std::vector<OptionRecord<DatasetOptions>>& dataset_option_records() {
       {{"resolution", OptionType::Integer, "0",
         "Shadow-map resolution for every view; 0 keeps the dataset's.", 0, 16384},
        &DatasetOptions::resolution},
-      {{"threads", OptionType::Integer, "0", "OpenMP threads; 0 uses every core.", 0, 4096},
+      {measures_nothing(
+           {"threads", OptionType::Integer, "0", "OpenMP threads; 0 uses every core.", 0, 4096}),
        &DatasetOptions::threads},
   };
   return records;

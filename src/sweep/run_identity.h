@@ -1,38 +1,57 @@
 #pragma once
-// What makes two sweep runs the same run (docs/design.md §Data flow): the option values of the
-// effective config, never its prose. The hash covers every `key: value` line of config.yaml except
-// `threads` (which never changes a result), so rewording an option's documentation keeps a sweep
-// resumable; databases written when the hash also covered the comments are still recognised by
-// comparing their stored config's values.
+// What makes two sweep runs the same run, and their errors comparable (docs/sweeps.md
+// "Identity"): the option records say it (OptionSpec::effect), never a hand list. A run's
+// identity is the value of every option that changes a measured number, stored as the database's
+// meta keys; `report` compares those. A resume and a merge also compare the options that choose
+// what is measured (catalog, sample, screen.*). Options that change no measured number (threads)
+// are compared by nobody. Databases written before this are read through their stored config and
+// the twelve measurement keys they carry (the oldest through their `settings` sentence).
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
-#include "eval/evaluation.h"
+#include "util/config.h"
 
 namespace mb {
 
-// The `key: value` lines of a config YAML (as Config::to_yaml writes it), without comments and
-// without `threads`, in order.
-std::string config_values(const std::string& config_yaml);
-// FNV-1a of config_values, as 16 hex digits.
-std::string config_hash(const std::string& config_yaml);
-// True when the database's meta (`config_hash`, `config`) describes the run of `config_yaml`: the
-// same hash, or the same values, where a key the stored config lacks (an option added since) counts
-// as the same when its value is its default in `defaults_yaml` (the defaults' config YAML; the
-// option's default keeps the behaviour from before it existed).
-bool same_config(const std::map<std::string, std::string>& meta, const std::string& config_yaml,
-                 const std::string& defaults_yaml = "");
+using Meta = std::map<std::string, std::string>;
 
-// What the errors of a run are measured with, as separate results-database meta keys with exact
-// values (kernel.size, kernel.sigma, reference, bias.slope, bias.constant, lp.grid, lp.lo, lp.hi,
-// lp.discretization, lp.quantize, lp.backend, lp.moment_box): databases are comparable when these
-// and the dataset agree.
-std::map<std::string, std::string> measurement_meta(const EvalSettings& settings);
-// The first key by which two databases' errors are measured differently ("" when comparable).
-// Databases written before measurement_meta existed are compared by their `settings` sentence.
-std::string incomparable_key(const std::map<std::string, std::string>& a,
-                             const std::map<std::string, std::string>& b);
+// The `key: value` lines of a config YAML (as Config::to_yaml writes it), without comments and
+// without the options of `specs` that change no measured number, in order.
+std::string config_values(const std::string& config_yaml, const std::vector<OptionSpec>& specs);
+// FNV-1a of config_values, as 16 hex digits.
+std::string config_hash(const std::string& config_yaml, const std::vector<OptionSpec>& specs);
+
+// One option that two runs set differently.
+struct OptionDifference {
+  std::string key, first, second;  // the key, its value in the first run and in the second
+};
+
+// The options a resume or merge compares (OptionEffect Measures and Selects in `specs`) whose
+// value in `config_yaml` differs from the run the meta describes (its `config`). A key the stored
+// config lacks (an option added since) counts at its default, which keeps the behaviour from
+// before it existed; a stored key `specs` no longer declares is a difference. `first` is the
+// stored value, `second` the one in `config_yaml`; empty when the config hashes agree.
+std::vector<OptionDifference> config_differences(const Meta& meta, const std::string& config_yaml,
+                                                 const std::vector<OptionSpec>& specs);
+bool same_config(const Meta& meta, const std::string& config_yaml,
+                 const std::vector<OptionSpec>& specs);
+
+// The run's identity as meta keys: every option of `specs` that changes a measured number, its
+// value as config.yaml writes it.
+Meta measurement_meta(const std::string& config_yaml, const std::vector<OptionSpec>& specs);
+// A measurement option's value in a database's meta: its meta key; else (a database written
+// before the key was stored) its stored config's line; else the option's default in `specs`.
+std::string measurement_value(const Meta& meta, const std::string& key,
+                              const std::vector<OptionSpec>& specs);
+// The measurement options of `specs` whose values differ between two databases, `dataset` first.
+// Databases from before the measurement keys also differ by their `settings` sentence.
+std::vector<OptionDifference> measurement_differences(const Meta& a, const Meta& b,
+                                                      const std::vector<OptionSpec>& specs);
+// "key: a here, b there; ..." for an error message.
+std::string differences_text(const std::vector<OptionDifference>& differences,
+                             const std::string& first, const std::string& second);
 
 struct LpGridIdentity {
   int grid = 0;
@@ -40,6 +59,6 @@ struct LpGridIdentity {
 };
 // The LP grid a database's candidates were judged on: its meta keys, or for older databases the
 // `settings` sentence ("LP grid N on [lo, hi]"); nullopt when neither records it.
-std::optional<LpGridIdentity> lp_grid_of(const std::map<std::string, std::string>& meta);
+std::optional<LpGridIdentity> lp_grid_of(const Meta& meta);
 
 }  // namespace mb

@@ -34,10 +34,13 @@ ResultsStore open_sweep_directory(const std::filesystem::path& out, const SweepI
   if (resume && fs::exists(db_path)) {
     ResultsStore store = ResultsStore::open(db_path.string());
     auto have = store.meta();
-    if (!same_config(have, identity.config_yaml, identity.defaults_yaml))
+    if (const auto differences = config_differences(have, identity.config_yaml, identity.specs);
+        !differences.empty())
       throw InputError(db_path.string() + ": the sweep there was run with another config (hash " +
                        have["config_hash"] + ", now " + identity.config_hash +
-                       "); compare its config.yaml, or start a new sweep elsewhere");
+                       "): " + differences_text(differences, "that sweep", "this one") +
+                       "; resume with its values (its config.yaml), or start a new sweep "
+                       "elsewhere");
     if (have["shard"] != identity.shard)
       throw InputError(db_path.string() + ": that sweep is shard " + have["shard"] + ", not " +
                        identity.shard);

@@ -6,16 +6,18 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "sweep/results_store.h"
+#include "util/config.h"
 
 namespace mb {
 
 struct SweepIdentity {
-  std::string config_hash;    // the database refuses a resume under any other
-  std::string shard;          // "K/N"
-  std::string config_yaml;    // written to config.yaml and into the database's meta
-  std::string defaults_yaml;  // every option at its default (run_identity.h, same_config)
+  std::string config_hash;        // the database refuses a resume under any other
+  std::string shard;              // "K/N"
+  std::string config_yaml;        // written to config.yaml and into the database's meta
+  std::vector<OptionSpec> specs;  // every option: which a resume compares (run_identity.h)
 };
 
 // The results database of the sweep in `out`: opened when resuming one with the same identity,

@@ -37,19 +37,20 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 const std::vector<OptionRecord<SweepSettings>>& candidate_options() {
   static const std::vector<OptionRecord<SweepSettings>> records{
-      {{"catalog", OptionType::StringList, "[]",
-        "Functions to combine (names or expressions); empty = the 37-function catalog "
-        "of docs/reference.md §5."},
+      {selects_runs({"catalog", OptionType::StringList, "[]",
+                     "Functions to combine (names or expressions); empty = the 37-function catalog "
+                     "of docs/reference.md §5."}),
        &SweepSettings::catalog},
-      {{"combination_size", OptionType::Integer, "4", "Functions per candidate.", 1, 7},
+      {selects_runs(
+           {"combination_size", OptionType::Integer, "4", "Functions per candidate.", 1, 7}),
        &SweepSettings::combination_size},
-      {{"candidates", OptionType::StringList, "[]",
-        "Explicit candidates, each 'f1; f2; ...'; empty = all (or a sample)."},
+      {selects_runs({"candidates", OptionType::StringList, "[]",
+                     "Explicit candidates, each 'f1; f2; ...'; empty = all (or a sample)."}),
        &SweepSettings::candidates},
-      {{"sample", OptionType::Integer, "0",
-        "Evaluate a seeded random sample of this many; 0 = all.", 0, 1e12},
+      {selects_runs({"sample", OptionType::Integer, "0",
+                     "Evaluate a seeded random sample of this many; 0 = all.", 0, 1e12}),
        &SweepSettings::sample},
-      {{"sample_seed", OptionType::Integer, "1", "Seed of the sample.", 0, 1e18},
+      {selects_runs({"sample_seed", OptionType::Integer, "1", "Seed of the sample.", 0, 1e18}),
        &SweepSettings::sample_seed},
       {{"target",
         OptionType::String,
@@ -63,15 +64,17 @@ const std::vector<OptionRecord<SweepSettings>>& candidate_options() {
         kInfinity,
         {"shadows", "transparency"}},
        &SweepSettings::target},
-      {{"oit_references", OptionType::StringList,
-        "[exact, unsorted, wboit, mboit_power4, mboit_power6, mboit_power8, mboit_trig2, "
-        "mboit_trig3, mboit_trig4, lp:power6]",
-        "target transparency: oit techniques evaluated once on the same frames, for the report "
-        "(MBOIT at oit.beta, lp:<basis> at lp.beta)."},
+      {selects_runs(
+           {"oit_references", OptionType::StringList,
+            "[exact, unsorted, wboit, mboit_power4, mboit_power6, mboit_power8, mboit_trig2, "
+            "mboit_trig3, mboit_trig4, lp:power6]",
+            "target transparency: oit techniques evaluated once on the same frames, for the report "
+            "(MBOIT at oit.beta, lp:<basis> at lp.beta)."}),
        &SweepSettings::oit_references},
-      {{"references", OptionType::StringList,
-        "[pcf, vsm, esm, hamburger4, hausdorff4, hamburger6, tmsm, lp:power4, lp:trig4]",
-        "Techniques evaluated once on the same dataset, for the report."},
+      {selects_runs(
+           {"references", OptionType::StringList,
+            "[pcf, vsm, esm, hamburger4, hausdorff4, hamburger6, tmsm, lp:power4, lp:trig4]",
+            "Techniques evaluated once on the same dataset, for the report."}),
        &SweepSettings::references},
   };
   return records;
@@ -79,33 +82,35 @@ const std::vector<OptionRecord<SweepSettings>>& candidate_options() {
 
 const std::vector<OptionRecord<ScreenSettings>>& screen_options() {
   static const std::vector<OptionRecord<ScreenSettings>> records{
-      {{"screen.fraction", OptionType::Number, "0",
-        "Screening: every candidate first on this share of each view's units (a row of 16 "
-        "texels, the same for all), with a standard error; 0 = every candidate exactly.",
-        0, 1},
+      {selects_runs(
+           {"screen.fraction", OptionType::Number, "0",
+            "Screening: every candidate first on this share of each view's units (a row of 16 "
+            "texels, the same for all), with a standard error; 0 = every candidate exactly.",
+            0, 1}),
        &ScreenSettings::fraction},
-      {{"screen.top", OptionType::Integer, "20",
-        "Screening: K. The best K estimates, and every candidate whose interval "
-        "reaches the K-th (screen.sigmas, screen.margin), are evaluated exactly.",
-        1, 1e9},
+      {selects_runs({"screen.top", OptionType::Integer, "20",
+                     "Screening: K. The best K estimates, and every candidate whose interval "
+                     "reaches the K-th (screen.sigmas, screen.margin), are evaluated exactly.",
+                     1, 1e9}),
        &ScreenSettings::top},
-      {{"screen.sigmas", OptionType::Number, "3",
-        "Screening: standard errors of a candidate's paired difference from the K-th "
-        "best estimate that still count as reaching it.",
-        0, 100},
+      {selects_runs({"screen.sigmas", OptionType::Number, "3",
+                     "Screening: standard errors of a candidate's paired difference from the K-th "
+                     "best estimate that still count as reaching it.",
+                     0, 100}),
        &ScreenSettings::sigmas},
-      {{"screen.margin", OptionType::Number, "0",
-        "Screening: mean error (a fraction: 1e-4 = 0.01 pp) by which a candidate's "
-        "interval may miss the K-th best estimate and still be evaluated exactly; "
-        "negative: differences below |margin| are ties.",
-        -1, 1},
+      {selects_runs({"screen.margin", OptionType::Number, "0",
+                     "Screening: mean error (a fraction: 1e-4 = 0.01 pp) by which a candidate's "
+                     "interval may miss the K-th best estimate and still be evaluated exactly; "
+                     "negative: differences below |margin| are ties.",
+                     -1, 1}),
        &ScreenSettings::margin},
-      {{"screen.refine", OptionType::Number, "0",
-        "Screening: a second sample, this share of the units, for the candidates in "
-        "reach after the first, before any is evaluated exactly; 0 = none.",
-        0, 1},
+      {selects_runs({"screen.refine", OptionType::Number, "0",
+                     "Screening: a second sample, this share of the units, for the candidates in "
+                     "reach after the first, before any is evaluated exactly; 0 = none.",
+                     0, 1}),
        &ScreenSettings::refine},
-      {{"screen.seed", OptionType::Integer, "1", "Screening: seed of the sampled units.", 0, 1e18},
+      {selects_runs({"screen.seed", OptionType::Integer, "1",
+                     "Screening: seed of the sampled units.", 0, 1e18}),
        &ScreenSettings::seed},
   };
   return records;
@@ -142,6 +147,14 @@ SweepSettings sweep_settings_from(const Config& config, int threads) {
     throw InputError("lp.beta: " + std::to_string(s.eval.technique.lp_beta) +
                      "; a shadow sweep ranks bases by their sharp lower bound, expected 0 (eval "
                      "takes lp.beta > 0; so does a sweep with target transparency)");
+  // Problem 1 bounds the hard shadow F_Z(z_f) (docs/reference.md §3); the area light's shadow is
+  // no F_Z, and every technique may darken past it (docs/soft-shadows.md §1): ranking bases
+  // against it would rank nothing the LP proves.
+  if (s.eval.light.angle_deg > 0 && s.target != "transparency")
+    throw InputError("light.angle: " + round_trip(s.eval.light.angle_deg) +
+                     "; a shadow sweep ranks bases by Problem 1's bound on the hard shadow, not "
+                     "an area light's (docs/soft-shadows.md), expected 0 (eval takes light.angle "
+                     "> 0)");
   read_options(config, screen_options(), s.screen);
   s.oit_beta = config.number("oit.beta");
   s.oit_warp = config.string("oit.warp");
@@ -438,7 +451,18 @@ PreparedTarget prepare_target(const SweepSettings& s, const DatasetDesc& dataset
     params.lp = s.eval.technique;
     p.target = make_oit_target(p.frames, params, s.eval.threads);
   } else {
-    p.views = prepare_views(dataset, s.resolution, s.eval, quiet);
+    // A dataset's light_angles, or a scene's view naming its own light angle, make area lights as
+    // light.angle does (sweep_settings_from refuses those); refused before rendering.
+    const std::vector<Scene> scenes = build_dataset_scenes(dataset);
+    for (const auto& scene : scenes)
+      for (const auto& view : rendered_views(scene, dataset, s.resolution, s.eval))
+        if (view.light_angle_deg > 0)
+          throw InputError(dataset.file + ": view " + scene.name + "/" + view.name +
+                           " is lit by an area light of " + round_trip(view.light_angle_deg) +
+                           " degrees (the dataset's light_angles or the scene's view); a shadow "
+                           "sweep ranks bases by Problem 1's bound on the hard shadow, expected a "
+                           "dataset without light angles (eval takes them)");
+    p.views = prepare_views(scenes, dataset, s.resolution, s.eval, quiet);
     check_lp_interval(p.views, s.eval.technique.lp.lo, s.eval.technique.lp.hi);
     p.target = make_shadow_target(p.views, s.eval);
   }
@@ -459,9 +483,10 @@ void run_sweep(const SweepSettings& s, const SweepJob& job) {
   const PreparedTarget prepared = prepare_target(s, dataset, job.quiet);
   // The output directory is the sweep's state: new unless resuming, then it must match.
   const std::string shard_text = std::to_string(job.shard) + "/" + std::to_string(job.shards);
-  std::map<std::string, std::string> meta = measurement_meta(s.eval);
-  meta.insert({{"dataset", dataset.name},
-               {"target", s.target},
+  // The run's identity: every measurement option's value; the dataset by its name.
+  std::map<std::string, std::string> meta = measurement_meta(s.config_yaml, s.specs);
+  meta["dataset"] = dataset.name;
+  meta.insert({{"target", s.target},
                {"git_sha", collect_run_metadata(s.eval.threads, {}).git_sha},
                {"catalog_size", std::to_string(plan.catalog.size())},
                {"combination_size", std::to_string(plan.size)},
@@ -469,7 +494,7 @@ void run_sweep(const SweepSettings& s, const SweepJob& job) {
                {"settings", s.target == "transparency" ? describe_transparency(s)
                                                        : describe_settings(s.eval)}});
   ResultsStore store = open_sweep_directory(
-      job.out, {config_hash(s.config_yaml), shard_text, s.config_yaml, s.defaults_yaml}, meta,
+      job.out, {config_hash(s.config_yaml, s.specs), shard_text, s.config_yaml, s.specs}, meta,
       job.resume, job.force);
   write_file_atomically(job.out / ("run_" + std::to_string(std::time(nullptr)) + ".yaml"),
                         to_yaml(collect_run_metadata(s.eval.threads, job.arguments)));

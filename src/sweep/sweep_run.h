@@ -36,8 +36,8 @@ struct SweepSettings {
   int combination_size = 4;
   uint64_t sample = 0, sample_seed = 1;
   ScreenSettings screen;
-  std::string config_yaml;    // the effective config: the run's identity (run_identity.h)
-  std::string defaults_yaml;  // every option at its default: options added since a run began
+  std::string config_yaml;        // the effective config: the run's identity (run_identity.h)
+  std::vector<OptionSpec> specs;  // every option of the sweep: which of them are its identity
 };
 // The sweep's own options (after the dataset's and the shadow options), declared once: the
 // candidates' keys bound to SweepSettings, the screen's to ScreenSettings.

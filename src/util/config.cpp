@@ -70,6 +70,28 @@ YAML::Node number_list(const std::vector<std::string>& items, const OptionSpec& 
 
 }  // namespace
 
+OptionSpec measures_nothing(OptionSpec spec) {
+  spec.effect = OptionEffect::None;
+  return spec;
+}
+
+OptionSpec selects_runs(OptionSpec spec) {
+  spec.effect = OptionEffect::Selects;
+  return spec;
+}
+
+const char* effect_name(OptionEffect effect) {
+  switch (effect) {
+    case OptionEffect::Measures:
+      return "measured";
+    case OptionEffect::Selects:
+      return "selects";
+    case OptionEffect::None:
+      return "no";
+  }
+  return "";
+}
+
 Config::Config(std::vector<OptionSpec> specs) : specs_(std::move(specs)) {
   for (const auto& s : specs_) assign(s.name, YAML::Load(s.default_value), "default");
 }
@@ -282,6 +304,11 @@ std::vector<int64_t> Config::integers(const std::string& name) const {
   return out;
 }
 
+std::string Config::value_text(const std::string& name) const {
+  spec(name);  // a key never declared is a logic error
+  return emit(values_.at(name).node);
+}
+
 namespace {
 // The documentation of an option with its range and choices, as --print-config and the README's
 // tables show it.
@@ -321,10 +348,10 @@ std::vector<std::string> Config::non_default() const {
 
 std::string Config::options_markdown() const {
   std::ostringstream out;
-  out << "| key | type | default | meaning |\n|---|---|---|---|\n";
+  out << "| key | type | default | identity | meaning |\n|---|---|---|---|---|\n";
   for (const auto& s : specs_)
     out << "| `" << s.name << "` | " << type_name(s.type) << " | `" << s.default_value << "` | "
-        << documented(s) << " |\n";
+        << effect_name(s.effect) << " | " << documented(s) << " |\n";
   return out.str();
 }
 

@@ -15,6 +15,16 @@ namespace mb {
 
 enum class OptionType { Integer, Number, Boolean, String, StringList, NumberList, IntegerList };
 
+// What an option is to a run's identity (docs/sweeps.md "Identity"). Most options change a
+// measured number, so that is the default; a record that does not says so with one of the helpers
+// below, and every positional initializer stays as it is.
+enum class OptionEffect {
+  Measures,  // changes a measured number: `sweep --resume`, `merge` and `report` compare it
+  Selects,   // chooses which candidates or rows a sweep measures, not how (catalog, sample,
+             // screen.*): a resume and a merge compare it, the series of one report may differ
+  None,      // changes no measured number (threads, images, plot): nothing compares it
+};
+
 struct OptionSpec {
   std::string
       name;  // dotted, e.g. "raster.threads"; a YAML file may nest it as raster: {threads: }
@@ -25,7 +35,15 @@ struct OptionSpec {
       -std::numeric_limits<double>::infinity();  // numbers, integers, each item of a number list
   double max = std::numeric_limits<double>::infinity();
   std::vector<std::string> choices;  // for strings (and string lists): the allowed values, if any
+  OptionEffect effect = OptionEffect::Measures;
 };
+
+// `spec`, declared as changing no measured number (OptionEffect::None).
+OptionSpec measures_nothing(OptionSpec spec);
+// `spec`, declared as choosing what a sweep measures (OptionEffect::Selects).
+OptionSpec selects_runs(OptionSpec spec);
+// "measured", "selects" or "no": the options tables' identity column.
+const char* effect_name(OptionEffect effect);
 
 class Config {
  public:
@@ -46,6 +64,8 @@ class Config {
   std::vector<std::string> strings(const std::string& name) const;
   std::vector<double> numbers(const std::string& name) const;    // each item within [min, max]
   std::vector<int64_t> integers(const std::string& name) const;  // each item within [min, max]
+  // The value as to_yaml writes it ("2.4", "[a, b]"); any option type.
+  std::string value_text(const std::string& name) const;
 
   // The effective configuration as YAML that `load_file` reads back, one documented key a line.
   std::string to_yaml() const;

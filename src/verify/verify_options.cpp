@@ -4,15 +4,17 @@ namespace mb {
 
 const std::vector<OptionRecord<VerifySettings>>& verify_options() {
   static const std::vector<OptionRecord<VerifySettings>> records{
-      {{"verify.techniques", OptionType::StringList,
-        "[hamburger4, hausdorff4, tmsm, vsm, esm, hamburger6, hamburger4_float, "
-        "hamburger4_16bit, tmsm_float, evsm2, evsm4, csm]",
-        "Closed forms to check (docs/reference.md §6; EVSM as a lower bound of its basis)."},
+      {selects_runs(
+           {"verify.techniques", OptionType::StringList,
+            "[hamburger4, hausdorff4, tmsm, vsm, esm, hamburger6, hamburger4_float, "
+            "hamburger4_16bit, tmsm_float, evsm2, evsm4, csm]",
+            "Closed forms to check (docs/reference.md §6; EVSM as a lower bound of its basis)."}),
        &VerifySettings::techniques},
-      {{"verify.oit_techniques", OptionType::StringList,
-        "[mboit_power4, mboit_power6, mboit_trig2, mboit_trig3]",
-        "MBOIT closed forms (double, beta 0) to check against the LP on seeded random pixels "
-        "(docs/transparency.md §6); [] for none."},
+      {selects_runs(
+           {"verify.oit_techniques", OptionType::StringList,
+            "[mboit_power4, mboit_power6, mboit_trig2, mboit_trig3]",
+            "MBOIT closed forms (double, beta 0) to check against the LP on seeded random pixels "
+            "(docs/transparency.md §6); [] for none."}),
        &VerifySettings::oit_techniques},
       {{"verify.oit_pixels", OptionType::Integer, "20",
         "Seeded random pixels (2-13 fragments) per MBOIT row.", 1, 1e6},
@@ -74,7 +76,8 @@ const std::vector<OptionRecord<VerifySettings>>& verify_options() {
         "functions; M <= 3 keeps the fast backend, up to 7 runs on GLPK.",
         1, 7},
        &VerifySettings::csm_terms},
-      {{"verify.worst", OptionType::Integer, "5", "Worst cases listed per solver.", 0, 1000},
+      {measures_nothing(
+           {"verify.worst", OptionType::Integer, "5", "Worst cases listed per solver.", 0, 1000}),
        &VerifySettings::worst},
   };
   return records;

@@ -1,0 +1,96 @@
+#include "report/series_identity.h"
+
+#include <algorithm>
+#include <limits>
+#include <set>
+
+#include "sweep/run_identity.h"
+#include "util/error.h"
+
+namespace mb {
+
+namespace {
+
+std::vector<std::string> measurement_keys(const std::vector<OptionSpec>& specs) {
+  std::vector<std::string> keys;
+  for (const auto& s : specs)
+    if (s.effect == OptionEffect::Measures) keys.push_back(s.name);
+  return keys;
+}
+
+std::string joined(const std::vector<std::string>& items, const std::string& separator) {
+  std::string text;
+  for (const auto& item : items) text += (text.empty() ? "" : separator) + item;
+  return text;
+}
+
+}  // namespace
+
+void check_series_identity(std::vector<SweepSeries>& series, const SeriesIdentity& identity) {
+  const std::vector<OptionSpec>& specs = identity.specs;
+  const std::vector<std::string> keys = measurement_keys(specs);
+  std::set<std::string> allowed;
+  for (const auto& key : identity.allow_different) {
+    if (std::find(keys.begin(), keys.end(), key) == keys.end()) {
+      const std::string hint = closest_match(key, keys);
+      throw InputError("allow_different: '" + key + "' is not a measurement option of sweep" +
+                       (hint.empty() ? "" : " (did you mean '" + hint + "'?)") +
+                       "; expected a key whose identity is 'measured' in `momentbench options "
+                       "sweep`");
+    }
+    allowed.insert(key);
+  }
+  std::string refused;
+  std::set<std::string> refused_keys, differing;
+  for (size_t i = 1; i < series.size(); ++i) {
+    std::vector<OptionDifference> kept;
+    for (auto& d : measurement_differences(series[i].meta, series[0].meta, specs))
+      if (allowed.count(d.key))
+        differing.insert(d.key);
+      else
+        kept.push_back(d), refused_keys.insert(d.key);
+    if (!kept.empty())
+      refused += (refused.empty() ? "" : "; ") + series[i].database + " and " + series[0].database +
+                 " measure errors differently: " +
+                 differences_text(kept, series[i].database, series[0].database);
+  }
+  if (!refused.empty()) {
+    refused_keys.erase("settings");  // an old database's sentence: no key to allow
+    throw InputError("report: " + refused + ". Errors measured differently cannot share a report" +
+                     (refused_keys.empty()
+                          ? std::string()
+                          : "; to combine them, each series stating its own values, give "
+                            "--allow-different " +
+                                joined({refused_keys.begin(), refused_keys.end()}, ",")));
+  }
+  for (auto& s : series) {
+    std::vector<std::string> labelled;
+    for (const auto& key : identity.allow_different) {
+      const std::string value = key + " " + measurement_value(s.meta, key, specs);
+      s.own_values.push_back(value);
+      if (differing.count(key)) labelled.push_back(value);
+    }
+    for (const auto& key : keys)
+      if (key != "dataset" && !allowed.count(key) &&
+          measurement_value(s.meta, key, specs) != measurement_value({}, key, specs))
+        s.off_default.push_back(key + " " + measurement_value(s.meta, key, specs));
+    if (!labelled.empty()) s.label += " (" + joined(labelled, ", ") + ")";
+  }
+}
+
+void drop_bounds_under_area_light(SweepSeries& series, const SeriesIdentity& identity) {
+  if (series.transparency()) return;
+  const std::string angle = measurement_value(series.meta, "light.angle", identity.specs);
+  if (angle.empty() || !(std::stod(angle) > 0)) return;
+  const std::string reason =
+      "light.angle " + angle +
+      ": the reference is an area light's shadow, no F_Z, which every technique may darken past "
+      "(docs/soft-shadows.md §1)";
+  for (auto* rows : {&series.ranked, &series.references})
+    for (auto& r : *rows) {
+      r.darkening_bound = std::numeric_limits<double>::infinity();
+      r.darkening_reason = reason;
+    }
+}
+
+}  // namespace mb
