@@ -92,7 +92,7 @@ void register_report_command(CLI::App& app, std::function<int()>& action) {
   command
       ->add_option("--allow-different", options->allow_different,
                    "= --set allow_different=KEY,...: series may differ in KEY (repeatable)")
-      ->expected(1)
+      ->allow_extra_args(false)  // one key an occurrence: the databases after it stay positional
       ->delimiter(',');
   command->callback([options, common, command, &action] {
     action = [options, common, command] {

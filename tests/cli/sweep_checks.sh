@@ -194,8 +194,9 @@ identity)
   if "$mb" report -q --no-plot "$work/r64" "$work/r48" --allow-different resolutoin -o "$work/mixed" 2>"$work/err"; then exit 1; fi
   grep -q "'resolutoin' is not a measurement option of sweep (did you mean 'resolution'?)" "$work/err"
   [ ! -e "$work/mixed" ]
-  # Allowed: one report, each series' label and line with its own value.
-  "$mb" report -q --no-plot "$work/r64" "$work/r48" --allow-different resolution -o "$work/both" >/dev/null
+  # Allowed: one report, each series' label and line with its own value (the flag takes one key
+  # an occurrence, or a list: the databases after it stay the report's).
+  "$mb" report -q --no-plot --allow-different resolution "$work/r64" "$work/r48" -o "$work/both" >/dev/null
   grep -q '^- 4 functions (resolution 64): .*; resolution 64; other measurement options off their defaults: lp.grid 32$' "$work/both/report.md"
   grep -q '^- 4 functions (resolution 48): .*; resolution 48; other measurement options off their defaults: lp.grid 32$' "$work/both/report.md"
   [ "$(grep -c '^"4 functions (resolution 48)",' "$work/both/candidates.csv")" -eq 4 ]
