@@ -8,6 +8,8 @@
 
 namespace mb {
 
+// `techniques` chooses the rows, not their numbers; the images and their colour scales change no
+// measured number (OptionEffect, docs/sweeps.md "Identity").
 const std::vector<OptionRecord<EvalRunOptions>>& eval_run_options() {
   static const std::vector<OptionRecord<EvalRunOptions>> records{
       {selects_runs(

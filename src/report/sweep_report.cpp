@@ -14,7 +14,6 @@
 #include "shadow/fragments.h"
 #include "sweep/candidates.h"
 #include "sweep/run_identity.h"
-#include "techniques/lp_technique.h"
 #include "util/error.h"
 #include "util/number_text.h"
 

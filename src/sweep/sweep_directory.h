@@ -14,7 +14,7 @@
 namespace mb {
 
 struct SweepIdentity {
-  std::string config_hash;        // the database refuses a resume under any other
+  std::string config_hash;        // equal hashes resume at once; else config_differences decides
   std::string shard;              // "K/N"
   std::string config_yaml;        // written to config.yaml and into the database's meta
   std::vector<OptionSpec> specs;  // every option: which a resume compares (run_identity.h)

@@ -35,6 +35,10 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
+// The catalog, the sample and the reference lists choose which candidates and rows a sweep
+// measures, never a row's number (OptionEffect::Selects): a resume and a merge keep them, the
+// series of one report may differ in them (2, 3 and 4 functions). `target` changes what is
+// measured.
 const std::vector<OptionRecord<SweepSettings>>& candidate_options() {
   static const std::vector<OptionRecord<SweepSettings>> records{
       {selects_runs({"catalog", OptionType::StringList, "[]",
@@ -80,6 +84,8 @@ const std::vector<OptionRecord<SweepSettings>>& candidate_options() {
   return records;
 }
 
+// The screen chooses which candidates are evaluated exactly (OptionEffect::Selects): an exact
+// row's error is the same under any screen, and an estimate carries its own standard error.
 const std::vector<OptionRecord<ScreenSettings>>& screen_options() {
   static const std::vector<OptionRecord<ScreenSettings>> records{
       {selects_runs(

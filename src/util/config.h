@@ -1,8 +1,8 @@
 #pragma once
-// Command configuration: every option is declared once (name, type, default, range, doc) in a
-// table that drives validation, `--print-config` and the README's option list (docs/design.md
-// §Style, after HiGHS). A key in a file or `--set` that is not declared is an error naming file and
-// line.
+// Command configuration: every option is declared once (name, type, default, range, doc, what it
+// is to a run's identity) in a table that drives validation, `--print-config` and the README's
+// option list (docs/design.md §Style, after HiGHS). A key in a file or `--set` that is not
+// declared is an error naming file and line.
 #include <yaml-cpp/yaml.h>
 
 #include <cstdint>
