@@ -17,6 +17,9 @@ SeriesIdentity identity(std::vector<std::string> allowed = {}) {
   return {{{"dataset", OptionType::String, "default", "Dataset."},
            {"resolution", OptionType::Integer, "0", "Resolution."},
            {"light.angle", OptionType::Number, "0", "Area light."},
+           {"light.directions", OptionType::Integer, "64", "Directions."},
+           {"oit.beta", OptionType::Number, "0.25", "MBOIT's beta."},
+           {"target", OptionType::String, "shadows", "Target."},
            measures_nothing({"threads", OptionType::Integer, "0", "Threads."}),
            selects_runs({"sample", OptionType::Integer, "0", "Sample."})},
           std::move(allowed)};
@@ -80,6 +83,51 @@ TEST(SeriesIdentity, NoBoundIsClaimedUnderAnAreaLight) {
                               s.references[0].darkening_bound, s.references[0].darkening_reason}})
                 .find("a bug"),
             std::string::npos);
+}
+
+TEST(SeriesIdentity, AKeyAllowedTwiceLabelsOnce) {
+  std::vector<SweepSeries> two{series("a.sqlite", "64"), series("b.sqlite", "48")};
+  check_series_identity(two, identity({"resolution", "resolution"}));
+  EXPECT_EQ(two[1].label, "4 functions (resolution 48)");
+  EXPECT_EQ(two[1].own_values, std::vector<std::string>{"resolution 48"});
+}
+
+TEST(SeriesIdentity, TheTargetCannotDiffer) {
+  std::vector<SweepSeries> two{series("a.sqlite", "64"), series("b.sqlite", "64")};
+  two[1].meta["target"] = "transparency";
+  EXPECT_THROW(check_series_identity(two, identity()), InputError);
+  EXPECT_THROW(check_series_identity(two, identity({"target"})), InputError);
+}
+
+TEST(SeriesIdentity, OptionsATargetDoesNotReadAreNotCompared) {
+  // A shadow sweep under its hard light reads no oit.* option nor light.directions.
+  std::vector<SweepSeries> two{series("a.sqlite", "64"), series("b.sqlite", "64")};
+  two[1].meta["oit.beta"] = "0.5", two[1].meta["light.directions"] = "16";
+  check_series_identity(two, identity());
+  // Under an area light (an older database) the directions sample it: compared.
+  two[0].meta["light.angle"] = two[1].meta["light.angle"] = "3";
+  EXPECT_THROW(check_series_identity(two, identity()), InputError);
+  // A transparency sweep renders no light view, but reads oit.*.
+  for (auto& s : two) s.meta["target"] = "transparency";
+  EXPECT_THROW(check_series_identity(two, identity()), InputError);
+  two[1].meta["oit.beta"] = "0.25";
+  check_series_identity(two, identity());
+}
+
+TEST(SeriesIdentity, NoBoundIsClaimedForViewsNamedByTheirLightAngle) {
+  // A dataset's light_angles name each view <view>_<angle>deg; light.angle stays 0.
+  SweepSeries s = series("a.sqlite", "0");
+  ResultRow pcf;
+  pcf.name = "pcf";
+  pcf.max_dark = 0.02;
+  pcf.view_errors = R"({"blocks/oblique":0.01})";
+  s.references = {pcf};
+  drop_bounds_under_area_light(s, identity());
+  EXPECT_TRUE(darkening_violates(s.references[0].max_dark, s.references[0].darkening_bound));
+  s.references[0].view_errors = R"({"blocks/oblique_3deg":0.01,"blocks/low_3deg":0.02})";
+  drop_bounds_under_area_light(s, identity());
+  EXPECT_FALSE(darkening_violates(s.references[0].max_dark, s.references[0].darkening_bound));
+  EXPECT_NE(s.references[0].darkening_reason.find("3 degrees"), std::string::npos);
 }
 
 }  // namespace

@@ -82,6 +82,19 @@ TEST(RunIdentity, OptionsAddedSinceCountAtTheirDefault) {
   EXPECT_FALSE(same_config(removed, kYaml, specs()));
 }
 
+// merge compares two stored configs: one written before an option existed agrees with one that has
+// it at its default, whichever shard comes first.
+TEST(RunIdentity, AnOptionAddedSinceCountsAtItsDefaultOnEitherSide) {
+  const std::string before = "dataset: tiny\nthreads: 0\nlp.grid: 256\nsample: 0\n";
+  const Meta older{{"config", before}}, newer{{"config", kYaml}};
+  EXPECT_TRUE(config_differences(older, kYaml, specs()).empty());
+  EXPECT_TRUE(config_differences(newer, before, specs()).empty());
+  std::string changed = kYaml;
+  changed.replace(changed.find("light.angle: 0"), 14, "light.angle: 2");
+  EXPECT_EQ(config_differences(Meta{{"config", changed}}, before, specs()).size(), 1u);
+  EXPECT_EQ(config_differences(older, changed, specs()).size(), 1u);
+}
+
 TEST(RunIdentity, MeasurementMetaHoldsEveryMeasurementOption) {
   const Meta meta = measurement_meta(kYaml, specs());
   EXPECT_EQ(meta, (Meta{{"dataset", "tiny"}, {"lp.grid", "256"}, {"light.angle", "0"}}));

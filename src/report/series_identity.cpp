@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <regex>
 #include <set>
 
 #include "sweep/run_identity.h"
@@ -30,7 +31,15 @@ void check_series_identity(std::vector<SweepSeries>& series, const SeriesIdentit
   const std::vector<OptionSpec>& specs = identity.specs;
   const std::vector<std::string> keys = measurement_keys(specs);
   std::set<std::string> allowed;
+  std::vector<std::string> allow_different;  // each key once, in the order given
   for (const auto& key : identity.allow_different) {
+    // A shadow and a transparency series measure different quantities: no report ranks them on one
+    // scale (docs/sweeps.md "Identity").
+    if (key == "target")
+      throw InputError(
+          "allow_different: 'target' cannot differ; a shadow sweep measures shadow error and a "
+          "transparency sweep transmittance error, which share no scale: expected series of one "
+          "target");
     if (std::find(keys.begin(), keys.end(), key) == keys.end()) {
       const std::string hint = closest_match(key, keys);
       throw InputError("allow_different: '" + key + "' is not a measurement option of sweep" +
@@ -38,7 +47,7 @@ void check_series_identity(std::vector<SweepSeries>& series, const SeriesIdentit
                        "; expected a key whose identity is 'measured' in `momentbench options "
                        "sweep`");
     }
-    allowed.insert(key);
+    if (allowed.insert(key).second) allow_different.push_back(key);
   }
   std::string refused;
   std::set<std::string> refused_keys, differing;
@@ -65,7 +74,7 @@ void check_series_identity(std::vector<SweepSeries>& series, const SeriesIdentit
   }
   for (auto& s : series) {
     std::vector<std::string> labelled;
-    for (const auto& key : identity.allow_different) {
+    for (const auto& key : allow_different) {
       const std::string value = key + " " + measurement_value(s.meta, key, specs);
       s.own_values.push_back(value);
       if (differing.count(key)) labelled.push_back(value);
@@ -78,12 +87,32 @@ void check_series_identity(std::vector<SweepSeries>& series, const SeriesIdentit
   }
 }
 
+namespace {
+
+// The area light of a series' views: light.angle, or (a dataset listing light_angles) the angle a
+// view's name ends with, "scene/view_<angle>deg" (eval's naming, docs/user-guide.md); "" if none.
+std::string area_light_angle(const SweepSeries& series, const std::vector<OptionSpec>& specs) {
+  const std::string angle = measurement_value(series.meta, "light.angle", specs);
+  if (!angle.empty() && std::stod(angle) > 0) return "light.angle " + angle;
+  for (const auto* rows : {&series.ranked, &series.references})
+    for (const auto& r : *rows) {
+      static const std::regex kAngled("\"[^\"]*_([0-9.eE+-]+)deg\"\\s*:");
+      std::smatch m;
+      if (std::regex_search(r.view_errors, m, kAngled) && std::stod(m[1].str()) > 0)
+        return "views lit by an area light of " + m[1].str() + " degrees";
+      return "";  // every row of a series has the same views
+    }
+  return "";
+}
+
+}  // namespace
+
 void drop_bounds_under_area_light(SweepSeries& series, const SeriesIdentity& identity) {
   if (series.transparency()) return;
-  const std::string angle = measurement_value(series.meta, "light.angle", identity.specs);
-  if (angle.empty() || !(std::stod(angle) > 0)) return;
+  const std::string light = area_light_angle(series, identity.specs);
+  if (light.empty()) return;
   const std::string reason =
-      "light.angle " + angle +
+      light +
       ": the reference is an area light's shadow, no F_Z, which every technique may darken past "
       "(docs/soft-shadows.md §1)";
   for (auto* rows : {&series.ranked, &series.references})

@@ -77,10 +77,13 @@ std::vector<OptionDifference> config_differences(const Meta& meta, const std::st
   for (const auto& [key, value] : have) {
     if (!compared(specs, key)) continue;
     const auto it = now.find(key);
-    if (it == now.end())
-      out.push_back({key, value, "(no such option)"});
-    else if (it->second != value)
-      out.push_back({key, value, it->second});
+    // A declared key the other config lacks (written before the option existed: merge compares
+    // two stored configs, either may be the older) counts at its default, as below.
+    const OptionSpec* spec = find_spec(specs, key);
+    const std::string after = it != now.end() ? it->second
+                              : spec          ? default_text(*spec)
+                                              : "(no such option)";
+    if (after != value) out.push_back({key, value, after});
   }
   for (const auto& [key, value] : now) {
     if (have.count(key) || !compared(specs, key)) continue;
@@ -118,6 +121,32 @@ std::string measurement_value(const Meta& meta, const std::string& key,
   return spec ? default_text(*spec) : "";
 }
 
+namespace {
+
+bool starts_with(const std::string& key, const char* prefix) {
+  return key.rfind(prefix, 0) == 0;
+}
+
+// Whether `key` can change a number of two series of one target (docs/sweeps.md "Identity"): a
+// shadow sweep reads no oit.* option, and under a hard light (light.angle 0, the only light a
+// shadow sweep takes) no soft.* option nor light.directions; a transparency sweep renders no light
+// view. A key of another target differs in both series or in neither, so it is compared then.
+bool applies(const Meta& a, const Meta& b, const std::string& key,
+             const std::vector<OptionSpec>& specs) {
+  const std::string target = measurement_value(a, "target", specs);
+  if (target.empty() || target != measurement_value(b, "target", specs)) return true;
+  if (target == "transparency") return !starts_with(key, "light.") && !starts_with(key, "soft.");
+  if (starts_with(key, "oit.")) return false;
+  const auto angle = [&](const Meta& m) {
+    const std::string value = measurement_value(m, "light.angle", specs);
+    return value.empty() ? 0.0 : std::stod(value);
+  };
+  const bool hard = angle(a) == 0 && angle(b) == 0;
+  return !(hard && (starts_with(key, "soft.") || key == "light.directions"));
+}
+
+}  // namespace
+
 std::vector<OptionDifference> measurement_differences(const Meta& a, const Meta& b,
                                                       const std::vector<OptionSpec>& specs) {
   std::vector<OptionDifference> out;
@@ -127,7 +156,8 @@ std::vector<OptionDifference> measurement_differences(const Meta& a, const Meta&
   };
   compare("dataset");  // the dataset's name (a sweep stores it, whatever file named it)
   for (const auto& s : specs)
-    if (s.effect == OptionEffect::Measures && s.name != "dataset") compare(s.name);
+    if (s.effect == OptionEffect::Measures && s.name != "dataset" && applies(a, b, s.name, specs))
+      compare(s.name);
   // A database from before the measurement keys: its prose sentence holds the same settings
   // (with %g's rounding).
   if (!a.count("lp.grid") || !b.count("lp.grid")) {
