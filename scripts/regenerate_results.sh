@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Regenerates every result under results/ that a binary makes (results/README.md lists them all):
 #   bounds    results/bounds-dragon-side/            `bounds`, seconds
-#   evals     results/eval-default-{biased,receiver_plane}/, the same as `findings`
+#   evals     results/eval-default-{biased,receiver_plane}/ alone (scripts/findings.sh's evals), minutes
 #   demo      results/sweep-default-sample/          scripts/demo's three sweeps and report, minutes
 #   findings  results/findings/ and both eval-default-* (scripts/findings.sh), about 45 minutes
 # Each part writes PROVENANCE.md beside its files: the commands, the git commit of the binary that
@@ -9,6 +9,7 @@
 # its numbers (scripts/output_fingerprint.sh shows whether one does). A part starts afresh; with
 # RESUME=1 an interrupted one continues where it stopped (its sweeps resume).
 #   bash scripts/regenerate_results.sh [PART...]       (default: bounds demo findings)
+# (findings includes evals.)
 # MB=path uses a built binary instead of building build/release; WORK (default out/regenerate)
 # holds the sweeps' databases and the raw outputs.
 set -euo pipefail
@@ -72,7 +73,19 @@ for part in "${parts[@]}"; do
       provenance results/sweep-default-sample "$work/demo/sweep" "MB=$MB DEMO_OUT=$work/demo bash scripts/demo" \
         "# then: results/sweep-default-sample/ = $work/demo/report/ (report.md, *.csv, histogram.*)"
       ;;
-    findings | evals)
+    evals)
+      # scripts/findings.sh's two evals alone (its technique list), minutes rather than its sweeps.
+      techniques=$(sed -n "s/^techniques='\(.*\)'$/\1/p" scripts/findings.sh)
+      for reference in biased receiver_plane; do
+        cmd="$MB eval -q --set dataset=default --set reference=$reference --set 'techniques=$techniques' --set images=false --out $work/eval-$reference --force"
+        eval "$cmd" >/dev/null
+        dst=results/eval-default-$reference
+        mkdir -p "$dst"
+        cp "$work/eval-$reference/report.md" "$work/eval-$reference/errors.csv" "$dst"/
+        provenance "$dst" "$work/eval-$reference" "$cmd" "# then: $dst/ = report.md and errors.csv of $work/eval-$reference/"
+      done
+      ;;
+    findings)
       [ -n "${RESUME:-}" ] || rm -rf "$work/findings"
       bash scripts/findings.sh "$work/findings"
       copy_report "$work/findings/report" results/findings
@@ -87,7 +100,7 @@ for part in "${parts[@]}"; do
       done
       ;;
     *)
-      echo "regenerate_results.sh: unknown part '$part' (expected bounds, demo, findings or evals)" >&2
+      echo "regenerate_results.sh: unknown part '$part' (expected bounds, evals, demo or findings)" >&2
       exit 2
       ;;
   esac
