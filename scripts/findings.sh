@@ -8,9 +8,14 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 root=${1:-out/findings}
 mkdir -p "$root"
-cmake --preset release >/dev/null
-cmake --build --preset release -j "$(nproc)" --target momentbench
-mb=./build/release/momentbench
+# MB: a built binary to run instead (scripts/regenerate_results.sh); otherwise build it here.
+if [ -n "${MB:-}" ]; then
+  mb=$MB
+else
+  cmake --preset release >/dev/null
+  cmake --build --preset release -j "$(nproc)" --target momentbench
+  mb=./build/release/momentbench
+fi
 for k in 2 3 4; do
   $mb sweep -q --config "configs/sweeps/findings-$k.yaml" --resume --out "$root/sweep-$k"
 done

@@ -5,9 +5,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
+#include <limits>
 
 #include "oit/color_difference.h"
+#include "oit/compositing.h"
 #include "oit/oit_verification.h"
 #include "scene/scene.h"
 #include "test_support.h"
@@ -102,6 +105,48 @@ cameras:
       testing_support::input_error_of([&] { check_frame_has_transparency(frame, scene.name); });
   EXPECT_NE(message.find("opaque/eye"), std::string::npos) << message;
   EXPECT_NE(message.find("no transparent geometry"), std::string::npos) << message;
+}
+
+// oit.depth_range (docs/transparency.md §2): seed 003's bounding sphere of the transparent
+// geometry holds every fragment, so each warps into [0, 1] before any clamping, and here it is
+// wider than the frame's own range, so the moments and MBOIT's answers move with the setting.
+TEST(OitRun, BoundingSphereRangeHoldsEveryFragment) {
+  const Scene scene = glass();
+  const DeepFrame frame = render_deep_frame(scene, scene.cameras[0], 2);
+  ASSERT_TRUE(std::isfinite(frame.sphere_near) && std::isfinite(frame.sphere_far));
+  EXPECT_LE(frame.sphere_near, frame.nearest());
+  EXPECT_GE(frame.sphere_far, frame.farthest());
+  EXPECT_GT(frame.sphere_far - frame.sphere_near, 1.01 * (frame.farthest() - frame.nearest()));
+  for (const WarpKind kind : {WarpKind::Logarithmic, WarpKind::Linear}) {
+    const DepthWarp sphere = frame_warp(frame, kind, DepthRangeKind::BoundingSphere);
+    const DepthWarp fragments = frame_warp(frame, kind, DepthRangeKind::Fragments);
+    for (double z : frame.depth) {
+      const double unclamped =
+          ((kind == WarpKind::Linear ? z : std::log(z)) - sphere.near) / sphere.range;
+      EXPECT_GE(unclamped, 0) << z;
+      EXPECT_LE(unclamped, 1) << z;
+    }
+    EXPECT_EQ(fragments(frame.nearest()), 0);
+    EXPECT_EQ(fragments(frame.farthest()), 1);
+    EXPECT_GT(sphere(frame.nearest()), 0);
+    EXPECT_LT(sphere(frame.farthest()), 1);
+  }
+  const std::vector<std::string> techniques = {"exact", "mboit_power4", "mboit_trig2"};
+  OitParams by_sphere;
+  by_sphere.depth_range = DepthRangeKind::BoundingSphere;
+  const LabConverter lab;
+  const OitFrameResult a = evaluate_oit_frame(frame, "glass", techniques, {}, 2, lab, true);
+  const OitFrameResult b = evaluate_oit_frame(frame, "glass", techniques, by_sphere, 2, lab, true);
+  EXPECT_EQ(a.stats[0].delta_e_mean(), b.stats[0].delta_e_mean());  // exact needs no warp
+  for (size_t k = 1; k < techniques.size(); ++k)
+    EXPECT_NE(a.stats[k].delta_e_mean(), b.stats[k].delta_e_mean()) << techniques[k];
+  // A frame without its scene (read back from a file) has no sphere: a named error.
+  DeepFrame without = frame;
+  without.sphere_near = without.sphere_far = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(frame_warp(without, WarpKind::Logarithmic, DepthRangeKind::BoundingSphere),
+               InputError);
+  EXPECT_EQ(depth_range_kind("bounding_sphere"), DepthRangeKind::BoundingSphere);
+  EXPECT_THROW(depth_range_kind("sphere"), InputError);
 }
 
 }  // namespace

@@ -90,5 +90,38 @@ TEST(SolveQuery, MomentToleranceIsAKeyOfALine) {
   EXPECT_EQ(batch.lines.find("unknown key"), std::string::npos) << batch.lines;
 }
 
+// A distribution's depths must lie in the interval (docs/reference.md §1), as eval refuses an LP
+// interval that excludes a view's depths: the answer would otherwise have its support outside I.
+TEST(SolveQuery, DepthsOutsideTheIntervalAreRefused) {
+  SolveSettings s;
+  s.basis = {"z", "z^2"};
+  s.depths = {0.1, 1.5};
+  s.weights = {0.5, 0.5};
+  try {
+    solve_instance(s);
+    FAIL() << "a depth outside [0, 1] was answered";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("depths (--depths): depth 1.5 lies outside interval (--interval) [0, 1]"),
+              std::string::npos)
+        << what;
+  }
+  s.interval = {0, 2};  // the same distribution on an interval that holds it is answered
+  EXPECT_EQ(solve_instance(s)["status"], "optimal");
+  s.interval = {0.2, 2};  // and the lower end is checked as the upper
+  EXPECT_THROW(solve_instance(s), InputError);
+  std::istringstream in(
+      R"({"basis": ["z", "z^2"], "depths": [-0.5, 0.5], "weights": [0.5, 0.5], "zf": 0.5})"
+      "\n"
+      R"({"basis": ["z", "z^2"], "depths": [-0.5, 0.5], "weights": [0.5, 0.5], "zf": 0.5, "interval": [-1, 1]})"
+      "\n");
+  const SolveBatch batch = solve_batch(SolveSettings(), in, "q.jsonl", false);
+  EXPECT_NE(
+      batch.lines.find("q.jsonl:1: key 'depths': depth -0.5 lies outside key 'interval' [0, 1]"),
+      std::string::npos)
+      << batch.lines;
+  EXPECT_EQ(batch.failures, 1);  // the second line's interval holds its depths
+}
+
 }  // namespace
 }  // namespace mb

@@ -40,9 +40,12 @@ struct OitOptions {
 
 std::string describe(const OitParams& p) {
   return "depth warp: " + std::string(p.warp == WarpKind::Linear ? "linear" : "logarithmic") +
-         " between each camera's nearest and farthest transparent "
-         "fragment (docs/transparency.md §2); MBOIT beta " +
-         round_trip(p.beta) + ", moment bias " + round_trip(p.double_bias.power[0]) +
+         (p.depth_range == DepthRangeKind::Fragments
+              ? " between each camera's nearest and farthest transparent fragment"
+              : " over the depth range of the bounding sphere of each scene's transparent "
+                "geometry (seed 003)") +
+         " (docs/transparency.md §2); MBOIT beta " + round_trip(p.beta) + ", moment bias " +
+         round_trip(p.double_bias.power[0]) +
          " (double; float and 16-bit variants: the authors' code's biases); lp: grid " +
          std::to_string(p.lp.lp.grid) + " on [" + round_trip(p.lp.lp.lo) + ", " +
          round_trip(p.lp.lp.hi) +
@@ -60,6 +63,7 @@ int run_oit(const OitOptions& options) {
   OitParams params;
   params.beta = run.beta;
   params.warp = warp_kind(run.warp);
+  params.depth_range = depth_range_kind(run.depth_range);
   read_lp_params(config, params.lp);
   if (run.techniques.empty()) throw InputError("techniques: expected at least one technique");
   for (const auto& name : run.techniques) make_oit_technique(name, params);  // names fail here

@@ -101,6 +101,9 @@ LocalBoxAnswer solve_power_box_locally(double lo, double hi, std::span<const dou
   std::vector<double> seeds;
   for (int i = 0; i <= kContinuousSeedGrid; ++i)
     seeds.push_back(seed_lo + (seed_hi - seed_lo) * i / kContinuousSeedGrid);
+  out.local = box;
+  out.domain = domain;
+  out.zf_u = zf_u;
   out.phase1 = find_box_points(basis, box, domain, seeds, settings);
   if (!out.phase1.found) return out;
   // Phase 1's support alone: a start GLPK finds feasible (with the seed grid beside it, its primal
@@ -111,6 +114,36 @@ LocalBoxAnswer solve_power_box_locally(double lo, double hi, std::span<const dou
     out.support.push_back(f.to_z(out.box.finite.support[j]));
     out.weights.push_back(out.box.finite.weights[j]);
   }
+  return out;
+}
+
+LocalBoxUpper local_box_upper(const LocalBoxAnswer& answer, const ContinuousSettings& settings) {
+  LocalBoxUpper out;
+  if (!answer.ok()) return out;
+  // v = -u: E[v^k] = (-1)^k E[u^k], the radii unchanged; I and its tails reflected.
+  MomentBox box = answer.local;
+  for (size_t k = 0; k < box.center.size(); k += 2) box.center[k] = -box.center[k];
+  const ContinuousDomain& d = answer.domain;
+  ContinuousDomain reflected{-d.hi, -d.lo, -d.tail_hi, -d.tail_lo};
+  reflected.even_degree = d.even_degree;
+  reflected.probe_limit = d.probe_limit;
+  // Seeds that carry a distribution in the box: phase 1's points, else the least G's support. GLPK
+  // can call a box of 1e-10 infeasible from one start and not from another (as in
+  // solve_power_box_locally); a box widened tenfold still bounds G over this one from above.
+  const Basis basis = power_basis(int(box.center.size()));
+  std::vector<double> phase1, support;
+  for (double u : answer.phase1.points) phase1.push_back(-u);
+  for (double u : answer.box.finite.support) support.push_back(-u);
+  for (int attempt = 0; attempt < 4 && !out.behind.ok(); ++attempt) {
+    if (attempt == 2)
+      for (double& t : box.tolerance)
+        t *= 10;  // a superset: its largest mass is still an upper end
+    out.behind = solve_moment_box_continuous(basis, box, -answer.zf_u, reflected,
+                                             attempt % 2 ? support : phase1, settings);
+  }
+  if (!out.behind.ok()) return out;
+  out.upper = std::clamp(1 - out.behind.lower, 0.0, 1.0);
+  out.proven = out.behind.proven;
   return out;
 }
 

@@ -35,8 +35,11 @@ MomentBox local_moment_box(const LocalFrame& frame, std::span<const double> mome
 
 struct LocalBoxAnswer {
   LocalFrame frame;
-  BoxPoints phase1;                      // in u
-  ContinuousBoxAnswer box;               // G's bracket (the same in z and in u)
+  MomentBox local;          // the box in u the answer is over (radii raised to the LP's resolution)
+  ContinuousDomain domain;  // I in u, with the exchange's reach
+  double zf_u = 0;          // z_f in u
+  BoxPoints phase1;         // in u
+  ContinuousBoxAnswer box;  // G's bracket (the same in z and in u)
   std::vector<double> support, weights;  // the finite optimum's distribution, in z
   bool ok() const { return phase1.found && box.ok(); }
 };
@@ -45,5 +48,22 @@ struct LocalBoxAnswer {
 LocalBoxAnswer solve_power_box_locally(double lo, double hi, std::span<const double> moments,
                                        std::span<const double> tolerance, double zf,
                                        const ContinuousSettings& settings = {});
+
+// An upper end for G over the box of an answer (docs/reference.md §2, "The range over the rounding
+// box"): the answer's G is the box's least, and the G of the kernel that was rounded lies anywhere
+// up to the box's largest. G(b) is at most the mass at or in front of z_f of every distribution
+// with moments b, so the largest such mass over the box, G+ = 1 - (the least mass strictly behind
+// z_f), bounds G over the box from above. The least mass behind is the box problem in v = -u
+// (odd moments and I reflected, z_f to -z_f), started from phase 1's points reflected; `upper`
+// is 1 - its proven lower end, so it never lies below G of a distribution in the box.
+// When GLPK finds no start for it (it can call such a box infeasible from every start, as it can
+// the box of solve_power_box_locally), the upper end is 1, which holds too.
+struct LocalBoxUpper {
+  ContinuousBoxAnswer behind;  // the least mass strictly behind z_f over the box (in v)
+  double upper = 1;            // 1 - behind.lower, or 1 when that box problem failed
+  bool proven = false;         // behind.proven
+};
+LocalBoxUpper local_box_upper(const LocalBoxAnswer& answer,
+                              const ContinuousSettings& settings = {});
 
 }  // namespace mb::lp

@@ -232,6 +232,7 @@ class ElasticLp {
   ElasticLp(const Basis& basis, const MomentBox& box, std::span<const double> points)
       : basis_(basis), box_(box), lp_(glp_create_prob()) {
     check_box(basis, box);
+    glp_term_out(GLP_OFF);  // glp_adv_basis prints otherwise, into solve's JSON on stdout
     const int m = int(basis.size());
     scale_ = row_scales(stored_rows(basis, box, points), size_t(m), points.size());
     glp_add_rows(lp_, 2 * m + 1);
@@ -323,6 +324,7 @@ double relative_distance(const Basis& basis, const MomentBox& box, std::span<con
   const int m = int(basis.size()), n = int(points.size());
   const std::vector<double> s = stored_rows(basis, box, points);
   const std::vector<double> scale = row_scales(s, size_t(m), size_t(n));
+  glp_term_out(GLP_OFF);
   glp_prob* lp = glp_create_prob();
   glp_add_rows(lp, 2 * m + 1);
   glp_add_cols(lp, n + 1);

@@ -37,6 +37,23 @@ WarpKind warp_kind(const std::string& name) {
   throw InputError("oit.warp: '" + name + "': expected logarithmic or linear");
 }
 
+DepthRangeKind depth_range_kind(const std::string& name) {
+  if (name == "fragments") return DepthRangeKind::Fragments;
+  if (name == "bounding_sphere") return DepthRangeKind::BoundingSphere;
+  throw InputError("oit.depth_range: '" + name + "': expected fragments or bounding_sphere");
+}
+
+DepthWarp frame_warp(const DeepFrame& frame, WarpKind kind, DepthRangeKind range) {
+  if (range == DepthRangeKind::Fragments)
+    return DepthWarp::between(frame.nearest(), frame.farthest(), kind);
+  if (!std::isfinite(frame.sphere_near) || !std::isfinite(frame.sphere_far))
+    throw InputError("oit.depth_range: bounding_sphere: camera " + frame.camera +
+                     " has no bounding sphere of transparent geometry (expected a frame rendered "
+                     "from its scene)");
+  return DepthWarp::between(std::min(frame.sphere_near, frame.nearest()),
+                            std::max(frame.sphere_far, frame.farthest()), kind);
+}
+
 double absorbance(double alpha) {
   return alpha >= 1 ? std::numeric_limits<double>::infinity() : -std::log1p(-alpha);
 }

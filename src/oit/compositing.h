@@ -34,6 +34,15 @@ struct DepthWarp {
 // "logarithmic" or "linear" (oit.warp).
 WarpKind warp_kind(const std::string& name);
 
+// Where the warp's range comes from (oit.depth_range, docs/transparency.md §2): the frame's
+// nearest and farthest fragment, or seed 003's bounding sphere of the scene's transparent geometry
+// (DeepFrame::sphere_near, sphere_far), widened to the fragments' range should rounding leave one
+// outside, so that every fragment warps into [0, 1].
+enum class DepthRangeKind { Fragments, BoundingSphere };
+// "fragments" or "bounding_sphere" (oit.depth_range).
+DepthRangeKind depth_range_kind(const std::string& name);
+DepthWarp frame_warp(const DeepFrame& frame, WarpKind kind, DepthRangeKind range);
+
 // -ln(1 - alpha): a fragment's absorbance. Infinite for alpha = 1 (an opaque fragment ends the
 // pixel's transparent list, DeepFrame).
 double absorbance(double alpha);

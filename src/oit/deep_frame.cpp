@@ -32,6 +32,30 @@ Rgb shade(const Scene& scene, uint32_t triangle, const Eigen::Vector3d& point,
   return {float(albedo.x() * light), float(albedo.y() * light), float(albedo.z() * light)};
 }
 
+// The bounding sphere of the scene's transparent triangles: the centre of their bounding box, and
+// the largest distance of a vertex from it (a sphere that holds them, not the least one; seed 003
+// names no construction). Its depth range along the view, the near end at least the camera's near
+// plane (every fragment lies beyond it), so that the logarithmic warp is defined.
+void set_sphere_range(const Scene& scene, const CameraFrame& eye, DeepFrame& frame) {
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector3d hi = -lo;
+  const auto transparent = [&](size_t t) { return !scene.opacity[scene.part[t]].opaque(); };
+  for (size_t t = 0; t < scene.mesh.triangles.size(); ++t)
+    if (transparent(t))
+      for (uint32_t v : scene.mesh.triangles[t])
+        lo = lo.cwiseMin(scene.mesh.vertices[v]), hi = hi.cwiseMax(scene.mesh.vertices[v]);
+  if (!(lo.x() <= hi.x())) return;  // no transparent geometry
+  const Eigen::Vector3d centre = (lo + hi) / 2;
+  double radius = 0;
+  for (size_t t = 0; t < scene.mesh.triangles.size(); ++t)
+    if (transparent(t))
+      for (uint32_t v : scene.mesh.triangles[t])
+        radius = std::max(radius, (scene.mesh.vertices[v] - centre).norm());
+  const double d = eye.distance(centre);
+  frame.sphere_near = std::max(d - radius, eye.near());
+  frame.sphere_far = std::max(d + radius, frame.sphere_near);
+}
+
 }  // namespace
 
 DeepFrame render_deep_frame(const Scene& scene, const CameraDesc& camera, int threads) {
@@ -72,6 +96,7 @@ DeepFrame render_deep_frame(const Scene& scene, const CameraDesc& camera, int th
     }
     frame.offsets[p + 1] = frame.depth.size();
   }
+  set_sphere_range(scene, eye, frame);
   return frame;
 }
 

@@ -32,6 +32,11 @@ struct DeepFrame {
   // The transparent geometry's depth range (nearest and farthest fragment), for the warp.
   double nearest() const;
   double farthest() const;
+  // The depth range of the bounding sphere of the scene's transparent triangles along the view,
+  // [d_c - r, d_c + r] with its near end at least the camera's near plane (seed 003 §3.2's range
+  // for the warp, oit.depth_range: bounding_sphere); NaN when unknown (a frame read from a file).
+  double sphere_near = std::numeric_limits<double>::quiet_NaN();
+  double sphere_far = std::numeric_limits<double>::quiet_NaN();
 };
 
 // What a pixel shows where no opaque surface lies under it.

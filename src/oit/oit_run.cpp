@@ -36,6 +36,17 @@ const std::vector<OptionRecord<OitRunOptions>>& oit_run_options() {
         std::numeric_limits<double>::infinity(),
         {"logarithmic", "linear"}},
        &OitRunOptions::warp},
+      {{"oit.depth_range",
+        OptionType::String,
+        "fragments",
+        "The depth range the warp maps onto [0, 1] (docs/transparency.md §2): fragments, the "
+        "frame's nearest and farthest transparent fragment; bounding_sphere, seed 003's, the "
+        "bounding sphere of the scene's transparent geometry along the view (wider: it holds "
+        "geometry the frame does not see).",
+        -std::numeric_limits<double>::infinity(),
+        std::numeric_limits<double>::infinity(),
+        {"fragments", "bounding_sphere"}},
+       &OitRunOptions::depth_range},
       {measures_nothing(
            {"images", OptionType::Boolean, "true",
             "Per camera: the reference and each technique's composite, its CIEDE2000 difference in "
@@ -86,8 +97,9 @@ struct FrameReference {
   std::vector<Lab> lab;
 };
 
-FrameReference frame_reference(const DeepFrame& frame, const LabConverter& lab, WarpKind kind) {
-  const DepthWarp warp = DepthWarp::between(frame.nearest(), frame.farthest(), kind);
+FrameReference frame_reference(const DeepFrame& frame, const LabConverter& lab, WarpKind kind,
+                               DepthRangeKind range) {
+  const DepthWarp warp = frame_warp(frame, kind, range);
   FrameReference r;
   r.warped.resize(frame.fragments()), r.transmittance.resize(frame.fragments());
   r.composite.resize(frame.pixels()), r.lab.resize(frame.pixels());
@@ -146,7 +158,7 @@ OitFrameResult evaluate_oit_frame(const DeepFrame& frame, const std::string& sce
                                   bool quiet) {
   check_frame_has_transparency(frame, scene);
   const size_t pixels = frame.pixels();
-  const FrameReference reference = frame_reference(frame, lab, params.warp);
+  const FrameReference reference = frame_reference(frame, lab, params.warp, params.depth_range);
   OitFrameResult result;
   result.scene = scene, result.camera = frame.camera;
   result.width = frame.width, result.height = frame.height;

@@ -19,6 +19,7 @@ struct OitRunOptions {
   std::vector<std::string> techniques;
   double beta = 0.25;
   std::string warp = "logarithmic";
+  std::string depth_range = "fragments";
   bool images = true;
   bool deep_frames = true;
   double delta_e_scale = 10;

@@ -36,6 +36,8 @@ struct OitParams {
   double wrapping_zone = 0.1 * 3.14159265358979323846;
   // The depth warp onto [0, 1] the moments are taken of (docs/transparency.md §2; oit.warp).
   WarpKind warp = WarpKind::Logarithmic;
+  // The range it maps onto [0, 1] (docs/transparency.md §2; oit.depth_range).
+  DepthRangeKind depth_range = DepthRangeKind::Fragments;
   // lp:<basis>: the LP's grid, backend and lp.beta (0: the sharp bound e^{-A-}); its interval is
   // that of the warped depth, [0, 1], unless a caller widens it (the closed forms' R).
   TechniqueParams lp;

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "raster/rasterizer.h"
+#include "report/colour_bar.h"
 #include "report/eval_report.h"
 #include "scene/light_view.h"
 #include "util/eigen.h"
@@ -151,6 +152,9 @@ std::vector<float> shade_camera_view(const CameraView& view, const std::vector<d
   return rgb;
 }
 
+// The difference images' colours: red darker than the reference, blue lighter.
+constexpr std::array<float, 3> kDarker = {1.0f, 0.15f, 0.1f}, kLighter = {0.15f, 0.45f, 1.0f};
+
 std::vector<float> difference_image(const CameraView& view, const std::vector<double>& shadow,
                                     double scale) {
   std::vector<float> rgb(view.diffuse.size() * 3),
@@ -159,7 +163,6 @@ std::vector<float> difference_image(const CameraView& view, const std::vector<do
     const float grey = 0.5f * (pcf[p * 3] + pcf[p * 3 + 1] + pcf[p * 3 + 2]) / 3;
     for (int ch = 0; ch < 3; ++ch) rgb[p * 3 + ch] = grey;
   }
-  constexpr float kDarker[3] = {1.0f, 0.15f, 0.1f}, kLighter[3] = {0.15f, 0.45f, 1.0f};
   for (size_t p = 0; p < view.diffuse.size(); ++p) {
     // The pixel's difference: its receivers' differences by their shares of it.
     double d = 0;
@@ -171,7 +174,7 @@ std::vector<float> difference_image(const CameraView& view, const std::vector<do
       }
     if (!any) continue;
     const float t = float(std::min(1.0, std::abs(d) / scale));
-    const float* colour = d > 0 ? kDarker : kLighter;
+    const std::array<float, 3>& colour = d > 0 ? kDarker : kLighter;
     for (int ch = 0; ch < 3; ++ch) {
       float& v = rgb[p * 3 + ch];
       v = (1 - t) * v + t * colour[ch];
@@ -191,6 +194,8 @@ void write_camera_images(const CameraView& view, const std::vector<std::string>&
   OIIO::ImageBuf sheet(OIIO::ImageSpec(columns * cell_w, rows * cell_h, 3, OIIO::TypeDesc::FLOAT),
                        white.data());
   const float black[3] = {0, 0, 0};
+  const ColourBar bar = signed_difference_bar(
+      scale, kLighter, kDarker, "G - reference (shadow fraction): blue leaks, red over-darkens");
   for (size_t k = 0; k < names.size(); ++k) {
     const std::vector<float> image = shade_camera_view(view, shadows[k]);
     write_image(base + "_" + file_stem(names[k]) + ".png", w, h, 3, image);
@@ -199,7 +204,7 @@ void write_camera_images(const CameraView& view, const std::vector<std::string>&
     // hard shadow, which has).
     const bool soft = view.receivers.soft.angle_deg > 0;
     if (!(names[k] == "area_light" || (names[k] == "pcf" && !soft)))
-      write_image(base + "_" + file_stem(names[k]) + "_diff.png", w, h, 3, diff);
+      write_with_colour_bar(base + "_" + file_stem(names[k]) + "_diff.png", diff, w, h, bar);
     const int x0 = int(k % columns) * cell_w, y0 = int(k / columns) * cell_h;
     const auto paste = [&](const std::vector<float>& pixels, int y) {
       OIIO::ImageBuf tile(OIIO::ImageSpec(w, h, 3, OIIO::TypeDesc::FLOAT),
@@ -214,7 +219,7 @@ void write_camera_images(const CameraView& view, const std::vector<std::string>&
   }
   std::vector<float> pixels(white.size());
   sheet.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, pixels.data());
-  write_image(base + "_sheet.png", columns * cell_w, rows * cell_h, 3, pixels);
+  write_with_colour_bar(base + "_sheet.png", pixels, columns * cell_w, rows * cell_h, bar);
 }
 
 void check_dataset_cameras(const std::vector<Scene>& scenes, const DatasetDesc& dataset) {

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "eval/error_stats.h"
+#include "report/colour_bar.h"
 #include "report/eval_report.h"
 #include "util/image_writer.h"
 #include "util/number_text.h"
@@ -192,6 +193,7 @@ std::string write_oit_images(const OitFrameResult& result,
     const int x0 = int(cell % columns) * cell_w, y0 = int(cell / columns) * cell_h;
     OIIO::ImageBufAlgo::render_text(sheet, x0 + 2, y0 + label - 4, text, 14, "DejaVuSans", black);
   };
+  const ColourBar bar = magnitude_bar(scale, "CIEDE2000 (dE00); grey: no transparency");
   const std::vector<float> reference = srgb_image(result.reference);
   write_image(base + "_reference.png", w, h, 3, reference);
   paste(reference, 0, 0);
@@ -201,7 +203,7 @@ std::string write_oit_images(const OitFrameResult& result,
     const std::vector<float> diff = difference_image(result.delta_e[k], scale);
     const std::string stem = base + "_" + file_stem(techniques[k]);
     write_image(stem + ".png", w, h, 3, image);
-    write_image(stem + "_diff.png", w, h, 3, diff);
+    write_with_colour_bar(stem + "_diff.png", diff, w, h, bar);
     paste(image, k + 1, 0);
     paste(diff, k + 1, 1);
     caption(techniques[k] + "  dE00 " + format_number(result.stats[k].delta_e_mean(), "%.3f"),
@@ -209,7 +211,7 @@ std::string write_oit_images(const OitFrameResult& result,
   }
   std::vector<float> pixels(white.size());
   sheet.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, pixels.data());
-  write_image(base + "_sheet.png", columns * cell_w, rows * cell_h, 3, pixels);
+  write_with_colour_bar(base + "_sheet.png", pixels, columns * cell_w, rows * cell_h, bar);
   return std::filesystem::path(base + "_sheet.png").filename().string();
 }
 

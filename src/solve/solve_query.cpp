@@ -82,6 +82,22 @@ void check_interval(const std::vector<double>& interval, const std::string& key)
                      (interval.size() == 1 ? " number" : " numbers"));
 }
 
+// A distribution's depths must be admissible (docs/reference.md §1), as eval refuses an LP interval
+// that excludes a view's depths: an answer with support outside I is no answer to Problem 1 on I.
+void check_depths_inside(const Instance& instance, const std::vector<double>& interval,
+                         const std::string& depths_key, const std::string& interval_key) {
+  if (!instance.from_distribution()) return;
+  const auto [min, max] = std::minmax_element(instance.depths.begin(), instance.depths.end());
+  if (interval[0] <= *min && *max <= interval[1]) return;
+  const double outside = *min < interval[0] ? *min : *max;
+  throw InputError(depths_key + ": depth " + round_trip(outside) + " lies outside " + interval_key +
+                   " [" + round_trip(interval[0]) + ", " + round_trip(interval[1]) +
+                   "]; a distribution's depths must be admissible "
+                   "(docs/reference.md §1): expected every depth in the interval, or an interval "
+                   "that holds [" +
+                   round_trip(*min) + ", " + round_trip(*max) + "]");
+}
+
 // Raw moments stand for every vector within their rounding (docs/reference.md §2): where G moves
 // across that box by more than the answer's own uncertainty (the bracket, or the certificate on a
 // grid), the range says how little the moments determine (continuous/moment_range.h).
@@ -120,11 +136,23 @@ bool answer_box_locally(json& out, const lp::Discretization& disc,
   if (!local.ok()) return false;
   out["status"] = "optimal";
   out["moments_from"] = "moments, their rounding box in local coordinates";
+  // G, lower, bracket and proven are the box's least G (docs/reference.md §2): the kernel that was
+  // rounded may lie anywhere in the box, its G anywhere in `range`.
   out["G"] = local.box.upper;
   out["lower"] = local.box.lower;
   out["bracket"] = local.box.width();
+  out["bracket_of"] = "the least G over the moments' rounding box, not the rounded kernel's G";
   out["proven"] = local.box.proven;
-  out["exchange_rounds"] = local.phase1.rounds + local.box.rounds;
+  const lp::LocalBoxUpper upper = lp::local_box_upper(local);
+  out["range"] = {local.box.lower, std::max(upper.upper, local.box.upper)};
+  out["range_of"] =
+      std::string("G over the rounding box: from its least G to ") +
+      (upper.behind.ok()
+           ? std::string("the largest mass at or in front of zf of a distribution in it, an upper "
+                         "bound of G there") +
+                 (upper.proven ? "" : " (sampled, not proven)")
+           : "1 (the box problem of its largest mass found no start)");
+  out["exchange_rounds"] = local.phase1.rounds + local.box.rounds + upper.behind.rounds;
   out["support"] = support_json(local.support, local.weights);
   out["backend"] = "glpk";
   return true;
@@ -344,6 +372,7 @@ json solve_line(const std::string& line, int number, const SolveSettings& o, lp:
                          query.has("moments") ? query.numbers("moments") : std::vector<double>{},
                          query.numbers("depths"), query.numbers("weights"))
                    : checked_instance(query.numbers("moments"), {}, {});
+  check_depths_inside(instance, interval, "key 'depths'", "key 'interval'");
   out.update(solve_one(
       backend, factories, query.strings("basis"), d, instance, query.number("zf"),
       query.has("points") ? query.numbers("points") : std::vector<double>{}, o.check,
@@ -439,9 +468,10 @@ nlohmann::json solve_instance(const SolveSettings& o) {
   check_interval(o.interval, "interval");
   lp::Discretization disc{o.interval[0], o.interval[1], o.grid, o.quantize};
   disc.continuous = o.discretization == "continuous";
+  const Instance instance = checked_instance(o.moments, o.depths, o.weights);
+  check_depths_inside(instance, o.interval, "depths (--depths)", "interval (--interval)");
   FactoryCache factories;
-  return solve_one(*backend, factories, o.basis, disc,
-                   checked_instance(o.moments, o.depths, o.weights), o.zf, o.points, o.check,
+  return solve_one(*backend, factories, o.basis, disc, instance, o.zf, o.points, o.check,
                    o.moment_tolerance);
 }
 

@@ -1,0 +1,43 @@
+#pragma once
+// The scale of a false-colour picture: a ramp with its end values and its units, appended under
+// the image so that the picture states what its colours mean. The image's own pixels are kept as
+// they are (the first `height` rows of the result); the bar only adds rows beneath them.
+#include <array>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace mb {
+
+struct ColourBar {
+  std::function<std::array<float, 3>(double)> ramp;  // t in [0, 1] -> RGB in [0, 1]
+  std::string low, middle, high;                     // values at t = 0, 0.5 (may be empty), 1
+  std::string units;                                 // what the values are, under the ramp
+};
+
+// The viridis bar of an error magnitude in [0, scale] (util/image_writer.h, colormap).
+ColourBar magnitude_bar(double scale, const std::string& units);
+// The blue-grey-red bar of a signed difference in [-scale, scale]: blue where a technique is
+// lighter than the reference (light leaking), red where darker (over-darkening), each blended
+// over the grey the difference images show the reference in (report/camera_views.h).
+ColourBar signed_difference_bar(double scale, const std::array<float, 3>& lighter,
+                                const std::array<float, 3>& darker, const std::string& units);
+
+// Rows the bar adds under an image.
+constexpr int kColourBarHeight = 36;
+// `rgb` (width x height, 3 channels, row-major) on white with the bar beneath it, across
+// min(width, 320) pixels from the left; an image too narrow for the bar's text is widened on the
+// right (white). Labels need a font (DejaVuSans); without one the ramp stays and the scale is in
+// the report.
+struct BarredImage {
+  std::vector<float> rgb;
+  int width = 0, height = 0;
+};
+BarredImage with_colour_bar(const std::vector<float>& rgb, int width, int height,
+                            const ColourBar& bar);
+
+// write_image of with_colour_bar (PNG).
+void write_with_colour_bar(const std::string& file, const std::vector<float>& rgb, int width,
+                           int height, const ColourBar& bar);
+
+}  // namespace mb
