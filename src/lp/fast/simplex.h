@@ -17,7 +17,7 @@
 #include "lp/fast/settings.h"
 #include "lp/lanes/lanes.h"
 #include "lp/solution.h"
-#include "lp/warm/warm_offers.h"
+#include "lp/fast/warm_offers.h"
 
 namespace mb::lp::fast {
 
