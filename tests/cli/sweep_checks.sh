@@ -27,7 +27,9 @@ same() {
 count() {
   /usr/bin/python3 -c "import sqlite3,sys; print(sqlite3.connect(sys.argv[1]).execute('select count(*) from candidates').fetchone()[0])" "$1/results.sqlite" 2>/dev/null || echo 0
 }
-if [ "$check" != transparency ]; then
+# The run the threads, resume, shards and series checks compare with (killloop, screen and
+# transparency sweep their own configs).
+if [ "$check" = threads ] || [ "$check" = resume ] || [ "$check" = shards ] || [ "$check" = series ]; then
   "$mb" sweep -q "${common[@]}" --set threads=2 -o "$work/reference"
   results "$work/reference"
 fi
