@@ -15,7 +15,6 @@
 #include <vector>
 
 #include "basis/basis.h"
-#include "basis/basis_derivatives.h"
 #include "continuous/continuous.h"
 #include "continuous/local_power.h"
 #include "lp/problem.h"
@@ -270,38 +269,6 @@ TEST(Continuous, UserExpressionsAreSampledNotProven) {
   ASSERT_TRUE(c.ok());
   EXPECT_FALSE(c.proven);
   EXPECT_LE(c.lower, c.upper + kCertifiedError);
-}
-
-TEST(BasisDerivatives, ClosedFormsMatchDifferencesAndBoundsHold) {
-  // Each catalog function's derivatives against central differences of the one before (long
-  // double), and each bound against the derivative's values on a fine sample of the interval.
-  for (const std::string& name : catalog_names()) {
-    const BasisFunction f = BasisFunction::parse(name);
-    ASSERT_TRUE(f.has_derivatives()) << name;
-    for (long double z : {0.05L, 0.37L, 0.81L}) {
-      long double d[kMaxDerivativeOrder + 1], plus[kMaxDerivativeOrder + 1],
-          minus[kMaxDerivativeOrder + 1];
-      const long double h = 1e-6L;
-      f.derivatives(z, 8, d);
-      f.derivatives(z + h, 8, plus);
-      f.derivatives(z - h, 8, minus);
-      EXPECT_NEAR(double(d[0]), f(double(z)), 1e-15 * std::max(1.0, std::abs(double(d[0]))))
-          << name;
-      for (int k = 1; k <= 8; ++k) {
-        const long double difference = (plus[k - 1] - minus[k - 1]) / (2 * h);
-        EXPECT_NEAR(double(d[k]), double(difference), 1e-5 * std::max(1.0L, std::abs(d[k])))
-            << name << " order " << k << " at " << double(z);
-      }
-    }
-    for (int order : {1, 4, 8}) {
-      const long double bound = f.derivative_bound(order, 0.2L, 0.6L);
-      for (int i = 0; i <= 400; ++i) {
-        long double d[kMaxDerivativeOrder + 1];
-        f.derivatives(0.2L + 0.4L * i / 400, order, d);
-        EXPECT_LE(std::abs(d[order]), bound * (1 + 1e-15L)) << name << " order " << order;
-      }
-    }
-  }
 }
 
 // `solve` given a distribution (depths and weights) instead of moments (issue 45): 200 kernels like

@@ -355,36 +355,6 @@ TEST(LpProperties, ZeroCdfGivesZeroAndRefiningNeverRaisesTheBound) {
   EXPECT_GT(compared, 1990);
 }
 
-TEST(Basis, CatalogHas37DistinctIndependentFunctions) {
-  EXPECT_EQ(catalog_names().size(), 37u);
-  for (const auto& name : catalog_names()) EXPECT_EQ(BasisFunction::parse(name).name(), name);
-  // Each catalog function with the constant is independent; so are the power and trig sets.
-  Basis::parse({"power4"}).check_independent(0, 1);
-  Basis::parse({"trig4"}).check_independent(0, 1);
-  Basis::parse({"power6"}).check_independent(0, 1);
-  // Names match with spaces and '*' ignored; expressions work through muparser.
-  EXPECT_EQ(BasisFunction::parse("sin(2*pi*z)").name(), "sin(2 pi z)");
-  EXPECT_NEAR(BasisFunction::parse("z^2*exp(-z)")(0.5), 0.25 * std::exp(-0.5), 1e-15);
-}
-
-TEST(Basis, DependentSetsAreRejectedNamingTheFunctions) {
-  std::string m = testing_support::input_error_of([] {
-    Basis::parse({"z", "z^2", "3*z"}).check_independent(0, 1);
-  });
-  EXPECT_NE(m.find("linearly dependent"), std::string::npos) << m;
-  EXPECT_NE(m.find("3*z"), std::string::npos) << m;
-  m = testing_support::input_error_of([] { Basis::parse({"1+z", "z"}).check_independent(0, 1); });
-  EXPECT_NE(m.find("linearly dependent"), std::string::npos) << m;
-  m = testing_support::input_error_of([] {
-    Basis::parse({"z", "cos(pi*z)^2", "cos(2 pi z)"}).check_independent(0, 1);
-  });
-  EXPECT_NE(m.find("linearly dependent"), std::string::npos) << m;
-  EXPECT_NE(testing_support::input_error_of([] {
-              BasisFunction::parse("sin(z");
-            }).find("not a valid expression"),
-            std::string::npos);
-}
-
 }  // namespace
 }  // namespace mb::lp
 

@@ -7,7 +7,6 @@
 #include "cmd/command_common.h"
 #include "cmd/commands.h"
 #include "eval/eval_config.h"
-#include "eval/evaluation.h"
 #include "report/bounds_report.h"
 #include "scene/dataset.h"
 #include "util/error.h"
@@ -73,45 +72,6 @@ std::vector<OptionSpec> bounds_specs() {
 
 namespace {
 
-// The kernel distribution at a dataset texel: the same taps as PCF and the moment maps see.
-std::string texel_distribution(const DatasetOptions& data, const BoundsSettings& b,
-                               BoundCurveRequest& request, const GaussianKernel& kernel,
-                               bool quiet) {
-  const std::string& wanted = b.view;
-  const auto& texel = b.texel;
-  if (texel.size() != 2) throw InputError("bounds.texel: expected two integers [x, y]");
-  DatasetDesc dataset = load_dataset(data.dataset);
-  EvalSettings settings;
-  settings.kernel = kernel;
-  settings.threads = request.threads;
-  const auto views = prepare_views(dataset, data.resolution, settings, quiet);
-  std::string names, matches;
-  const ViewData* found = nullptr;
-  for (const auto& v : views) {
-    const std::string full = v.scene + "/" + v.view;
-    names += (names.empty() ? "" : ", ") + full;
-    if (wanted != full && wanted != v.view) continue;
-    matches += (matches.empty() ? "" : ", ") + full;
-    if (found)
-      throw InputError("bounds.view: '" + wanted + "' names several views (" + matches +
-                       "); write scene/view");
-    found = &v;
-  }
-  if (!found)
-    throw InputError("bounds.view: no view '" + wanted + "' in dataset " + dataset.name +
-                     "; views: " + names);
-  const ViewData& v = *found;
-  const int x = int(texel[0]), y = int(texel[1]);
-  if (x >= v.map.width || y >= v.map.height)
-    throw InputError("bounds.texel: (" + std::to_string(x) + ", " + std::to_string(y) +
-                     ") lies outside view " + v.scene + "/" + v.view + " (" +
-                     std::to_string(v.map.width) + "x" + std::to_string(v.map.height) + ")");
-  kernel_atoms(v.map, kernel, x, y, request.depths, request.weights);
-  return "dataset " + dataset.name + ", view " + v.scene + "/" + v.view + ", texel (" +
-         std::to_string(x) + ", " + std::to_string(y) + "), " + std::to_string(kernel.size) + "x" +
-         std::to_string(kernel.size) + " Gaussian kernel";
-}
-
 int run_bounds(const CommonOptions& options) {
   Config config = resolve_config(bounds_specs(), options);
   if (print_config_if_asked(config, options)) return 0;
@@ -131,7 +91,8 @@ int run_bounds(const CommonOptions& options) {
   const GaussianKernel kernel = kernel_from(config);
   std::string source = "given depths and weights";
   if (!b.view.empty()) {
-    source = texel_distribution(data, b, request, kernel, options.quiet);
+    source = take_texel_distribution(load_dataset(data.dataset), data.resolution, b.view, b.texel,
+                                     kernel, options.quiet, request);
   } else {
     request.depths = b.depths;
     request.weights = b.weights;

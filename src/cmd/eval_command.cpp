@@ -7,6 +7,7 @@
 #include <map>
 #include <sstream>
 
+#include "camera/camera_views.h"
 #include "cmd/command_common.h"
 #include "cmd/commands.h"
 #include "eval/blocker_audit_run.h"
@@ -15,7 +16,7 @@
 #include "eval/eval_run.h"
 #include "eval/evaluation.h"
 #include "report/blocker_audit_report.h"
-#include "report/camera_views.h"
+#include "report/camera_images.h"
 #include "report/darkening.h"
 #include "report/eval_report.h"
 #include "report/shadow_images.h"
@@ -89,8 +90,10 @@ int run_eval(const EvalOptions& options) {
     write_file_atomically(out / ("histograms/" + file_stem(total.technique) + ".csv"),
                           histogram_csv(total.stats));
   if (run.camera_images)
-    write_dataset_camera_views(scenes, dataset, views, techniques, data.resolution, settings,
-                               run.error_scale, out.staging() / "cameras", quiet);
+    evaluate_camera_views(scenes, dataset, views, techniques, data.resolution, settings, quiet,
+                          [&](const CameraShadows& camera) {
+                            write_camera_images(camera, out.staging() / "cameras", run.error_scale);
+                          });
 
   // msm_soft's blocker search against its sharp bounds (docs/soft-shadows.md §3).
   std::vector<ViewBlockerAudit> audits;

@@ -4,11 +4,11 @@
 // re-certified before it is returned, or reported as unstable or at its iteration limit.
 // The simplex itself lives in lp/fast/.
 #include "lp/fast/settings.h"
+#include "lp/row_count.h"
 #include "lp/solution.h"
 
 namespace mb::lp {
 
-constexpr int kMaxRows = 8;
 // Our simplex alone; make_backend("fast") wraps it in the GLPK fallback (lp/fallback_backend.h).
 std::unique_ptr<Backend> make_fast_backend(const fast::SimplexSettings& settings = {});
 

@@ -4,6 +4,10 @@
 
 namespace mb::lp {
 
+// The most rows a problem of the dense simplex has (docs/reference.md §2): fixed-size arrays of
+// the engine and of its lanes are sized by it.
+constexpr int kMaxRows = 8;
+
 // Calls f(std::integral_constant<int, K>) with K = k for k = 1..8, so that loops over the rows
 // unroll and vectorise with the count known at compile time; any other k gets K = Otherwise
 // (a caller that handles only k <= 8 passes 8, one with a run-time fallback passes 0).

@@ -1,12 +1,10 @@
 #include "moments/canonical_bound.h"
 
-#include <Eigen/Cholesky>
-#include <Eigen/Dense>
-#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <numbers>
 
 #include "moments/canonical.h"
+#include "util/eigen.h"
 
 namespace mb {
 

@@ -19,7 +19,7 @@ struct ColourBar {
 ColourBar magnitude_bar(double scale, const std::string& units);
 // The blue-grey-red bar of a signed difference in [-scale, scale]: blue where a technique is
 // lighter than the reference (light leaking), red where darker (over-darkening), each blended
-// over the grey the difference images show the reference in (report/camera_views.h).
+// over the grey the difference images show the reference in (report/camera_images.h).
 ColourBar signed_difference_bar(double scale, const std::array<float, 3>& lighter,
                                 const std::array<float, 3>& darker, const std::string& units);
 

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "continuous/discretized.h"
+#include "eval/evaluation.h"
 #include "lp/solution.h"
 #include "techniques/lp_technique.h"
 #include "util/error.h"
@@ -112,6 +113,42 @@ BoundCurves compute_bound_curves(const BoundCurveRequest& r) {
     }
   }
   return out;
+}
+
+std::string take_texel_distribution(const DatasetDesc& dataset, int resolution,
+                                    const std::string& wanted, const std::vector<int64_t>& texel,
+                                    const GaussianKernel& kernel, bool quiet,
+                                    BoundCurveRequest& request) {
+  if (texel.size() != 2) throw InputError("bounds.texel: expected two integers [x, y]");
+  EvalSettings settings;
+  settings.kernel = kernel;
+  settings.threads = request.threads;
+  const auto views = prepare_views(dataset, resolution, settings, quiet);
+  std::string names, matches;
+  const ViewData* found = nullptr;
+  for (const auto& v : views) {
+    const std::string full = v.scene + "/" + v.view;
+    names += (names.empty() ? "" : ", ") + full;
+    if (wanted != full && wanted != v.view) continue;
+    matches += (matches.empty() ? "" : ", ") + full;
+    if (found)
+      throw InputError("bounds.view: '" + wanted + "' names several views (" + matches +
+                       "); write scene/view");
+    found = &v;
+  }
+  if (!found)
+    throw InputError("bounds.view: no view '" + wanted + "' in dataset " + dataset.name +
+                     "; views: " + names);
+  const ViewData& v = *found;
+  const int x = int(texel[0]), y = int(texel[1]);
+  if (x >= v.map.width || y >= v.map.height)
+    throw InputError("bounds.texel: (" + std::to_string(x) + ", " + std::to_string(y) +
+                     ") lies outside view " + v.scene + "/" + v.view + " (" +
+                     std::to_string(v.map.width) + "x" + std::to_string(v.map.height) + ")");
+  kernel_atoms(v.map, kernel, x, y, request.depths, request.weights);
+  return "dataset " + dataset.name + ", view " + v.scene + "/" + v.view + ", texel (" +
+         std::to_string(x) + ", " + std::to_string(y) + "), " + std::to_string(kernel.size) + "x" +
+         std::to_string(kernel.size) + " Gaussian kernel";
 }
 
 }  // namespace mb

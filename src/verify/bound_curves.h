@@ -7,6 +7,8 @@
 
 #include "basis/basis.h"
 #include "lp/problem.h"
+#include "scene/dataset.h"
+#include "shadow/gaussian_kernel.h"
 
 namespace mb {
 
@@ -38,5 +40,14 @@ struct BoundCurves {
 // InputError on an empty or invalid distribution, an m larger than a basis, a dependent prefix.
 // Deterministic for any thread count (every sample is its own LP).
 BoundCurves compute_bound_curves(const BoundCurveRequest& request);
+
+// The kernel's distribution at texel [x, y] of `view` ('scene/view', or 'view' when only one
+// scene has it) of `dataset` rendered at `resolution`, into request.depths and weights: the same
+// taps as PCF and the moment maps see. Returns where it came from, for the report. InputError
+// naming bounds.view or bounds.texel for an unknown or ambiguous view or a texel outside it.
+std::string take_texel_distribution(const DatasetDesc& dataset, int resolution,
+                                    const std::string& view, const std::vector<int64_t>& texel,
+                                    const GaussianKernel& kernel, bool quiet,
+                                    BoundCurveRequest& request);
 
 }  // namespace mb

@@ -9,11 +9,6 @@
 #            run's rows; a kill mid-screen resumes to the same; the report marks estimates apart
 #   series   sweeps of 2 and 4 functions in one report (the seed paper's Figure 3); sweeps measured
 #            against another reference refused; CSV numbers at full precision
-#   identity the run's identity from the option records (docs/sweeps.md "Identity"): a report of
-#            two sweeps at other resolutions refused naming the key and both values, combined with
-#            --allow-different, each series stating its value; resume and merge refuse a changed
-#            measurement option and accept a changed thread count; a database with only the
-#            older meta keys still compares, through its stored config
 #   transparency  target transparency on tests/data/oit_tiny.yaml: the same rows for 1 and 2
 #            threads and after kill -9 and --resume; screened; MBOIT's basis marked in the report;
 #            its candidate's error equals `oit`'s lp:power4 transmittance error
@@ -32,7 +27,9 @@ same() {
 count() {
   /usr/bin/python3 -c "import sqlite3,sys; print(sqlite3.connect(sys.argv[1]).execute('select count(*) from candidates').fetchone()[0])" "$1/results.sqlite" 2>/dev/null || echo 0
 }
-if [ "$check" != transparency ] && [ "$check" != identity ]; then
+# The run the threads, resume, shards and series checks compare with (killloop, screen and
+# transparency sweep their own configs).
+if [ "$check" = threads ] || [ "$check" = resume ] || [ "$check" = shards ] || [ "$check" = series ]; then
   "$mb" sweep -q "${common[@]}" --set threads=2 -o "$work/reference"
   results "$work/reference"
 fi
@@ -180,59 +177,6 @@ PY
   if "$mb" report -q --no-plot "$work/two" "$work/plane" -o "$work/mixed" 2>"$work/err"; then exit 1; fi
   grep -q "cannot share a report" "$work/err"
   [ ! -e "$work/mixed" ]
-  ;;
-identity)
-  small=(--set dataset=tiny --set sample=4 --set sample_seed=3 --set "references=[vsm]" --set lp.grid=32)
-  "$mb" sweep -q "${small[@]}" --set resolution=64 -o "$work/r64"
-  "$mb" sweep -q "${small[@]}" --set resolution=48 -o "$work/r48"
-  # Refused: the key and both values named, exit non-zero, nothing written.
-  if "$mb" report -q --no-plot "$work/r64" "$work/r48" -o "$work/mixed" >/dev/null 2>"$work/err"; then exit 1; fi
-  grep -q "measure errors differently: resolution is 48 in $work/r48/results.sqlite, 64 in $work/r64/results.sqlite" "$work/err"
-  grep -q -- "--allow-different resolution" "$work/err"
-  [ ! -e "$work/mixed" ]
-  # A key that is no measurement option is refused, with the closest one.
-  if "$mb" report -q --no-plot "$work/r64" "$work/r48" --allow-different resolutoin -o "$work/mixed" 2>"$work/err"; then exit 1; fi
-  grep -q "'resolutoin' is not a measurement option of sweep (did you mean 'resolution'?)" "$work/err"
-  [ ! -e "$work/mixed" ]
-  # Allowed: one report, each series' label and line with its own value (the flag takes one key
-  # an occurrence, or a list: the databases after it stay the report's).
-  "$mb" report -q --no-plot --allow-different resolution "$work/r64" "$work/r48" -o "$work/both" >/dev/null
-  grep -q '^- 4 functions (resolution 64): .*; resolution 64; other measurement options off their defaults: lp.grid 32$' "$work/both/report.md"
-  grep -q '^- 4 functions (resolution 48): .*; resolution 48; other measurement options off their defaults: lp.grid 32$' "$work/both/report.md"
-  [ "$(grep -c '^"4 functions (resolution 48)",' "$work/both/candidates.csv")" -eq 4 ]
-  # A single series states its measurement options off their defaults.
-  "$mb" report -q --no-plot "$work/r64" -o "$work/one" >/dev/null
-  grep -q '; measurement options off their defaults: resolution 64, lp.grid 32$' "$work/one/report.md"
-  # Resume: a changed measurement option refused with key and values, a changed thread count not.
-  if "$mb" sweep -q "${small[@]}" --set resolution=48 --resume -o "$work/r64" 2>"$work/err"; then exit 1; fi
-  grep -q "run with another config .*: resolution is 64 in that sweep, 48 in this one" "$work/err"
-  "$mb" sweep -q "${small[@]}" --set resolution=64 --set threads=1 --resume -o "$work/r64"
-  # Merge: shards at other thread counts merge; a shard at another resolution is refused, named.
-  "$mb" sweep -q "${small[@]}" --set threads=1 --shard 1/2 -o "$work/m1"
-  "$mb" sweep -q "${small[@]}" --set threads=2 --shard 2/2 -o "$work/m2"
-  "$mb" sweep -q "${small[@]}" --set resolution=48 --shard 2/2 -o "$work/m2other"
-  "$mb" merge "$work/m1" "$work/m2" -o "$work/merged" | grep -q "merged 2 shards"
-  if "$mb" merge "$work/m1" "$work/m2other" -o "$work/mismatch" 2>"$work/err"; then exit 1; fi
-  grep -q "resolution is 48 in $work/m2other, 0 in $work/m1): not shards of one sweep" "$work/err"
-  [ ! -e "$work/mismatch" ]
-  # A database with only the twelve measurement keys of before (and its config) still compares:
-  # with a database of today at the same options, and refused against another resolution.
-  cp -r "$work/r64" "$work/old64"
-  /usr/bin/python3 - "$work/old64/results.sqlite" <<'PY'
-import sqlite3, sys
-db = sqlite3.connect(sys.argv[1])
-old = {"kernel.size", "kernel.sigma", "reference", "bias.slope", "bias.constant", "lp.grid", "lp.lo",
-       "lp.hi", "lp.discretization", "lp.quantize", "lp.backend", "lp.moment_box"}
-keys = [k for (k,) in db.execute("select key from meta") if "." in k or k == "resolution" or k == "reference"]
-for k in keys:
-    if k not in old:
-        db.execute("delete from meta where key = ?", (k,))
-db.commit()
-assert db.execute("select count(*) from meta where key = 'resolution'").fetchone()[0] == 0
-PY
-  "$mb" report -q --no-plot "$work/old64" "$work/r64" -o "$work/old_same" >/dev/null
-  if "$mb" report -q --no-plot "$work/old64" "$work/r48" -o "$work/old_other" 2>"$work/err"; then exit 1; fi
-  grep -q "resolution is 48 in $work/r48/results.sqlite, 64 in $work/old64/results.sqlite" "$work/err"
   ;;
 transparency)
   oit=(--set target=transparency --set dataset="$tiny_oit" --set lp.grid=64 --set sample=10 --set sample_seed=3 --set "oit_references=[exact, wboit, mboit_power4]")

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "lp/fast_backend.h"
+#include "lp/row_count.h"
 
 namespace mb::lp::fast {
 

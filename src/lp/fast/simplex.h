@@ -15,9 +15,9 @@
 #include "lp/fast/dense_lu.h"
 #include "lp/fast/grid_bound.h"
 #include "lp/fast/settings.h"
+#include "lp/fast/warm_offers.h"
 #include "lp/lanes/lanes.h"
 #include "lp/solution.h"
-#include "lp/warm/warm_offers.h"
 
 namespace mb::lp::fast {
 

@@ -8,7 +8,7 @@
 #include <limits>
 
 #include "lp/double_double.h"
-#include "lp/fast_backend.h"
+#include "lp/row_count.h"
 
 namespace mb::lp::fast::lanes::scalar {
 

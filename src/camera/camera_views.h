@@ -5,8 +5,8 @@
 // (nearest texel), with its own depth z_f and bias delta_f from its triangle's plane
 // (docs/reference.md §3) and the evaluation's reference (shadow/fragments.h, receiver_test), or
 // under an area light that light's shadow at the same point (soft/area_light.h). The techniques
-// then run through evaluate_technique unchanged, and simple diffuse shading makes the image.
-#include <filesystem>
+// then run through evaluate_technique unchanged; report/camera_images.h shades the images.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -38,29 +38,25 @@ struct CameraView {
 CameraView camera_view(const Scene& scene, const LightViewDesc& light, const ViewData& light_view,
                        const CameraDesc& camera, const EvalSettings& settings);
 
-// One technique's image: sRGB in [0, 1], 3 channels, row-major. `shadow` per receiver.
-std::vector<float> shade_camera_view(const CameraView& view, const std::vector<double>& shadow);
-// A technique's difference from PCF: red where it is darker (over-darkening), blue where lighter
-// (light leaking), full colour at |G - PCF| >= scale, over the PCF image in grey.
-std::vector<float> difference_image(const CameraView& view, const std::vector<double>& shadow,
-                                    double scale);
-
-// Writes `<base>_<stem>.png` and `<base>_<stem>_diff.png` per technique (the reference first, no
-// difference: PCF, or under an area light `area_light`, its shadow) and `<base>_sheet.png`: every
-// technique's image above its difference, labelled.
-void write_camera_images(const CameraView& view, const std::vector<std::string>& names,
-                         const std::vector<std::vector<double>>& shadows, const std::string& base,
-                         double scale);
-
 // InputError unless some scene of `dataset` names a camera (checked before any work).
 void check_dataset_cameras(const std::vector<Scene>& scenes, const DatasetDesc& dataset);
+// One camera seeing a scene lit by one of its light views, with each technique's shadow per
+// receiver: under an area light its own shadow first, named "area_light" (the reference), then
+// the techniques in the order asked for.
+struct CameraShadows {
+  std::string scene, light;
+  CameraView view;
+  std::vector<std::string> names;
+  std::vector<std::vector<double>> shadows;
+};
+
 // Every camera of every scene (`scenes`, built from `dataset`), lit by each of the scene's light
-// views (`views` as prepare_views rendered them at `resolution`), for `techniques`:
-// write_camera_images into `dir` as <scene>_<view>_<camera>_*.png.
-void write_dataset_camera_views(const std::vector<Scene>& scenes, const DatasetDesc& dataset,
-                                const std::vector<ViewData>& views,
-                                const std::vector<std::string>& techniques, int resolution,
-                                const EvalSettings& settings, double scale,
-                                const std::filesystem::path& dir, bool quiet);
+// views (`views` as prepare_views rendered them at `resolution`), for `techniques`: `each` is
+// called per camera and light view as soon as it is computed, so one is held at a time.
+void evaluate_camera_views(const std::vector<Scene>& scenes, const DatasetDesc& dataset,
+                           const std::vector<ViewData>& views,
+                           const std::vector<std::string>& techniques, int resolution,
+                           const EvalSettings& settings, bool quiet,
+                           const std::function<void(const CameraShadows&)>& each);
 
 }  // namespace mb

@@ -1,15 +1,17 @@
-// Camera views (issue 34, report/camera_views.h): a camera looking straight down at a ground plane
+// Camera views (issue 34, camera/camera_views.h): a camera looking straight down at a ground plane
 // sees the shadow of a square held above it, displaced by the light's slant; the pixels PCF puts
 // in shadow cover the square's area at the ground's pixel scale, centred where geometry says.
 // Exact techniques stay below PCF on every camera receiver, and the light view's receivers and a
 // camera's are one test: a camera pixel gets its light texel's G.
+#include "camera/camera_views.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
 #include "eval/evaluation.h"
-#include "report/camera_views.h"
+#include "report/camera_images.h"
 #include "scene/procedural.h"
 
 namespace mb {
