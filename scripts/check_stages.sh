@@ -4,7 +4,7 @@
 # and exits 1 if there is one.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-order=(util scene raster basis moments lp continuous shadow techniques soft solve eval oit screen sweep verify report cmd)
+order=(util scene raster basis moments lp continuous shadow techniques solve eval oit screen sweep verify report cmd)
 rank() { local i; for i in "${!order[@]}"; do [ "${order[$i]}" = "$1" ] && echo "$i" && return; done; echo -1; }
 status=0
 while IFS= read -r line; do

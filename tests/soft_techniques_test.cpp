@@ -1,6 +1,6 @@
 // Summed-area tables and the soft techniques (soft/summed_area.h, soft/soft_techniques.h,
 // docs/soft-shadows.md §2).
-#include "soft/soft_techniques.h"
+#include "techniques/soft/soft_technique.h"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 
 #include "raster/render_view.h"
 #include "scene/scene.h"
-#include "soft/summed_area.h"
+#include "shadow/summed_area.h"
 #include "soft_test_scenes.h"
 #include "test_support.h"
 

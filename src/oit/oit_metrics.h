@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "oit/color_difference.h"
-#include "oit/oit_technique.h"
+#include "techniques/oit/oit_technique.h"
 
 namespace mb {
 

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "techniques/lp_technique.h"
+#include "techniques/registry.h"
 #include "util/parallel_errors.h"
 
 namespace mb {
@@ -262,12 +263,10 @@ class OitTarget : public SweepTarget {
 
   // What a reference technique proves about transmittance below T_ref.
   std::pair<double, std::string> reference_bound(const std::string& name) const {
-    if (name == "exact") return {0, ""};
-    if (name.rfind("lp:", 0) == 0) return {candidate_darkening_bound(), kRoundingReason};
-    const double any = std::numeric_limits<double>::infinity();
-    if (name == "unsorted") return {any, "submission order: fragments behind count as in front"};
-    if (name == "wboit") return {any, "weighted blended OIT: depth weights, no bound"};
-    return {any, "MBOIT: beta > 0 and the normalisation Gamma (docs/transparency.md §3)"};
+    const TechniqueRow& row = technique_row(name, TechniqueFamily::Transmittance);
+    if (row.solves_lp) return {candidate_darkening_bound(), kRoundingReason};
+    if (row.unproven_reason.empty()) return {0, ""};
+    return {std::numeric_limits<double>::infinity(), row.unproven_reason};
   }
 
   const std::vector<SceneFrame>& frames_;

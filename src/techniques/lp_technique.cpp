@@ -6,6 +6,7 @@
 #include "continuous/discretized.h"
 #include "continuous/moment_box.h"
 #include "lp/solution.h"
+#include "techniques/registry.h"
 #include "util/error.h"
 
 namespace mb {
@@ -85,6 +86,18 @@ class LpTechnique : public Technique {
   double beta_ = 0;
   size_t failures_ = 0;
 };
+
+std::vector<TechniqueRow> rows() {
+  return {{.name = "lp:",
+           .rank = 200,
+           .summary = "Problem 1 as an LP for any basis, e.g. lp:power4, lp:trig4",
+           .storage = "double",
+           .bound = "the LP's certified tolerance (lp::kCertifiedError)",
+           .solves_lp = true,
+           .make = make_lp_technique}};
+}
+
+const TechniqueRegistration kRegistered(rows);
 
 }  // namespace
 
