@@ -1,4 +1,4 @@
-// A camera's deep frame (oit/deep_frame.h): two coloured panes over a coloured ground, seen and lit
+// A camera's deep frame (raster/deep_frame.h): two coloured panes over a coloured ground, seen and lit
 // from above, so that every number of the centre pixel is known by hand.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Summed-area tables and the soft techniques (soft/summed_area.h, soft/soft_techniques.h,
+// Summed-area tables and the soft techniques (shadow/summed_area.h, techniques/soft/,
 // docs/soft-shadows.md §2).
 #include "techniques/soft/soft_technique.h"
 

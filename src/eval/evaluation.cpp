@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <limits>
 
-#include "eval/lp_fragment_solver.h"
+#include "eval/lp_view_solver.h"
 #include "lp/solution.h"
 #include "raster/render_view.h"
 #include "shadow/moment_map.h"

@@ -203,7 +203,7 @@ class OitTarget : public SweepTarget {
 
   // Runs technique `name` on `pixels` (rows in parallel, each pixel on its own, so the answers are
   // the same for any thread count), its transmittance per fragment into t; with `effective`, the
-  // weight the composite uses (oit_technique.h). Returns the technique's failures.
+  // weight the composite uses (techniques/oit/oit_technique.h). Returns the technique's failures.
   size_t for_each_pixel(size_t v, const std::vector<uint32_t>& pixels, const std::string& name,
                         bool effective, std::vector<double>& t) const {
     const DeepFrame& frame = frames_[v].frame;

@@ -67,7 +67,7 @@ class Technique {
   // Not thread-safe (LP backends keep state): make one instance per thread.
   virtual double shadow(const FragmentInput& input) = 0;
   // An LP technique's problem factory (basis and discretisation of I): evaluate_technique solves
-  // such a technique per view with warm starts (lp_fragment_solver.h); nullptr for closed forms.
+  // such a technique per view with warm starts (eval/lp_view_solver.h); nullptr for closed forms.
   virtual const lp::ProblemFactory* lp_factory() const { return nullptr; }
   // Fragments the technique could not answer (LP infeasible or unstable), for the report.
   virtual size_t failures() const { return 0; }

@@ -125,7 +125,7 @@ std::vector<VerifyTarget> verify_targets(const std::vector<std::string>& techniq
       throw InputError("verify.techniques: '" + name +
                        "' has no LP ground truth in docs/reference.md §6; valid: " + valid);
     }
-    // The registry row's recipe (techniques/registry.cpp) for these parameters.
+    // The registry row's recipe (techniques/registry.h) for these parameters.
     using Judge = VerifyRecipe::Judge;
     const VerifyRecipe& r = *row->verify;
     VerifyTarget t;

@@ -7,7 +7,7 @@ namespace mb {
 
 namespace {
 
-// `exact` and `unsorted`: a blend of the fragments themselves (oit/compositing.h), no moments.
+// `exact` and `unsorted`: a blend of the fragments themselves (shadow/compositing.h), no moments.
 class BlendOit : public OitTechnique {
  public:
   using Blend = void (*)(const PixelFragments&, std::span<double>);

@@ -102,6 +102,10 @@ std::unique_ptr<lp::ProblemFactory> lp_final_step_factory(const std::string& nam
     throw InputError("lp.discretization: " + name +
                      " solves on the grid and the box's own depths; expected lp.discretization "
                      "grid (docs/soft-shadows.md §2)");
+  if (technique.lp_beta > 0 || technique.lp_moment_box != "none")
+    throw InputError("lp.beta, lp.moment_box: " + name +
+                     " takes the sharp lower bound of the box's own moments; expected lp.beta 0 "
+                     "and lp.moment_box none (docs/soft-shadows.md §2)");
   const Basis basis = Basis::parse(lp_technique_basis(lp_name));
   lp::check_backend_rows(technique.lp_backend, int(basis.size()), "techniques: " + name);
   return std::make_unique<lp::ProblemFactory>(basis, technique.lp);
@@ -115,10 +119,10 @@ std::unique_ptr<lp::ProblemFactory> lp_final_step_factory(const std::string& nam
 class MsmSoftLp : public MsmSoft {
  public:
   MsmSoftLp(const std::string& name, const SoftSetup& s)
-      : MsmSoft(s),
-        factory_(lp_final_step_factory(name, s.technique)),
-        backend_(s.technique.lp_backend) {}
-  std::string lp_backend() const override { return backend_; }
+      : MsmSoft(s), factory_(lp_final_step_factory(name, s.technique)), technique_(s.technique) {}
+  void prepare(SoftScratch& scratch) const override {
+    scratch.lp = std::make_unique<LpFragmentSolver>(factory_->basis(), *factory_, technique_);
+  }
   double shadow(const SoftContext& c, const Receiver& r, SoftScratch& step) const override {
     const MsmBlocker blocker = msm_blocker(c, *sat_, r);
     if (blocker.weight > 1 - c.params.umbra_epsilon) return 1;
@@ -129,8 +133,7 @@ class MsmSoftLp : public MsmSoft {
     if (std::all_of(step.depths.begin(), step.depths.end(), [&](double d) { return d >= z; }))
       return 0;
     step.problem = factory_->from_distribution(step.depths, step.weights, z);
-    step.backend->solve_into(step.problem, nullptr, step.solution);
-    const lp::Solution& s = step.solution;
+    const lp::Solution& s = step.lp->solve(step.problem, step.depths, step.weights, z);
     if (s.call != lp::CallStatus::Ok || s.status != lp::ProblemStatus::Optimal)
       return std::numeric_limits<double>::quiet_NaN();
     return std::clamp(s.G, 0.0, 1.0);
@@ -138,7 +141,7 @@ class MsmSoftLp : public MsmSoft {
 
  private:
   std::unique_ptr<lp::ProblemFactory> factory_;
-  std::string backend_;
+  TechniqueParams technique_;
 };
 
 std::vector<TechniqueRow> rows() {

@@ -90,18 +90,18 @@ SoftResult soft_shadow(const std::string& name, const ShadowMap& map, const Frag
   const SoftSetup setup{map, soft, kernel, bias, params, technique};
   const SoftContext context = make_soft_context(setup);
   const std::unique_ptr<SoftTechnique> made = row->make_soft(name, setup);
-  const std::string backend = made->lp_backend();
   std::vector<double> shadow(fragments.size());
   ParallelErrors errors;
   size_t failures = 0;
 #pragma omp parallel num_threads(threads) reduction(+ : failures)
   {
     SoftScratch scratch;
-    if (!backend.empty()) errors.capture([&] { scratch.backend = lp::make_backend(backend); });
+    bool ready = false;
+    errors.capture([&] { made->prepare(scratch), ready = true; });
 #pragma omp for schedule(dynamic, 1024)
     for (size_t k = 0; k < fragments.size(); ++k)
       errors.capture([&] {
-        if (!backend.empty() && !scratch.backend) return;  // its error is captured already
+        if (!ready) return;  // its error is captured already
         shadow[k] = made->shadow(context, receiver_of(fragments, soft, k), scratch);
         // A closed form on rounded moments can leave its domain (a Hankel matrix no longer
         // positive definite), an LP its certificate: no answer, counted, the receiver unshadowed.

@@ -17,6 +17,7 @@
 #include "shadow/area_light.h"
 #include "shadow/fragments.h"
 #include "shadow/summed_area.h"
+#include "techniques/lp_fragment_solver.h"
 #include "techniques/technique.h"
 #include "util/option_record.h"
 
@@ -108,10 +109,9 @@ SoftContext make_soft_context(const SoftSetup& setup);
 // One thread's LP state (GLPK, the fast backend's fallback, frees memory only in the thread that
 // allocated it: each thread makes, uses and drops its own) and the storage it reuses.
 struct SoftScratch {
-  std::unique_ptr<lp::Backend> backend;
+  std::unique_ptr<LpFragmentSolver> lp;
   std::vector<double> depths, weights;
   lp::Problem problem;
-  lp::Solution solution;
 };
 
 // A soft technique made for one view (its summed-area table built once), answering any receiver
@@ -119,8 +119,8 @@ struct SoftScratch {
 class SoftTechnique {
  public:
   virtual ~SoftTechnique() = default;
-  // The LP backend each thread's scratch needs, or "" for none.
-  virtual std::string lp_backend() const { return ""; }
+  // Makes what a thread's scratch needs (an LP solver), in that thread.
+  virtual void prepare(SoftScratch&) const {}
   // One receiver's shadow; NaN when the technique gives no answer there.
   virtual double shadow(const SoftContext& c, const Receiver& r, SoftScratch& scratch) const = 0;
 };
