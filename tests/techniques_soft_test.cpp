@@ -119,7 +119,7 @@ struct Slab {
   LightFrame frame;
 };
 
-// The half-plane of the area light test (soft_area_light_test.cpp), lit by a 20-degree light.
+// The half-plane of the area light test (shadow_area_light_test.cpp), lit by a 20-degree light.
 Slab slab() {
   Scene scene = testing_support::slab_scene(256, 0.02);
   const LightViewDesc view = scene.views.at(0);
