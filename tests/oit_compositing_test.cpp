@@ -8,8 +8,8 @@
 #include <numbers>
 #include <random>
 
-#include "oit/compositing.h"
-#include "oit/oit_technique.h"
+#include "shadow/compositing.h"
+#include "techniques/oit/oit_technique.h"
 #include "oit/oit_verification.h"
 #include "util/error.h"
 #include "util/number_text.h"

@@ -10,9 +10,9 @@
 #include <limits>
 
 #include "oit/color_difference.h"
-#include "oit/compositing.h"
 #include "oit/oit_verification.h"
 #include "scene/scene.h"
+#include "shadow/compositing.h"
 #include "test_support.h"
 #include "util/error.h"
 

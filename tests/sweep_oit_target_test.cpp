@@ -8,7 +8,7 @@
 #include <cmath>
 #include <random>
 
-#include "oit/compositing.h"
+#include "shadow/compositing.h"
 #include "sweep/oit_target.h"
 #include "util/error.h"
 

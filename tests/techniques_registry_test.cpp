@@ -16,14 +16,77 @@ namespace {
 TEST(TechniqueRegistry, EveryRowMakesATechniqueOfItsOwnName) {
   const TechniqueParams params;
   std::set<std::string> names;
-  for (const auto& row : technique_registry()) {
-    EXPECT_TRUE(names.insert(row.name).second) << row.name << " is registered twice";
-    const std::string name = row.name == "lp:" ? "lp:power4" : row.name;
+  for (const TechniqueRow* row : family_rows(TechniqueFamily::HardShadow)) {
+    EXPECT_TRUE(names.insert(row->name).second) << row->name << " is registered twice";
+    const std::string name = row->prefix() ? row->name + "power4" : row->name;
     EXPECT_EQ(make_technique(name, params)->name(), name);
-    EXPECT_EQ(find_technique(name), &row);
+    EXPECT_EQ(find_technique(name, TechniqueFamily::HardShadow), row);
   }
   EXPECT_EQ(find_technique("esm_zmx"), nullptr);
   EXPECT_THROW(make_technique("esm_zmx", params), InputError);
+}
+
+// One table for every family: rows sorted by family and rank, each with exactly its family's
+// factory, names unique within a family (lp:<basis> is a row of two), and a name of one family is
+// refused by another's factory with the family it belongs to.
+TEST(TechniqueRegistry, EveryFamilyIsOneTableOfRows) {
+  const auto& rows = technique_registry();
+  std::set<std::pair<TechniqueFamily, std::string>> names;
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const TechniqueRow& row = rows[i];
+    EXPECT_TRUE(names.insert({row.family, row.name}).second) << row.name;
+    if (i > 0) {
+      EXPECT_LE(std::pair(rows[i - 1].family, rows[i - 1].rank), std::pair(row.family, row.rank))
+          << row.name;
+    }
+    const int factories =
+        (row.make != nullptr) + (row.make_soft != nullptr) + (row.make_oit != nullptr);
+    EXPECT_EQ(factories, 1) << row.name;
+    EXPECT_EQ(row.make != nullptr, row.family == TechniqueFamily::HardShadow) << row.name;
+    EXPECT_EQ(row.make_soft != nullptr, row.family == TechniqueFamily::SoftShadow) << row.name;
+    EXPECT_EQ(row.make_oit != nullptr, row.family == TechniqueFamily::Transmittance) << row.name;
+    EXPECT_FALSE(row.summary.empty()) << row.name;
+    EXPECT_FALSE(row.bound.empty()) << row.name;
+    if (row.prefix() && row.default_run) {
+      EXPECT_FALSE(row.example.empty()) << row.name;
+    }
+  }
+  for (TechniqueFamily family :
+       {TechniqueFamily::HardShadow, TechniqueFamily::SoftShadow, TechniqueFamily::Transmittance})
+    EXPECT_FALSE(family_rows(family).empty()) << family_title(family);
+  EXPECT_EQ(find_technique("lp:power4", TechniqueFamily::Transmittance)->family,
+            TechniqueFamily::Transmittance);
+  EXPECT_EQ(find_technique("lp:power4", TechniqueFamily::HardShadow)->family,
+            TechniqueFamily::HardShadow);
+  // The longest prefix wins: msm_soft:lp:<basis> is not msm_soft.
+  EXPECT_TRUE(find_technique("msm_soft:lp:power4")->prefix());
+  try {
+    make_technique(family_rows(TechniqueFamily::SoftShadow).front()->name, TechniqueParams());
+    ADD_FAILURE() << "a soft row made a hard-shadow technique";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("soft shadows"), std::string::npos) << e.what();
+  }
+  // The list `options techniques` prints: a section per family, every row in it.
+  const std::string table = technique_table_markdown();
+  for (const TechniqueRow& row : rows)
+    EXPECT_NE(table.find("| `" + row.display_name() + "` |"), std::string::npos) << row.name;
+  EXPECT_LT(table.find("Hard shadows:"), table.find("Soft shadows:"));
+  EXPECT_LT(table.find("Soft shadows:"), table.find("Transmittance:"));
+}
+
+// Defaults are written once, in the option records: a default-made TechniqueParams holds them.
+TEST(TechniqueRegistry, DefaultParametersAreTheRecordsDefaults) {
+  const TechniqueParams params;
+  Config config(technique_option_specs());
+  config.set("csm.terms=5");
+  TechniqueParams read;
+  read_technique_options(config, read);
+  EXPECT_EQ(read.csm_terms, 5);
+  EXPECT_EQ(read.esm_c, params.esm_c);
+  EXPECT_EQ(params.esm_c, 80);
+  EXPECT_EQ(params.lvsm_layers, 4);
+  EXPECT_EQ(params.hamburger4_float_alpha, 5e-6);
+  EXPECT_EQ(default_techniques(TechniqueFamily::Transmittance).back(), ']');
 }
 
 // verify's LP for a row reads the same number of channels as the technique's map: the LP answers
@@ -51,8 +114,9 @@ TEST(TechniqueRegistry, OptionsAreDeclaredOnceAndReadIntoTheirFields) {
   std::set<std::string> keys;
   for (const auto& spec : technique_option_specs())
     EXPECT_TRUE(keys.insert(spec.name).second) << spec.name << " is declared twice";
-  for (const auto& row : technique_registry())
-    for (const TechniqueOption* o : row.options) EXPECT_TRUE(keys.count(o->spec.name)) << row.name;
+  for (const TechniqueRow* row : family_rows(TechniqueFamily::HardShadow))
+    for (const TechniqueOption* o : row->options)
+      EXPECT_TRUE(keys.count(o->spec.name)) << row->name;
   Config config(technique_option_specs());
   config.set("esm.c=33");
   config.set("lvsm.layers=3");

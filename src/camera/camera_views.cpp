@@ -8,6 +8,7 @@
 
 #include "raster/rasterizer.h"
 #include "scene/light_view.h"
+#include "techniques/registry.h"
 #include "util/eigen.h"
 #include "util/error.h"
 #include "util/progress.h"

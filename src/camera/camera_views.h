@@ -4,7 +4,7 @@
 // that faces the light becomes a receiver of that light view: projected into its shadow map
 // (nearest texel), with its own depth z_f and bias delta_f from its triangle's plane
 // (docs/reference.md §3) and the evaluation's reference (shadow/fragments.h, receiver_test), or
-// under an area light that light's shadow at the same point (soft/area_light.h). The techniques
+// under an area light that light's shadow at the same point (shadow/area_light.h). The techniques
 // then run through evaluate_technique unchanged; report/camera_images.h shades the images.
 #include <functional>
 #include <string>

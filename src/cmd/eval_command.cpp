@@ -54,7 +54,7 @@ int run_eval(const EvalOptions& options) {
   // Construct every technique once before any work: unknown names fail here, with no output.
   std::map<std::string, std::string> darkening_reason;
   for (const auto& name : techniques) {
-    check_soft_technique(name, settings.technique);
+    if (const TechniqueRow& row = shadow_row(name); row.check) row.check(name, settings.technique);
     darkening_reason[name] = technique_darkening_reason(name, settings);
   }
   DatasetDesc dataset = load_dataset(data.dataset);
@@ -69,8 +69,7 @@ int run_eval(const EvalOptions& options) {
     for (auto& [name, reason] : darkening_reason)
       reason = "the reference is an area light's shadow, which no technique bounds";
   for (const auto& name : techniques)
-    if (soft_technique_solves_lp(name) ||
-        (!is_soft_technique(name) && make_technique(name, settings.technique)->lp_factory()))
+    if (shadow_row(name).solves_lp)
       check_lp_interval(views, settings.technique.lp.lo, settings.technique.lp.hi);
   std::filesystem::create_directories(out.staging() / "histograms");
   if (run.images) std::filesystem::create_directories(out.staging() / "images");
@@ -80,7 +79,8 @@ int run_eval(const EvalOptions& options) {
     const std::string base =
         (out.staging() / "images" / (view.scene + "_" + view.view + "_")).string();
     // The reference has no error image; under an area light pcf is the hard shadow, which has.
-    const bool reference = name == "area_light" || (name == "pcf" && !(view.soft.angle_deg > 0));
+    const bool reference = name == "area_light" || (shadow_row(name).role == RowRole::Reference &&
+                                                    !(view.soft.angle_deg > 0));
     write_shadow_images(view, shadow, base + file_stem(name), reference ? 0 : run.error_scale);
   };
   for (const auto& view : views)
@@ -95,9 +95,10 @@ int run_eval(const EvalOptions& options) {
                             write_camera_images(camera, out.staging() / "cameras", run.error_scale);
                           });
 
-  // msm_soft's blocker search against its sharp bounds (docs/soft-shadows.md §3).
+  // A blocker search against its sharp bounds (docs/soft-shadows.md §3).
   std::vector<ViewBlockerAudit> audits;
-  if (std::find(techniques.begin(), techniques.end(), "msm_soft") != techniques.end())
+  if (std::any_of(techniques.begin(), techniques.end(),
+                  [](const std::string& name) { return shadow_row(name).audits_blocker; }))
     audits = audit_blocker_searches(views, settings);
   if (!audits.empty()) write_file_atomically(out / "blocker_audit.csv", blocker_audit_csv(audits));
 

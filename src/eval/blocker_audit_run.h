@@ -1,6 +1,6 @@
 #pragma once
 // msm_soft's blocker search audited on every view lit by an area light (docs/soft-shadows.md §3):
-// the rows of soft/soft_techniques.h's blocker_audit, with the view they come from.
+// the rows of techniques/soft/soft_technique.h's blocker_audit, with the view they come from.
 #include <string>
 #include <vector>
 

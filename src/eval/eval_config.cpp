@@ -236,9 +236,11 @@ EvalSettings shadow_settings_from(const Config& config, int threads) {
 
 std::vector<std::string> with_oracle_row(std::vector<std::string> techniques,
                                          const BiasParams& bias) {
-  if (bias.reference == Reference::ReceiverPlane &&
-      std::find(techniques.begin(), techniques.end(), "oracle") == techniques.end())
-    techniques.push_back("oracle");
+  if (bias.reference != Reference::ReceiverPlane) return techniques;
+  for (const TechniqueRow* row : family_rows(TechniqueFamily::HardShadow))
+    if (row->role == RowRole::BiasFloor &&
+        std::find(techniques.begin(), techniques.end(), row->name) == techniques.end())
+      techniques.push_back(row->name);
   return techniques;
 }
 

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <chrono>
 #include <limits>
+#include <stdexcept>
 
-#include "soft/soft_techniques.h"
+#include "techniques/registry.h"
+#include "techniques/soft/soft_technique.h"
 
 namespace mb {
 
@@ -13,15 +15,11 @@ namespace mb {
 const std::vector<OptionRecord<EvalRunOptions>>& eval_run_options() {
   static const std::vector<OptionRecord<EvalRunOptions>> records{
       {selects_runs(
-           {"techniques", OptionType::StringList,
-            "[pcf, vsm, esm, hamburger4, hamburger4_float, hamburger4_16bit, hausdorff4, "
-            "hamburger6, "
-            "tmsm, tmsm_float]",
-            "Techniques to evaluate: closed forms, pcf, or lp:<basis> (e.g. lp:power4, lp:trig4); "
-            "under "
-            "an area light also pcss_exact, pcss, pcss_vsm, pcss_esm, pcss_csm, msm_soft, and "
-            "msm_soft:lp:<basis>, msm_soft with Problem 1 as its final step "
-            "(docs/soft-shadows.md)."}),
+           {"techniques", OptionType::StringList, default_techniques(TechniqueFamily::HardShadow),
+            "Techniques to evaluate: the hard-shadow rows of `momentbench options techniques` "
+            "(closed "
+            "forms, pcf, or lp:<basis>, e.g. lp:power4, lp:trig4); under an area light also its "
+            "soft-shadow rows (docs/soft-shadows.md)."}),
        &EvalRunOptions::techniques},
       {measures_nothing({"images", OptionType::Boolean, "true",
                          "Write shadow and error images per view and technique."}),
@@ -56,9 +54,16 @@ void add_regions(const Fragments& f, const std::vector<double>& shadow, EvalRow&
   }
 }
 
-// pcss_exact on every view under an area light (empty on the others), with the time it took: the
-// second reference of soft techniques (EvalRow::against_pcss), and pcss_exact's own row when asked
-// for.
+// The soft-shadow row that is every soft row's second reference (RowRole::ExactReference).
+const TechniqueRow& exact_soft_row() {
+  for (const TechniqueRow* row : family_rows(TechniqueFamily::SoftShadow))
+    if (row->role == RowRole::ExactReference) return *row;
+  throw std::logic_error("no soft-shadow row is the exact reference");
+}
+
+// The exact soft row on every view under an area light (empty on the others), with the time it
+// took: the second reference of soft techniques (EvalRow::against_pcss), and that row's own when
+// asked for.
 struct ExactPcss {
   TechniqueResult result;
   double seconds = 0;
@@ -72,7 +77,7 @@ std::vector<ExactPcss> exact_pcss(const std::vector<ViewData>& views,
     const ViewData& view = views[v];
     if (!(view.soft.angle_deg > 0)) continue;
     const auto start = Clock::now();
-    SoftResult soft = soft_shadow("pcss_exact", view.map, view.fragments, view.soft,
+    SoftResult soft = soft_shadow(exact_soft_row().name, view.map, view.fragments, view.soft,
                                   settings.kernel, settings.bias, settings.soft, settings.threads);
     out[v].result.shadow = std::move(soft.shadow);
     out[v].result.failures = soft.failures;
@@ -109,7 +114,7 @@ EvalRows evaluate_techniques(const std::vector<ViewData>& views,
     for (const auto& view : views) {
       const auto start = Clock::now();
       const ExactPcss& exact = pcss[size_t(&view - views.data())];
-      const bool known = name == "pcss_exact" && !exact.result.shadow.empty();
+      const bool known = name == exact_soft_row().name && !exact.result.shadow.empty();
       if (known) bar.advance(view.fragments.size());
       TechniqueResult result =
           known ? exact.result : evaluate_technique(view, name, settings, &bar);

@@ -5,10 +5,11 @@
 #include <algorithm>
 #include <limits>
 
-#include "eval/lp_fragment_solver.h"
+#include "eval/lp_view_solver.h"
 #include "lp/solution.h"
 #include "raster/render_view.h"
 #include "shadow/moment_map.h"
+#include "techniques/registry.h"
 #include "util/error.h"
 #include "util/number_text.h"
 #include "util/parallel_errors.h"
@@ -131,14 +132,20 @@ void check_lp_interval(const std::vector<ViewData>& views, double lo, double hi)
   }
 }
 
+const TechniqueRow& shadow_row(const std::string& name) {
+  if (const TechniqueRow* row = find_technique(name, TechniqueFamily::SoftShadow)) return *row;
+  return technique_row(name, TechniqueFamily::HardShadow);
+}
+
 double technique_darkening_bound(const std::string& name, const EvalSettings& settings) {
-  if (is_soft_technique(name)) return std::numeric_limits<double>::infinity();
+  if (shadow_row(name).family != TechniqueFamily::HardShadow)
+    return std::numeric_limits<double>::infinity();
   return make_technique(name, settings.technique)->darkening_bound();
 }
 
 std::string technique_darkening_reason(const std::string& name, const EvalSettings& settings) {
-  if (is_soft_technique(name))
-    return "a soft technique estimates its penumbra (docs/soft-shadows.md §2)";
+  const TechniqueRow& row = shadow_row(name);
+  if (row.family != TechniqueFamily::HardShadow) return row.unproven_reason;
   return make_technique(name, settings.technique)->darkening_reason();
 }
 
@@ -146,7 +153,7 @@ TechniqueResult evaluate_technique(const ViewData& view, const std::string& tech
                                    const EvalSettings& settings, ProgressBar* progress) {
   const Fragments& f = view.fragments;
   TechniqueResult result;
-  if (is_soft_technique(technique_name)) {
+  if (shadow_row(technique_name).family == TechniqueFamily::SoftShadow) {
     SoftResult soft =
         soft_shadow(technique_name, view.map, f, view.soft, settings.kernel, settings.bias,
                     settings.soft, settings.threads, settings.technique);

@@ -5,10 +5,11 @@
 
 #include "scene/dataset.h"
 #include "scene/scene.h"
+#include "shadow/area_light.h"
 #include "shadow/fragments.h"
 #include "shadow/gaussian_kernel.h"
-#include "soft/area_light.h"
-#include "soft/soft_techniques.h"
+#include "techniques/registry.h"
+#include "techniques/soft/soft_technique.h"
 #include "techniques/technique.h"
 #include "util/progress.h"
 
@@ -74,8 +75,10 @@ struct TechniqueResult {
   size_t fallbacks = 0;  // Technique::fallbacks
 };
 
+// The row of a shadow technique (hard or soft) `name`; InputError (as make_technique's) otherwise.
+const TechniqueRow& shadow_row(const std::string& name);
 // The technique's proven darkening bound and the reason it has none (Technique::darkening_bound):
-// a soft technique (soft/soft_techniques.h) claims none.
+// a soft technique claims none (its row's reason).
 double technique_darkening_bound(const std::string& name, const EvalSettings& settings);
 std::string technique_darkening_reason(const std::string& name, const EvalSettings& settings);
 

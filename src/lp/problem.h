@@ -68,7 +68,7 @@ struct Problem {
   bool behind = false;
   // Any other linear objective: when not empty, column j's cost (the grid's, then the extra
   // points'), in place of the indicator. The blocker bounds' Dinkelbach steps
-  // (soft/blocker_bounds.h) minimise the blockers' depth minus a ratio this way, on Problem 1's
+  // (lp/blocker_bounds.h) minimise the blockers' depth minus a ratio this way, on Problem 1's
   // feasible set.
   std::vector<double> objective;
 

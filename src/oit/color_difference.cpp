@@ -19,7 +19,7 @@ struct LabConverter::Handles {
 
 LabConverter::LabConverter() : handles_(std::make_unique<Handles>()) {
   // sRGB's primaries and D65 white (IEC 61966-2-1) with a linear tone curve: the deep frames'
-  // colours are linear (oit/deep_frame.h), so no transfer function is applied before CIELAB.
+  // colours are linear (raster/deep_frame.h), so no transfer function is applied before CIELAB.
   const cmsCIExyY white = {0.3127, 0.3290, 1.0};
   const cmsCIExyYTRIPLE primaries = {{0.64, 0.33, 1.0}, {0.30, 0.60, 1.0}, {0.15, 0.06, 1.0}};
   cmsToneCurve* linear = cmsBuildGamma(nullptr, 1.0);

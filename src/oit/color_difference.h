@@ -5,7 +5,7 @@
 #include <array>
 #include <memory>
 
-#include "oit/deep_frame.h"
+#include "raster/deep_frame.h"
 
 namespace mb {
 

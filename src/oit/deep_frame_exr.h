@@ -7,7 +7,7 @@
 // rounding of the premultiplication.
 #include <string>
 
-#include "oit/deep_frame.h"
+#include "raster/deep_frame.h"
 
 namespace mb {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "oit/color_difference.h"
-#include "oit/oit_technique.h"
+#include "techniques/oit/oit_technique.h"
 
 namespace mb {
 
@@ -42,7 +42,7 @@ struct OitStats {
 };
 
 // A pixel's error: `reference` and `transmittance` are the exact and the technique's weights
-// (T_ref and the transmittance the composite used, oit_technique.h effective_transmittance);
+// (T_ref and the transmittance the composite used, techniques/oit/oit_technique.h effective_transmittance);
 // `reference_color` the exact composite and `reference_lab` its CIELAB value (computed once per
 // pixel, not per technique), `color` the technique's composite.
 PixelError pixel_error(const PixelFragments& px, std::span<const double> reference,

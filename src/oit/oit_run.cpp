@@ -5,6 +5,7 @@
 #include <chrono>
 #include <limits>
 
+#include "techniques/registry.h"
 #include "util/error.h"
 #include "util/parallel_errors.h"
 #include "util/progress.h"
@@ -15,12 +16,13 @@ namespace mb {
 // measured number (OptionEffect, docs/sweeps.md "Identity").
 const std::vector<OptionRecord<OitRunOptions>>& oit_run_options() {
   static const std::vector<OptionRecord<OitRunOptions>> records{
-      {selects_runs(
-           {"techniques", OptionType::StringList,
-            "[exact, unsorted, wboit, mboit_power4, mboit_power6, mboit_power8, mboit_trig2, "
-            "mboit_trig3, mboit_trig4, lp:power4]",
-            "Transparency techniques (docs/transparency.md §3): exact, unsorted, wboit, the MBOIT "
-            "closed forms, or lp:<basis> on the warped depth (e.g. lp:power4, lp:trig4)."}),
+      {selects_runs({"techniques", OptionType::StringList,
+                     default_techniques(TechniqueFamily::Transmittance),
+                     "Transparency techniques (docs/transparency.md §3): the transmittance rows of "
+                     "`momentbench "
+                     "options techniques` (the sorted composite, unsorted, wboit, the MBOIT closed "
+                     "forms, or "
+                     "lp:<basis> on the warped depth, e.g. lp:power4, lp:trig4)."}),
        &OitRunOptions::techniques},
       {{"oit.beta", OptionType::Number, "0.25",
         "MBOIT's overestimation: A = A- + beta (A+ - A-) from the canonical representation "

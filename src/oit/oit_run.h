@@ -7,9 +7,9 @@
 
 #include "eval/evaluation.h"
 #include "oit/color_difference.h"
-#include "oit/deep_frame.h"
+#include "raster/deep_frame.h"
 #include "oit/oit_metrics.h"
-#include "oit/oit_technique.h"
+#include "techniques/oit/oit_technique.h"
 #include "scene/dataset.h"
 #include "util/option_record.h"
 

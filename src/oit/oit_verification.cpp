@@ -4,8 +4,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "oit/oit_technique.h"
 #include "scene/procedural.h"
+#include "techniques/oit/oit_technique.h"
+#include "techniques/registry.h"
 #include "util/error.h"
 #include "util/number_text.h"
 
@@ -31,43 +32,13 @@ RandomPixel random_pixel(SeededRandom& rng, int count) {
   return p;
 }
 
-// The row's LP: basis, interval and tolerance (docs/transparency.md §6).
-OitVerifyRow row_for(const std::string& technique) {
-  OitVerifyRow row;
-  row.technique = technique;
-  if (technique == "mboit_power4" || technique == "mboit_power6") {
-    // Hamburger's bound is invariant under the affine map t = 2u - 1, so the LP takes powers of u.
-    // Six moments: z^6 on a wider interval is numerically dependent with the constant, and the
-    // closed form loses digits on near-singular Hankel matrices (docs/reference.md §4).
-    const bool six = technique == "mboit_power6";
-    row.lp_basis = six ? "lp:power6" : "lp:power4";
-    row.kind = "equal";
-    row.lo = six ? -20 : -400, row.hi = six ? 21 : 401;
-    row.tolerance = six ? 1e-5 : 1e-6;
-    return row;
-  }
-  const double zone = OitParams{}.wrapping_zone, s = 2 * std::numbers::pi - zone;
-  row.lp_basis = mboit_trig_lp_basis(technique == "mboit_trig2" ? 2 : 3, zone);
-  row.kind = "never below";
-  row.lo = 0, row.hi = 2 * std::numbers::pi / s;  // one period, the wrapping zone behind
-  row.tolerance = 1e-7;
-  return row;
-}
-
 }  // namespace
 
 std::vector<std::string> oit_verify_names() {
-  return {"mboit_power4", "mboit_power6", "mboit_trig2", "mboit_trig3"};
-}
-
-std::string mboit_trig_lp_basis(int moments, double wrapping_zone) {
-  const double s = 2 * std::numbers::pi - wrapping_zone;
-  std::string basis = "lp:";
-  for (int k = 1; k <= moments; ++k) {
-    const std::string arg = std::to_string(k) + "*" + round_trip(s) + "*z";
-    basis += (k > 1 ? "; " : "") + std::string("cos(") + arg + "); sin(" + arg + ")";
-  }
-  return basis;
+  std::vector<std::string> names;
+  for (const TechniqueRow* row : family_rows(TechniqueFamily::Transmittance))
+    if (row->oit_verify) names.push_back(row->name);
+  return names;
 }
 
 void check_oit_verify_technique(const std::string& technique) {
@@ -81,8 +52,15 @@ void check_oit_verify_technique(const std::string& technique) {
 
 OitVerifyRow verify_mboit(const std::string& technique, int pixels, uint64_t seed) {
   check_oit_verify_technique(technique);
-  OitVerifyRow row = row_for(technique);
   OitParams closed, lp;
+  const OitVerifyRecipe recipe =
+      technique_row(technique, TechniqueFamily::Transmittance).oit_verify(closed);
+  OitVerifyRow row;
+  row.technique = technique;
+  row.lp_basis = recipe.lp_basis;
+  row.kind = recipe.kind;
+  row.lo = recipe.lo, row.hi = recipe.hi;
+  row.tolerance = recipe.tolerance;
   closed.beta = 0;
   lp.lp.lp = lp::Discretization{row.lo, row.hi, 256, false};
   lp.lp.lp.continuous = true;

@@ -20,15 +20,10 @@ struct OitVerifyRow {
   bool passed() const { return beyond == 0 && lp_failures == 0; }
 };
 
-// mboit_power4, mboit_power6, mboit_trig2, mboit_trig3 (InputError naming the valid ones
-// otherwise: eight power and four trigonometric moments exceed the certified LP engine's seven
-// functions).
+// The transmittance rows with a verify recipe (TechniqueRow::oit_verify), in registry order;
+// InputError naming them for any other.
 std::vector<std::string> oit_verify_names();
 void check_oit_verify_technique(const std::string& technique);
 OitVerifyRow verify_mboit(const std::string& technique, int pixels, uint64_t seed);
-
-// The LP technique with the basis of `moments` trigonometric moments as MBOIT takes them on the
-// warped depth u: "lp:cos(1*s*z); sin(1*s*z); ...", s = 2 pi - wrapping_zone (§5).
-std::string mboit_trig_lp_basis(int moments, double wrapping_zone);
 
 }  // namespace mb

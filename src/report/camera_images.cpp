@@ -9,6 +9,7 @@
 
 #include "report/colour_bar.h"
 #include "report/eval_report.h"
+#include "techniques/registry.h"
 #include "util/image_writer.h"
 
 namespace mb {
@@ -100,7 +101,7 @@ void write_camera_images(const CameraView& view, const std::vector<std::string>&
     // The reference has no difference: PCF, or under an area light its shadow (pcf is then the
     // hard shadow, which has).
     const bool soft = view.receivers.soft.angle_deg > 0;
-    if (!(names[k] == "area_light" || (names[k] == "pcf" && !soft)))
+    if (!(names[k] == "area_light" || (technique_role(names[k]) == RowRole::Reference && !soft)))
       write_with_colour_bar(base + "_" + file_stem(names[k]) + "_diff.png", diff, w, h, bar);
     const int x0 = int(k % columns) * cell_w, y0 = int(k / columns) * cell_h;
     const auto paste = [&](const std::vector<float>& pixels, int y) {

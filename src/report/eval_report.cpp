@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "report/darkening.h"
+#include "techniques/registry.h"
 #include "util/number_text.h"
 
 namespace mb {
@@ -141,7 +142,8 @@ std::string summary_lines(const EvalReportContext& ctx, const std::vector<EvalRo
   for (const auto& r : overall) {
     headline << (headline.tellp() > 0 ? ", " : "") << r.technique << " "
              << percent_text(r.stats.mean()) << " %";
-    if (r.technique != "pcf" && r.technique != "oracle" &&
+    if (technique_role(r.technique) != RowRole::Reference &&
+        technique_role(r.technique) != RowRole::BiasFloor &&
         (!lowest || r.stats.mean() < lowest->stats.mean()))
       lowest = &r;
   }
@@ -203,7 +205,8 @@ EvalReport render_eval_report(const EvalReportContext& ctx, const std::vector<Ev
   for (const auto& line : ctx.non_default) report << "- option " << line << "\n";
   report << "\n" << protocol_text(ctx.reference) << "\n\n";
   for (const auto& r : overall)
-    if (r.technique == "oracle" && ctx.reference == Reference::ReceiverPlane)
+    if (technique_role(r.technique) == RowRole::BiasFloor &&
+        ctx.reference == Reference::ReceiverPlane)
       report << "**Oracle floor: " << percent_text(r.stats.mean())
              << " %.** The error of F_Z(z_f - delta_f) itself against the receiver-plane "
                 "reference: the part of every "
@@ -227,7 +230,7 @@ EvalReport render_eval_report(const EvalReportContext& ctx, const std::vector<Ev
   for (const auto& r : overall)
     if (r.stats.failures)
       report << "\n**" << r.technique << "**: " << r.stats.failures << " fragments failed; "
-             << (r.technique.find("lp:") != std::string::npos
+             << (technique_solves_lp(r.technique)
                      ? "their LPs had no certified answer (shown lit); another lp.grid or "
                        "lp.backend may solve them.\n"
                      : "raise the technique's alpha, or the LP grid, and re-run.\n");

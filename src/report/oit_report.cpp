@@ -11,6 +11,7 @@
 #include "eval/error_stats.h"
 #include "report/colour_bar.h"
 #include "report/eval_report.h"
+#include "techniques/registry.h"
 #include "util/image_writer.h"
 #include "util/number_text.h"
 
@@ -51,7 +52,8 @@ std::string summary(const OitReportContext& ctx, const std::vector<OitRow>& over
   for (const auto& r : overall) {
     headline << (headline.tellp() > 0 ? ", " : "") << r.technique << " "
              << format_number(r.stats.delta_e_mean(), "%.3f");
-    if (r.technique != "exact" && (!best || r.stats.delta_e_mean() < best->stats.delta_e_mean()))
+    if (technique_role(r.technique) != RowRole::Reference &&
+        (!best || r.stats.delta_e_mean() < best->stats.delta_e_mean()))
       best = &r;
   }
   s << "**Summary.** " << overall.size() << " techniques on dataset " << ctx.dataset << ": "

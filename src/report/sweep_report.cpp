@@ -14,6 +14,8 @@
 #include "shadow/fragments.h"
 #include "sweep/candidates.h"
 #include "sweep/run_identity.h"
+#include "techniques/lp_technique.h"
+#include "techniques/registry.h"
 #include "util/error.h"
 #include "util/number_text.h"
 
@@ -33,6 +35,12 @@ std::string candidate_name(const std::string& set) {
   std::string name;
   for (const auto& f : named_basis_set(set)) name += (name.empty() ? "" : "; ") + f;
   return name;
+}
+
+// The hard-shadow reference row (pcf's role): it has no rank among the candidates.
+bool is_hard_reference(const std::string& name) {
+  const TechniqueRow* row = find_technique(name, TechniqueFamily::HardShadow);
+  return row && row->role == RowRole::Reference;
 }
 
 const ResultRow* find_row(const std::vector<ResultRow>& rows, const std::string& name) {
@@ -494,7 +502,12 @@ std::string sweep_report_markdown(const std::vector<SweepSeries>& series,
              : protocol_text(meta["reference"] == "receiver_plane" ? Reference::ReceiverPlane
                                                                    : Reference::Biased))
      << "\n\n";
-  if (const ResultRow* oracle = find_row(main.references, "oracle");
+  const auto oracle_of = [](const ResultRow& r) {
+    const TechniqueRow* row = find_technique(r.name, TechniqueFamily::HardShadow);
+    return row && row->role == RowRole::BiasFloor;
+  };
+  const auto oracle_it = std::find_if(main.references.begin(), main.references.end(), oracle_of);
+  if (const ResultRow* oracle = oracle_it == main.references.end() ? nullptr : &*oracle_it;
       oracle && meta["reference"] == "receiver_plane")
     md << "**Oracle floor: " << pct(oracle->mean)
        << ".** The error of F_Z(z_f - delta_f) itself against the "
@@ -522,7 +535,8 @@ std::string sweep_report_markdown(const std::vector<SweepSeries>& series,
   for (const auto& r : main.references) {
     md << "| " << r.name << " | " << percent_text(r.mean) << " | " << percent_text(r.leak) << " | "
        << darkening_text(r.dark, r.max_dark, r.darkening_bound) << " | "
-       << (r.name == "pcf" ? std::string("-") : std::to_string(better_than(main, r.mean) + 1))
+       << (is_hard_reference(r.name) ? std::string("-")
+                                     : std::to_string(better_than(main, r.mean) + 1))
        << " |\n";
     darkening.push_back({r.name, r.dark, r.max_dark, r.darkening_bound, r.darkening_reason});
   }

@@ -4,6 +4,7 @@
 #include <set>
 
 #include "eval/error_stats.h"
+#include "techniques/registry.h"
 #include "util/number_text.h"
 
 namespace mb {
@@ -85,7 +86,7 @@ void finding_closed_forms(std::ostringstream& md, const SweepSeries& main) {
   md << "### The closed forms and references among the candidates\n\n";
   bool any = false;
   for (const auto& r : main.references) {
-    if (r.name == "exact") continue;
+    if (technique_role(r.name) == RowRole::Reference) continue;
     any = true;
     md << "- " << r.name << ": " << pct(r.mean) << ", " << rank_text(main, r.mean) << "\n";
   }

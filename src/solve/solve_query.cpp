@@ -243,7 +243,8 @@ json solve_one(lp::Backend& backend, FactoryCache& factories,
 // of `verify`; alpha >= 0 replaces every solver's default moment bias.
 json solve_closed_form(const std::string& name, double alpha, const std::vector<double>& moments,
                        double zf) {
-  if (name == "pcf" || name.rfind("lp:", 0) == 0)
+  if (const TechniqueRow* row = find_technique(name, TechniqueFamily::HardShadow);
+      row && (row->role == RowRole::Reference || row->solves_lp))
     throw InputError("technique: '" + name +
                      "' is not a closed form of the moments (use basis for an LP)");
   TechniqueParams params;

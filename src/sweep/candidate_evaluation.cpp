@@ -1,6 +1,6 @@
 #include "sweep/candidate_evaluation.h"
 
-#include "eval/lp_fragment_solver.h"
+#include "eval/lp_view_solver.h"
 
 namespace mb {
 

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "techniques/lp_technique.h"
+#include "techniques/registry.h"
 #include "util/parallel_errors.h"
 
 namespace mb {
@@ -202,7 +203,7 @@ class OitTarget : public SweepTarget {
 
   // Runs technique `name` on `pixels` (rows in parallel, each pixel on its own, so the answers are
   // the same for any thread count), its transmittance per fragment into t; with `effective`, the
-  // weight the composite uses (oit_technique.h). Returns the technique's failures.
+  // weight the composite uses (techniques/oit/oit_technique.h). Returns the technique's failures.
   size_t for_each_pixel(size_t v, const std::vector<uint32_t>& pixels, const std::string& name,
                         bool effective, std::vector<double>& t) const {
     const DeepFrame& frame = frames_[v].frame;
@@ -262,12 +263,10 @@ class OitTarget : public SweepTarget {
 
   // What a reference technique proves about transmittance below T_ref.
   std::pair<double, std::string> reference_bound(const std::string& name) const {
-    if (name == "exact") return {0, ""};
-    if (name.rfind("lp:", 0) == 0) return {candidate_darkening_bound(), kRoundingReason};
-    const double any = std::numeric_limits<double>::infinity();
-    if (name == "unsorted") return {any, "submission order: fragments behind count as in front"};
-    if (name == "wboit") return {any, "weighted blended OIT: depth weights, no bound"};
-    return {any, "MBOIT: beta > 0 and the normalisation Gamma (docs/transparency.md §3)"};
+    const TechniqueRow& row = technique_row(name, TechniqueFamily::Transmittance);
+    if (row.solves_lp) return {candidate_darkening_bound(), kRoundingReason};
+    if (row.unproven_reason.empty()) return {0, ""};
+    return {std::numeric_limits<double>::infinity(), row.unproven_reason};
   }
 
   const std::vector<SceneFrame>& frames_;

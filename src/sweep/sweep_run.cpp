@@ -21,6 +21,7 @@
 #include "sweep/sweep_directory.h"
 #include "sweep/sweep_plan.h"
 #include "techniques/lp_technique.h"
+#include "techniques/registry.h"
 #include "techniques/technique.h"
 #include "util/error.h"
 #include "util/number_text.h"
@@ -34,6 +35,14 @@ namespace mb {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// The transmittance rows oit runs by default, with the six-moment LP beside the candidates'.
+std::string oit_reference_default() {
+  std::string list;
+  for (const TechniqueRow* row : family_rows(TechniqueFamily::Transmittance))
+    if (row->default_run && !row->prefix()) list += row->name + ", ";
+  return "[" + list + "lp:power6]";
+}
 
 // The catalog, the sample and the reference lists choose which candidates and rows a sweep
 // measures, never a row's number (OptionEffect::Selects): a resume and a merge keep them, the
@@ -69,9 +78,7 @@ const std::vector<OptionRecord<SweepSettings>>& candidate_options() {
         {"shadows", "transparency"}},
        &SweepSettings::target},
       {selects_runs(
-           {"oit_references", OptionType::StringList,
-            "[exact, unsorted, wboit, mboit_power4, mboit_power6, mboit_power8, mboit_trig2, "
-            "mboit_trig3, mboit_trig4, lp:power6]",
+           {"oit_references", OptionType::StringList, oit_reference_default(),
             "target transparency: oit techniques evaluated once on the same frames, for the report "
             "(MBOIT at oit.beta, lp:<basis> at lp.beta)."}),
        &SweepSettings::oit_references},

@@ -5,7 +5,7 @@
 #include <numbers>
 
 #include "moments/chebyshev.h"
-#include "techniques/technique.h"
+#include "techniques/hard_rows.h"
 
 namespace mb {
 
@@ -42,10 +42,37 @@ class CsmTechnique : public Technique {
   double damping_;
 };
 
-}  // namespace
+using P = TechniqueParams;
 
-std::unique_ptr<Technique> make_csm(const TechniqueParams& p) {
-  return std::make_unique<CsmTechnique>(p.csm_terms, p.csm_damping);
+const TechniqueOption kCsmTerms{
+    {"csm.terms", OptionType::Integer, "8",
+     "CSM Fourier terms M (2M channels: cos and sin of (2k - 1) pi z).", 1, 16},
+    &P::csm_terms};
+const TechniqueOption kCsmDamping{
+    {"csm.damping", OptionType::Number, "2",
+     "CSM ringing suppression: term k scaled by exp(-damping (k/M)^2).", 0, 100},
+    &P::csm_damping};
+
+std::vector<std::string> csm_lp_basis(const P& p) {
+  return csm_channels(p.csm_terms);
 }
+
+std::vector<TechniqueRow> rows() {
+  return {
+      {.name = "csm",
+       .rank = 110,
+       .summary = "convolution shadow maps: a damped Fourier series of the test",
+       .storage = "double",
+       .bound = std::string(kNotProven) + ": truncation rings (Gibbs)",
+       .options = {&kCsmTerms, &kCsmDamping},
+       .make = [](const std::string&, const P& p) -> std::unique_ptr<Technique> {
+         return std::make_unique<CsmTechnique>(p.csm_terms, p.csm_damping);
+       },
+       .verify = VerifyRecipe{.judge = VerifyRecipe::Judge::Exceedance, .lp_basis = csm_lp_basis}}};
+}
+
+const TechniqueRegistration kRegistered(rows);
+
+}  // namespace
 
 }  // namespace mb

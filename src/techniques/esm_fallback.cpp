@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "moments/chebyshev.h"
-#include "techniques/technique.h"
+#include "techniques/hard_rows.h"
 #include "util/number_text.h"
 
 namespace mb {
@@ -84,15 +84,49 @@ class EsmFallbackTechnique : public Technique {
   size_t fallbacks_ = 0;
 };
 
-}  // namespace
+using P = TechniqueParams;
 
-std::unique_ptr<Technique> make_esm_zmax(const TechniqueParams& p) {
-  return std::make_unique<EsmFallbackTechnique>("esm_zmax", EsmClassifier::ZMax, p.esm_c,
-                                                p.esm_zmax_offset, p.esm_threshold);
+const TechniqueOption kEsmZmaxOffset{
+    {"esm.zmax_offset", OptionType::Number, "0.01",
+     "esm_zmax: a fragment fails when the kernel's deepest texel lies beyond z_f plus this offset "
+     "(seed 002 §3.3 gives no value; 0.01 of the depth range clears a receiver's own sloped "
+     "plane).",
+     0, 1},
+    &P::esm_zmax_offset};
+const TechniqueOption kEsmThreshold{
+    {"esm.threshold", OptionType::Number, "0.01",
+     "ESM with the threshold classifier: a fragment fails when its filtered ESM value exceeds 1 + "
+     "this epsilon (seed 002 §3.3 gives no value).",
+     0, 1e6},
+    &P::esm_fail_threshold};
+
+template <EsmClassifier kClassifier>
+std::unique_ptr<Technique> make(const std::string& name, const P& p) {
+  return std::make_unique<EsmFallbackTechnique>(name, kClassifier, p.esm_c, p.esm_zmax_offset,
+                                                p.esm_fail_threshold);
 }
-std::unique_ptr<Technique> make_esm_threshold(const TechniqueParams& p) {
-  return std::make_unique<EsmFallbackTechnique>("esm_threshold", EsmClassifier::Threshold, p.esm_c,
-                                                p.esm_zmax_offset, p.esm_threshold);
+
+std::vector<TechniqueRow> rows() {
+  const std::string bound = std::string(kNotProven) + ": the fall-back's 2x2 test";
+  return {
+      {.name = "esm_zmax",
+       .rank = 40,
+       .summary = "ESM, falling back to a 2x2 custom PCF where the kernel's z_max fails (seed 002)",
+       .storage = "double + z_max",
+       .bound = bound,
+       .options = {&kEsmC, &kEsmZmaxOffset},
+       .make = make<EsmClassifier::ZMax>},
+      {.name = "esm_threshold",
+       .rank = 50,
+       .summary = "ESM, falling back to a 2x2 custom PCF where its value exceeds 1 + eps",
+       .storage = "double",
+       .bound = bound,
+       .options = {&kEsmC, &kEsmThreshold},
+       .make = make<EsmClassifier::Threshold>}};
 }
+
+const TechniqueRegistration kRegistered(rows);
+
+}  // namespace
 
 }  // namespace mb

@@ -4,7 +4,7 @@
 #include <limits>
 
 #include "moments/chebyshev.h"
-#include "techniques/technique.h"
+#include "techniques/hard_rows.h"
 #include "util/number_text.h"
 
 namespace mb {
@@ -55,11 +55,74 @@ class EvsmTechnique : public Technique {
   double c_positive_, c_negative_;
 };
 
-}  // namespace
+using P = TechniqueParams;
 
-std::unique_ptr<Technique> make_evsm(const std::string& name, const TechniqueParams& p) {
-  return std::make_unique<EvsmTechnique>(name, name[4] == '4', name.size() > 5, p.evsm_c_positive,
-                                         p.evsm_c_negative);
+const TechniqueOption kEvsmCPositive{
+    {"evsm.c_positive", OptionType::Number, "40",
+     "EVSM exponent of the positive warp exp(c z) (exp(2 c z) must fit float32 for "
+     "evsm*_float: c <= 44).",
+     1e-6, 300},
+    &P::evsm_c_positive};
+const TechniqueOption kEvsmCNegative{{"evsm.c_negative", OptionType::Number, "5",
+                                      "EVSM4 exponent of the negative warp -exp(-c z).", 1e-6, 300},
+                                     &P::evsm_c_negative};
+
+template <bool kFour, bool kFloat>
+std::unique_ptr<Technique> make(const std::string& name, const P& p) {
+  return std::make_unique<EvsmTechnique>(name, kFour, kFloat, p.evsm_c_positive, p.evsm_c_negative);
 }
+
+// verify's LP: the warps scaled by their values at z = 1, so that the LP's columns stay <= 1
+// (esm.cpp).
+std::vector<std::string> evsm2_basis(const P& p) {
+  return {"exp(" + round_trip(p.evsm_c_positive) + "*(z-1))",
+          "exp(" + round_trip(2 * p.evsm_c_positive) + "*(z-1))"};
+}
+std::vector<std::string> evsm4_basis(const P& p) {
+  std::vector<std::string> functions = evsm2_basis(p);
+  functions.push_back("-exp(-" + round_trip(p.evsm_c_negative) + "*z)");
+  functions.push_back("exp(-" + round_trip(2 * p.evsm_c_negative) + "*z)");
+  return functions;
+}
+
+std::vector<TechniqueRow> rows() {
+  const std::string float_bound =
+      std::string(kNotProven) + ": the variance of exp(2 c z) cancels in float32";
+  return {
+      {.name = "evsm2",
+       .rank = 60,
+       .summary = "exponential VSM, positive warp exp(c z)",
+       .storage = "double",
+       .bound = kProvenBound,
+       .options = {&kEvsmCPositive},
+       .make = make<false, false>,
+       .verify = VerifyRecipe{.judge = VerifyRecipe::Judge::LowerBound, .lp_basis = evsm2_basis}},
+      {.name = "evsm4",
+       .rank = 70,
+       .summary = "exponential VSM, both warps, the larger bound",
+       .storage = "double",
+       .bound = kProvenBound,
+       .options = {&kEvsmCPositive, &kEvsmCNegative},
+       .make = make<true, false>,
+       .verify = VerifyRecipe{.judge = VerifyRecipe::Judge::LowerBound, .lp_basis = evsm4_basis}},
+      {.name = "evsm2_float",
+       .rank = 80,
+       .summary = "evsm2 with float32 moments",
+       .storage = "float32",
+       .bound = float_bound,
+       .options = {&kEvsmCPositive},
+       .make = make<false, true>},
+      {.name = "evsm4_float",
+       .rank = 90,
+       .summary = "evsm4 with float32 moments",
+       .storage = "float32",
+       .bound = float_bound,
+       .options = {&kEvsmCPositive, &kEvsmCNegative},
+       .make = make<true, true>}};
+}
+
+const TechniqueRegistration kRegistered(rows);
+
+}  // namespace
 
 }  // namespace mb

@@ -11,7 +11,7 @@
 #include <numbers>
 #include <vector>
 
-#include "techniques/technique.h"
+#include "techniques/hard_rows.h"
 
 namespace mb {
 
@@ -78,10 +78,30 @@ class FomTechnique : public Technique {
   std::vector<double> a_, b_;
 };
 
-}  // namespace
+const TechniqueOption kFomTerms{
+    {"fom.terms", OptionType::Integer, "3",
+     "Fourier opacity mapping: terms M of the absorbance's series (2M + 1 coefficients; 3 fills "
+     "two "
+     "RGBA targets less one channel, the storage of two 4MSM maps; Jansen & Bavoil 2010 vary it).",
+     1, 16},
+    &TechniqueParams::fom_terms};
 
-std::unique_ptr<Technique> make_fom(const TechniqueParams& p) {
-  return std::make_unique<FomTechnique>(p.fom_terms);
+std::vector<TechniqueRow> rows() {
+  return {
+      {.name = "fom",
+       .rank = 120,
+       .summary = "Fourier opacity mapping (Jansen & Bavoil 2010): a Fourier series of the "
+                  "absorbance, for translucent occluders (seed 004 §4.1)",
+       .storage = "double",
+       .bound = std::string(kNotProven) + ": truncation rings, and filtering averages absorbance",
+       .options = {&kFomTerms},
+       .make = [](const std::string&, const TechniqueParams& p) -> std::unique_ptr<Technique> {
+         return std::make_unique<FomTechnique>(p.fom_terms);
+       }}};
 }
+
+const TechniqueRegistration kRegistered(rows);
+
+}  // namespace
 
 }  // namespace mb

@@ -8,7 +8,7 @@
 #include "moments/hamburger.h"
 #include "moments/hausdorff.h"
 #include "techniques/closed_form.h"
-#include "techniques/technique.h"
+#include "techniques/hard_rows.h"
 
 namespace mb {
 
@@ -64,29 +64,97 @@ class PowerMomentTechnique : public ClosedFormTechnique {
   double alpha_, beta_;
 };
 
+using P = TechniqueParams;
+
+const TechniqueOption kHamburger4Alpha{
+    {"hamburger4.alpha", OptionType::Number, "1e-10", "Moment bias of Hamburger 4MSM in double."},
+    &P::hamburger4_alpha,
+    true};
+const TechniqueOption kHamburger4FloatAlpha{{"hamburger4_float.alpha", OptionType::Number, "5e-6",
+                                             "Moment bias of Hamburger 4MSM in float32."},
+                                            &P::hamburger4_float_alpha,
+                                            true};
+const TechniqueOption kHamburger416bitAlpha{{"hamburger4_16bit.alpha", OptionType::Number, "3e-5",
+                                             "Moment bias of Hamburger 4MSM from 16-bit maps."},
+                                            &P::hamburger4_16bit_alpha,
+                                            true};
+const TechniqueOption kHausdorff4Alpha{
+    {"hausdorff4.alpha", OptionType::Number, "1e-10", "Moment bias of Hausdorff 4MSM."},
+    &P::hausdorff4_alpha,
+    true};
+const TechniqueOption kHamburger6Alpha{
+    {"hamburger6.alpha", OptionType::Number, "1e-10",
+     "Moment bias of six-moment Hamburger MSM. Not a proven bound at any alpha (rounding of six "
+     "moments); measured over-darkening: up to 0.23 at 1e-10, none beyond alpha at 1e-8, which "
+     "costs 0.33 pp of mean error on the default dataset (FINDINGS §7d)."},
+    &P::hamburger6_alpha,
+    true};
+
+// A row's technique: its solver, storage and moment bias.
+template <PowerSolver kSolver, MomentStorage (*kStorage)(), double P::*kAlpha>
+std::unique_ptr<Technique> make(const std::string& name, const P& p) {
+  return std::make_unique<PowerMomentTechnique>(name, kSolver, kStorage(), p.*kAlpha, p.beta);
+}
+
+std::vector<TechniqueRow> rows() {
+  const VerifyRecipe on_r{.lp_basis = fixed_lp_basis<kPower4>, .lo = -4, .hi = 5, .on_r = true};
+  return {
+      {.name = "hamburger4",
+       .rank = 130,
+       .summary = "4MSM on R (Hamburger), double",
+       .storage = "double",
+       .bound = kAlphaBound,
+       .options = {&kHamburger4Alpha, &kHamburgerBeta},
+       .default_run = true,
+       .make = make<PowerSolver::Hamburger4, double_storage, &P::hamburger4_alpha>,
+       .verify = on_r},
+      {.name = "hamburger4_float",
+       .rank = 140,
+       .summary = "4MSM on R, float32 maps and arithmetic",
+       .storage = "float32",
+       .bound = std::string(kNotProven) + ": rounding of the moments",
+       .options = {&kHamburger4FloatAlpha, &kHamburgerBeta},
+       .default_run = true,
+       .make = make<PowerSolver::Hamburger4Float, float32_storage, &P::hamburger4_float_alpha>,
+       .verify = storage_box(fixed_lp_basis<kPower4>, -4, 5, true, &P::hamburger4_float_alpha)},
+      {.name = "hamburger4_16bit",
+       .rank = 150,
+       .summary = "4MSM on R from 16-bit maps with the transform theta_4",
+       .storage = "unorm16",
+       .bound = std::string(kNotProven) + ": 16-bit rounding of the moments",
+       .options = {&kHamburger416bitAlpha, &kHamburgerBeta},
+       .default_run = true,
+       .make = make<PowerSolver::Hamburger4, unorm16_power4_storage, &P::hamburger4_16bit_alpha>,
+       .verify = storage_box(fixed_lp_basis<kPower4>, -4, 5, true, &P::hamburger4_16bit_alpha)},
+      {.name = "hausdorff4",
+       .rank = 160,
+       .summary = "4MSM on [0, 1] (Hausdorff), double",
+       .storage = "double",
+       .bound = kAlphaBound,
+       .options = {&kHausdorff4Alpha, &kHamburgerBeta},
+       .default_run = true,
+       .make = make<PowerSolver::Hausdorff4, double_storage, &P::hausdorff4_alpha>,
+       .verify = VerifyRecipe{.lp_basis = fixed_lp_basis<kPower4>}},
+      {.name = "hamburger6",
+       .rank = 170,
+       .summary = "six power moments on R, double",
+       .storage = "double",
+       .bound = "not proven: rounding six moments to double (docs/reference.md §4; measured "
+                "up to 0.23 at alpha 1e-10)",
+       .options = {&kHamburger6Alpha, &kHamburgerBeta},
+       .default_run = true,
+       .make = make<PowerSolver::Hamburger6, double_storage, &P::hamburger6_alpha>,
+       .verify =
+           VerifyRecipe{.lp_basis = fixed_lp_basis<kPower6>, .lo = -2, .hi = 3, .on_r = true}}};
+}
+
+const TechniqueRegistration kRegistered(rows);
+
 }  // namespace
 
-std::unique_ptr<Technique> make_hamburger4(const TechniqueParams& p) {
-  return std::make_unique<PowerMomentTechnique>("hamburger4", PowerSolver::Hamburger4,
-                                                double_storage(), p.hamburger4_alpha, p.beta);
-}
-std::unique_ptr<Technique> make_hamburger4_float(const TechniqueParams& p) {
-  return std::make_unique<PowerMomentTechnique>("hamburger4_float", PowerSolver::Hamburger4Float,
-                                                float32_storage(), p.hamburger4_float_alpha,
-                                                p.beta);
-}
-std::unique_ptr<Technique> make_hamburger4_16bit(const TechniqueParams& p) {
-  return std::make_unique<PowerMomentTechnique>("hamburger4_16bit", PowerSolver::Hamburger4,
-                                                unorm16_power4_storage(), p.hamburger4_16bit_alpha,
-                                                p.beta);
-}
-std::unique_ptr<Technique> make_hausdorff4(const TechniqueParams& p) {
-  return std::make_unique<PowerMomentTechnique>("hausdorff4", PowerSolver::Hausdorff4,
-                                                double_storage(), p.hausdorff4_alpha, p.beta);
-}
-std::unique_ptr<Technique> make_hamburger6(const TechniqueParams& p) {
-  return std::make_unique<PowerMomentTechnique>("hamburger6", PowerSolver::Hamburger6,
-                                                double_storage(), p.hamburger6_alpha, p.beta);
-}
+const TechniqueOption kHamburgerBeta{
+    {"hamburger.beta", OptionType::Number, "0",
+     "G + beta * (weight at z_f): 0 lower bound, 1 upper (seed 004).", 0, 1},
+    &TechniqueParams::beta};
 
 }  // namespace mb

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "techniques/technique.h"
+#include "techniques/registry.h"
 
 namespace mb {
 
@@ -23,13 +23,30 @@ class OracleTechnique : public Technique {
   double shadow(const FragmentInput& in) override { return in.oracle; }
 };
 
-}  // namespace
+std::vector<TechniqueRow> rows() {
+  return {{.name = "pcf",
+           .rank = 0,
+           .summary = "the reference itself (a sanity row, error 0)",
+           .storage = "depth",
+           .bound = "0",
+           .role = RowRole::Reference,
+           .default_run = true,
+           .make = [](const std::string&, const TechniqueParams&) -> std::unique_ptr<Technique> {
+             return std::make_unique<PcfTechnique>();
+           }},
+          {.name = "oracle",
+           .rank = 10,
+           .summary = "F_Z(z_f - delta_f): the floor the bias sets under receiver_plane",
+           .storage = "depth",
+           .bound = "0",
+           .role = RowRole::BiasFloor,
+           .make = [](const std::string&, const TechniqueParams&) -> std::unique_ptr<Technique> {
+             return std::make_unique<OracleTechnique>();
+           }}};
+}
 
-std::unique_ptr<Technique> make_pcf(const TechniqueParams&) {
-  return std::make_unique<PcfTechnique>();
-}
-std::unique_ptr<Technique> make_oracle(const TechniqueParams&) {
-  return std::make_unique<OracleTechnique>();
-}
+const TechniqueRegistration kRegistered(rows);
+
+}  // namespace
 
 }  // namespace mb

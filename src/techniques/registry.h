@@ -1,10 +1,11 @@
 #pragma once
-// The technique registry: one row per technique (docs/design.md §Layout). A row names the
-// technique, says what it stores and what bound it proves, declares the options it reads (bound
-// to fields of TechniqueParams, so code reads fields and never keys), and makes it. `eval`,
-// `sweep` references, `verify` targets, `solve --technique/--alpha`, `momentbench options` and the
-// README's technique list all read this table. Adding a technique: its file, one factory
-// declaration and one row in registry.cpp, a field of TechniqueParams per new option, its test.
+// The technique registry: one row per technique of every family (docs/design.md §Layout). A row
+// names the technique (or a family of names such as lp:<basis>), says which phenomenon it answers,
+// what it stores and what darkening bound it proves, declares the options it reads, and makes it.
+// Each technique's file declares its own row (TechniqueRegistration); `eval`, `oit`, `sweep`
+// references and targets, `verify`, `solve --technique/--alpha`, `momentbench options` and the
+// user guide's technique list all read this table, and test a row's properties, never its name.
+// Adding a technique of any family: its file (its code and its row) and its test.
 #include <memory>
 #include <optional>
 #include <string>
@@ -16,6 +17,16 @@
 #include "util/config.h"
 
 namespace mb {
+
+class SoftTechnique;
+struct SoftSetup;
+class OitTechnique;
+struct OitParams;
+
+// The phenomenon a technique answers, in the order lists show them.
+enum class TechniqueFamily { HardShadow, SoftShadow, Transmittance, Scattering };
+// "hard shadows", "soft shadows", ... for lists and errors.
+std::string family_title(TechniqueFamily family);
 
 struct TechniqueOption {
   OptionSpec spec;
@@ -42,29 +53,91 @@ struct VerifyRecipe {
   double TechniqueParams::*alpha = nullptr;  // storage rows: their moment bias
 };
 
-struct TechniqueEntry {
-  std::string name;  // as given in `techniques`; "lp:" matches every "lp:<basis>"
+// How `verify` checks a transmittance row against the LP of the same information on seeded random
+// pixels (docs/transparency.md §6).
+struct OitVerifyRecipe {
+  std::string lp_basis;   // the lp: technique it is compared with
+  std::string kind;       // "equal" or "never below"
+  double lo = 0, hi = 0;  // the LP's interval (of the warped depth u)
+  double tolerance = 0;   // in T
+};
+
+// What a row is to the commands beside its factory: properties they test instead of names.
+enum class RowRole {
+  Technique,       // an estimate, measured against the reference
+  Reference,       // the reference itself (a sanity row: error 0, no image of its error)
+  BiasFloor,       // F_Z(z_f - delta_f): added to every table under the receiver-plane reference
+  ExactReference,  // soft shadows: the heuristic with nothing sampled, every soft row's second
+                   // reference; transmittance: the sorted composite itself
+};
+
+struct TechniqueRow {
+  // As given in `techniques`; a name ending in ':' is a family matching every "<name><basis>".
+  std::string name;
+  TechniqueFamily family = TechniqueFamily::HardShadow;
+  // The row's place in lists (documentation, `options techniques`, --print-config), within its
+  // family.
+  int rank = 0;
   std::string summary;
   std::string storage;  // the moment map's format
   std::string bound;    // its darkening bound (docs/reference.md §3) and why
-  std::string reference = "the view's reference (PCF)";
-  std::vector<const TechniqueOption*> options;  // the options it reads (registry.cpp)
-  std::unique_ptr<Technique> (*make)(const std::string& name, const TechniqueParams& params);
-  std::optional<VerifyRecipe> verify = std::nullopt;  // none: no LP ground truth
+  // Families whose techniques claim a bound per row, not per instance (soft shadows,
+  // transmittance): why the row proves none, "" when it proves 0 (or, solving the LP, the LP's).
+  std::string unproven_reason;
+  std::vector<const TechniqueOption*> options;  // the hard-shadow options it reads
+  std::vector<std::string> family_options;  // keys its family's own records declare (soft.*, oit.*)
+  RowRole role = RowRole::Technique;
+  bool default_run = false;     // in its command's default `techniques`
+  std::string example;          // a family row's name in examples and default lists
+  bool audits_blocker = false;  // eval audits its blocker search (docs/soft-shadows.md §3)
+  bool solves_lp = false;       // answers through the LP fragment solver (lp.*)
+  // The factory of its family (one of them is set).
+  std::unique_ptr<Technique> (*make)(const std::string& name,
+                                     const TechniqueParams& params) = nullptr;
+  std::unique_ptr<SoftTechnique> (*make_soft)(const std::string& name,
+                                              const SoftSetup& setup) = nullptr;
+  std::unique_ptr<OitTechnique> (*make_oit)(const std::string& name,
+                                            const OitParams& params) = nullptr;
+  // InputError before any work when `name` of a family row cannot be made with these settings.
+  void (*check)(const std::string& name, const TechniqueParams& params) = nullptr;
+  std::optional<VerifyRecipe> verify = std::nullopt;                 // none: no LP ground truth
+  OitVerifyRecipe (*oit_verify)(const OitParams& params) = nullptr;  // none: not verified
+  bool prefix() const { return !name.empty() && name.back() == ':'; }
+  bool matches(std::string_view given) const;
+  // "lp:<basis>" for a family row, the name otherwise.
+  std::string display_name() const;
 };
 
-// Every technique, in the order documentation lists them.
-const std::vector<TechniqueEntry>& technique_registry();
-// The row of `name` ("lp:..." finds the LP row), or nullptr.
-const TechniqueEntry* find_technique(std::string_view name);
-// Every technique's option, once per key (shared keys such as esm.c appear in several rows).
+// A technique file's rows, registered before main runs (each file holds one such object).
+struct TechniqueRegistration {
+  explicit TechniqueRegistration(std::vector<TechniqueRow> (*rows)());
+};
+
+// Every row, by family and rank.
+const std::vector<TechniqueRow>& technique_registry();
+// The rows of one family, by rank.
+std::vector<const TechniqueRow*> family_rows(TechniqueFamily family);
+// The row of `name` (a family row matches "<prefix><basis>"; the longest prefix wins), of `family`
+// when given (lp:<basis> is a row of several), or nullptr.
+const TechniqueRow* find_technique(std::string_view name,
+                                   std::optional<TechniqueFamily> family = std::nullopt);
+// The role of `name`'s row (RowRole::Technique for a name of no row), and whether it solves the
+// LP: for reports, which test a row's properties, never a name.
+RowRole technique_role(std::string_view name);
+bool technique_solves_lp(std::string_view name);
+// The row of `name` in `family`, or an InputError listing that family's names.
+const TechniqueRow& technique_row(const std::string& name, TechniqueFamily family);
+// The names of a family's rows that `make` runs by default, as a YAML list ("[a, b]").
+std::string default_techniques(TechniqueFamily family);
+// Every hard-shadow technique's option, once per key (shared keys such as esm.c appear in several
+// rows), in row order.
 std::vector<OptionSpec> technique_option_specs();
 // Reads every technique option of `config` into `params`' fields, validated (InputError naming
 // the key).
 void read_technique_options(const Config& config, TechniqueParams& params);
 // Sets every moment bias alpha of `params` (solve --alpha).
 void set_moment_bias(TechniqueParams& params, double alpha);
-// The README's technique list: a Markdown table of every row.
+// `momentbench options techniques`: a Markdown table of every row, a section per family.
 std::string technique_table_markdown();
 
 }  // namespace mb

@@ -27,21 +27,24 @@ struct FragmentInput {
   std::span<const double> kernel_alpha;  // each atom's opacity (shadow/fragments.h, kernel_atoms)
 };
 
-// Every technique parameter, with the defaults of the eval options table.
+// Every hard-shadow technique's parameter, each read from the option record its row declares
+// (techniques/registry.h): a default-made TechniqueParams holds the records' defaults, which are
+// written there only. The LP's fields come from the lp.* options (eval/eval_config.h).
 struct TechniqueParams {
-  double hamburger4_alpha = 1e-10, hamburger4_float_alpha = 5e-6, hamburger4_16bit_alpha = 3e-5;
-  double hausdorff4_alpha = 1e-10, hamburger6_alpha = 1e-10;
-  double tmsm_alpha = 1e-10, tmsm_float_alpha = 5e-5;
-  double beta = 0;  // Hamburger: G + beta * (weight at z_f); 0 = lower bound, 1 = upper (seed 004)
-  double esm_c = 80;
-  double esm_zmax_offset = 0.01;  // esm_zmax: fail when the kernel's deepest texel > z_f + this
-  double esm_threshold = 0.01;    // esm_threshold: fail when the filtered ESM value > 1 + this
-  double vsm_min_variance = 0;
-  double evsm_c_positive = 40, evsm_c_negative = 5;  // EVSM warps exp(c+ z), -exp(-c- z)
-  int lvsm_layers = 4;                               // LVSM depth layers
-  int csm_terms = 8;                                 // CSM Fourier terms M
-  double csm_damping = 2;                            // CSM ringing suppression
-  int fom_terms = 3;  // Fourier opacity mapping: terms M (2M + 1 coefficients)
+  TechniqueParams();
+  double hamburger4_alpha, hamburger4_float_alpha, hamburger4_16bit_alpha;
+  double hausdorff4_alpha, hamburger6_alpha;
+  double tmsm_alpha, tmsm_float_alpha;
+  double beta;  // Hamburger: G + beta * (weight at z_f); 0 = lower bound, 1 = upper (seed 004)
+  double esm_c;
+  double esm_zmax_offset;     // esm.zmax_offset: fail when the kernel's deepest texel > z_f + this
+  double esm_fail_threshold;  // esm.threshold: fail when the filtered ESM value > 1 + this
+  double vsm_min_variance;
+  double evsm_c_positive, evsm_c_negative;  // EVSM warps exp(c+ z), -exp(-c- z)
+  int lvsm_layers;                          // LVSM depth layers
+  int csm_terms;                            // CSM Fourier terms M
+  double csm_damping;                       // CSM ringing suppression
+  int fom_terms;  // Fourier opacity mapping: terms M (2M + 1 coefficients)
   lp::Discretization lp;
   std::string lp_backend = "fast";
   std::string lp_moment_box = "none";  // lp_technique.h, lp_moment_box
@@ -64,12 +67,12 @@ class Technique {
   // Not thread-safe (LP backends keep state): make one instance per thread.
   virtual double shadow(const FragmentInput& input) = 0;
   // An LP technique's problem factory (basis and discretisation of I): evaluate_technique solves
-  // such a technique per view with warm starts (lp_fragment_solver.h); nullptr for closed forms.
+  // such a technique per view with warm starts (eval/lp_view_solver.h); nullptr for closed forms.
   virtual const lp::ProblemFactory* lp_factory() const { return nullptr; }
   // Fragments the technique could not answer (LP infeasible or unstable), for the report.
   virtual size_t failures() const { return 0; }
-  // Fragments answered by a fall-back instead of the technique's own test (esm_zmax,
-  // esm_threshold: seed 002's custom PCF), for the report.
+  // Fragments answered by a fall-back instead of the technique's own test (ESM's failure
+  // classifiers: seed 002's custom PCF), for the report.
   virtual size_t fallbacks() const { return 0; }
 
  protected:

@@ -5,7 +5,7 @@
 #include "moments/canonical.h"
 #include "moments/tmsm.h"
 #include "techniques/closed_form.h"
-#include "techniques/technique.h"
+#include "techniques/hard_rows.h"
 
 namespace mb {
 
@@ -41,13 +41,45 @@ class TmsmTechnique : public ClosedFormTechnique {
   double alpha_, beta_;
 };
 
-}  // namespace
+using P = TechniqueParams;
 
-std::unique_ptr<Technique> make_tmsm(const TechniqueParams& p) {
-  return std::make_unique<TmsmTechnique>("tmsm", false, p.tmsm_alpha, p.beta);
+const TechniqueOption kTmsmAlpha{{"tmsm.alpha", OptionType::Number, "1e-10",
+                                  "Moment bias of trigonometric MSM in double (towards 0)."},
+                                 &P::tmsm_alpha,
+                                 true};
+const TechniqueOption kTmsmFloatAlpha{
+    {"tmsm_float.alpha", OptionType::Number, "5e-5",
+     "Moment bias of trigonometric MSM in float32 (measured: tmsm.md §6)."},
+    &P::tmsm_float_alpha,
+    true};
+
+std::vector<TechniqueRow> rows() {
+  return {{.name = "tmsm",
+           .rank = 180,
+           .summary = "trigonometric MSM (src/moments/tmsm.md), double",
+           .storage = "double",
+           .bound = kAlphaBound,
+           .options = {&kTmsmAlpha, &kHamburgerBeta},
+           .default_run = true,
+           .make = [](const std::string& name, const P& p) -> std::unique_ptr<Technique> {
+             return std::make_unique<TmsmTechnique>(name, false, p.tmsm_alpha, p.beta);
+           },
+           .verify = VerifyRecipe{.lp_basis = fixed_lp_basis<kTrig4>}},
+          {.name = "tmsm_float",
+           .rank = 190,
+           .summary = "trigonometric MSM, float32",
+           .storage = "float32",
+           .bound = std::string(kNotProven) + ": rounding of the moments",
+           .options = {&kTmsmFloatAlpha, &kHamburgerBeta},
+           .default_run = true,
+           .make = [](const std::string& name, const P& p) -> std::unique_ptr<Technique> {
+             return std::make_unique<TmsmTechnique>(name, true, p.tmsm_float_alpha, p.beta);
+           },
+           .verify = storage_box(fixed_lp_basis<kTrig4>, 0, 1, false, &P::tmsm_float_alpha)}};
 }
-std::unique_ptr<Technique> make_tmsm_float(const TechniqueParams& p) {
-  return std::make_unique<TmsmTechnique>("tmsm_float", true, p.tmsm_float_alpha, p.beta);
-}
+
+const TechniqueRegistration kRegistered(rows);
+
+}  // namespace
 
 }  // namespace mb

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "moments/chebyshev.h"
-#include "techniques/technique.h"
+#include "techniques/hard_rows.h"
 
 namespace mb {
 
@@ -54,13 +54,47 @@ class LvsmTechnique : public Technique {
   double min_variance_;
 };
 
-}  // namespace
+using P = TechniqueParams;
 
-std::unique_ptr<Technique> make_vsm(const TechniqueParams& p) {
-  return std::make_unique<VsmTechnique>(p.vsm_min_variance);
+const TechniqueOption kVsmMinVariance{
+    {"vsm.min_variance", OptionType::Number, "0", "VSM variance clamp.", 0, 1},
+    &P::vsm_min_variance};
+const TechniqueOption kLvsmLayers{
+    {"lvsm.layers", OptionType::Integer, "4",
+     "LVSM depth layers: [0, 1] split evenly, a VSM per layer on the depth clamped to it.", 1, 8},
+    &P::lvsm_layers};
+
+std::vector<TechniqueRow> rows() {
+  return {{.name = "vsm",
+           .rank = 20,
+           .summary = "variance shadow maps: Cantelli",
+           .storage = "double",
+           .bound = kProvenBound,
+           .options = {&kVsmMinVariance},
+           .default_run = true,
+           .make = [](const std::string&, const P& p) -> std::unique_ptr<Technique> {
+             return std::make_unique<VsmTechnique>(p.vsm_min_variance);
+           },
+           // Cantelli's second point mu - sigma^2 / (z_f - mu) runs far out when z_f ~ mu, hence
+           // the wide interval (docs/reference.md §6).
+           .verify = VerifyRecipe{.lp_basis = fixed_lp_basis<kPower2>,
+                                  .lo = -20,
+                                  .hi = 21,
+                                  .on_r = true,
+                                  .cantelli_support = true}},
+          {.name = "lvsm",
+           .rank = 100,
+           .summary = "layered VSM: Cantelli on the depth clamped to z_f's layer",
+           .storage = "double",
+           .bound = kProvenBound,
+           .options = {&kLvsmLayers, &kVsmMinVariance},
+           .make = [](const std::string&, const P& p) -> std::unique_ptr<Technique> {
+             return std::make_unique<LvsmTechnique>(p.lvsm_layers, p.vsm_min_variance);
+           }}};
 }
-std::unique_ptr<Technique> make_lvsm(const TechniqueParams& p) {
-  return std::make_unique<LvsmTechnique>(p.lvsm_layers, p.vsm_min_variance);
-}
+
+const TechniqueRegistration kRegistered(rows);
+
+}  // namespace
 
 }  // namespace mb

@@ -117,15 +117,15 @@ std::vector<VerifyTarget> verify_targets(const std::vector<std::string>& techniq
                                          const TechniqueParams& params) {
   std::vector<VerifyTarget> out;
   for (const auto& name : techniques) {
-    const TechniqueEntry* row = find_technique(name);
-    if (!row || !row->verify || name.rfind("lp:", 0) == 0) {
+    const TechniqueRow* row = find_technique(name);
+    if (!row || !row->verify || row->prefix()) {
       std::string valid;
       for (const auto& r : technique_registry())
         if (r.verify) valid += (valid.empty() ? "" : ", ") + r.name;
       throw InputError("verify.techniques: '" + name +
                        "' has no LP ground truth in docs/reference.md §6; valid: " + valid);
     }
-    // The registry row's recipe (techniques/registry.cpp) for these parameters.
+    // The registry row's recipe (techniques/registry.h) for these parameters.
     using Judge = VerifyRecipe::Judge;
     const VerifyRecipe& r = *row->verify;
     VerifyTarget t;

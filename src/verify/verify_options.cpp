@@ -1,6 +1,19 @@
 #include "verify/verify_options.h"
 
+#include "oit/oit_verification.h"
+
 namespace mb {
+
+namespace {
+
+// Every transmittance row with a verify recipe, as a YAML list.
+std::string oit_verify_default() {
+  std::string list;
+  for (const std::string& name : oit_verify_names()) list += (list.empty() ? "" : ", ") + name;
+  return "[" + list + "]";
+}
+
+}  // namespace
 
 const std::vector<OptionRecord<VerifySettings>>& verify_options() {
   static const std::vector<OptionRecord<VerifySettings>> records{
@@ -11,8 +24,7 @@ const std::vector<OptionRecord<VerifySettings>>& verify_options() {
             "Closed forms to check (docs/reference.md §6; EVSM as a lower bound of its basis)."}),
        &VerifySettings::techniques},
       {selects_runs(
-           {"verify.oit_techniques", OptionType::StringList,
-            "[mboit_power4, mboit_power6, mboit_trig2, mboit_trig3]",
+           {"verify.oit_techniques", OptionType::StringList, oit_verify_default(),
             "MBOIT closed forms (double, beta 0) to check against the LP on seeded random pixels "
             "(docs/transparency.md §6); [] for none."}),
        &VerifySettings::oit_techniques},

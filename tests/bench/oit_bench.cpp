@@ -11,7 +11,7 @@
 
 #include "moments/canonical.h"
 #include "moments/hamburger.h"
-#include "oit/oit_technique.h"
+#include "techniques/oit/oit_technique.h"
 #include "scene/procedural.h"
 
 namespace mb {

@@ -10,9 +10,9 @@
 #include "raster/render_view.h"
 #include "scene/dataset.h"
 #include "shadow/fragments.h"
-#include "soft/area_light.h"
-#include "soft/blocker_bounds.h"
-#include "soft/soft_techniques.h"
+#include "shadow/area_light.h"
+#include "lp/blocker_bounds.h"
+#include "techniques/soft/soft_technique.h"
 
 namespace mb {
 namespace {

@@ -22,7 +22,7 @@ inline void FastSimplex<K>::run(const Problem& p, const WarmStart* at, Solution&
   // (In eval and sweep a lane is a layer and a memory a texel column, offered for the texel above
   // and above to the right: layers of neighbouring texels do not always count the same surfaces,
   // and where the surfaces change from left to right the texel above often still sees the same
-  // ones; lp_fragment_solver.cpp.)
+  // ones; eval/lp_view_solver.cpp.)
   WarmOffers offers;
   if (at) {
     offers.offer(0, lanes_, lane_zf_, p.zf);

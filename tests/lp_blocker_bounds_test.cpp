@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <random>
 
-#include "soft/blocker_bounds.h"
+#include "lp/blocker_bounds.h"
 
 namespace mb {
 namespace {

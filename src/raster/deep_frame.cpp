@@ -1,4 +1,4 @@
-#include "oit/deep_frame.h"
+#include "raster/deep_frame.h"
 
 #include <algorithm>
 #include <limits>

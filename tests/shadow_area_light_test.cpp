@@ -9,7 +9,7 @@
 #include "raster/render_view.h"
 #include "scene/dataset.h"
 #include "scene/scene.h"
-#include "soft/area_light.h"
+#include "shadow/area_light.h"
 #include "soft_test_scenes.h"
 #include "test_support.h"
 

@@ -1,4 +1,4 @@
-#include "soft/soft_techniques.h"
+#include "techniques/soft/soft_technique.h"
 
 namespace mb {
 
@@ -12,8 +12,8 @@ const std::vector<OptionRecord<SoftParams>>& soft_option_records() {
         0, 255},
        &SoftParams::pcss_search},
       {{"soft.sat_search", OptionType::Integer, "27",
-        "Soft shadows: texels a side of the summed-area techniques' blocker search (pcss_vsm, "
-        "msm_soft; seed 004 §3.6 uses 27x27).",
+        "Soft shadows: texels a side of the summed-area techniques' blocker search (seed 004 §3.6 "
+        "uses 27x27).",
         1, 255},
        &SoftParams::sat_search},
       {{"soft.blocker_taps", OptionType::Integer, "5",
@@ -82,6 +82,10 @@ const std::vector<OptionRecord<SoftParams>>& soft_option_records() {
        &SoftParams::audit},
   };
   return records;
+}
+
+SoftParams::SoftParams() {
+  read_options(Config(option_specs(soft_option_records())), soft_option_records(), *this);
 }
 
 }  // namespace mb

@@ -1,4 +1,4 @@
-#include "oit/compositing.h"
+#include "shadow/compositing.h"
 
 #include <algorithm>
 #include <cmath>

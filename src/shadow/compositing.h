@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "oit/deep_frame.h"
+#include "raster/deep_frame.h"
 
 namespace mb {
 

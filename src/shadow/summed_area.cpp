@@ -1,4 +1,4 @@
-#include "soft/summed_area.h"
+#include "shadow/summed_area.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
-// Summed-area tables and the soft techniques (soft/summed_area.h, soft/soft_techniques.h,
+// Summed-area tables and the soft techniques (shadow/summed_area.h, techniques/soft/,
 // docs/soft-shadows.md §2).
-#include "soft/soft_techniques.h"
+#include "techniques/soft/soft_technique.h"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 
 #include "raster/render_view.h"
 #include "scene/scene.h"
-#include "soft/summed_area.h"
+#include "shadow/summed_area.h"
 #include "soft_test_scenes.h"
 #include "test_support.h"
 
@@ -119,7 +119,7 @@ struct Slab {
   LightFrame frame;
 };
 
-// The half-plane of the area light test (soft_area_light_test.cpp), lit by a 20-degree light.
+// The half-plane of the area light test (shadow_area_light_test.cpp), lit by a 20-degree light.
 Slab slab() {
   Scene scene = testing_support::slab_scene(256, 0.02);
   const LightViewDesc view = scene.views.at(0);

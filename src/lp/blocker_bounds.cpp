@@ -1,4 +1,4 @@
-#include "soft/blocker_bounds.h"
+#include "lp/blocker_bounds.h"
 
 #include <glpk.h>
 

@@ -1,4 +1,4 @@
-#include "soft/area_light.h"
+#include "shadow/area_light.h"
 
 #include <algorithm>
 #include <cmath>

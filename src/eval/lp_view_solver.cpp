@@ -1,4 +1,4 @@
-#include "eval/lp_fragment_solver.h"
+#include "eval/lp_view_solver.h"
 
 #include <omp.h>
 
@@ -8,7 +8,7 @@
 #include "continuous/discretized.h"
 #include "eval/warm_runs.h"
 #include "lp/solution.h"
-#include "techniques/lp_technique.h"
+#include "techniques/lp_fragment_solver.h"
 #include "util/parallel_errors.h"
 
 namespace mb {
@@ -104,25 +104,18 @@ ViewColumns reached_columns(const ViewData& view, const std::vector<uint32_t>& l
   return out;
 }
 
-// One thread's state for its runs of fragments: the backend, the problem that move_zf updates
-// between the fragments of one texel, the kernel's taps, and the solution it reuses (no allocation
-// per LP).
+// One thread's state for its runs of fragments: the LP fragment solver, the problem that move_zf
+// updates between the fragments of one texel, and the kernel's taps (no allocation per LP).
 class RunSolver {
  public:
   RunSolver(const ViewData& view, const ViewColumns& reached, const lp::ProblemFactory& factory,
-            const Basis& basis, const EvalSettings& settings, const KernelAtomMap& atoms,
-            const std::optional<LpMomentBox>& box)
+            const Basis& basis, const EvalSettings& settings, const KernelAtomMap& atoms)
       : view_(view),
         reached_(reached),
         factory_(factory),
-        basis_(basis),
         settings_(settings),
         atoms_(atoms),
-        box_(box),
-        backend_(lp::make_backend(settings.technique.lp_backend)),
-        upper_backend_(settings.technique.lp_beta > 0
-                           ? lp::make_backend(settings.technique.lp_backend)
-                           : nullptr),
+        solver_(basis, factory, settings.technique),
         taps_(settings.kernel.size * settings.kernel.size),
         tap_depth_(taps_),
         tap_weight_(taps_),
@@ -139,46 +132,14 @@ class RunSolver {
     const int x = int(t % view_.map.width), y = int(t / view_.map.width);
     const double zf = view_.fragments.ztest[f];  // z_f - delta_f (docs/reference.md §3)
     if (!same_kernel) gather_taps(x, y);
-    const lp::Discretization& disc = settings_.technique.lp;
-    if (box_) {
-      // lp.moment_box: the box around the kernel's stored moments needs no problem columns.
-      s_.call = lp::CallStatus::Ok;
-      s_.status = solve_box_fragment(*box_, basis_, disc, tap_depth_, tap_weight_, zf, s_.G);
-      return s_;
-    }
-    if (!same_kernel || !factory_.move_zf(zf, problem_))
+    // lp.moment_box: the box around the kernel's stored moments needs no problem columns.
+    if (solver_.reads_problem() && (!same_kernel || !factory_.move_zf(zf, problem_)))
       factory_.from_distribution(tap_depth_, tap_weight_, tap_column_, zf, problem_);
-    if (disc.continuous) {
-      // The whole interval (docs/reference.md §2): the exchange extends a copy, from scratch, so
-      // move_zf keeps working on `problem_` and answers do not depend on the schedule.
-      lp::Problem work = problem_;
-      s_ = lp::solve_discretized(factory_, work, *backend_, tap_depth_, tap_weight_).finite;
-    } else {
-      const lp::WarmStart at = warm_start_at(view_.fragments.layer[f], x, y, &atoms_);
-      backend_->solve_into(problem_, cold ? nullptr : &at, s_);
-      if (upper_backend_) blend_with_maximum();
-    }
-    return s_;
+    const lp::WarmStart at = warm_start_at(view_.fragments.layer[f], x, y, &atoms_);
+    return solver_.solve(problem_, tap_depth_, tap_weight_, zf, cold ? nullptr : &at);
   }
 
  private:
-  // lp.beta: s_.G <- G + beta (G+ - G), G+ = 1 - (the least mass behind z_f), solved cold (the
-  // warm bases remember the minimum's problems); a failed maximum fails the fragment.
-  void blend_with_maximum() {
-    if (s_.call != lp::CallStatus::Ok || s_.status != lp::ProblemStatus::Optimal) return;
-    upper_problem_ = problem_;
-    upper_problem_.behind = true;
-    upper_backend_->solve_into(upper_problem_, nullptr, upper_);
-    if (upper_.call != lp::CallStatus::Ok || upper_.status != lp::ProblemStatus::Optimal) {
-      s_.status =
-          upper_.status == lp::ProblemStatus::Optimal ? lp::ProblemStatus::Unstable : upper_.status;
-      return;
-    }
-    const double lower = std::clamp(s_.G, 0.0, 1.0);
-    const double upper = std::clamp(1 - upper_.G, lower, 1.0);
-    s_.G = lower + settings_.technique.lp_beta * (upper - lower);
-  }
-
   // The kernel's taps in kernel_distribution's order; the extra texel index picks the column (the
   // far plane's, one past the map, for taps outside it).
   void gather_taps(int x, int y) {
@@ -198,17 +159,14 @@ class RunSolver {
   const ViewData& view_;
   const ViewColumns& reached_;
   const lp::ProblemFactory& factory_;
-  const Basis& basis_;
   const EvalSettings& settings_;
   const KernelAtomMap& atoms_;
-  const std::optional<LpMomentBox>& box_;
-  std::unique_ptr<lp::Backend> backend_, upper_backend_;
-  lp::Problem problem_, upper_problem_;
+  LpFragmentSolver solver_;
+  lp::Problem problem_;
   int taps_;
   std::vector<double> tap_depth_, tap_weight_;
   std::vector<const double*> tap_column_;
   std::vector<size_t> tap_texel_;
-  lp::Solution s_, upper_;
 };
 
 }  // namespace
@@ -230,13 +188,11 @@ LpViewAnswers solve_lp_view(const ViewData& view, const std::vector<uint32_t>& l
                              : reached_columns(view, list, run_begin, basis, factory, settings);
   const size_t runs = run_begin.size() - 1;
   const KernelAtomMap atoms(settings.kernel.size);
-  // lp.moment_box: each fragment's box problem from scratch (GLPK; no warm start).
-  const std::optional<LpMomentBox> box = lp_moment_box(settings.technique.lp_moment_box, basis);
   std::vector<double> g(view.fragments.size(), 0.0);  // skipped fragments: G = 0 exactly
   ParallelErrors errors;  // each run captured: a throw must not leave the worksharing loop
 #pragma omp parallel num_threads(settings.threads) reduction(+ : solved, infeasible, unstable)
   {
-    RunSolver solver(view, reached, factory, basis, settings, atoms, box);
+    RunSolver solver(view, reached, factory, basis, settings, atoms);
 #pragma omp for schedule(dynamic, 1)
     for (size_t run = 0; run < runs; ++run)
       errors.capture([&] {

@@ -3,12 +3,14 @@
 // transmittance in front of every transparent fragment of a pixel, and composites with it.
 // Moment-based ones (MBOIT's closed forms, `lp:<basis>`) see only the absorbance moments of the
 // pixel's fragments, summed in a canonical order so that the submission order cannot change them.
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <span>
 #include <string>
 #include <vector>
 
-#include "oit/compositing.h"
+#include "shadow/compositing.h"
 #include "techniques/technique.h"
 
 namespace mb {
@@ -64,10 +66,10 @@ class OitTechnique {
   std::string name_;
 };
 
-// exact, unsorted, wboit, mboit_power4/6/8 and mboit_trig2/3/4 (each also _float and _16bit),
-// lp:<basis>; InputError naming the valid ones otherwise.
+// The transmittance technique `name` made by its registry row (techniques/registry.h, family
+// Transmittance); InputError naming the valid ones otherwise.
 std::unique_ptr<OitTechnique> make_oit_technique(const std::string& name, const OitParams& params);
-std::vector<std::string> oit_technique_names();  // without the lp: family
+std::vector<std::string> oit_technique_names();  // without the family rows (lp:<basis>)
 
 // The absorbance moments' distribution of a pixel: warped depths and absorbances (weights
 // a_l / b_0), sorted by (depth, absorbance) so that any submission order gives the same sums, and
@@ -82,6 +84,87 @@ AbsorbanceDistribution absorbance_distribution(const PixelFragments& px,
 // The same into `d`, reusing its storage.
 void absorbance_distribution(const PixelFragments& px, std::span<const double> warped,
                              AbsorbanceDistribution& d);
+
+// A fragment's absorbance as the moment-based techniques take it: clamped to kMaxAbsorbance
+// (T >= e^-10 per fragment, as MBOIT's implementation clamps it), so that an opaque fragment handed
+// to them stays finite. A deep frame never hands them one: the first opaque surface ends a pixel's
+// list (raster/deep_frame.h). The exact reference needs no clamp.
+constexpr double kMaxAbsorbance = 10;
+
+// The moment-based techniques: they see the pixel's absorbance distribution only; a pixel without
+// absorbance (every alpha 0) lets everything through.
+class MomentOit : public OitTechnique {
+ public:
+  using OitTechnique::OitTechnique;
+  void transmittance(const PixelFragments& px, std::span<const double> warped,
+                     std::span<double> out) final {
+    absorbance_distribution(px, warped, distribution_);
+    if (!(distribution_.total > 0)) {
+      std::fill(out.begin(), out.end(), 1.0);
+      return;
+    }
+    reconstruct(distribution_, warped, out);
+  }
+
+ protected:
+  // T at each fragment (`warped`: their depths on [0, 1]) from the distribution `d`.
+  virtual void reconstruct(const AbsorbanceDistribution& d, std::span<const double> warped,
+                           std::span<double> out) = 0;
+  // Closed forms count the fragments whose moment matrix was not positive definite here.
+  size_t failures() const override { return closed_form_failures_; }
+  size_t closed_form_failures_ = 0;
+
+ private:
+  AbsorbanceDistribution distribution_;  // reused: no allocation per pixel
+};
+
+// The pixel's normalised moments as a storage format keeps them (docs/transparency.md §3,
+// "Storage"): `basis(u, row)` fills the m real functions at u. Double: exact sums of the canonical
+// order. Float: b_0 and every unnormalised sum accumulated in 32-bit floats, as a float render
+// target blends them, then normalised. 16-bit: the normalised moments (in [-1, 1]) rounded to
+// signed 16-bit fixed point, b_0 to float. Returns b_0 as stored.
+template <class Basis>
+double stored_moments(const AbsorbanceDistribution& d, OitStorage storage, int m, Basis basis,
+                      double* b) {
+  double row[8];
+  if (storage == OitStorage::Float) {
+    float total = 0, sums[8] = {};
+    for (size_t i = 0; i < d.depths.size(); ++i) {
+      const float a = float(d.total * d.weights[i]);
+      basis(d.depths[i], row);
+      total += a;
+      for (int j = 0; j < m; ++j) sums[j] += a * float(row[j]);
+    }
+    for (int j = 0; j < m; ++j) b[j] = double(sums[j]) / double(total);
+    return total;
+  }
+  std::fill(b, b + m, 0.0);
+  for (size_t i = 0; i < d.depths.size(); ++i) {
+    basis(d.depths[i], row);
+    for (int j = 0; j < m; ++j) b[j] += d.weights[i] * row[j];
+  }
+  if (storage == OitStorage::Double) return d.total;
+  for (int j = 0; j < m; ++j) b[j] = std::round(std::clamp(b[j], -1.0, 1.0) * 32767) / 32767;
+  return float(d.total);
+}
+
+// The MBOIT rows of each storage: their name's suffix, their biases and their rank offset.
+struct OitStorageVariant {
+  OitStorage storage;
+  const char* suffix;
+  OitBiases OitParams::*biases;
+  int rank;
+};
+inline constexpr OitStorageVariant kOitStorageVariants[] = {
+    {OitStorage::Double, "", &OitParams::double_bias, 0},
+    {OitStorage::Float, "_float", &OitParams::float_bias, 100},
+    {OitStorage::Snorm16, "_16bit", &OitParams::snorm16_bias, 200},
+};
+
+// The LP technique with the basis of `moments` trigonometric moments as MBOIT takes them on the
+// warped depth u: "lp:cos(1*s*z); sin(1*s*z); ...", s = 2 pi - wrapping_zone
+// (docs/transparency.md §5).
+std::string mboit_trig_lp_basis(int moments, double wrapping_zone);
 
 // The transmittance the composite weighs each fragment with: a normalised technique's scaled by
 // Gamma = (1 - T_total) / sum_l alpha_l T_l (docs/transparency.md §3), others' as given. In place.

@@ -1,9 +1,9 @@
-// A camera's deep frame (oit/deep_frame.h): two coloured panes over a coloured ground, seen and lit
+// A camera's deep frame (raster/deep_frame.h): two coloured panes over a coloured ground, seen and lit
 // from above, so that every number of the centre pixel is known by hand.
 #include <gtest/gtest.h>
 
-#include "oit/compositing.h"
-#include "oit/deep_frame.h"
+#include "shadow/compositing.h"
+#include "raster/deep_frame.h"
 #include "oit/deep_frame_exr.h"
 #include "scene/scene.h"
 #include "test_support.h"

@@ -1,0 +1,101 @@
+#include "techniques/lp_fragment_solver.h"
+
+#include <algorithm>
+
+#include "continuous/discretized.h"
+#include "continuous/moment_box.h"
+#include "util/error.h"
+
+namespace mb {
+
+std::optional<LpMomentBox> lp_moment_box(const std::string& setting, const Basis& basis) {
+  if (setting == "none") return std::nullopt;
+  MomentStorage storage;
+  if (setting == "double") {
+    storage = double_storage();
+  } else if (setting == "float32") {
+    storage = float32_storage();
+  } else if (setting == "unorm16") {
+    const std::vector<std::string> names = basis.names();
+    if (names == named_basis_set("power4"))
+      storage = unorm16_power4_storage();
+    else if (names == named_basis_set("power2"))
+      storage = unorm16_power2_storage();
+    else
+      throw InputError(
+          "lp.moment_box: unorm16 needs the basis power4 (theta_4) or power2 "
+          "(theta_2) of docs/reference.md §4");
+  } else {
+    throw InputError("lp.moment_box: expected one of none, double, float32, unorm16; got '" +
+                     setting + "'");
+  }
+  return LpMomentBox{storage, storage_tolerance(storage, basis)};
+}
+
+LpFragmentSolver::LpFragmentSolver(const Basis& basis, const lp::ProblemFactory& factory,
+                                   const TechniqueParams& p)
+    : basis_(basis),
+      factory_(factory),
+      box_(lp_moment_box(p.lp_moment_box, basis)),
+      beta_(p.lp_beta),
+      backend_(lp::make_backend(p.lp_backend)),
+      upper_backend_(p.lp_beta > 0 ? lp::make_backend(p.lp_backend) : nullptr) {}
+
+const lp::Solution& LpFragmentSolver::solve(lp::Problem& problem, std::span<const double> depths,
+                                            std::span<const double> weights, double zf,
+                                            const lp::WarmStart* warm) {
+  if (box_) {
+    solve_box(depths, weights, zf);
+    return s_;
+  }
+  if (factory_.discretization().continuous) {
+    // The whole interval (docs/reference.md §2): the exchange extends a copy, from scratch, so
+    // the caller's problem stays as given (eval moves its z_f between fragments of one texel).
+    work_ = problem;
+    s_ = lp::solve_discretized(factory_, work_, *backend_, depths, weights).finite;
+    return s_;
+  }
+  backend_->solve_into(problem, warm, s_);
+  if (upper_backend_) blend_with_maximum(problem);
+  return s_;
+}
+
+void LpFragmentSolver::solve_box(std::span<const double> depths, std::span<const double> weights,
+                                 double zf) {
+  // Each fragment's box problem from scratch (GLPK; no warm start).
+  s_.call = lp::CallStatus::Ok;
+  const lp::Discretization& disc = factory_.discretization();
+  const lp::MomentBox moment_box{filtered_stored_values(box_->storage, basis_, depths, weights),
+                                 box_->tolerance, box_->storage.transform, box_->storage.offset};
+  std::vector<double> points(depths.begin(), depths.end());
+  const int grid = disc.continuous ? std::min(disc.grid, lp::kContinuousSeedGrid) : disc.grid;
+  for (int k = 0; k < grid; ++k) points.push_back(disc.lo + (disc.hi - disc.lo) * k / (grid - 1));
+  if (disc.continuous) {
+    const lp::ContinuousBoxAnswer a = lp::solve_moment_box_continuous(
+        basis_, moment_box, zf, lp::ContinuousDomain::interval(disc.lo, disc.hi), points);
+    s_.G = std::clamp(a.upper, 0.0, 1.0);
+    s_.status = a.finite.status;
+    return;
+  }
+  points.push_back(zf);
+  const lp::MomentBoxAnswer a = lp::solve_moment_box(basis_, moment_box, zf, points);
+  s_.G = a.G;
+  s_.status = a.status;
+}
+
+void LpFragmentSolver::blend_with_maximum(const lp::Problem& problem) {
+  if (s_.call != lp::CallStatus::Ok || s_.status != lp::ProblemStatus::Optimal) return;
+  upper_problem_ = problem;
+  upper_problem_.behind = true;
+  upper_backend_->solve_into(upper_problem_, nullptr, upper_);
+  if (upper_.call != lp::CallStatus::Ok || upper_.status != lp::ProblemStatus::Optimal) {
+    s_.status =
+        upper_.status == lp::ProblemStatus::Optimal ? lp::ProblemStatus::Unstable : upper_.status;
+    return;
+  }
+  const double lower = std::clamp(s_.G, 0.0, 1.0);
+  const double upper = std::clamp(1 - upper_.G, lower, 1.0);
+  s_.G = lower + beta_ * (upper - lower);
+}
+
+}  // namespace mb

@@ -1,0 +1,66 @@
+#pragma once
+// The one LP fragment solver (docs/design.md §Data flow): Problem 1 for one fragment's kernel
+// distribution (docs/reference.md §2), on the grid (warm-started when the caller gives a start),
+// on all of [lp.lo, lp.hi] by the exchange method (lp.discretization continuous), or over the box
+// of moments a storage format's rounding leaves (lp.moment_box); with lp.beta the blend
+// G + beta (G+ - G) towards the LP's maximum. eval's views and the sweep's shadow target
+// (eval/lp_view_solver.h), lp:<basis> of every family (techniques/lp_technique.h, hence oit and
+// the sweep's transparency target) and msm_soft:lp:<basis> all answer through it.
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "basis/basis.h"
+#include "lp/problem.h"
+#include "lp/solution.h"
+#include "moments/storage.h"
+#include "techniques/technique.h"
+
+namespace mb {
+
+// `lp.moment_box` (docs/reference.md §2, "Moments with a tolerance"): Problem 1 over every
+// distribution whose moments, stored as `storage` holds them, lie within `tolerance` of the
+// kernel's stored moments: the sharpest bound a shader reading such a map can claim.
+struct LpMomentBox {
+  MomentStorage storage;
+  std::vector<double> tolerance;  // per stored value (moments/storage.h, storage_tolerance)
+};
+// "none" -> no box; "double", "float32", "unorm16" (theta_4 or theta_2: power4 and power2 only).
+std::optional<LpMomentBox> lp_moment_box(const std::string& setting, const Basis& basis);
+
+// Not thread-safe (its backends keep state): one per thread.
+class LpFragmentSolver {
+ public:
+  // `basis` and `factory` outlive the solver; `params` gives lp.backend, lp.moment_box, lp.beta.
+  LpFragmentSolver(const Basis& basis, const lp::ProblemFactory& factory,
+                   const TechniqueParams& params);
+  // Whether solve reads `problem` (the moment box needs only the distribution).
+  bool reads_problem() const { return !box_; }
+  // The fragment's answer: `problem` is Problem 1 for the distribution (depths, weights) at z_f,
+  // built by the factory; `warm` a warm start on the grid (null: from scratch, so the answer
+  // does not depend on what was solved before). G is an answer where the call is Ok and the
+  // status Optimal; a failed maximum (lp.beta) fails the fragment. `problem` is left as given.
+  const lp::Solution& solve(lp::Problem& problem, std::span<const double> depths,
+                            std::span<const double> weights, double zf,
+                            const lp::WarmStart* warm = nullptr);
+
+ private:
+  // G of the box problem around the kernel's stored moments, on the grid and the kernel's depths
+  // or (continuous) on all of [lo, hi] by the exchange method (continuous/moment_box.h).
+  void solve_box(std::span<const double> depths, std::span<const double> weights, double zf);
+  // lp.beta: s_.G <- G + beta (G+ - G), G+ = 1 - (the least mass behind z_f), solved cold (warm
+  // bases remember the minimum's problems).
+  void blend_with_maximum(const lp::Problem& problem);
+
+  const Basis& basis_;
+  const lp::ProblemFactory& factory_;
+  std::optional<LpMomentBox> box_;
+  double beta_ = 0;
+  std::unique_ptr<lp::Backend> backend_, upper_backend_;
+  lp::Problem work_, upper_problem_;
+  lp::Solution s_, upper_;  // reused: no allocation per LP
+};
+
+}  // namespace mb
