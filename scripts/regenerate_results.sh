@@ -31,10 +31,18 @@ refuse_dirty() {
     exit 1
   fi
 }
+# binary_sha DIR: the git sha of the binary that made DIR: its run metadata, else its report.md's
+# 'Made by momentbench ... (git SHA)' line (report writes no run metadata).
+binary_sha() {
+  local sha
+  sha=$(grep -rh -m1 '^git_sha:' "$1" --include='run*.yaml' 2>/dev/null | head -1 | sed 's/git_sha: *//' || true)
+  [ -n "$sha" ] || sha=$(sed -n '1,5s/.*(git \([0-9a-f]*\(-dirty\)\{0,1\}\)[,)].*/\1/p' "$1/report.md" 2>/dev/null | head -1 || true)
+  echo "$sha"
+}
 # check_binary DIR: the git sha in DIR's run metadata must name a commit.
 check_binary() {
   local sha
-  sha=$(grep -rh -m1 '^git_sha:' "$1" --include='run*.yaml' 2>/dev/null | head -1 | sed 's/git_sha: *//')
+  sha=$(binary_sha "$1")
   case $sha in *-dirty) refuse_dirty "the binary $MB was built from a modified checkout (git $sha)" ;; esac
   return 0
 }
@@ -56,7 +64,7 @@ provenance() {
   local dir=$1 from=$2
   shift 2
   local sha
-  sha=$(grep -rh -m1 '^git_sha:' "$from" --include='run*.yaml' 2>/dev/null | head -1 | sed 's/git_sha: *//')
+  sha=$(binary_sha "$from")
   {
     echo "# How these files were made"
     echo
@@ -110,7 +118,7 @@ for part in "${parts[@]}"; do
       eval "$cmd" >/dev/null
       check_binary "$work/demo/report"
       copy_report "$work/demo/report" results/sweep-default-sample
-      sweeps_sha=$(grep -rh -m1 '^git_sha:' "$work/demo/sweep" --include='run*.yaml' 2>/dev/null | head -1 | sed 's/git_sha: *//')
+      sweeps_sha=$(binary_sha "$work/demo/sweep")
       provenance results/sweep-default-sample "$work/demo/report" "$cmd" \
         "# the sweeps: MB=... DEMO_OUT=$work/demo bash scripts/demo, by a binary built from git ${sweeps_sha:-unknown}" \
         "# then: results/sweep-default-sample/ = $work/demo/report/ (report.md, *.csv, histogram.*)"
