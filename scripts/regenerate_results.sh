@@ -53,6 +53,7 @@ if [ -z "${MB:-}" ]; then
   cmake --preset release >/dev/null
   cmake --build --preset release -j "$(nproc)" --target momentbench
   MB=./build/release/momentbench
+  built_here=1
 fi
 export MB
 work=${WORK:-out/regenerate}
@@ -65,6 +66,9 @@ provenance() {
   shift 2
   local sha
   sha=$(binary_sha "$from")
+  # A report writes no run metadata: a binary this script built is the checkout's.
+  [ -n "$sha" ] || [ -z "${built_here:-}" ] ||
+    sha=$(git rev-parse --short=12 HEAD)$(git diff --quiet HEAD || echo -dirty)
   {
     echo "# How these files were made"
     echo
