@@ -53,7 +53,8 @@ if [ -z "${MB:-}" ]; then
   cmake --preset release >/dev/null
   cmake --build --preset release -j "$(nproc)" --target momentbench
   MB=./build/release/momentbench
-  built_here=1
+  # The checkout it was built from, read before any part changes results/.
+  built_sha=$(git rev-parse --short=12 HEAD)$(git diff --quiet HEAD || echo -dirty)
 fi
 export MB
 work=${WORK:-out/regenerate}
@@ -67,8 +68,7 @@ provenance() {
   local sha
   sha=$(binary_sha "$from")
   # A report writes no run metadata: a binary this script built is the checkout's.
-  [ -n "$sha" ] || [ -z "${built_here:-}" ] ||
-    sha=$(git rev-parse --short=12 HEAD)$(git diff --quiet HEAD || echo -dirty)
+  [ -n "$sha" ] || sha=${built_sha:-}
   {
     echo "# How these files were made"
     echo
