@@ -3,6 +3,8 @@
 #   bounds    results/bounds-dragon-side/            `bounds`, seconds
 #   evals     results/eval-default-{biased,receiver_plane}/ alone (scripts/findings.sh's evals), minutes
 #   demo      results/sweep-default-sample/          scripts/demo's three sweeps and report, minutes
+#   demo-report  results/sweep-default-sample/       the report step alone, on the sweeps of an
+#                earlier demo run in $WORK/demo (when only `report` changed), seconds
 #   findings  results/findings/ and both eval-default-* (scripts/findings.sh), about 45 minutes
 # Each part writes PROVENANCE.md beside its files: the commands, the git commit of the binary that
 # made them (its run metadata) and of the checkout, and when. Re-run a part whenever a change moves
@@ -12,14 +14,47 @@
 # (findings includes evals.)
 # MB=path uses a built binary instead of building build/release; WORK (default out/regenerate)
 # holds the sweeps' databases and the raw outputs.
+# A binary built from a modified checkout (git sha ending in -dirty) reproduces nothing: the script
+# refuses to build from one, and refuses to copy a dirty binary's results into results/, unless
+# FORCE=1 (then it warns, and PROVENANCE.md shows the -dirty sha).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 parts=("$@")
 [ ${#parts[@]} -gt 0 ] || parts=(bounds demo findings)
+
+# refuse_dirty WHAT: stop (or, with FORCE=1, warn) because WHAT is not a commit.
+refuse_dirty() {
+  if [ -n "${FORCE:-}" ]; then
+    echo "regenerate_results.sh: warning: $1; its results reproduce nothing (FORCE=1 given)" >&2
+  else
+    echo "regenerate_results.sh: $1; commit first, or set FORCE=1 to make results that no commit reproduces" >&2
+    exit 1
+  fi
+}
+# binary_sha DIR: the git sha of the binary that made DIR: its run metadata, else its report.md's
+# 'Made by momentbench ... (git SHA)' line (report writes no run metadata).
+binary_sha() {
+  local sha
+  sha=$(grep -rh -m1 '^git_sha:' "$1" --include='run*.yaml' 2>/dev/null | head -1 | sed 's/git_sha: *//' || true)
+  [ -n "$sha" ] || sha=$(sed -n '1,5s/.*(git \([0-9a-f]*\(-dirty\)\{0,1\}\)[,)].*/\1/p' "$1/report.md" 2>/dev/null | head -1 || true)
+  echo "$sha"
+}
+# check_binary DIR: the git sha in DIR's run metadata must name a commit.
+check_binary() {
+  local sha
+  sha=$(binary_sha "$1")
+  case $sha in *-dirty) refuse_dirty "the binary $MB was built from a modified checkout (git $sha)" ;; esac
+  return 0
+}
+
 if [ -z "${MB:-}" ]; then
+  [ -z "$(git status --porcelain --untracked-files=no)" ] ||
+    refuse_dirty "the checkout has uncommitted changes (git status), so build/release would be -dirty"
   cmake --preset release >/dev/null
   cmake --build --preset release -j "$(nproc)" --target momentbench
   MB=./build/release/momentbench
+  # The checkout it was built from, read before any part changes results/.
+  built_sha=$(git rev-parse --short=12 HEAD)$(git diff --quiet HEAD || echo -dirty)
 fi
 export MB
 work=${WORK:-out/regenerate}
@@ -31,7 +66,9 @@ provenance() {
   local dir=$1 from=$2
   shift 2
   local sha
-  sha=$(grep -rh -m1 '^git_sha:' "$from" --include='run*.yaml' 2>/dev/null | head -1 | sed 's/git_sha: *//')
+  sha=$(binary_sha "$from")
+  # A report writes no run metadata: a binary this script built is the checkout's.
+  [ -n "$sha" ] || sha=${built_sha:-}
   {
     echo "# How these files were made"
     echo
@@ -62,6 +99,7 @@ for part in "${parts[@]}"; do
     bounds)
       cmd="$MB bounds -q --set dataset=default --set bounds.view=dragon/side --set 'bounds.texel=[256,256]' --set 'bounds.bases=[power4, trig4, \"exp(-4z); z; sin(pi z); 1/(1+z)\"]' --out $work/bounds-dragon-side --force"
       eval "$cmd" >/dev/null
+      check_binary "$work/bounds-dragon-side"
       rm -rf results/bounds-dragon-side
       cp -r "$work/bounds-dragon-side" results/bounds-dragon-side
       provenance results/bounds-dragon-side "$work/bounds-dragon-side" "$cmd"
@@ -69,8 +107,24 @@ for part in "${parts[@]}"; do
     demo)
       [ -n "${RESUME:-}" ] || rm -rf "$work/demo"
       DEMO_OUT=$work/demo bash scripts/demo
+      check_binary "$work/demo/sweep"
       copy_report "$work/demo/report" results/sweep-default-sample
       provenance results/sweep-default-sample "$work/demo/sweep" "MB=$MB DEMO_OUT=$work/demo bash scripts/demo" \
+        "# then: results/sweep-default-sample/ = $work/demo/report/ (report.md, *.csv, histogram.*)"
+      ;;
+    demo-report)
+      # The report of the demo's sweeps as they are: when `report` changed and the sweeps' numbers
+      # did not (a sweep's rows are what the identity compares; the report re-reads them).
+      for s in sweep-2 sweep-3 sweep; do
+        [ -d "$work/demo/$s" ] || { echo "regenerate_results.sh: demo-report: no $work/demo/$s (run the demo part first)" >&2; exit 2; }
+      done
+      cmd="$MB report $work/demo/sweep-2 $work/demo/sweep-3 $work/demo/sweep --out $work/demo/report --force"
+      eval "$cmd" >/dev/null
+      check_binary "$work/demo/report"
+      copy_report "$work/demo/report" results/sweep-default-sample
+      sweeps_sha=$(binary_sha "$work/demo/sweep")
+      provenance results/sweep-default-sample "$work/demo/report" "$cmd" \
+        "# the sweeps: MB=... DEMO_OUT=$work/demo bash scripts/demo, by a binary built from git ${sweeps_sha:-unknown}" \
         "# then: results/sweep-default-sample/ = $work/demo/report/ (report.md, *.csv, histogram.*)"
       ;;
     evals)
@@ -79,6 +133,7 @@ for part in "${parts[@]}"; do
       for reference in biased receiver_plane; do
         cmd="$MB eval -q --set dataset=default --set reference=$reference --set 'techniques=$techniques' --set images=false --out $work/eval-$reference --force"
         eval "$cmd" >/dev/null
+        check_binary "$work/eval-$reference"
         dst=results/eval-default-$reference
         mkdir -p "$dst"
         cp "$work/eval-$reference/report.md" "$work/eval-$reference/errors.csv" "$dst"/
@@ -88,6 +143,7 @@ for part in "${parts[@]}"; do
     findings)
       [ -n "${RESUME:-}" ] || rm -rf "$work/findings"
       bash scripts/findings.sh "$work/findings"
+      check_binary "$work/findings/sweep-4"
       copy_report "$work/findings/report" results/findings
       provenance results/findings "$work/findings/sweep-4" "MB=$MB bash scripts/findings.sh $work/findings" \
         "# then: results/findings/ = $work/findings/report/"
@@ -100,7 +156,7 @@ for part in "${parts[@]}"; do
       done
       ;;
     *)
-      echo "regenerate_results.sh: unknown part '$part' (expected bounds, evals, demo or findings)" >&2
+      echo "regenerate_results.sh: unknown part '$part' (expected bounds, evals, demo, demo-report or findings)" >&2
       exit 2
       ;;
   esac

@@ -21,7 +21,7 @@ TEST(ColourBar, KeepsThePicturesPixelsAndAddsTheRampBeneath) {
   for (size_t k = 0; k < rgb.size(); ++k) rgb[k] = float(k % 97) / 97;
   const BarredImage barred = with_colour_bar(rgb, w, h, magnitude_bar(10, "CIEDE2000"));
   ASSERT_EQ(barred.width, w);
-  ASSERT_EQ(barred.height, h + kColourBarHeight);
+  ASSERT_EQ(barred.height, h + colour_bar_height(w));
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
       for (int c = 0; c < 3; ++c)
@@ -38,6 +38,26 @@ TEST(ColourBar, KeepsThePicturesPixelsAndAddsTheRampBeneath) {
   for (int y = h + 14; y < barred.height; ++y)
     for (int x = 0; x < w; ++x) dark |= at(barred, x, y, 0) < 0.5f;
   EXPECT_TRUE(dark);
+}
+
+// A wide picture (a contact sheet) gets a bar across 60 % of it and a larger font, and the ramp
+// is labelled at its quarters too.
+TEST(ColourBar, ScalesWithTheWidthOfThePicture) {
+  EXPECT_EQ(colour_bar_font(400), 11);
+  EXPECT_GT(colour_bar_font(1092), 11);
+  EXPECT_LE(colour_bar_font(100000), 20);
+  EXPECT_GT(colour_bar_height(1092), colour_bar_height(400));
+  const int w = 1092, h = 8;
+  const std::vector<float> rgb(size_t(w) * h * 3, 1.0f);
+  const BarredImage barred = with_colour_bar(rgb, w, h, magnitude_bar(10, "CIEDE2000"));
+  const int row = h + 3 + colour_bar_font(w) / 2, last = 4 + w * 3 / 5 - 8 - 1;
+  const auto high = colormap(1);
+  for (int c = 0; c < 3; ++c) EXPECT_FLOAT_EQ(at(barred, last, row, c), high[c]);
+  const ColourBar bar = magnitude_bar(10, "CIEDE2000");
+  EXPECT_EQ(bar.quarter, "2.5");
+  EXPECT_EQ(bar.middle, "5");
+  EXPECT_EQ(bar.three_quarters, "7.5");
+  EXPECT_EQ(signed_difference_bar(0.5, {0, 0, 1}, {1, 0, 0}, "").quarter, "-0.25");
 }
 
 TEST(ColourBar, SignedDifferenceRunsFromLighterThroughGreyToDarker) {

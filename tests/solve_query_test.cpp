@@ -116,11 +116,94 @@ TEST(SolveQuery, DepthsOutsideTheIntervalAreRefused) {
       R"({"basis": ["z", "z^2"], "depths": [-0.5, 0.5], "weights": [0.5, 0.5], "zf": 0.5, "interval": [-1, 1]})"
       "\n");
   const SolveBatch batch = solve_batch(SolveSettings(), in, "q.jsonl", false);
-  EXPECT_NE(
-      batch.lines.find("q.jsonl:1: key 'depths': depth -0.5 lies outside key 'interval' [0, 1]"),
-      std::string::npos)
+  EXPECT_NE(batch.lines.find(
+                "q.jsonl:1: key 'depths': depth -0.5 lies outside key 'interval' (default) [0, 1]"),
+            std::string::npos)
       << batch.lines;
   EXPECT_EQ(batch.failures, 1);  // the second line's interval holds its depths
+}
+
+// Extra points refine the LP's discretisation of I and do not make a depth admissible: the refusal
+// says so (docs/reference.md §1, Problem 1's admissible set is the interval).
+TEST(SolveQuery, PointsDoNotAdmitADepthOutsideTheInterval) {
+  SolveSettings s;
+  s.basis = {"z", "z^2"};
+  s.depths = {0.1, 1.5};
+  s.weights = {0.5, 0.5};
+  s.points = {1.5};
+  try {
+    solve_instance(s);
+    FAIL() << "a depth outside [0, 1] was answered";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("points do not count"), std::string::npos) << e.what();
+  }
+}
+
+// Raw moments of a point mass rounded to double lie just outside the moment cone, and the local
+// box's frame degenerates (its deviation is the tolerances' alone): the box holds the atom, and is
+// answered, G = 1 with the atom below z_f and 0 at or behind it (docs/reference.md §2).
+TEST(SolveQuery, RawMomentsOfAPointMassAreAnswered) {
+  struct Case {
+    std::vector<double> moments;
+    double zf, G;
+  };
+  const std::vector<Case> cases = {{{0.5, 0.25}, 0.6, 1},
+                                   {{0.7, 0.49}, 0.6, 0},
+                                   {{0.8, 0.64}, 0.6, 0},
+                                   {{0.5, 0.25, 0.125, 0.0625}, 0.6, 1},
+                                   {{0.5, 0.25, 0.125, 0.0625}, 0.4, 0}};
+  for (const Case& c : cases) {
+    SolveSettings s;
+    s.basis = {c.moments.size() == 2 ? "power2" : "power4"};
+    s.discretization = "continuous";
+    s.moments = c.moments;
+    s.zf = c.zf;
+    const auto answer = solve_instance(s);
+    ASSERT_EQ(answer["status"], "optimal") << answer.dump();
+    EXPECT_EQ(answer["G"].get<double>(), c.G) << answer.dump();
+    EXPECT_TRUE(answer["proven"].get<bool>()) << answer.dump();
+    EXPECT_LE(answer["bracket"].get<double>(), 1e-12) << answer.dump();
+    const double lower = answer["lower"], lo = answer["range"][0], hi = answer["range"][1];
+    EXPECT_GE(lower, 0);
+    EXPECT_LE(lo, c.G);
+    EXPECT_GE(hi, c.G);
+    EXPECT_LE(hi - lo, 1e-12) << answer.dump();
+  }
+  // A vector of no distribution stays infeasible: variance 0, but E[z^4] far from 0.5^4.
+  SolveSettings s;
+  s.basis = {"power4"};
+  s.discretization = "continuous";
+  s.moments = {0.5, 0.25, 0.125, 0.09};
+  s.zf = 0.6;
+  EXPECT_EQ(solve_instance(s)["status"], "infeasible");
+}
+
+// G lies in [0, 1]: a certificate whose lower end lost its digits (two depths 1e-7 apart, z_f
+// between them) is clamped to 0 and not called proven; the bracket is then [0, G].
+TEST(SolveQuery, TheBracketLiesInTheUnitIntervalAndIsProvenOnlyWhereInformative) {
+  SolveSettings s;
+  s.basis = {"power2"};
+  s.discretization = "continuous";
+  s.depths = {0.5, 0.5000001};
+  s.weights = {0.5, 0.5};
+  s.zf = 0.50000005;
+  const auto answer = solve_instance(s);
+  ASSERT_EQ(answer["status"], "optimal") << answer.dump();
+  const double G = answer["G"], lower = answer["lower"], bracket = answer["bracket"];
+  EXPECT_GE(lower, 0);
+  EXPECT_LE(G, 1);
+  EXPECT_LE(lower, G);
+  EXPECT_EQ(bracket, G - lower);
+  if (answer.contains("certificate_lower")) {
+    EXPECT_FALSE(answer["proven"].get<bool>()) << answer.dump();
+    EXPECT_EQ(lower, 0);
+  }
+  // A well-conditioned instance keeps its proof and needs no clamping.
+  s.depths = {0.3, 0.7};
+  s.zf = 0.5;
+  const auto wide = solve_instance(s);
+  EXPECT_TRUE(wide["proven"].get<bool>()) << wide.dump();
+  EXPECT_FALSE(wide.contains("certificate_lower"));
 }
 
 }  // namespace

@@ -101,7 +101,9 @@ void write_camera_images(const CameraView& view, const std::vector<std::string>&
     // The reference has no difference: PCF, or under an area light its shadow (pcf is then the
     // hard shadow, which has).
     const bool soft = view.receivers.soft.angle_deg > 0;
-    if (!(names[k] == "area_light" || (technique_role(names[k]) == RowRole::Reference && !soft)))
+    const bool reference =
+        names[k] == "area_light" || (technique_role(names[k]) == RowRole::Reference && !soft);
+    if (!reference)
       write_with_colour_bar(base + "_" + file_stem(names[k]) + "_diff.png", diff, w, h, bar);
     const int x0 = int(k % columns) * cell_w, y0 = int(k / columns) * cell_h;
     const auto paste = [&](const std::vector<float>& pixels, int y) {
@@ -110,7 +112,8 @@ void write_camera_images(const CameraView& view, const std::vector<std::string>&
       OIIO::ImageBufAlgo::paste(sheet, x0, y, 0, 0, tile);
     };
     paste(image, y0 + label);
-    paste(diff, y0 + label + h);
+    // The reference's lower cell stays blank, as in the transparency sheet: it has no difference.
+    if (!reference) paste(diff, y0 + label + h);
     // Labels need a font; without one the sheet keeps the technique order of the report.
     OIIO::ImageBufAlgo::render_text(sheet, x0 + 2, y0 + label - 4, names[k], 14, "DejaVuSans",
                                     black);

@@ -4,11 +4,13 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 #include "continuous/discretized.h"
 #include "continuous/local_box.h"
 #include "continuous/moment_box.h"
 #include "continuous/moment_range.h"
+#include "continuous/point_mass_box.h"
 #include "lp/kkt_checker.h"
 #include "lp/problem.h"
 #include "lp/solution.h"
@@ -84,8 +86,11 @@ void check_interval(const std::vector<double>& interval, const std::string& key)
 
 // A distribution's depths must be admissible (docs/reference.md §1), as eval refuses an LP interval
 // that excludes a view's depths: an answer with support outside I is no answer to Problem 1 on I.
+// Extra points do not make a depth admissible: they refine the LP's discretisation of I
+// (docs/reference.md §2), while Problem 1's admissible set is the interval.
 void check_depths_inside(const Instance& instance, const std::vector<double>& interval,
-                         const std::string& depths_key, const std::string& interval_key) {
+                         const std::string& depths_key, const std::string& interval_key,
+                         bool has_points) {
   if (!instance.from_distribution()) return;
   const auto [min, max] = std::minmax_element(instance.depths.begin(), instance.depths.end());
   if (interval[0] <= *min && *max <= interval[1]) return;
@@ -95,7 +100,10 @@ void check_depths_inside(const Instance& instance, const std::vector<double>& in
                    "]; a distribution's depths must be admissible "
                    "(docs/reference.md §1): expected every depth in the interval, or an interval "
                    "that holds [" +
-                   round_trip(*min) + ", " + round_trip(*max) + "]");
+                   round_trip(*min) + ", " + round_trip(*max) + "]" +
+                   (has_points ? " (points do not count: they refine the LP's discretisation of "
+                                 "the interval, which is Problem 1's admissible set)"
+                               : ""));
 }
 
 // Raw moments stand for every vector within their rounding (docs/reference.md §2): where G moves
@@ -117,11 +125,52 @@ void add_moment_range(json& out, const lp::ProblemFactory& factory,
                           (r.complete() ? "" : ": the maximum is a lower estimate");
 }
 
+// G lies in [0, 1]: a certificate's lower end below 0 (or an upper end above 1) says nothing about
+// G, and one far below 0 has lost its digits (docs/reference.md §2, "The bracket"). The bracket is
+// reported within [0, 1]; `proven` holds only where the certificate is a proof and its lower end
+// needed no clamping beyond the LP's certified error, so that the bracket rests on the proof and
+// not on 0 <= G. A clamped lower end is kept as "certificate_lower".
+void put_bracket(json& out, double G, double lower, bool proven) {
+  const double g = std::clamp(G, 0.0, 1.0);
+  const double lo = std::clamp(lower, 0.0, g);
+  out["G"] = g;
+  out["lower"] = lo;
+  out["bracket"] = g - lo;
+  const bool clamped = lower < -lp::kCertifiedError || lower > 1 + lp::kCertifiedError;
+  out["proven"] = proven && !clamped;
+  if (clamped) out["certificate_lower"] = lower;
+}
+
 // A distribution as the answer's "support": [point, weight] pairs.
 json support_json(const std::vector<double>& points, const std::vector<double>& weights) {
   json support = json::array();
   for (size_t k = 0; k < points.size(); ++k) support.push_back({points[k], weights[k]});
   return support;
+}
+
+// What a box answer's G, lower, bracket and proven are (docs/reference.md §2).
+constexpr const char* kBoxBracketOf =
+    "G, lower, bracket and proven: the least G over the moments' rounding box, not the rounded "
+    "kernel's G";
+
+// Raw power moments whose rounding box holds a point mass (continuous/point_mass_box.h): the local
+// box's frame degenerates there, and the closed form answers it. False when the box holds none.
+bool answer_point_mass(json& out, const lp::Discretization& disc,
+                       const std::vector<double>& moments, const std::vector<double>& tolerance,
+                       double zf) {
+  const std::optional<lp::PointMassBox> atom =
+      lp::point_mass_box(disc.lo, disc.hi, moments, tolerance, zf);
+  if (!atom) return false;
+  out["status"] = "optimal";
+  out["moments_from"] = "moments, their rounding box, which holds a point mass";
+  put_bracket(out, atom->G, atom->lower, true);
+  out["bracket_of"] = kBoxBracketOf;
+  out["range"] = {atom->range_lo, atom->range_hi};
+  out["range_of"] =
+      "G over the rounding box: an atom in it and Cantelli's bound on its mean and variance";
+  out["support"] = support_json({atom->atom}, {1.0});
+  out["backend"] = "closed_form";
+  return true;
 }
 
 // Raw power moments outside the cone on the continuous interval: the box problem in the moments'
@@ -138,13 +187,11 @@ bool answer_box_locally(json& out, const lp::Discretization& disc,
   out["moments_from"] = "moments, their rounding box in local coordinates";
   // G, lower, bracket and proven are the box's least G (docs/reference.md §2): the kernel that was
   // rounded may lie anywhere in the box, its G anywhere in `range`.
-  out["G"] = local.box.upper;
-  out["lower"] = local.box.lower;
-  out["bracket"] = local.box.width();
-  out["bracket_of"] = "the least G over the moments' rounding box, not the rounded kernel's G";
-  out["proven"] = local.box.proven;
+  put_bracket(out, local.box.upper, local.box.lower, local.box.proven);
+  out["bracket_of"] = kBoxBracketOf;
   const lp::LocalBoxUpper upper = lp::local_box_upper(local);
-  out["range"] = {local.box.lower, std::max(upper.upper, local.box.upper)};
+  out["range"] = {std::clamp(local.box.lower, 0.0, 1.0),
+                  std::clamp(std::max(upper.upper, local.box.upper), 0.0, 1.0)};
   out["range_of"] =
       std::string("G over the rounding box: from its least G to ") +
       (upper.behind.ok()
@@ -188,7 +235,8 @@ json solve_one(lp::Backend& backend, FactoryCache& factories,
     out["exact_status"] = lp::to_string(s.status);
     out["moment_box_ulps"] = tolerance_ulps;
     if (disc.continuous && lp::power_basis_degree(factory.basis()) > 0 &&
-        answer_box_locally(out, disc, moments, tolerance, zf))
+        (answer_box_locally(out, disc, moments, tolerance, zf) ||
+         answer_point_mass(out, disc, moments, tolerance, zf)))
       return out;
     const lp::MomentBoxAnswer box = lp::solve_moment_box(factory, exact, tolerance);
     out["status"] = lp::to_string(box.status);
@@ -212,9 +260,7 @@ json solve_one(lp::Backend& backend, FactoryCache& factories,
     if (disc.continuous) {
       // docs/reference.md §2: G of all of [lo, hi] lies in [lower, G]; proven: the certificate is a
       // proof (catalog functions), not a sampling (expressions).
-      out["lower"] = answer.lower;
-      out["bracket"] = answer.width();
-      out["proven"] = answer.proven;
+      put_bracket(out, s.G, answer.lower, answer.proven);
       out["exchange_rounds"] = answer.rounds;
     }
     json support = json::array();
@@ -373,7 +419,9 @@ json solve_line(const std::string& line, int number, const SolveSettings& o, lp:
                          query.has("moments") ? query.numbers("moments") : std::vector<double>{},
                          query.numbers("depths"), query.numbers("weights"))
                    : checked_instance(query.numbers("moments"), {}, {});
-  check_depths_inside(instance, interval, "key 'depths'", "key 'interval'");
+  check_depths_inside(instance, interval, "key 'depths'",
+                      query.has("interval") ? "key 'interval'" : "key 'interval' (default)",
+                      query.has("points"));
   out.update(solve_one(
       backend, factories, query.strings("basis"), d, instance, query.number("zf"),
       query.has("points") ? query.numbers("points") : std::vector<double>{}, o.check,
@@ -470,7 +518,8 @@ nlohmann::json solve_instance(const SolveSettings& o) {
   lp::Discretization disc{o.interval[0], o.interval[1], o.grid, o.quantize};
   disc.continuous = o.discretization == "continuous";
   const Instance instance = checked_instance(o.moments, o.depths, o.weights);
-  check_depths_inside(instance, o.interval, "depths (--depths)", "interval (--interval)");
+  check_depths_inside(instance, o.interval, "depths (--depths)", "interval (--interval)",
+                      !o.points.empty());
   FactoryCache factories;
   return solve_one(*backend, factories, o.basis, disc, instance, o.zf, o.points, o.check,
                    o.moment_tolerance);
