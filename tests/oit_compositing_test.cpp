@@ -8,9 +8,9 @@
 #include <numbers>
 #include <random>
 
+#include "oit/oit_verification.h"
 #include "shadow/compositing.h"
 #include "techniques/oit/oit_technique.h"
-#include "oit/oit_verification.h"
 #include "util/error.h"
 #include "util/number_text.h"
 

@@ -1,11 +1,11 @@
-// A camera's deep frame (raster/deep_frame.h): two coloured panes over a coloured ground, seen and lit
-// from above, so that every number of the centre pixel is known by hand.
+// A camera's deep frame (raster/deep_frame.h): two coloured panes over a coloured ground, seen and
+// lit from above, so that every number of the centre pixel is known by hand.
 #include <gtest/gtest.h>
 
-#include "shadow/compositing.h"
-#include "raster/deep_frame.h"
 #include "oit/deep_frame_exr.h"
+#include "raster/deep_frame.h"
 #include "scene/scene.h"
+#include "shadow/compositing.h"
 #include "test_support.h"
 #include "util/error.h"
 

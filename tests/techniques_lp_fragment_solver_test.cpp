@@ -76,7 +76,7 @@ TEST(LpFragmentSolver, ContinuousAndBoxNeverAboveTheGrid) {
     below += g - c > 1e-7;
   }
   EXPECT_GE(answered, 50);
-  EXPECT_GT(below, 0);  // the interval's points beyond the grid do move some answers
+  EXPECT_GT(below, 0);           // the interval's points beyond the grid do move some answers
   EXPECT_LT(largest_gap, 1e-2);  // a 257-point grid: the interval's answer is close
 }
 

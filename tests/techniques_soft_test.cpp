@@ -1,7 +1,5 @@
 // Summed-area tables and the soft techniques (shadow/summed_area.h, techniques/soft/,
 // docs/soft-shadows.md §2).
-#include "techniques/soft/soft_technique.h"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,6 +11,7 @@
 #include "scene/scene.h"
 #include "shadow/summed_area.h"
 #include "soft_test_scenes.h"
+#include "techniques/soft/soft_technique.h"
 #include "test_support.h"
 
 namespace mb {

@@ -42,9 +42,9 @@ struct OitStats {
 };
 
 // A pixel's error: `reference` and `transmittance` are the exact and the technique's weights
-// (T_ref and the transmittance the composite used, techniques/oit/oit_technique.h effective_transmittance);
-// `reference_color` the exact composite and `reference_lab` its CIELAB value (computed once per
-// pixel, not per technique), `color` the technique's composite.
+// (T_ref and the transmittance the composite used, techniques/oit/oit_technique.h
+// effective_transmittance); `reference_color` the exact composite and `reference_lab` its CIELAB
+// value (computed once per pixel, not per technique), `color` the technique's composite.
 PixelError pixel_error(const PixelFragments& px, std::span<const double> reference,
                        std::span<const double> transmittance, const Rgb& reference_color,
                        const Lab& reference_lab, const Rgb& color, const LabConverter& lab);

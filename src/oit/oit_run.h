@@ -7,10 +7,10 @@
 
 #include "eval/evaluation.h"
 #include "oit/color_difference.h"
-#include "raster/deep_frame.h"
 #include "oit/oit_metrics.h"
-#include "techniques/oit/oit_technique.h"
+#include "raster/deep_frame.h"
 #include "scene/dataset.h"
+#include "techniques/oit/oit_technique.h"
 #include "util/option_record.h"
 
 namespace mb {

@@ -11,8 +11,8 @@
 
 #include "moments/canonical.h"
 #include "moments/hamburger.h"
-#include "techniques/oit/oit_technique.h"
 #include "scene/procedural.h"
+#include "techniques/oit/oit_technique.h"
 
 namespace mb {
 namespace {

@@ -7,11 +7,11 @@
 #include <map>
 #include <string>
 
+#include "lp/blocker_bounds.h"
 #include "raster/render_view.h"
 #include "scene/dataset.h"
-#include "shadow/fragments.h"
 #include "shadow/area_light.h"
-#include "lp/blocker_bounds.h"
+#include "shadow/fragments.h"
 #include "techniques/soft/soft_technique.h"
 
 namespace mb {
