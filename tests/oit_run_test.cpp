@@ -8,11 +8,15 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <set>
 
+#include "eval/eval_config.h"
 #include "oit/color_difference.h"
 #include "oit/oit_verification.h"
 #include "scene/scene.h"
 #include "shadow/compositing.h"
+#include "techniques/registry.h"
+#include "techniques/soft/soft_technique.h"
 #include "test_support.h"
 #include "util/error.h"
 
@@ -168,6 +172,24 @@ TEST(OitVerify, MboitRowsPassAgainstTheLp) {
   const std::string message =
       testing_support::input_error_of([] { verify_mboit("mboit_power8", 1, 1); });
   EXPECT_NE(message.find("expected one of mboit_power4"), std::string::npos) << message;
+}
+
+// Every key a registry row lists as its family's option (TechniqueRow::family_options, shown by
+// `momentbench options techniques`) is declared by a record of the technique, soft, oit or LP
+// options: a renamed or misspelled key would show an option that does not exist.
+TEST(OitRun, EveryFamilyOptionOfARowIsADeclaredOption) {
+  std::set<std::string> declared;
+  for (const auto& s : technique_option_specs()) declared.insert(s.name);
+  for (const auto& r : soft_option_records()) declared.insert(r.spec.name);
+  for (const auto& r : oit_run_options()) declared.insert(r.spec.name);
+  for (const auto& s : lp_option_specs()) declared.insert(s.name);
+  size_t listed = 0;
+  for (const TechniqueRow& row : technique_registry())
+    for (const std::string& key : row.family_options) {
+      EXPECT_TRUE(declared.count(key)) << row.name << " lists " << key;
+      ++listed;
+    }
+  EXPECT_GT(listed, 20u);
 }
 
 }  // namespace

@@ -73,13 +73,14 @@ std::vector<OptionSpec> bounds_specs() {
 namespace {
 
 int run_bounds(const CommonOptions& options) {
-  Config config = resolve_config(bounds_specs(), options);
-  if (print_config_if_asked(config, options)) return 0;
+  auto cmd = CommandRun::begin(bounds_specs(), options);
+  if (!cmd) return 0;
+  const Config& config = cmd->config();
   const DatasetOptions data = dataset_options_from(config);
   BoundsSettings b;
   read_options(config, bounds_options(), b);
   BoundCurveRequest request;
-  request.threads = resolve_thread_count(data.threads);
+  request.threads = cmd->threads();
   request.lp = lp_discretization_from(config);
   request.backend = lp_backend_from(config);
   request.bases = b.bases;
@@ -97,10 +98,10 @@ int run_bounds(const CommonOptions& options) {
     request.depths = b.depths;
     request.weights = b.weights;
   }
-  StagedOutputDir out(options.out, options.force);
+  StagedOutputDir& out = cmd->out();
   const BoundCurves curves = compute_bound_curves(request);
 
-  const RunMetadata meta = collect_run_metadata(request.threads, process_arguments());
+  const RunMetadata& meta = cmd->metadata();
   const BoundsReport report =
       render_bounds_report(request, curves, source, {meta.version, meta.git_sha, meta.started_utc});
   write_file_atomically(out / "bounds.csv", report.bounds_csv);
@@ -112,8 +113,7 @@ int run_bounds(const CommonOptions& options) {
                       (out / "bounds").string(), "CDF and sharp lower bounds", options.quiet);
   const std::string text = report.markdown + "\n" + plot;
   write_file_atomically(out / "bounds.md", text);
-  write_run_record(out, config, meta);
-  out.commit();
+  cmd->finish();
   std::fputs(text.substr(0, text.rfind("\n\n![")).c_str(), stdout);
   std::fputs("\n", stdout);
   return 0;

@@ -53,6 +53,34 @@ void write_run_record(const StagedOutputDir& out, const Config& config, const Ru
   write_file_atomically(out / "run.yaml", to_yaml(meta));
 }
 
+CommandRun::CommandRun(Config config, const CommonOptions& options)
+    : config_(std::move(config)), options_(&options) {
+  for (const auto& spec : config_.specs())
+    if (spec.name == "threads") threads_ = resolve_thread_count(int(config_.integer("threads")));
+}
+
+std::optional<CommandRun> CommandRun::begin(std::vector<OptionSpec> specs,
+                                            const CommonOptions& options) {
+  Config config = resolve_config(std::move(specs), options);
+  if (print_config_if_asked(config, options)) return std::nullopt;
+  return CommandRun(std::move(config), options);
+}
+
+StagedOutputDir& CommandRun::out() {
+  if (!out_) out_ = std::make_unique<StagedOutputDir>(options_->out, options_->force);
+  return *out_;
+}
+
+const RunMetadata& CommandRun::metadata() {
+  if (!metadata_) metadata_ = collect_run_metadata(threads_, process_arguments());
+  return *metadata_;
+}
+
+void CommandRun::finish() {
+  write_run_record(out(), config_, metadata());
+  out_->commit();
+}
+
 void apply_flags(const CLI::App& command, Config& config, const std::vector<FlagKey>& flags) {
   for (const auto& f : flags)
     if (command.get_option(f.flag)->count() > 0) config.set_node(f.key, f.value(), f.flag);

@@ -3,6 +3,8 @@
 // turning them into a validated Config (docs/design.md §Commands).
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +34,34 @@ bool print_config_if_asked(const Config& config, const CommonOptions& options);
 void write_run_record(const StagedOutputDir& out, const Config& config, const RunMetadata& meta);
 // Defaults, then the config file, then every --set in order.
 Config resolve_config(std::vector<OptionSpec> specs, const CommonOptions& options);
+// One run of a command that writes an output directory, the prologue and epilogue every such
+// command shares (docs/design.md §Commands): the resolved config and thread count first, the staged
+// output directory only once the command has checked its input (bad input leaves no output), and
+// at the end config.yaml, run.yaml and the atomic commit.
+class CommandRun {
+ public:
+  // resolve_config; nullopt when --print-config printed the config (the command then stops).
+  static std::optional<CommandRun> begin(std::vector<OptionSpec> specs,
+                                         const CommonOptions& options);
+  const Config& config() const { return config_; }
+  // The `threads` option resolved (0: every core); 1 for a command without one.
+  int threads() const { return threads_; }
+  // The staged output directory, made on first use.
+  StagedOutputDir& out();
+  // This run's metadata, collected on first use.
+  const RunMetadata& metadata();
+  // config.yaml and run.yaml into the output directory, then its commit.
+  void finish();
+
+ private:
+  CommandRun(Config config, const CommonOptions& options);
+  Config config_;
+  const CommonOptions* options_;
+  int threads_ = 1;
+  std::unique_ptr<StagedOutputDir> out_;
+  std::optional<RunMetadata> metadata_;
+};
+
 // A command's own flags as shorthands of option keys: each flag given on the command line sets its
 // key after the config file and every --set (a list flag gives a list; a flag without a value
 // gives true, or false for a "!--no-x" flag), so --print-config shows it and it is validated

@@ -42,12 +42,13 @@ struct EvalOptions {
 };
 
 int run_eval(const EvalOptions& options) {
-  Config config = resolve_config(eval_specs(), options.common);
-  if (print_config_if_asked(config, options.common)) return 0;
+  auto cmd = CommandRun::begin(eval_specs(), options.common);
+  if (!cmd) return 0;
+  const Config& config = cmd->config();
   const DatasetOptions data = dataset_options_from(config);
   EvalRunOptions run;
   read_options(config, eval_run_options(), run);
-  const int threads = resolve_thread_count(data.threads);
+  const int threads = cmd->threads();
   EvalSettings settings = shadow_settings_from(config, threads);
   if (run.techniques.empty()) throw InputError("techniques: expected at least one technique");
   const auto techniques = with_oracle_row(run.techniques, settings.bias);
@@ -60,7 +61,7 @@ int run_eval(const EvalOptions& options) {
   DatasetDesc dataset = load_dataset(data.dataset);
   const std::vector<Scene> scenes = build_dataset_scenes(dataset);
   if (run.camera_images) check_dataset_cameras(scenes, dataset);
-  StagedOutputDir out(options.common.out, options.common.force);
+  StagedOutputDir& out = cmd->out();
   const bool quiet = options.common.quiet;
 
   auto views = prepare_views(scenes, dataset, data.resolution, settings, quiet);
@@ -102,7 +103,7 @@ int run_eval(const EvalOptions& options) {
     audits = audit_blocker_searches(views, settings);
   if (!audits.empty()) write_file_atomically(out / "blocker_audit.csv", blocker_audit_csv(audits));
 
-  const RunMetadata meta = collect_run_metadata(threads, process_arguments());
+  const RunMetadata& meta = cmd->metadata();
   EvalReportContext context;
   context.dataset = dataset.name, context.version = meta.version, context.git_sha = meta.git_sha;
   context.compiler = meta.compiler, context.started = meta.started_utc, context.threads = threads;
@@ -119,8 +120,7 @@ int run_eval(const EvalOptions& options) {
   write_file_atomically(out / "errors.csv", report.errors_csv);
   write_file_atomically(out / "regions.csv", report.regions_csv);
   if (!report.pcss_csv.empty()) write_file_atomically(out / "pcss_errors.csv", report.pcss_csv);
-  write_run_record(out, config, meta);
-  out.commit();
+  cmd->finish();
   std::fputs(report.table.c_str(), stdout);
   return 0;
 }

@@ -55,11 +55,12 @@ std::string describe(const OitParams& p) {
 }
 
 int run_oit(const OitOptions& options) {
-  Config config = resolve_config(oit_specs(), options.common);
-  if (print_config_if_asked(config, options.common)) return 0;
+  auto cmd = CommandRun::begin(oit_specs(), options.common);
+  if (!cmd) return 0;
+  const Config& config = cmd->config();
   OitRunOptions run;
   read_options(config, oit_run_options(), run);
-  const int threads = resolve_thread_count(int(config.integer("threads")));
+  const int threads = cmd->threads();
   OitParams params;
   params.beta = run.beta;
   params.warp = warp_kind(run.warp);
@@ -70,7 +71,7 @@ int run_oit(const OitOptions& options) {
   const DatasetDesc dataset = load_dataset(config.string("dataset"));
   const std::vector<SceneFrame> frames = render_dataset_frames(dataset, threads);
 
-  StagedOutputDir out(options.common.out, options.common.force);
+  StagedOutputDir& out = cmd->out();
   if (run.images) std::filesystem::create_directories(out.staging() / "images");
   if (run.deep_frames) std::filesystem::create_directories(out.staging() / "frames");
   const LabConverter lab;
@@ -99,7 +100,7 @@ int run_oit(const OitOptions& options) {
   for (const auto& rows : camera_rows)
     per_camera.insert(per_camera.end(), rows.begin(), rows.end());
 
-  const RunMetadata meta = collect_run_metadata(threads, process_arguments());
+  const RunMetadata& meta = cmd->metadata();
   context.dataset = dataset.name, context.version = meta.version, context.git_sha = meta.git_sha;
   context.compiler = meta.compiler, context.started = meta.started_utc, context.threads = threads;
   context.settings_text = describe(params);
@@ -111,8 +112,7 @@ int run_oit(const OitOptions& options) {
   const OitReport report = render_oit_report(context, overall, per_camera);
   write_file_atomically(out / "report.md", report.markdown);
   write_file_atomically(out / "errors.csv", report.errors_csv);
-  write_run_record(out, config, meta);
-  out.commit();
+  cmd->finish();
   std::fputs(report.table.c_str(), stdout);
   return 0;
 }

@@ -47,12 +47,13 @@ struct RenderOptions {
 };
 
 int run_render(const RenderOptions& options) {
-  Config config = resolve_config(render_specs(), options.common);
-  if (print_config_if_asked(config, options.common)) return 0;
+  auto cmd = CommandRun::begin(render_specs(), options.common);
+  if (!cmd) return 0;
+  const Config& config = cmd->config();
   const DatasetOptions data = dataset_options_from(config);
   RenderSettings render;
   read_options(config, render_options(), render);
-  const int threads = resolve_thread_count(data.threads);
+  const int threads = cmd->threads();
   DatasetDesc dataset = load_dataset(data.dataset);
   int resolution = data.resolution;
   if (resolution == 0) resolution = dataset.resolution;
@@ -64,7 +65,7 @@ int run_render(const RenderOptions& options) {
     if (resolution > 0)
       for (auto& view : scenes.back().views) view.resolution = resolution;
   }
-  StagedOutputDir out(options.common.out, options.common.force);
+  StagedOutputDir& out = cmd->out();
 
   std::ostringstream csv, table;
   csv << "scene,view,resolution,triangles,fragments,receivers,covered_texels,max_layers,mean_"
@@ -108,12 +109,10 @@ int run_render(const RenderOptions& options) {
     throw InputError(dataset.file + ": dataset " + dataset.name +
                      " has nothing to render: no view of any scene rasterizes a fragment (every "
                      "triangle degenerate, or no geometry inside the views)");
-  RunMetadata meta = collect_run_metadata(threads, process_arguments());
   write_file_atomically(out / "stats.csv", csv.str());
   write_file_atomically(out / "stats.md",
                         "# Layer stacks of dataset " + dataset.name + "\n\n" + table.str());
-  write_run_record(out, config, meta);
-  out.commit();
+  cmd->finish();
   std::fputs(table.str().c_str(), stdout);
   return 0;
 }

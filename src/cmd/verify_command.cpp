@@ -48,16 +48,17 @@ bool print_verdicts(const VerifyRun& run, bool all_passed) {
 }
 
 int run_verify(const CommonOptions& options) {
-  Config config = resolve_config(verify_specs(), options);
-  if (print_config_if_asked(config, options)) return 0;
+  auto cmd = CommandRun::begin(verify_specs(), options);
+  if (!cmd) return 0;
+  const Config& config = cmd->config();
   const DatasetOptions data = dataset_options_from(config);
-  const int threads = resolve_thread_count(data.threads);
+  const int threads = cmd->threads();
   const EvalSettings settings = shadow_settings_from(config, threads);
   VerifySettings v;
   read_options(config, verify_options(), v);
   const VerifyPlan plan = make_verify_plan(v, settings.technique);
   for (const auto& name : v.oit_techniques) check_oit_verify_technique(name);  // before output
-  StagedOutputDir out(options.out, options.force);
+  StagedOutputDir& out = cmd->out();
   const VerifyRun run = run_verification(plan, data, settings, options.quiet);
   std::vector<OitVerifyRow> oit_rows;
   for (const auto& name : v.oit_techniques)
@@ -72,7 +73,7 @@ int run_verify(const CommonOptions& options) {
                    r.technique.c_str(), r.beyond, r.fragments, r.tolerance, r.lp_failures);
     }
 
-  const RunMetadata meta = collect_run_metadata(threads, process_arguments());
+  const RunMetadata& meta = cmd->metadata();
   VerifyReportContext context;
   context.version = meta.version, context.git_sha = meta.git_sha,
   context.started = meta.started_utc;
@@ -86,8 +87,7 @@ int run_verify(const CommonOptions& options) {
   if (!oit_rows.empty()) write_file_atomically(out / "verify_oit.csv", oit_verify_csv(oit_rows));
   write_file_atomically(out / "verify.csv", report.csv);
   write_file_atomically(out / "worst.csv", report.worst_csv);
-  write_run_record(out, config, meta);
-  out.commit();
+  cmd->finish();
   // The table on stdout.
   const std::string& text = report.markdown;
   std::fputs(text.substr(0, text.find("\n## Worst")).c_str(), stdout);

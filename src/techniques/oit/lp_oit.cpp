@@ -44,7 +44,7 @@ std::vector<TechniqueRow> rows() {
                       "joining the grid: A = b_0 G",
            .storage = "double",
            .bound = "the LP's certified tolerance at lp.beta = 0 (e^{-A} >= T)",
-           .family_options = {"oit.warp", "lp.grid", "lp.backend", "lp.beta"},
+           .family_options = {"oit.warp", "oit.depth_range", "lp.grid", "lp.backend", "lp.beta"},
            .default_run = true,
            .example = "lp:power4",
            .solves_lp = true,

@@ -6,6 +6,7 @@
 #include "moments/canonical.h"
 #include "moments/canonical_bound.h"
 #include "moments/hamburger.h"
+#include "techniques/oit/mboit_row.h"
 #include "techniques/oit/oit_technique.h"
 #include "techniques/registry.h"
 
@@ -113,23 +114,8 @@ OitVerifyRecipe verify_recipe(const OitParams&) {
 
 template <int kMoments, int kVariant>
 TechniqueRow row() {
-  const OitStorageVariant& v = kOitStorageVariants[kVariant];
-  const std::string storage = kVariant == 0 ? "double" : kVariant == 1 ? "float32" : "snorm16";
-  return {
-      .name = "mboit_power" + std::to_string(kMoments) + v.suffix,
-      .family = TechniqueFamily::Transmittance,
-      .rank = 30 + kMoments + v.rank,
-      .summary = "MBOIT with " + std::to_string(kMoments) + " power moments of the warped depth, " +
-                 storage,
-      .storage = storage,
-      .bound =
-          "none: beta > 0 overestimates the absorbance (oit.beta), and the bias alpha "
-          "moves the moments (docs/transparency.md §3)",
-      .unproven_reason = "MBOIT: beta > 0 and the normalisation Gamma (docs/transparency.md §3)",
-      .family_options = {"oit.beta", "oit.warp"},
-      .default_run = kVariant == 0,
-      .make_oit = make<kMoments, kVariant>,
-      .oit_verify = kVariant == 0 && kMoments < 8 ? verify_recipe<kMoments> : nullptr};
+  return mboit_row("mboit_power", "power", kMoments, kVariant, 30, make<kMoments, kVariant>,
+                   kVariant == 0 && kMoments < 8 ? verify_recipe<kMoments> : nullptr);
 }
 
 std::vector<TechniqueRow> rows() {

@@ -8,6 +8,7 @@
 
 #include "moments/canonical.h"
 #include "moments/canonical_bound.h"
+#include "techniques/oit/mboit_row.h"
 #include "techniques/oit/oit_technique.h"
 #include "techniques/registry.h"
 #include "util/number_text.h"
@@ -93,23 +94,8 @@ OitVerifyRecipe verify_recipe(const OitParams& p) {
 
 template <int kMoments, int kVariant>
 TechniqueRow row() {
-  const OitStorageVariant& v = kOitStorageVariants[kVariant];
-  const std::string storage = kVariant == 0 ? "double" : kVariant == 1 ? "float32" : "snorm16";
-  return {
-      .name = "mboit_trig" + std::to_string(kMoments) + v.suffix,
-      .family = TechniqueFamily::Transmittance,
-      .rank = 60 + kMoments + v.rank,
-      .summary = "MBOIT with " + std::to_string(kMoments) +
-                 " trigonometric moments of the warped depth, " + storage,
-      .storage = storage,
-      .bound =
-          "none: beta > 0 overestimates the absorbance (oit.beta), and the bias alpha "
-          "moves the moments (docs/transparency.md §3)",
-      .unproven_reason = "MBOIT: beta > 0 and the normalisation Gamma (docs/transparency.md §3)",
-      .family_options = {"oit.beta", "oit.warp"},
-      .default_run = kVariant == 0,
-      .make_oit = make<kMoments, kVariant>,
-      .oit_verify = kVariant == 0 && kMoments < 4 ? verify_recipe<kMoments> : nullptr};
+  return mboit_row("mboit_trig", "trigonometric", kMoments, kVariant, 60, make<kMoments, kVariant>,
+                   kVariant == 0 && kMoments < 4 ? verify_recipe<kMoments> : nullptr);
 }
 
 std::vector<TechniqueRow> rows() {
