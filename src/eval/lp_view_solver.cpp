@@ -16,7 +16,7 @@ namespace mb {
 std::vector<uint32_t> fragments_needing_lp(const Fragments& fragments, double lp_beta) {
   std::vector<uint32_t> list;
   for (size_t k = 0; k < fragments.size(); ++k)
-    if (fragments.oracle[k] > 0 || lp_beta > 0) list.push_back(uint32_t(k));
+    if (needs_lp(fragments.oracle[k], lp_beta)) list.push_back(uint32_t(k));
   return list;
 }
 

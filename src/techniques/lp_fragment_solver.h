@@ -20,6 +20,13 @@
 
 namespace mb {
 
+// Whether a fragment needs an LP at all (docs/reference.md §2): G <= F_Z(z_f), so F_Z(z_f) = 0
+// (`cdf_at_zf`, z_f already biased) gives G = 0 without solving, unless beta > 0 asks for the
+// maximum G+, which may exceed 0 there.
+inline bool needs_lp(double cdf_at_zf, double beta) {
+  return cdf_at_zf > 0 || beta > 0;
+}
+
 // `lp.moment_box` (docs/reference.md §2, "Moments with a tolerance"): Problem 1 over every
 // distribution whose moments, stored as `storage` holds them, lie within `tolerance` of the
 // kernel's stored moments: the sharpest bound a shader reading such a map can claim.

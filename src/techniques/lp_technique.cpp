@@ -32,12 +32,11 @@ class LpTechnique : public Technique {
   const lp::ProblemFactory* lp_factory() const override { return &factory_; }
 
   double shadow(const FragmentInput& in) override {
-    // docs/reference.md §2: G <= F_Z(z_f), so F_Z(z_f) = 0 gives G = 0 without solving (z_f here is
-    // already z_f - delta_f, docs/reference.md §3).
+    // F_Z at z_f, here already z_f - delta_f (docs/reference.md §3).
     double cdf = 0;
     for (size_t t = 0; t < in.kernel_depths.size(); ++t)
       if (in.kernel_depths[t] < in.zf) cdf += in.kernel_weights[t];
-    if (cdf == 0 && beta_ == 0) return 0;
+    if (!needs_lp(cdf, beta_)) return 0;
     // The kernel's own distribution fixes the moments, so the program is feasible by construction.
     // One fragment alone, from scratch: evaluate_technique solves whole views with warm starts
     // instead (eval/lp_view_solver.h), through the same solver, to the same certified answers.
