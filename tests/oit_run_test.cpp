@@ -4,6 +4,7 @@
 #include "oit/oit_run.h"
 
 #include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
 
 #include <cmath>
 #include <cstring>
@@ -15,6 +16,8 @@
 #include "oit/oit_verification.h"
 #include "scene/scene.h"
 #include "shadow/compositing.h"
+#include "techniques/lp_options.h"
+#include "techniques/oit/oit_options.h"
 #include "techniques/registry.h"
 #include "techniques/soft/soft_technique.h"
 #include "test_support.h"
@@ -182,6 +185,7 @@ TEST(OitRun, EveryFamilyOptionOfARowIsADeclaredOption) {
   for (const auto& s : technique_option_specs()) declared.insert(s.name);
   for (const auto& r : soft_option_records()) declared.insert(r.spec.name);
   for (const auto& r : oit_run_options()) declared.insert(r.spec.name);
+  for (const auto& s : oit_option_specs()) declared.insert(s.name);
   for (const auto& s : lp_option_specs()) declared.insert(s.name);
   size_t listed = 0;
   for (const TechniqueRow& row : technique_registry())
@@ -193,4 +197,27 @@ TEST(OitRun, EveryFamilyOptionOfARowIsADeclaredOption) {
 }
 
 }  // namespace
+// OitParams' options come from their records: a default-made one holds the records' defaults, and
+// oit_params_from reads the keys a config declares (a sweep's lacks oit.depth_range) and lp.*.
+TEST(OitRun, OitParamsAreTheRecordsValues) {
+  const OitParams defaults;
+  const Config records(oit_option_specs());
+  EXPECT_EQ(defaults.beta, YAML::Load(records.value_text("oit.beta")).as<double>());
+  EXPECT_EQ(defaults.warp, warp_kind(records.string("oit.warp")));
+  EXPECT_EQ(defaults.depth_range, depth_range_kind(records.string("oit.depth_range")));
+  EXPECT_EQ(defaults.lp.lp_backend, TechniqueParams().lp_backend);
+  std::vector<OptionSpec> specs = lp_option_specs();
+  for (const auto& s : oit_option_specs())
+    if (s.name != "oit.depth_range") specs.push_back(s);
+  Config config(specs);
+  config.set("oit.beta=0.5");
+  config.set("oit.warp=linear");
+  config.set("lp.grid=64");
+  const OitParams read = oit_params_from(config);
+  EXPECT_EQ(read.beta, 0.5);
+  EXPECT_EQ(read.warp, WarpKind::Linear);
+  EXPECT_EQ(read.depth_range, defaults.depth_range);
+  EXPECT_EQ(read.lp.lp.grid, 64);
+}
+
 }  // namespace mb

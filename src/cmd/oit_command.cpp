@@ -12,6 +12,8 @@
 #include "oit/oit_run.h"
 #include "report/eval_report.h"
 #include "report/oit_report.h"
+#include "techniques/lp_options.h"
+#include "techniques/oit/oit_options.h"
 #include "util/error.h"
 #include "util/number_text.h"
 #include "util/output_dir.h"
@@ -27,7 +29,12 @@ std::vector<OptionSpec> oit_specs() {
     if (spec.name == "dataset") spec.default_value = "transparency";
     specs.push_back(spec);
   }
-  for (auto& s : option_specs(oit_run_options())) specs.push_back(s);
+  // The transmittance family's options right after the techniques they set.
+  for (auto& s : option_specs(oit_run_options())) {
+    specs.push_back(s);
+    if (s.name == "techniques")
+      for (auto& o : oit_option_specs()) specs.push_back(o);
+  }
   for (auto& s : lp_option_specs()) specs.push_back(s);
   return specs;
 }
@@ -61,11 +68,7 @@ int run_oit(const OitOptions& options) {
   OitRunOptions run;
   read_options(config, oit_run_options(), run);
   const int threads = cmd->threads();
-  OitParams params;
-  params.beta = run.beta;
-  params.warp = warp_kind(run.warp);
-  params.depth_range = depth_range_kind(run.depth_range);
-  read_lp_params(config, params.lp);
+  const OitParams params = oit_params_from(config);
   if (run.techniques.empty()) throw InputError("techniques: expected at least one technique");
   for (const auto& name : run.techniques) make_oit_technique(name, params);  // names fail here
   const DatasetDesc dataset = load_dataset(config.string("dataset"));

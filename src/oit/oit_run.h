@@ -17,14 +17,12 @@ namespace mb {
 
 struct OitRunOptions {
   std::vector<std::string> techniques;
-  double beta = 0.25;
-  std::string warp = "logarithmic";
-  std::string depth_range = "fragments";
   bool images = true;
   bool deep_frames = true;
   double delta_e_scale = 10;
 };
 
+// The command's own records; the techniques' (oit.*, lp.*) are techniques/oit/oit_options.h's.
 const std::vector<OptionRecord<OitRunOptions>>& oit_run_options();
 
 // Every technique on one deep frame: its composite and per-pixel CIEDE2000 (for images) and its

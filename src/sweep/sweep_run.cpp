@@ -21,6 +21,7 @@
 #include "sweep/sweep_directory.h"
 #include "sweep/sweep_plan.h"
 #include "techniques/lp_technique.h"
+#include "techniques/oit/oit_options.h"
 #include "techniques/registry.h"
 #include "techniques/technique.h"
 #include "util/error.h"
@@ -131,12 +132,12 @@ const std::vector<OptionRecord<ScreenSettings>>& screen_options() {
 
 }  // namespace
 
-// oit.beta and oit.warp, declared with the oit command's options: the MBOIT reference rows'
-// overestimation and the depth warp of the transparency target.
+// oit.beta and oit.warp, the transmittance family's options (techniques/oit/oit_options.h): the
+// MBOIT reference rows' overestimation and the depth warp of the transparency target.
 OptionSpec oit_spec(const std::string& name) {
-  for (const auto& spec : option_specs(oit_run_options()))
+  for (const auto& spec : oit_option_specs())
     if (spec.name == name) return spec;
-  throw std::logic_error("oit_run_options lacks " + name);
+  throw std::logic_error("oit_option_specs lacks " + name);
 }
 
 std::vector<OptionSpec> sweep_option_specs() {
@@ -169,8 +170,7 @@ SweepSettings sweep_settings_from(const Config& config, int threads) {
                      "an area light's (docs/soft-shadows.md), expected 0 (eval takes light.angle "
                      "> 0)");
   read_options(config, screen_options(), s.screen);
-  s.oit_beta = config.number("oit.beta");
-  s.oit_warp = config.string("oit.warp");
+  s.oit = oit_params_from(config);
   s.references =
       s.target == "transparency" ? s.oit_references : with_oracle_row(s.references, s.eval.bias);
   s.config_yaml = config.to_yaml();
@@ -429,15 +429,16 @@ namespace {
 
 // The transparency target's settings sentence (the report's and a resume's "settings").
 std::string describe_transparency(const SweepSettings& s) {
-  const auto& lp = s.eval.technique;
+  const auto& lp = s.oit.lp;
   return "target transparency: lp:<candidate> with lp.beta " + round_trip(lp.lp_beta) +
-         " on the warped depth (" + s.oit_warp +
+         " on the warped depth (" +
+         std::string(s.oit.warp == WarpKind::Linear ? "linear" : "logarithmic") +
          " between each camera's nearest and farthest transparent fragment, docs/transparency.md "
          "§2), grid " +
          std::to_string(lp.lp.grid) + " on [" + round_trip(lp.lp.lo) + ", " + round_trip(lp.lp.hi) +
          "] and the pixel's fragment depths, backend " + lp.lp_backend +
          "; error: opacity-weighted |T_ref - T|; MBOIT references at beta " +
-         round_trip(s.oit_beta);
+         round_trip(s.oit.beta);
 }
 
 // What the sweep measures, rendered before anything is written (bad input leaves no output).
@@ -458,11 +459,7 @@ PreparedTarget prepare_target(const SweepSettings& s, const DatasetDesc& dataset
       throw InputError("lp.lo, lp.hi: [" + round_trip(lp.lo) + ", " + round_trip(lp.hi) +
                        "] excludes part of the warped depth [0, 1] of target transparency "
                        "(expected lp.lo <= 0 and lp.hi >= 1)");
-    OitParams params;
-    params.beta = s.oit_beta;
-    params.warp = warp_kind(s.oit_warp);
-    params.lp = s.eval.technique;
-    p.target = make_oit_target(p.frames, params, s.eval.threads);
+    p.target = make_oit_target(p.frames, s.oit, s.eval.threads);
   } else {
     // A dataset's light_angles, or a scene's view naming its own light angle, make area lights as
     // light.angle does (sweep_settings_from refuses those); refused before rendering.

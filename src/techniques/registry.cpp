@@ -1,10 +1,12 @@
 #include "techniques/registry.h"
 
 #include <algorithm>
+#include <cmath>
+#include <stdexcept>
 
+#include "techniques/lp_options.h"
 #include "util/error.h"
 #include "util/number_text.h"
-#include "util/option_record.h"
 
 namespace mb {
 
@@ -141,17 +143,73 @@ std::vector<OptionSpec> technique_option_specs() {
 
 void read_technique_options(const Config& config, TechniqueParams& params) {
   for (const TechniqueOption* o : hard_options())
-    read_option(config, o->spec.name, o->field, params);
+    params.set(*o, o->spec.type == OptionType::Integer ? double(config.integer(o->spec.name))
+                                                       : config.number(o->spec.name));
 }
 
 void set_moment_bias(TechniqueParams& params, double alpha) {
   for (const TechniqueOption* o : hard_options())
-    if (o->moment_bias) params.*std::get<double TechniqueParams::*>(o->field) = alpha;
+    if (o->moment_bias) params.set(*o, alpha);
 }
 
 TechniqueParams::TechniqueParams() {
-  // Every field from its record's default (the default is written there only).
-  read_technique_options(Config(technique_option_specs()), *this);
+  // Every record's default (written there only), parsed once.
+  static const TechniqueParams defaults = [] {
+    TechniqueParams p(Defaults{});
+    const Config config(technique_option_specs());
+    for (const TechniqueOption* o : hard_options()) {
+      if (o->spec.type != OptionType::Number && o->spec.type != OptionType::Integer)
+        throw std::logic_error(o->spec.name + ": a technique option is a number or an integer");
+      p.values_[o->spec.name] = {o->spec.type, o->spec.type == OptionType::Integer
+                                                   ? double(config.integer(o->spec.name))
+                                                   : config.number(o->spec.name)};
+    }
+    read_lp_params(Config(lp_option_specs()), p);
+    return p;
+  }();
+  *this = defaults;
+}
+
+const TechniqueParams::Value& TechniqueParams::value(std::string_view key, OptionType type) const {
+  const auto it = values_.find(key);
+  if (it == values_.end())
+    throw std::logic_error("technique option '" + std::string(key) +
+                           "': no hard-shadow row declares it");
+  if (it->second.type != type)
+    throw std::logic_error("technique option '" + std::string(key) + "' is " +
+                           (it->second.type == OptionType::Integer ? "an integer" : "a number"));
+  return it->second;
+}
+
+double TechniqueParams::number(std::string_view key) const {
+  return value(key, OptionType::Number).value;
+}
+
+int TechniqueParams::integer(std::string_view key) const {
+  return int(value(key, OptionType::Integer).value);
+}
+
+double TechniqueParams::number(const TechniqueOption& option) const {
+  return number(option.spec.name);
+}
+
+int TechniqueParams::integer(const TechniqueOption& option) const {
+  return integer(option.spec.name);
+}
+
+void TechniqueParams::set(std::string_view key, double v) {
+  const auto it = values_.find(key);
+  if (it == values_.end())
+    throw std::logic_error("technique option '" + std::string(key) +
+                           "': no hard-shadow row declares it");
+  if (it->second.type == OptionType::Integer && v != std::round(v))
+    throw std::logic_error("technique option '" + std::string(key) + "' is an integer, got " +
+                           round_trip(v));
+  it->second.value = v;
+}
+
+void TechniqueParams::set(const TechniqueOption& option, double v) {
+  set(option.spec.name, v);
 }
 
 std::vector<std::string> closed_form_technique_names() {
@@ -187,8 +245,7 @@ std::string technique_table_markdown() {
 
 std::unique_ptr<Technique> make_technique(const std::string& name, const TechniqueParams& p) {
   for (const TechniqueOption* o : hard_options())
-    if (o->moment_bias)
-      check_moment_bias(o->spec.name, p.*std::get<double TechniqueParams::*>(o->field));
+    if (o->moment_bias) check_moment_bias(o->spec.name, p.number(*o));
   return technique_row(name, TechniqueFamily::HardShadow).make(name, p);
 }
 

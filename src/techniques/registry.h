@@ -10,7 +10,6 @@
 #include <optional>
 #include <string>
 #include <string_view>
-#include <variant>
 #include <vector>
 
 #include "techniques/technique.h"
@@ -28,11 +27,16 @@ enum class TechniqueFamily { HardShadow, SoftShadow, Transmittance, Scattering }
 // "hard shadows", "soft shadows", ... for lists and errors.
 std::string family_title(TechniqueFamily family);
 
+// A hard-shadow technique's option: its record (key, type Number or Integer, default, range, doc),
+// declared once in the technique's file and listed by the rows that read it. TechniqueParams holds
+// a value for every such record; the technique reads it back by the record (`p.number(kEsmC)`).
 struct TechniqueOption {
   OptionSpec spec;
-  std::variant<double TechniqueParams::*, int TechniqueParams::*> field;
   // An MSM moment bias alpha: must lie in [0, 1); `solve --alpha` replaces every one of them.
   bool moment_bias = false;
+  // A relaxation whose value 0 gives the sharp bound, as a moment bias 0 does (a beta blend, a
+  // variance clamp): verify sets both to 0 for the rows it judges Exact (docs/reference.md §6).
+  bool zero_is_sharp = false;
 };
 
 // How `verify` checks a technique against the LP of its own basis (docs/reference.md §6).
@@ -50,7 +54,7 @@ struct VerifyRecipe {
   double lo = 0, hi = 1;
   bool on_r = false;              // Problem 1 on all of R (Hamburger, VSM)
   bool cantelli_support = false;  // VSM: Cantelli's two extremal points join the LP's points
-  double TechniqueParams::*alpha = nullptr;  // storage rows: their moment bias
+  const TechniqueOption* alpha = nullptr;  // storage rows: their moment bias
 };
 
 // How `verify` checks a transmittance row against the LP of the same information on seeded random
@@ -132,8 +136,7 @@ std::string default_techniques(TechniqueFamily family);
 // Every hard-shadow technique's option, once per key (shared keys such as esm.c appear in several
 // rows), in row order.
 std::vector<OptionSpec> technique_option_specs();
-// Reads every technique option of `config` into `params`' fields, validated (InputError naming
-// the key).
+// Reads every technique option of `config` into `params`, validated (InputError naming the key).
 void read_technique_options(const Config& config, TechniqueParams& params);
 // Sets every moment bias alpha of `params` (solve --alpha).
 void set_moment_bias(TechniqueParams& params, double alpha);
