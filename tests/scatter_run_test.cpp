@@ -61,9 +61,17 @@ TEST(ScatterRun, SameAnswersForAnyThreadCountAndTheReferenceRowIsExact) {
 }
 
 TEST(ScatterRun, RefusesDatasetsItCannotMeasure) {
-  EXPECT_NE(
-      input_error_of([] { scatter_scenes(load_dataset("tiny")); }).find("no scene names a camera"),
-      std::string::npos);
+  const std::string scene =
+      testing_support::write_temp_file("scene.yaml", "parts:\n  - box: {}\nviews:\n  - {}\n");
+  const std::string dataset = testing_support::write_temp_file(
+      "dataset.yaml", "scenes: [" + scene + "]\nmedium: {extinction: 1}\n");
+  EXPECT_NE(input_error_of([&] {
+              scatter_scenes(load_dataset(dataset));
+            }).find("no scene names a camera"),
+            std::string::npos);
+  // The tiny dataset's scenes have cameras but no medium.
+  EXPECT_NE(input_error_of([] { scatter_scenes(load_dataset("tiny")); }).find("no medium"),
+            std::string::npos);
   EXPECT_NE(
       input_error_of([] { scatter_scenes(load_dataset("transparency")); }).find("translucent"),
       std::string::npos);

@@ -149,7 +149,7 @@ TEST(TechniquesScatter, ExactMatchesTheAnalyticWindowTo1e9) {
 }
 
 // Ray marching's error against the exact answer, averaged over rays, falls as N grows (the
-// jittered estimate's mean error like 1/N, ../shared/REFERENCE.md §11).
+// jittered estimate's mean error like 1/N, docs/scattering.md §3).
 TEST(TechniquesScatter, RayMarchingConvergesToTheExactAnswer) {
   const WindowScene w;
   const LightDepthMap map(*w.frame, w.stack);

@@ -67,7 +67,7 @@ ScatterReport render_scatter_report(const ScatterReportContext& ctx,
      << "Made by momentbench " << ctx.version << " (git " << ctx.git_sha << "), " << ctx.compiler
      << ", " << ctx.threads << " threads, " << ctx.started << ".\n\n"
      << "**Summary.** " << overall.size() << " techniques on " << ctx.frames
-     << " light views and cameras, " << ctx.pixels << " view rays each.\n\n"
+     << " light views and cameras, " << ctx.pixels << " view rays in all.\n\n"
      << "- " << ctx.settings_text << "\n";
   for (const auto& line : ctx.non_default) md << "- option " << line << "\n";
   md << "\nThe reference is the exact in-scattering I_ref against the light view's hard shadow "

@@ -28,17 +28,17 @@ const std::vector<OptionRecord<ScatterRunOptions>>& scatter_run_options() {
        &ScatterRunOptions::techniques},
       {{"scatter.reference_resolution", OptionType::Integer, "1024",
         "Resolution of the light view's hard shadow map (layer 0 of its stack) that the exact "
-        "reference and ray marching test against (docs/scattering.md §2). 1024: a shaft's edge "
-        "then moves by less than a camera pixel of the scattering dataset's views per texel, "
-        "and the reference's walk (cost linear in the texels a ray crosses) stays below a "
-        "second per camera.",
+        "reference and ray marching test against (docs/scattering.md §2). 1024: about 70 texels "
+        "per scene unit on the scattering dataset's 14-unit ground, so the house's 0.2-unit walls "
+        "and its window frames span 14 texels or more, while the reference's walk (its cost "
+        "linear in the texels a ray crosses) stays at a few seconds per 360 x 240 camera.",
         1, 16384},
        &ScatterRunOptions::reference_resolution},
       {{"scatter.max_distance", OptionType::Number, "100",
         "Length of the view ray of a pixel that sees no surface, in scene units "
-        "(docs/scattering.md §1). 100: beyond every scene of the scattering dataset, where the "
-        "transmittance of its media (sigma_t >= 0.05) is below exp(-5), so the sky's "
-        "in-scattering is nearly that of an infinite ray.",
+        "(docs/scattering.md §1). 100: far beyond the scattering dataset's scenes (about 15 "
+        "units across), where its medium's transmittance (sigma_t = 0.12) is e^-12, so a sky "
+        "pixel's in-scattering is that of an infinite ray to about 1e-5 of S_max.",
         1e-9, 1e9},
        &ScatterRunOptions::max_distance},
       {{"scatter.seed", OptionType::Integer, "1",
@@ -51,9 +51,12 @@ const std::vector<OptionRecord<ScatterRunOptions>>& scatter_run_options() {
                          "in-scattering alone, its error in false colour, and a contact sheet "
                          "(images/)."}),
        &ScatterRunOptions::images},
-      {measures_nothing({"scatter.error_scale", OptionType::Number, "0.25",
-                         "|I - I_ref| / S_max at the top of the error images' colour bar.", 1e-6,
-                         1}),
+      {measures_nothing(
+           {"scatter.error_scale", OptionType::Number, "0.25",
+            "The error images' colour bar ends at this error (a pixel's absolute difference from "
+            "the reference, divided by its S_max; docs/scattering.md §4): 0.25, where "
+            "a ray's error is a quarter of what it could scatter.",
+            1e-6, 1}),
        &ScatterRunOptions::error_scale},
   };
   return records;

@@ -1,5 +1,5 @@
 #pragma once
-// A homogeneous participating medium (docs/scattering.md §1; ../shared/REFERENCE.md §11): it fills
+// A homogeneous participating medium (docs/scattering.md §1): it fills
 // all space, the camera sits inside it, and a directional light reaches every point it does not
 // shadow with its full irradiance (no extinction along the light's path, as seed 004 §2.2).
 #include <optional>

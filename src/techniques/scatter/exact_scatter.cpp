@@ -1,9 +1,9 @@
-// The exact in-scattering against a hard shadow map (docs/scattering.md §2; ../shared/REFERENCE.md
-// §11, "Exact reference"): the light's projection is affine, so along the view ray the raster
-// coordinates are linear in t; between two successive crossings of texel lines the ray stays in one
-// texel, whose stored depth is one constant, and the ray's light depth, linear in t, crosses it at
-// most once. V is therefore piecewise constant with breakpoints found in closed form, and
-// ∫ exp(-sigma_t t) over each lit piece is closed form too: the answer is exact up to rounding.
+// The exact in-scattering against a hard shadow map (docs/scattering.md §2): the light's projection
+// is affine, so along the view ray the raster coordinates are linear in t; between two successive
+// crossings of texel lines the ray stays in one texel, whose stored depth is one constant, and the
+// ray's light depth, linear in t, crosses it at most once. V is therefore piecewise constant with
+// breakpoints found in closed form, and ∫ exp(-sigma_t t) over each lit piece is closed form too:
+// the answer is exact up to rounding.
 #include <algorithm>
 #include <cmath>
 

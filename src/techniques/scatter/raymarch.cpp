@@ -1,7 +1,7 @@
 // Ray marching (docs/scattering.md §3; seed 004 §2.1): N shadow-map tests at equidistant points of
 // the view ray, shifted together by one seeded jitter per pixel (interleaved sampling), each
 // weighting its N-th of the ray by that piece's transmittance integral. Its error's mean falls
-// like 1/N (../shared/REFERENCE.md §11); the seed compares 32 and 128 samples with the moments.
+// like 1/N (docs/scattering.md §3); the seed compares 32 and 128 samples with the moments.
 #include <charconv>
 #include <cmath>
 

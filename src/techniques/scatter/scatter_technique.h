@@ -3,7 +3,7 @@
 // inside a homogeneous medium, the transmittance-weighted lit length
 //   L = ∫_0^s exp(-sigma_t t) V(p + t w) dt
 // of the ray against one light view's hard shadow map; the scatter stage multiplies it by
-// sigma_s f E (../shared/REFERENCE.md §11). A technique sees the light view and the camera once
+// sigma_s f E (docs/scattering.md §1). A technique sees the light view and the camera once
 // (`prepare`, where a prefiltered one builds its rectified map) and then answers rays, each on its
 // own, so that the answers are the same for any thread count.
 #include <cmath>
