@@ -16,11 +16,11 @@ list=$(printf 'raymarch:%s, ' "${ns[@]}")
 "$mb" scatter -q --set dataset="$dataset" --set threads="$threads" --set images=false \
   --set "techniques=[exact, ${list%, }]" --out "$work/out" > /dev/null
 rays=$(grep -o '[0-9]* view rays in all' "$work/out/report.md" | cut -d' ' -f1)
-echo "| N | mean_error | too_bright | too_dark | max_error | mean_error x N | µs per ray |"
+echo "| N | mean_error | too_bright | too_dark | max_error | mean_error x N | wall µs per ray |"
 echo "|---|---|---|---|---|---|---|"
 for n in "${ns[@]}"; do
   grep "^\"raymarch:$n\",all,all,all," "$work/out/errors.csv" |
     awk -F, -v n="$n" -v rays="$rays" '{ printf "| %d | %.3e | %.3e | %.3e | %.3e | %.3f | %.2f |\n", n, $5, $6, $7, $8, $5 * n, $9 / rays * 1e6 }'
 done
 grep '^"exact",all,all,all,' "$work/out/errors.csv" |
-  awk -F, -v rays="$rays" '{ printf "\nexact reference: %.2f µs per ray (%d rays)\n", $9 / rays * 1e6, rays }'
+  awk -F, -v rays="$rays" '{ printf "\nexact reference: %.2f wall µs per ray (%d rays)\n", $9 / rays * 1e6, rays }'
