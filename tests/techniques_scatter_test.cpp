@@ -135,7 +135,7 @@ TEST(TechniquesScatter, ExactMatchesTheAnalyticWindowTo1e9) {
   double worst = 0, shadowed = 0;
   for (double sigma : {0.02, 0.3, 2.0}) {
     for (const RandomRay& ray : random_rays(*w.frame, 4000, 7)) {
-      ScatterSetup setup{&map, ray.origin, sigma};
+      ScatterSetup setup{&map, nullptr, nullptr, nullptr, ray.origin, sigma};
       exact->prepare(setup);
       const double got = exact->lit_length({ray.direction, ray.length, 0});
       const double want = analytic_lit_length(w, ray.origin, ray.direction, ray.length, sigma);
@@ -160,7 +160,7 @@ TEST(TechniquesScatter, RayMarchingConvergesToTheExactAnswer) {
     const auto march = make_scatter_technique("raymarch:" + std::to_string(n), {3});
     double error = 0;
     for (size_t i = 0; i < rays.size(); ++i) {
-      const ScatterSetup setup{&map, rays[i].origin, 0.3};
+      const ScatterSetup setup{&map, nullptr, nullptr, nullptr, rays[i].origin, 0.3};
       exact->prepare(setup), march->prepare(setup);
       const ScatterRay ray{rays[i].direction, rays[i].length, i};
       error += std::abs(march->lit_length(ray) - exact->lit_length(ray));

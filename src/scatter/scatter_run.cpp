@@ -179,7 +179,8 @@ void run_scatter(const std::vector<ScatterScene>& scenes, const ScatterRunOption
         ProgressBar bar("scatter " + s.scene.name + "/" + view.name + "/" + camera.name,
                         techniques.size() + 1, quiet);
         const CameraRays rays = camera_rays(s, camera, images[c], light, options.max_distance);
-        const ScatterSetup setup{&light, camera.position, medium.extinction};
+        const ScatterSetup setup{&light,  &s.scene,        &view,
+                                 &camera, camera.position, medium.extinction};
         ScatterFrameResult r;
         r.scene = s.scene.name, r.view = view.name, r.camera = camera.name;
         r.width = images[c].width, r.height = images[c].height;

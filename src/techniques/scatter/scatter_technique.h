@@ -15,6 +15,7 @@
 
 #include "raster/layer_stack.h"
 #include "scene/light_view.h"
+#include "scene/scene.h"
 #include "util/eigen.h"
 
 namespace mb {
@@ -42,9 +43,14 @@ struct LightDepthMap {
   }
 };
 
-// What a technique is given once per light view and camera.
+// What a technique is given once per light view and camera: the reference's depth map, and the
+// scene, light view and camera themselves for a technique that renders a map of its own (a
+// prefiltered one's rectified map, seed 004 §2.2-2.3).
 struct ScatterSetup {
   const LightDepthMap* light = nullptr;
+  const Scene* scene = nullptr;
+  const LightViewDesc* view = nullptr;
+  const CameraDesc* camera_desc = nullptr;
   Eigen::Vector3d camera = Eigen::Vector3d::Zero();  // the camera's position p
   double extinction = 0;                             // sigma_t of the scene's medium
 };
