@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "raster/render_view.h"
 #include "scene/light_view.h"
 #include "test_support.h"
 
@@ -75,6 +76,37 @@ TEST(ScatterRun, RefusesDatasetsItCannotMeasure) {
   EXPECT_NE(
       input_error_of([] { scatter_scenes(load_dataset("transparency")); }).find("translucent"),
       std::string::npos);
+}
+
+// The house of the scattering dataset is seed 004 Figure 4's situation: its interior is entirely
+// shadowed, so a view ray through the south window gathers nothing beyond the window (the part
+// from the wall's inner face, z = 2, to the north wall's, z = -2, adds no in-scattering).
+TEST(ScatterRun, TheHouseInteriorIsEntirelyShadowed) {
+  const std::vector<ScatterScene> scenes = scatter_scenes(load_dataset("scattering_tiny"));
+  ASSERT_EQ(scenes.size(), 1u);
+  const Scene& scene = scenes[0].scene;
+  LightViewDesc view = scene.views.at(0);
+  view.resolution = 512;
+  const LayerStack stack = render_view(scene, view, 1);
+  const LightFrame frame(view, scene.mesh.vertices);
+  const LightDepthMap map(frame, stack);
+  const auto exact = make_scatter_technique("exact", {});
+  const Eigen::Vector3d camera = scene.cameras.at(0).position;
+  exact->prepare({&map, &scene, &view, &scene.cameras[0], camera, scenes[0].medium.extinction});
+  int rays = 0;
+  double outside_total = 0;
+  // Points of the window opening (x in [-0.8, 0.8], y in [0.9, 2.1]) kept 0.2 from its edges.
+  for (double x = -0.6; x <= 0.6 + 1e-9; x += 0.3)
+    for (double y = 1.1; y <= 1.9 + 1e-9; y += 0.2) {
+      const Eigen::Vector3d w = (Eigen::Vector3d(x, y, 2.0) - camera).normalized();
+      const double inner = (2.0 - camera.z()) / w.z(), back = (-2.0 - camera.z()) / w.z();
+      const double outside = exact->lit_length({w, inner, 0});
+      EXPECT_GT(outside, 0);
+      EXPECT_NEAR(exact->lit_length({w, back, 0}), outside, 1e-12 * outside) << x << " " << y;
+      outside_total += outside, ++rays;
+    }
+  EXPECT_EQ(rays, 25);
+  EXPECT_GT(outside_total, 0);
 }
 
 }  // namespace
