@@ -14,6 +14,7 @@
 #include "eval/eval_config.h"
 #include "oit/color_difference.h"
 #include "oit/oit_verification.h"
+#include "scatter/scatter_run.h"
 #include "scene/scene.h"
 #include "shadow/compositing.h"
 #include "techniques/lp_options.h"
@@ -186,6 +187,7 @@ TEST(OitRun, EveryFamilyOptionOfARowIsADeclaredOption) {
   for (const auto& r : soft_option_records()) declared.insert(r.spec.name);
   for (const auto& r : oit_run_options()) declared.insert(r.spec.name);
   for (const auto& s : oit_option_specs()) declared.insert(s.name);
+  for (const auto& r : scatter_run_options()) declared.insert(r.spec.name);
   for (const auto& s : lp_option_specs()) declared.insert(s.name);
   size_t listed = 0;
   for (const TechniqueRow& row : technique_registry())

@@ -43,20 +43,21 @@ TEST(TechniqueRegistry, EveryFamilyIsOneTableOfRows) {
       EXPECT_LE(std::pair(rows[i - 1].family, rows[i - 1].rank), std::pair(row.family, row.rank))
           << row.name;
     }
-    const int factories =
-        (row.make != nullptr) + (row.make_soft != nullptr) + (row.make_oit != nullptr);
+    const int factories = (row.make != nullptr) + (row.make_soft != nullptr) +
+                          (row.make_oit != nullptr) + (row.make_scatter != nullptr);
     EXPECT_EQ(factories, 1) << row.name;
     EXPECT_EQ(row.make != nullptr, row.family == TechniqueFamily::HardShadow) << row.name;
     EXPECT_EQ(row.make_soft != nullptr, row.family == TechniqueFamily::SoftShadow) << row.name;
     EXPECT_EQ(row.make_oit != nullptr, row.family == TechniqueFamily::Transmittance) << row.name;
+    EXPECT_EQ(row.make_scatter != nullptr, row.family == TechniqueFamily::Scattering) << row.name;
     EXPECT_FALSE(row.summary.empty()) << row.name;
     EXPECT_FALSE(row.bound.empty()) << row.name;
     if (row.prefix() && row.default_run) {
       EXPECT_FALSE(row.example.empty()) << row.name;
     }
   }
-  for (TechniqueFamily family :
-       {TechniqueFamily::HardShadow, TechniqueFamily::SoftShadow, TechniqueFamily::Transmittance})
+  for (TechniqueFamily family : {TechniqueFamily::HardShadow, TechniqueFamily::SoftShadow,
+                                 TechniqueFamily::Transmittance, TechniqueFamily::Scattering})
     EXPECT_FALSE(family_rows(family).empty()) << family_title(family);
   EXPECT_EQ(find_technique("lp:power4", TechniqueFamily::Transmittance)->family,
             TechniqueFamily::Transmittance);

@@ -67,7 +67,7 @@ bool TechniqueRow::matches(std::string_view given) const {
 }
 
 std::string TechniqueRow::display_name() const {
-  return prefix() ? name + "<basis>" : name;
+  return prefix() ? name + parameter : name;
 }
 
 const std::vector<TechniqueRow>& technique_registry() {

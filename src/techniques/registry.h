@@ -21,6 +21,8 @@ class SoftTechnique;
 struct SoftSetup;
 class OitTechnique;
 struct OitParams;
+class ScatterTechnique;
+struct ScatterParams;
 
 // The phenomenon a technique answers, in the order lists show them.
 enum class TechniqueFamily { HardShadow, SoftShadow, Transmittance, Scattering };
@@ -102,12 +104,16 @@ struct TechniqueRow {
                                               const SoftSetup& setup) = nullptr;
   std::unique_ptr<OitTechnique> (*make_oit)(const std::string& name,
                                             const OitParams& params) = nullptr;
+  std::unique_ptr<ScatterTechnique> (*make_scatter)(const std::string& name,
+                                                    const ScatterParams& params) = nullptr;
   // InputError before any work when `name` of a family row cannot be made with these settings.
   void (*check)(const std::string& name, const TechniqueParams& params) = nullptr;
   std::optional<VerifyRecipe> verify = std::nullopt;                 // none: no LP ground truth
   OitVerifyRecipe (*oit_verify)(const OitParams& params) = nullptr;  // none: not verified
   bool prefix() const { return !name.empty() && name.back() == ':'; }
   bool matches(std::string_view given) const;
+  // What follows a family row's name in lists ("raymarch:<N>").
+  std::string parameter = "<basis>";
   // "lp:<basis>" for a family row, the name otherwise.
   std::string display_name() const;
 };
