@@ -137,6 +137,10 @@ const TechniqueRow& shadow_row(const std::string& name) {
   return technique_row(name, TechniqueFamily::HardShadow);
 }
 
+bool is_view_reference(const std::string& technique, double light_angle_deg) {
+  return technique_role(technique) == RowRole::Reference && !(light_angle_deg > 0);
+}
+
 double technique_darkening_bound(const std::string& name, const EvalSettings& settings) {
   if (shadow_row(name).family != TechniqueFamily::HardShadow)
     return std::numeric_limits<double>::infinity();

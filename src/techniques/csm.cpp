@@ -68,7 +68,8 @@ std::vector<TechniqueRow> rows() {
        .make = [](const std::string&, const P& p) -> std::unique_ptr<Technique> {
          return std::make_unique<CsmTechnique>(p.csm_terms, p.csm_damping);
        },
-       .verify = VerifyRecipe{.judge = VerifyRecipe::Judge::Exceedance, .lp_basis = csm_lp_basis}}};
+       .verify = VerifyRecipe{.judge = VerifyRecipe::Judge::Exceedance, .lp_basis = csm_lp_basis},
+       .verify_place = 12}};
 }
 
 const TechniqueRegistration kRegistered(rows);

@@ -107,7 +107,11 @@ std::vector<TechniqueRow> rows() {
        .options = {&kHamburger4Alpha, &kHamburgerBeta},
        .default_run = true,
        .make = make<PowerSolver::Hamburger4, double_storage, &P::hamburger4_alpha>,
-       .verify = on_r},
+       .verify = on_r,
+       .verify_place = 1,
+       .sweep_references = {{.expectation = "the power moments' closed form on R: slightly above "
+                                            "lp:power4 on [0, 1]",
+                             .place = 3}}},
       {.name = "hamburger4_float",
        .rank = 140,
        .summary = "4MSM on R, float32 maps and arithmetic",
@@ -116,7 +120,8 @@ std::vector<TechniqueRow> rows() {
        .options = {&kHamburger4FloatAlpha, &kHamburgerBeta},
        .default_run = true,
        .make = make<PowerSolver::Hamburger4Float, float32_storage, &P::hamburger4_float_alpha>,
-       .verify = storage_box(fixed_lp_basis<kPower4>, -4, 5, true, &P::hamburger4_float_alpha)},
+       .verify = storage_box(fixed_lp_basis<kPower4>, -4, 5, true, &P::hamburger4_float_alpha),
+       .verify_place = 7},
       {.name = "hamburger4_16bit",
        .rank = 150,
        .summary = "4MSM on R from 16-bit maps with the transform theta_4",
@@ -125,7 +130,8 @@ std::vector<TechniqueRow> rows() {
        .options = {&kHamburger416bitAlpha, &kHamburgerBeta},
        .default_run = true,
        .make = make<PowerSolver::Hamburger4, unorm16_power4_storage, &P::hamburger4_16bit_alpha>,
-       .verify = storage_box(fixed_lp_basis<kPower4>, -4, 5, true, &P::hamburger4_16bit_alpha)},
+       .verify = storage_box(fixed_lp_basis<kPower4>, -4, 5, true, &P::hamburger4_16bit_alpha),
+       .verify_place = 8},
       {.name = "hausdorff4",
        .rank = 160,
        .summary = "4MSM on [0, 1] (Hausdorff), double",
@@ -134,7 +140,11 @@ std::vector<TechniqueRow> rows() {
        .options = {&kHausdorff4Alpha, &kHamburgerBeta},
        .default_run = true,
        .make = make<PowerSolver::Hausdorff4, double_storage, &P::hausdorff4_alpha>,
-       .verify = VerifyRecipe{.lp_basis = fixed_lp_basis<kPower4>}},
+       .verify = VerifyRecipe{.lp_basis = fixed_lp_basis<kPower4>},
+       .verify_place = 2,
+       .sweep_references = {{.expectation = "the power moments' closed form on [0, 1]: equal to "
+                                            "lp:power4 up to the LP's grid",
+                             .place = 4}}},
       {.name = "hamburger6",
        .rank = 170,
        .summary = "six power moments on R, double",
@@ -144,8 +154,11 @@ std::vector<TechniqueRow> rows() {
        .options = {&kHamburger6Alpha, &kHamburgerBeta},
        .default_run = true,
        .make = make<PowerSolver::Hamburger6, double_storage, &P::hamburger6_alpha>,
-       .verify =
-           VerifyRecipe{.lp_basis = fixed_lp_basis<kPower6>, .lo = -2, .hi = 3, .on_r = true}}};
+       .verify = VerifyRecipe{.lp_basis = fixed_lp_basis<kPower6>, .lo = -2, .hi = 3, .on_r = true},
+       .verify_place = 6,
+       .sweep_references = {
+           {.expectation = "six moments: better than every four-function candidate (seed 004)",
+            .place = 6}}}};
 }
 
 const TechniqueRegistration kRegistered(rows);

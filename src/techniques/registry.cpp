@@ -133,6 +133,35 @@ std::string default_techniques(TechniqueFamily family) {
   return "[" + list + "]";
 }
 
+std::vector<SweepReference> sweep_references(TechniqueFamily family) {
+  std::vector<SweepReference> references;
+  for (const TechniqueRow* row : family_rows(family))
+    for (SweepReference reference : row->sweep_references) {
+      if (reference.name.empty()) reference.name = row->name;
+      references.push_back(std::move(reference));
+    }
+  return references;
+}
+
+std::string sweep_reference_list(TechniqueFamily family) {
+  std::string list;
+  for (const SweepReference& reference : sweep_references(family))
+    list += (list.empty() ? "" : ", ") + reference.name;
+  return "[" + list + "]";
+}
+
+std::string verify_default_list() {
+  std::vector<const TechniqueRow*> rows;
+  for (const TechniqueRow& row : technique_registry())
+    if (row.verify && row.verify_place > 0) rows.push_back(&row);
+  std::stable_sort(rows.begin(), rows.end(), [](const TechniqueRow* a, const TechniqueRow* b) {
+    return a->verify_place < b->verify_place;
+  });
+  std::string list;
+  for (const TechniqueRow* row : rows) list += (list.empty() ? "" : ", ") + row->name;
+  return "[" + list + "]";
+}
+
 std::vector<OptionSpec> technique_option_specs() {
   std::vector<OptionSpec> specs;
   for (const TechniqueOption* o : hard_options()) specs.push_back(o->spec);

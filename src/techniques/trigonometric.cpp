@@ -64,7 +64,11 @@ std::vector<TechniqueRow> rows() {
            .make = [](const std::string& name, const P& p) -> std::unique_ptr<Technique> {
              return std::make_unique<TmsmTechnique>(name, false, p.tmsm_alpha, p.beta);
            },
-           .verify = VerifyRecipe{.lp_basis = fixed_lp_basis<kTrig4>}},
+           .verify = VerifyRecipe{.lp_basis = fixed_lp_basis<kTrig4>},
+           .verify_place = 3,
+           .sweep_references = {{.expectation = "the trigonometric closed form: equal to lp:trig4 "
+                                                "up to the LP's grid",
+                                 .place = 5}}},
           {.name = "tmsm_float",
            .rank = 190,
            .summary = "trigonometric MSM, float32",
@@ -75,7 +79,8 @@ std::vector<TechniqueRow> rows() {
            .make = [](const std::string& name, const P& p) -> std::unique_ptr<Technique> {
              return std::make_unique<TmsmTechnique>(name, true, p.tmsm_float_alpha, p.beta);
            },
-           .verify = storage_box(fixed_lp_basis<kTrig4>, 0, 1, false, &P::tmsm_float_alpha)}};
+           .verify = storage_box(fixed_lp_basis<kTrig4>, 0, 1, false, &P::tmsm_float_alpha),
+           .verify_place = 9}};
 }
 
 const TechniqueRegistration kRegistered(rows);
