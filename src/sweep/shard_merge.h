@@ -1,5 +1,5 @@
 #pragma once
-// `merge`'s checks and its database (docs/sweeps.md, "Shards"): the shard databases of one sweep
+// `merge`'s checks and its database (docs/sweeps.md): the shard databases of one sweep
 // become one, refused when they are not shards of one sweep, overlap, or leave a shard out.
 #include <string>
 #include <vector>
