@@ -121,8 +121,12 @@ TEST(TechniqueRegistry, DefaultListsAndClaimsComeFromTheRows) {
   for (const SweepReference& r : sweep_references(TechniqueFamily::HardShadow)) {
     EXPECT_EQ(make_technique(r.name, params)->name(), r.name);
     references.insert(r.name);
-    if (!r.expectation.empty()) EXPECT_TRUE(classic_places.insert(r.place).second) << r.name;
-    if (!r.moments.empty()) EXPECT_GT(r.seed_error, 0) << r.name;
+    if (!r.expectation.empty()) {
+      EXPECT_TRUE(classic_places.insert(r.place).second) << r.name;
+    }
+    if (!r.moments.empty()) {
+      EXPECT_GT(r.seed_error, 0) << r.name;
+    }
   }
   EXPECT_EQ(classic_places.size(), 6u);
   for (const SweepReference& r : sweep_references(TechniqueFamily::Transmittance))

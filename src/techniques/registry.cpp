@@ -1,6 +1,7 @@
 #include "techniques/registry.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "util/error.h"
 #include "util/number_text.h"
@@ -105,6 +106,12 @@ RowRole technique_role(std::string_view name) {
 bool technique_solves_lp(std::string_view name) {
   const TechniqueRow* row = find_technique(name);
   return row && row->solves_lp;
+}
+
+const std::string& role_name(TechniqueFamily family, RowRole role) {
+  for (const TechniqueRow* row : family_rows(family))
+    if (row->role == role) return row->name;
+  throw std::logic_error("no row of " + family_title(family) + " has the role asked for");
 }
 
 const TechniqueRow& technique_row(const std::string& name, TechniqueFamily family) {

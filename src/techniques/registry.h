@@ -143,6 +143,9 @@ const TechniqueRow* find_technique(std::string_view name,
 // LP: for reports, which test a row's properties, never a name.
 RowRole technique_role(std::string_view name);
 bool technique_solves_lp(std::string_view name);
+// The name of `family`'s first row with `role` (its reference, ...), for the reports' words; a
+// logic_error when the family has none.
+const std::string& role_name(TechniqueFamily family, RowRole role);
 // The row of `name` in `family`, or an InputError listing that family's names.
 const TechniqueRow& technique_row(const std::string& name, TechniqueFamily family);
 // The names of a family's rows that `make` runs by default, as a YAML list ("[a, b]").
