@@ -27,6 +27,33 @@
 namespace mb {
 namespace {
 
+// `oit`'s tables: each technique's cameras summed into its "all" row, and the per-camera rows
+// technique-major.
+TEST(OitRows, SumsEveryCameraAndListsThemTechniqueMajor) {
+  OitRows rows({"exact", "wboit"});
+  for (const char* camera : {"front", "side"}) {
+    OitFrameResult r;
+    r.scene = "garden", r.camera = camera;
+    r.stats.resize(2);
+    r.stats[0].fragments = 3, r.stats[1].fragments = 5;
+    r.stats[1].delta_e = {1.5f};
+    r.seconds = {1, 2};
+    rows.add(r);
+  }
+  ASSERT_EQ(rows.overall().size(), 2u);
+  EXPECT_EQ(rows.overall()[0].camera, "all");
+  EXPECT_EQ(rows.overall()[0].stats.fragments, 6u);
+  EXPECT_EQ(rows.overall()[1].stats.fragments, 10u);
+  EXPECT_EQ(rows.overall()[1].stats.delta_e.size(), 2u);
+  EXPECT_EQ(rows.overall()[1].seconds, 4);
+  const std::vector<OitRow> cameras = rows.per_camera();
+  ASSERT_EQ(cameras.size(), 4u);
+  EXPECT_EQ(cameras[0].technique + " " + cameras[0].camera, "exact garden/front");
+  EXPECT_EQ(cameras[1].technique + " " + cameras[1].camera, "exact garden/side");
+  EXPECT_EQ(cameras[2].technique + " " + cameras[2].camera, "wboit garden/front");
+  EXPECT_EQ(cameras[3].stats.fragments, 5u);
+}
+
 TEST(OitMetrics, LabOfWhiteAndOfTheRedPrimary) {
   const LabConverter lab;
   const Lab white = lab.lab({1, 1, 1});

@@ -10,6 +10,7 @@
 
 #include "basis/basis.h"
 #include "techniques/lp_options.h"
+#include "techniques/lp_technique.h"
 #include "techniques/registry.h"
 #include "util/config.h"
 #include "util/error.h"
@@ -165,6 +166,41 @@ TEST(TechniqueRegistry, VerifyRecipesSpanTheTechniquesOwnChannels) {
     }
   }
   EXPECT_EQ(recipes, 12);
+}
+
+// The default lists of `sweep` and `verify` and the sweep report's claims come from the rows:
+// each reference is a technique of its family, places are unique, and the rows that solve the
+// continuous Problem 1 on [0, 1] in closed form are sweep references beside their LP.
+TEST(TechniqueRegistry, DefaultListsAndClaimsComeFromTheRows) {
+  const TechniqueParams params;
+  std::set<std::string> references;
+  std::set<int> classic_places, verify_places;
+  for (const SweepReference& r : sweep_references(TechniqueFamily::HardShadow)) {
+    EXPECT_EQ(make_technique(r.name, params)->name(), r.name);
+    references.insert(r.name);
+    if (!r.expectation.empty()) {
+      EXPECT_TRUE(classic_places.insert(r.place).second) << r.name;
+    }
+    if (!r.moments.empty()) {
+      EXPECT_GT(r.seed_error, 0) << r.name;
+    }
+  }
+  EXPECT_EQ(classic_places.size(), 6u);
+  for (const SweepReference& r : sweep_references(TechniqueFamily::Transmittance))
+    EXPECT_NE(find_technique(r.name, TechniqueFamily::Transmittance), nullptr) << r.name;
+  for (const auto& row : technique_registry())
+    if (row.verify_place > 0) {
+      EXPECT_TRUE(row.verify.has_value()) << row.name;
+      EXPECT_TRUE(verify_places.insert(row.verify_place).second) << row.name;
+    }
+  EXPECT_EQ(verify_default_list().front(), '[');
+  std::vector<std::string> continuous;
+  for (const TechniqueRow* row : family_rows(TechniqueFamily::HardShadow))
+    if (const std::string lp = continuous_lp_of(*row); !lp.empty()) {
+      continuous.push_back(row->name + " " + lp);
+      EXPECT_TRUE(references.count(lp) && references.count(row->name)) << row->name;
+    }
+  EXPECT_EQ(continuous, (std::vector<std::string>{"hausdorff4 lp:power4", "tmsm lp:trig4"}));
 }
 
 TEST(TechniqueRegistry, OptionsAreDeclaredOnceAndReadIntoTheirFields) {

@@ -128,6 +128,25 @@ void run_technique(const DeepFrame& frame, const FrameReference& reference, cons
 
 }  // namespace
 
+OitRows::OitRows(const std::vector<std::string>& techniques) : cameras_(techniques.size()) {
+  for (const auto& name : techniques) overall_.push_back({name, "all", {}, 0});
+}
+
+void OitRows::add(const OitFrameResult& result) {
+  for (size_t k = 0; k < overall_.size(); ++k) {
+    cameras_[k].push_back({overall_[k].technique, result.scene + "/" + result.camera,
+                           result.stats[k], result.seconds[k]});
+    overall_[k].stats.merge(result.stats[k]);
+    overall_[k].seconds += result.seconds[k];
+  }
+}
+
+std::vector<OitRow> OitRows::per_camera() const {
+  std::vector<OitRow> rows;
+  for (const auto& camera : cameras_) rows.insert(rows.end(), camera.begin(), camera.end());
+  return rows;
+}
+
 OitFrameResult evaluate_oit_frame(const DeepFrame& frame, const std::string& scene,
                                   const std::vector<std::string>& techniques,
                                   const OitParams& params, int threads, const LabConverter& lab,

@@ -45,12 +45,11 @@ constexpr const char* kRoundingReason =
     "not proven: the moments of close fragments, rounded to double, move the LP's bound "
     "(docs/transparency.md §7)";
 
-// The candidate's technique name: lp: and its functions.
+// The candidate's technique name: the LP of its functions.
 std::string lp_name(const Basis& basis) {
-  std::string name = "lp:";
-  const auto names = basis.names();
-  for (size_t j = 0; j < names.size(); ++j) name += (j ? "; " : "") + names[j];
-  return name;
+  std::string functions;
+  for (const std::string& f : basis.names()) functions += (functions.empty() ? "" : "; ") + f;
+  return lp_technique_name(functions);
 }
 
 class OitTarget : public SweepTarget {

@@ -37,12 +37,15 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-// The transmittance rows oit runs by default, with the six-moment LP beside the candidates'.
+// The transmittance rows oit runs by default, then the family's sweep references (the LP beside
+// the candidates').
 std::string oit_reference_default() {
   std::string list;
   for (const TechniqueRow* row : family_rows(TechniqueFamily::Transmittance))
-    if (row->default_run && !row->prefix()) list += row->name + ", ";
-  return "[" + list + "lp:power6]";
+    if (row->default_run && !row->prefix()) list += (list.empty() ? "" : ", ") + row->name;
+  for (const SweepReference& reference : sweep_references(TechniqueFamily::Transmittance))
+    list += (list.empty() ? "" : ", ") + reference.name;
+  return "[" + list + "]";
 }
 
 // The catalog, the sample and the reference lists choose which candidates and rows a sweep
@@ -83,10 +86,9 @@ const std::vector<OptionRecord<SweepSettings>>& candidate_options() {
             "target transparency: oit techniques evaluated once on the same frames, for the report "
             "(MBOIT at oit.beta, lp:<basis> at lp.beta)."}),
        &SweepSettings::oit_references},
-      {selects_runs(
-           {"references", OptionType::StringList,
-            "[pcf, vsm, esm, hamburger4, hausdorff4, hamburger6, tmsm, lp:power4, lp:trig4]",
-            "Techniques evaluated once on the same dataset, for the report."}),
+      {selects_runs({"references", OptionType::StringList,
+                     sweep_reference_list(TechniqueFamily::HardShadow),
+                     "Techniques evaluated once on the same dataset, for the report."}),
        &SweepSettings::references},
   };
   return records;

@@ -66,7 +66,8 @@ std::vector<TechniqueRow> rows() {
        .make = [](const std::string&, const P& p) -> std::unique_ptr<Technique> {
          return std::make_unique<CsmTechnique>(p.integer(kCsmTerms), p.number(kCsmDamping));
        },
-       .verify = VerifyRecipe{.judge = VerifyRecipe::Judge::Exceedance, .lp_basis = csm_lp_basis}}};
+       .verify = VerifyRecipe{.judge = VerifyRecipe::Judge::Exceedance, .lp_basis = csm_lp_basis},
+       .verify_place = 12}};
 }
 
 const TechniqueRegistration kRegistered(rows);

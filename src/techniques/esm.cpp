@@ -39,7 +39,11 @@ std::vector<TechniqueRow> rows() {
            .make = [](const std::string&, const TechniqueParams& p) -> std::unique_ptr<Technique> {
              return std::make_unique<EsmTechnique>(p.number(kEsmC));
            },
-           .verify = VerifyRecipe{.lp_basis = esm_basis, .lo = -4}}};
+           .verify = VerifyRecipe{.lp_basis = esm_basis, .lo = -4},
+           .verify_place = 5,
+           .sweep_references = {{.expectation = "one exponential moment: far behind (seed 000 "
+                                                "Figure 4)",
+                                 .place = 2}}}};
 }
 
 const TechniqueRegistration kRegistered(rows);

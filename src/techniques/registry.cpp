@@ -109,6 +109,12 @@ bool technique_solves_lp(std::string_view name) {
   return row && row->solves_lp;
 }
 
+const std::string& role_name(TechniqueFamily family, RowRole role) {
+  for (const TechniqueRow* row : family_rows(family))
+    if (row->role == role) return row->name;
+  throw std::logic_error("no row of " + family_title(family) + " has the role asked for");
+}
+
 const TechniqueRow& technique_row(const std::string& name, TechniqueFamily family) {
   if (const TechniqueRow* row = find_technique(name, family)) return *row;
   const TechniqueRow* row = find_technique(name);
@@ -132,6 +138,35 @@ std::string default_techniques(TechniqueFamily family) {
   for (const TechniqueRow* row : family_rows(family))
     if (row->default_run)
       list += (list.empty() ? "" : ", ") + (row->prefix() ? row->example : row->name);
+  return "[" + list + "]";
+}
+
+std::vector<SweepReference> sweep_references(TechniqueFamily family) {
+  std::vector<SweepReference> references;
+  for (const TechniqueRow* row : family_rows(family))
+    for (SweepReference reference : row->sweep_references) {
+      if (reference.name.empty()) reference.name = row->name;
+      references.push_back(std::move(reference));
+    }
+  return references;
+}
+
+std::string sweep_reference_list(TechniqueFamily family) {
+  std::string list;
+  for (const SweepReference& reference : sweep_references(family))
+    list += (list.empty() ? "" : ", ") + reference.name;
+  return "[" + list + "]";
+}
+
+std::string verify_default_list() {
+  std::vector<const TechniqueRow*> rows;
+  for (const TechniqueRow& row : technique_registry())
+    if (row.verify && row.verify_place > 0) rows.push_back(&row);
+  std::stable_sort(rows.begin(), rows.end(), [](const TechniqueRow* a, const TechniqueRow* b) {
+    return a->verify_place < b->verify_place;
+  });
+  std::string list;
+  for (const TechniqueRow* row : rows) list += (list.empty() ? "" : ", ") + row->name;
   return "[" + list + "]";
 }
 

@@ -77,6 +77,21 @@ enum class RowRole {
                    // reference; transmittance: the sorted composite itself
 };
 
+// What a sweep measures of a row beside its candidates, and what the seeds found of it: the
+// sweep's default `references` and `oit_references` list every row's, in row order, and the
+// report's findings print each claim beside the measured number (report/sweep_report.cpp).
+struct SweepReference {
+  std::string name;  // the technique as run: "" for the row's own name, or a family row's instance
+  // The seed paper ranked this basis (seed 000 §3.2): "power" for power moments, and its mean
+  // error there.
+  std::string moments;
+  double seed_error = 0;
+  // A classic technique's expected standing against the candidates, and its place in the
+  // report's list of them (1, 2, ...).
+  std::string expectation;
+  int place = 0;
+};
+
 struct TechniqueRow {
   // As given in `techniques`; a name ending in ':' is a family matching every "<name><basis>".
   std::string name;
@@ -110,6 +125,9 @@ struct TechniqueRow {
   void (*check)(const std::string& name, const TechniqueParams& params) = nullptr;
   std::optional<VerifyRecipe> verify = std::nullopt;                 // none: no LP ground truth
   OitVerifyRecipe (*oit_verify)(const OitParams& params) = nullptr;  // none: not verified
+  // Its place in `verify.techniques`' default list (1, 2, ...; 0: not checked by default).
+  int verify_place = 0;
+  std::vector<SweepReference> sweep_references;
   bool prefix() const { return !name.empty() && name.back() == ':'; }
   bool matches(std::string_view given) const;
   // What follows a family row's name in lists ("raymarch:<N>").
@@ -135,10 +153,20 @@ const TechniqueRow* find_technique(std::string_view name,
 // LP: for reports, which test a row's properties, never a name.
 RowRole technique_role(std::string_view name);
 bool technique_solves_lp(std::string_view name);
+// The name of `family`'s first row with `role` (its reference, ...), for the reports' words; a
+// logic_error when the family has none.
+const std::string& role_name(TechniqueFamily family, RowRole role);
 // The row of `name` in `family`, or an InputError listing that family's names.
 const TechniqueRow& technique_row(const std::string& name, TechniqueFamily family);
 // The names of a family's rows that `make` runs by default, as a YAML list ("[a, b]").
 std::string default_techniques(TechniqueFamily family);
+// Every SweepReference of a family's rows, in row order, with its name filled in.
+std::vector<SweepReference> sweep_references(TechniqueFamily family);
+// The names of a family's SweepReferences, and of the rows with a verify recipe in
+// verify_place order, as YAML lists ("[a, b]"): the defaults of `references` and
+// `verify.techniques`.
+std::string sweep_reference_list(TechniqueFamily family);
+std::string verify_default_list();
 // Every hard-shadow technique's option, once per key (shared keys such as esm.c appear in several
 // rows), in row order.
 std::vector<OptionSpec> technique_option_specs();

@@ -64,7 +64,11 @@ std::vector<TechniqueRow> rows() {
              return std::make_unique<TmsmTechnique>(name, false, p.number(kTmsmAlpha),
                                                     p.number(kHamburgerBeta));
            },
-           .verify = VerifyRecipe{.lp_basis = fixed_lp_basis<kTrig4>}},
+           .verify = VerifyRecipe{.lp_basis = fixed_lp_basis<kTrig4>},
+           .verify_place = 3,
+           .sweep_references = {{.expectation = "the trigonometric closed form: equal to lp:trig4 "
+                                                "up to the LP's grid",
+                                 .place = 5}}},
           {.name = "tmsm_float",
            .rank = 190,
            .summary = "trigonometric MSM, float32",
@@ -76,7 +80,8 @@ std::vector<TechniqueRow> rows() {
              return std::make_unique<TmsmTechnique>(name, true, p.number(kTmsmFloatAlpha),
                                                     p.number(kHamburgerBeta));
            },
-           .verify = storage_box(fixed_lp_basis<kTrig4>, 0, 1, false, &kTmsmFloatAlpha)}};
+           .verify = storage_box(fixed_lp_basis<kTrig4>, 0, 1, false, &kTmsmFloatAlpha),
+           .verify_place = 9}};
 }
 
 const TechniqueRegistration kRegistered(rows);

@@ -80,7 +80,11 @@ std::vector<TechniqueRow> rows() {
                                   .lo = -20,
                                   .hi = 21,
                                   .on_r = true,
-                                  .cantelli_support = true}},
+                                  .cantelli_support = true},
+           .verify_place = 4,
+           .sweep_references = {{.expectation = "two moments: far behind every four-function "
+                                                "candidate (seed 000 Figure 4)",
+                                 .place = 1}}},
           {.name = "lvsm",
            .rank = 100,
            .summary = "layered VSM: Cantelli on the depth clamped to z_f's layer",
