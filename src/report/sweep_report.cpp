@@ -503,7 +503,19 @@ std::string sweep_report_markdown(const std::vector<SweepSeries>& series,
        << "\n";
   }
   auto meta = main.meta;
-  md << "- dataset " << meta["dataset"] << "; " << meta["settings"] << "\n";
+  // Series whose measurement options differ (report --allow-different) were measured under
+  // different settings: each states its own then, none is shown as the others'.
+  const auto setting_of = [](const SweepSeries& s) {
+    auto m = s.meta;
+    return "dataset " + m["dataset"] + "; " + m["settings"];
+  };
+  const bool shared = std::all_of(series.begin(), series.end(), [&](const SweepSeries& s) {
+    return setting_of(s) == setting_of(main);
+  });
+  if (shared)
+    md << "- " << setting_of(main) << "\n";
+  else
+    for (const auto& s : series) md << "- " << s.label << ": " << setting_of(s) << "\n";
   uint64_t failures = 0, lps = 0;
   for (const auto& s : series)
     for (const auto& r : s.ranked)

@@ -159,7 +159,8 @@ void run_scatter(const std::vector<ScatterScene>& scenes, const ScatterRunOption
                  const std::function<void(const ScatterFrameResult&)>& each) {
   ScatterParams params;
   params.seed = uint64_t(options.seed);
-  const auto reference = make_scatter_technique("exact", params);
+  const auto reference =
+      make_scatter_technique(role_name(TechniqueFamily::Scattering, RowRole::Reference), params);
   std::vector<std::unique_ptr<ScatterTechnique>> techniques;
   for (const auto& name : options.techniques)
     techniques.push_back(make_scatter_technique(name, params));

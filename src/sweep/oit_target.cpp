@@ -23,9 +23,9 @@ struct FramePlan {
   double weight = 0;
 };
 
-FramePlan plan_frame(const DeepFrame& frame, WarpKind kind) {
+FramePlan plan_frame(const DeepFrame& frame, WarpKind kind, DepthRangeKind range) {
   FramePlan plan;
-  const DepthWarp warp = DepthWarp::between(frame.nearest(), frame.farthest(), kind);
+  const DepthWarp warp = frame_warp(frame, kind, range);
   plan.warped.resize(frame.fragments());
   plan.reference.resize(frame.fragments());
   for (size_t f = 0; f < frame.fragments(); ++f) plan.warped[f] = warp(frame.depth[f]);
@@ -56,7 +56,8 @@ class OitTarget : public SweepTarget {
  public:
   OitTarget(const std::vector<SceneFrame>& frames, const OitParams& params, int threads)
       : frames_(frames), params_(params), threads_(threads) {
-    for (const auto& f : frames_) plans_.push_back(plan_frame(f.frame, params_.warp));
+    for (const auto& f : frames_)
+      plans_.push_back(plan_frame(f.frame, params_.warp, params_.depth_range));
   }
 
   std::vector<std::string> view_names() const override {

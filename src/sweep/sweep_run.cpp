@@ -134,18 +134,11 @@ const std::vector<OptionRecord<ScreenSettings>>& screen_options() {
 
 }  // namespace
 
-// oit.beta and oit.warp, the transmittance family's options (techniques/oit/oit_options.h): the
-// MBOIT reference rows' overestimation and the depth warp of the transparency target.
-OptionSpec oit_spec(const std::string& name) {
-  for (const auto& spec : oit_option_specs())
-    if (spec.name == name) return spec;
-  throw std::logic_error("oit_option_specs lacks " + name);
-}
-
+// The transmittance family's options (techniques/oit/oit_options.h), every one of them: the MBOIT
+// reference rows' overestimation, and the depth warp and its range of the transparency target.
 std::vector<OptionSpec> sweep_option_specs() {
   std::vector<OptionSpec> specs = option_specs(candidate_options());
-  specs.push_back(oit_spec("oit.beta"));
-  specs.push_back(oit_spec("oit.warp"));
+  for (const auto& spec : oit_option_specs()) specs.push_back(spec);
   for (auto& s : option_specs(screen_options())) specs.push_back(s);
   return specs;
 }
@@ -435,9 +428,11 @@ std::string describe_transparency(const SweepSettings& s) {
   return "target transparency: lp:<candidate> with lp.beta " + round_trip(lp.lp_beta) +
          " on the warped depth (" +
          std::string(s.oit.warp == WarpKind::Linear ? "linear" : "logarithmic") +
-         " between each camera's nearest and farthest transparent fragment, docs/transparency.md "
-         "§2), grid " +
-         std::to_string(lp.lp.grid) + " on [" + round_trip(lp.lp.lo) + ", " + round_trip(lp.lp.hi) +
+         (s.oit.depth_range == DepthRangeKind::BoundingSphere
+              ? " over the transparent geometry's bounding sphere seen from each camera"
+              : " between each camera's nearest and farthest transparent fragment") +
+         ", docs/transparency.md §2), grid " + std::to_string(lp.lp.grid) + " on [" +
+         round_trip(lp.lp.lo) + ", " + round_trip(lp.lp.hi) +
          "] and the pixel's fragment depths, backend " + lp.lp_backend +
          "; error: opacity-weighted |T_ref - T|; MBOIT references at beta " +
          round_trip(s.oit.beta);

@@ -65,7 +65,7 @@ struct ScatterRay {
 
 // Options the scattering rows read (the scatter stage fills them from scatter.* keys).
 struct ScatterParams {
-  uint64_t seed = 0;  // scatter.seed: the jitter of sampling rows
+  uint64_t seed = 0;  // scatter.seed (its record holds the default): the jitter of sampling rows
 };
 
 class ScatterTechnique {
