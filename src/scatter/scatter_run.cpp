@@ -41,11 +41,6 @@ const std::vector<OptionRecord<ScatterRunOptions>>& scatter_run_options() {
         "pixel's in-scattering is that of an infinite ray to about 1e-5 of S_max.",
         1e-9, 1e9},
        &ScatterRunOptions::max_distance},
-      {{"scatter.seed", OptionType::Integer, "1",
-        "Seed of the per-pixel jitter of ray marching (docs/scattering.md §3): the answers are "
-        "a function of it and the pixel only, whatever the thread count.",
-        0, 9007199254740992.0},
-       &ScatterRunOptions::seed},
       {measures_nothing({"images", OptionType::Boolean, "true",
                          "Per light view, camera and technique: the final colour, the "
                          "in-scattering alone, its error in false colour, and a contact sheet "
@@ -60,6 +55,32 @@ const std::vector<OptionRecord<ScatterRunOptions>>& scatter_run_options() {
        &ScatterRunOptions::error_scale},
   };
   return records;
+}
+
+std::vector<OptionSpec> scatter_run_option_specs() {
+  std::vector<OptionSpec> specs = option_specs(scatter_run_options());
+  for (auto& s : technique_option_specs({TechniqueFamily::Scattering})) specs.push_back(s);
+  return specs;
+}
+
+ScatterRunOptions scatter_run_options_from(const Config& config) {
+  ScatterRunOptions run;
+  read_options(config, scatter_run_options(), run);
+  read_technique_options(config, run.technique);
+  if (run.techniques.empty()) throw InputError("techniques: expected at least one technique");
+  for (const auto& name : run.techniques) make_scatter_technique(name, {run.technique});
+  return run;
+}
+
+std::string describe_scatter_settings(const ScatterRunOptions& run) {
+  std::string own;
+  for (const OptionSpec& spec : technique_option_specs({TechniqueFamily::Scattering}))
+    own += ", " + spec.name + " " +
+           (spec.type == OptionType::Integer ? std::to_string(run.technique.integer(spec.name))
+                                             : round_trip(run.technique.number(spec.name)));
+  return "light maps " + std::to_string(run.reference_resolution) + "², rays without a surface " +
+         round_trip(run.max_distance) + " scene units" + own +
+         ", irradiance E = 1 (docs/scattering.md §1)";
 }
 
 std::vector<ScatterScene> scatter_scenes(const DatasetDesc& dataset) {
@@ -157,8 +178,7 @@ double scattering_factor(const MediumDesc& medium, const Eigen::Vector3d& to_lig
 void run_scatter(const std::vector<ScatterScene>& scenes, const ScatterRunOptions& options,
                  int threads, bool quiet,
                  const std::function<void(const ScatterFrameResult&)>& each) {
-  ScatterParams params;
-  params.seed = uint64_t(options.seed);
+  const ScatterParams params{options.technique};
   const auto reference =
       make_scatter_technique(role_name(TechniqueFamily::Scattering, RowRole::Reference), params);
   std::vector<std::unique_ptr<ScatterTechnique>> techniques;

@@ -16,6 +16,7 @@
 #include "raster/layer_stack.h"
 #include "scene/light_view.h"
 #include "scene/scene.h"
+#include "techniques/technique.h"
 #include "util/eigen.h"
 
 namespace mb {
@@ -63,9 +64,10 @@ struct ScatterRay {
   uint64_t pixel = 0;  // the pixel's index in its image, for seeded per-pixel randomness
 };
 
-// Options the scattering rows read (the scatter stage fills them from scatter.* keys).
+// What the scattering rows are made with: each technique's own options (their records in the
+// technique's file, e.g. raymarch's scatter.seed), read from the config by the scatter stage.
 struct ScatterParams {
-  uint64_t seed = 0;  // scatter.seed (its record holds the default): the jitter of sampling rows
+  TechniqueParams technique;
 };
 
 class ScatterTechnique {
