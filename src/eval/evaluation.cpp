@@ -152,6 +152,18 @@ std::string technique_darkening_reason(const std::string& name, const EvalSettin
   return make_technique(name, settings.technique)->darkening_reason();
 }
 
+std::map<std::string, std::string> darkening_reasons(const std::vector<std::string>& techniques,
+                                                     const EvalSettings& settings,
+                                                     const std::vector<ViewData>& views) {
+  const bool area_light = !describe_area_lights(views, settings.light).empty();
+  std::map<std::string, std::string> reasons;
+  for (const auto& name : techniques)
+    reasons[name] = area_light
+                        ? "the reference is an area light's shadow, which no technique bounds"
+                        : technique_darkening_reason(name, settings);
+  return reasons;
+}
+
 TechniqueResult evaluate_technique(const ViewData& view, const std::string& technique_name,
                                    const EvalSettings& settings, ProgressBar* progress) {
   const Fragments& f = view.fragments;

@@ -1,5 +1,6 @@
 #pragma once
 // Technique x view -> one shadow intensity per receiver fragment (docs/design.md §Data flow).
+#include <map>
 #include <string>
 #include <vector>
 
@@ -92,6 +93,12 @@ bool is_view_reference(const std::string& technique, double light_angle_deg);
 // a soft technique claims none (its row's reason).
 double technique_darkening_bound(const std::string& name, const EvalSettings& settings);
 std::string technique_darkening_reason(const std::string& name, const EvalSettings& settings);
+// Each technique's reason for the report's darkening notes: its own, or where the views are lit by
+// an area light (describe_area_lights) the reference's, the area light's shadow, which no
+// technique bounds (docs/soft-shadows.md §1).
+std::map<std::string, std::string> darkening_reasons(const std::vector<std::string>& techniques,
+                                                     const EvalSettings& settings,
+                                                     const std::vector<ViewData>& views);
 
 // Runs `technique_name` on every receiver of `view` with one technique instance per thread.
 TechniqueResult evaluate_technique(const ViewData& view, const std::string& technique_name,
