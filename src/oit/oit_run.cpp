@@ -4,7 +4,6 @@
 
 #include <chrono>
 
-#include "techniques/oit/mboit_row.h"
 #include "techniques/registry.h"
 #include "util/error.h"
 #include "util/number_text.h"
@@ -191,8 +190,9 @@ std::string describe_oit_settings(const OitParams& p) {
               ? " between each camera's nearest and farthest transparent fragment"
               : " over the depth range of the bounding sphere of each scene's transparent "
                 "geometry (seed 003)") +
-         " (docs/transparency.md §2); MBOIT beta " + round_trip(p.technique.number(kMboitBeta)) +
-         ", moment bias " + round_trip(p.double_bias.power[0]) +
+         " (docs/transparency.md §2); " +
+         technique_option_text({TechniqueFamily::Transmittance}, p.technique) +
+         ", MBOIT's moment bias " + round_trip(p.double_bias.power[0]) +
          " (double; float and 16-bit variants: the authors' code's biases); lp: grid " +
          std::to_string(p.technique.lp.grid) + " on [" + round_trip(p.technique.lp.lo) + ", " +
          round_trip(p.technique.lp.hi) +

@@ -15,11 +15,12 @@
 
 namespace mb {
 
+// Filled from oit_run_options(), where the defaults are written.
 struct OitRunOptions {
   std::vector<std::string> techniques;
-  bool images = true;
-  bool deep_frames = true;
-  double delta_e_scale = 10;
+  bool images = false;
+  bool deep_frames = false;
+  double delta_e_scale = 0;
 };
 
 // The command's own records; the techniques' (oit.*, lp.*) are techniques/oit/oit_options.h's.

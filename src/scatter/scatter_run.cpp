@@ -73,11 +73,8 @@ ScatterRunOptions scatter_run_options_from(const Config& config) {
 }
 
 std::string describe_scatter_settings(const ScatterRunOptions& run) {
-  std::string own;
-  for (const OptionSpec& spec : technique_option_specs({TechniqueFamily::Scattering}))
-    own += ", " + spec.name + " " +
-           (spec.type == OptionType::Integer ? std::to_string(run.technique.integer(spec.name))
-                                             : round_trip(run.technique.number(spec.name)));
+  std::string own = technique_option_text({TechniqueFamily::Scattering}, run.technique);
+  if (!own.empty()) own = ", " + own;
   return "light maps " + std::to_string(run.reference_resolution) + "², rays without a surface " +
          round_trip(run.max_distance) + " scene units" + own +
          ", irradiance E = 1 (docs/scattering.md §1)";

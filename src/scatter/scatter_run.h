@@ -18,7 +18,7 @@ struct ScatterRunOptions {
   std::vector<std::string> techniques;
   int reference_resolution = 0;
   double max_distance = 0;
-  bool images = true;
+  bool images = false;
   double error_scale = 0;
   TechniqueParams technique;  // the techniques' own options (their rows' records)
 };

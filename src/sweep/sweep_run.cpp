@@ -22,7 +22,6 @@
 #include "sweep/sweep_plan.h"
 #include "techniques/lp_options.h"
 #include "techniques/lp_technique.h"
-#include "techniques/oit/mboit_row.h"
 #include "techniques/oit/oit_options.h"
 #include "techniques/registry.h"
 #include "techniques/technique.h"
@@ -158,6 +157,30 @@ std::vector<OptionSpec> sweep_target_specs(const std::string& target) {
   return specs;
 }
 
+namespace {
+
+// An option that changes a number of some target but is never read by this one (soft.* or oit.beta
+// in a shadow sweep, kernel.* in a transparency sweep) would be accepted and change nothing: a
+// value off its default is refused (docs/sweeps.md "Identity").
+void refuse_unread_options(const Config& config, const std::string& target) {
+  const std::vector<OptionSpec> read = sweep_target_specs(target);
+  for (const std::string& line : config.non_default()) {
+    const std::string key = line.substr(0, line.find(':'));
+    if (key == "dataset") continue;
+    const auto is_key = [&](const OptionSpec& spec) { return spec.name == key; };
+    const auto declared = std::find_if(config.specs().begin(), config.specs().end(), is_key);
+    if (declared == config.specs().end() || declared->effect == OptionEffect::None) continue;
+    if (std::none_of(read.begin(), read.end(), is_key))
+      throw InputError(key + ": " + line.substr(line.find(':') + 2) + "; a sweep with target " +
+                       target +
+                       " does not read it, so it would change nothing; expected its "
+                       "default " +
+                       declared->default_value);
+  }
+}
+
+}  // namespace
+
 SweepSettings sweep_settings_from(const Config& config, int threads) {
   SweepSettings s;
   s.eval = shadow_settings_from(config, threads);
@@ -180,6 +203,7 @@ SweepSettings sweep_settings_from(const Config& config, int threads) {
                      "an area light's (docs/soft-shadows.md), expected 0 (eval takes light.angle "
                      "> 0)");
   read_options(config, screen_options(), s.screen);
+  refuse_unread_options(config, s.target);
   s.oit = oit_params_from(config);
   s.references =
       s.target == "transparency" ? s.oit_references : with_oracle_row(s.references, s.eval.bias);
@@ -449,8 +473,8 @@ std::string describe_transparency(const SweepSettings& s) {
          ", docs/transparency.md §2), grid " + std::to_string(lp.lp.grid) + " on [" +
          round_trip(lp.lp.lo) + ", " + round_trip(lp.lp.hi) +
          "] and the pixel's fragment depths, backend " + lp.lp_backend +
-         "; error: opacity-weighted |T_ref - T|; MBOIT references at beta " +
-         round_trip(s.oit.technique.number(kMboitBeta));
+         "; error: opacity-weighted |T_ref - T|; the references' own options: " +
+         technique_option_text({TechniqueFamily::Transmittance}, s.oit.technique);
 }
 
 // The shadow maps' sizes of `views`, as `resolution` is written: "64", or "48, 64" when the
@@ -528,8 +552,10 @@ void run_sweep(const SweepSettings& s, const SweepJob& job) {
                {"catalog_size", std::to_string(plan.catalog.size())},
                {"combination_size", std::to_string(plan.size)},
                {"planned", std::to_string(plan.ids.size())},
-               {"settings", s.target == "transparency" ? describe_transparency(s)
-                                                       : describe_settings(s.eval)}});
+               {"settings", s.target == "transparency"
+                                ? describe_transparency(s)
+                                : "shadow maps " + meta_resolution + " texels a side; " +
+                                      describe_settings(s.eval)}});
   ResultsStore store = open_sweep_directory(
       job.out, {config_hash(s.config_yaml, s.specs), shard_text, s.config_yaml, s.specs}, meta,
       job.resume, job.force);

@@ -205,6 +205,16 @@ std::vector<OptionSpec> technique_option_specs(std::initializer_list<TechniqueFa
   return specs;
 }
 
+std::string technique_option_text(std::initializer_list<TechniqueFamily> families,
+                                  const TechniqueParams& params) {
+  std::string text;
+  for (const TechniqueOption* o : row_options(families))
+    text += (text.empty() ? "" : ", ") + o->spec.name + " " +
+            (o->spec.type == OptionType::Integer ? std::to_string(params.integer(*o))
+                                                 : round_trip(params.number(*o)));
+  return text;
+}
+
 void read_technique_options(const Config& config, TechniqueParams& params) {
   for (const TechniqueOption* o : all_options())
     if (declares(config, o->spec.name))

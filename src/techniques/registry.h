@@ -177,6 +177,10 @@ std::string verify_default_list();
 // The own options of the rows of `families` (the families a command runs), once per key (shared
 // keys such as esm.c appear in several rows), in row order.
 std::vector<OptionSpec> technique_option_specs(std::initializer_list<TechniqueFamily> families);
+// "key value, key value" of the own options of `families`' rows in `params`, for a report's
+// settings line ("oit.beta 0.25").
+std::string technique_option_text(std::initializer_list<TechniqueFamily> families,
+                                  const TechniqueParams& params);
 // Reads every technique option `config` declares into `params`, validated (InputError naming the
 // key); the others keep their records' defaults.
 void read_technique_options(const Config& config, TechniqueParams& params);
