@@ -40,7 +40,8 @@ int run_scatter_command(const ScatterOptions& options) {
   ScatterRunOptions run;
   read_options(config, scatter_run_options(), run);
   if (run.techniques.empty()) throw InputError("techniques: expected at least one technique");
-  for (const auto& name : run.techniques) make_scatter_technique(name, {});  // names fail here
+  const ScatterParams params = scatter_params(run);
+  for (const auto& name : run.techniques) make_scatter_technique(name, params);  // names fail here
   const DatasetDesc dataset = load_dataset(config.string("dataset"));
   const std::vector<ScatterScene> scenes = scatter_scenes(dataset);
 
@@ -58,9 +59,12 @@ int run_scatter_command(const ScatterOptions& options) {
       overall[k].seconds += r.seconds[k];
     }
     ++context.frames;
+    context.epipole_lines.push_back(r.scene + "/" + r.view + "/" + r.camera + ": " +
+                                    std::to_string(r.epipole_pixels) + " of " +
+                                    std::to_string(size_t(r.width) * r.height));
     if (run.images)
       context.sheets.push_back(write_scatter_images(
-          r, run.techniques,
+          r, run.techniques, run.reference,
           (out.staging() / "images" / (r.scene + "_" + r.view + "_" + r.camera)).string(),
           run.error_scale));
   });
@@ -70,10 +74,14 @@ int run_scatter_command(const ScatterOptions& options) {
   context.dataset = dataset.name, context.version = meta.version, context.git_sha = meta.git_sha;
   context.compiler = meta.compiler, context.started = meta.started_utc;
   context.threads = cmd->threads();
-  context.settings_text = "light maps " + std::to_string(run.reference_resolution) +
-                          "², rays without a surface " + round_trip(run.max_distance) +
-                          " scene units, ray-marching seed " + std::to_string(run.seed) +
-                          ", irradiance E = 1 (docs/scattering.md §1)";
+  context.settings_text =
+      "light maps " + std::to_string(run.reference_resolution) + "², rays without a surface " +
+      round_trip(run.max_distance) + " scene units, ray-marching seed " + std::to_string(run.seed) +
+      ", irradiance E = 1 (docs/scattering.md §1); reference " + run.reference +
+      "; rectified maps " + std::to_string(run.light_resolution) + "², guard band " +
+      round_trip(run.guard_band) + " depth texels, beta " + round_trip(run.beta) + " (§3)";
+  context.reference = run.reference;
+  context.epipole_degrees = run.epipole_degrees;
   context.pixels = overall.front().stats.pixels;
   context.non_default = config.non_default();
   context.error_scale = run.error_scale;
