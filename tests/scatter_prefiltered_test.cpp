@@ -16,7 +16,8 @@ ScatterRunOptions defaults(std::vector<std::string> techniques) {
   const Config config(option_specs(scatter_run_options()));
   read_options(config, scatter_run_options(), run);
   run.techniques = std::move(techniques);
-  run.reference_resolution = 128, run.light_resolution = 128, run.images = false;
+  run.reference_resolution = 128, run.images = false;
+  run.light_resolution = 128, run.guard_band = 8;  // the default's 1/16 of the depth range
   return run;
 }
 
@@ -33,7 +34,8 @@ std::vector<ScatterScene> tiny() {
 }
 
 TEST(ScatterPrefiltered, SameAnswersForAnyThreadCount) {
-  const ScatterRunOptions run = defaults({"pss_exact", "pss_lp:power4"});
+  const ScatterRunOptions run =
+      defaults({"pss_exact", "pss_lp:power4", "pss_msm4", "pss_msm4_16bit", "pss_msm6", "pss_csm"});
   const auto one = run_on(tiny(), run, 1), two = run_on(tiny(), run, 2);
   ASSERT_EQ(one.size(), 1u);
   EXPECT_EQ(one[0].inscatter, two[0].inscatter);
@@ -72,6 +74,7 @@ TEST(ScatterPrefiltered, PssExactApproachesTheReferenceAsTheLightMapGrows) {
   for (const int resolution : {32, 64, 128, 256, 512}) {
     ScatterRunOptions run = defaults({"pss_exact"});
     run.reference_resolution = 512, run.light_resolution = resolution;
+    run.guard_band = resolution / 16.0;
     const double error = run_on(scenes, run, 2)[0].stats[0].mean_error();
     std::printf("pss_exact at light_resolution %d: mean error %.4g\n", resolution, error);
     EXPECT_LT(error, previous) << resolution;

@@ -8,6 +8,7 @@
 #include "cmd/commands.h"
 #include "report/scatter_report.h"
 #include "scatter/scatter_run.h"
+#include "techniques/registry.h"
 #include "util/error.h"
 #include "util/number_text.h"
 #include "util/output_dir.h"
@@ -24,6 +25,7 @@ std::vector<OptionSpec> scatter_specs() {
     specs.push_back(spec);
   }
   for (auto& s : option_specs(scatter_run_options())) specs.push_back(s);
+  for (auto& s : technique_option_specs({TechniqueFamily::Scattering})) specs.push_back(s);
   return specs;
 }
 
@@ -39,6 +41,7 @@ int run_scatter_command(const ScatterOptions& options) {
   const Config& config = cmd->config();
   ScatterRunOptions run;
   read_options(config, scatter_run_options(), run);
+  read_technique_options(config, run.technique, {TechniqueFamily::Scattering});
   if (run.techniques.empty()) throw InputError("techniques: expected at least one technique");
   const ScatterParams params = scatter_params(run);
   for (const auto& name : run.techniques) make_scatter_technique(name, params);  // names fail here

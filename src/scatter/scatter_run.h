@@ -28,6 +28,7 @@ struct ScatterRunOptions {
   double beta = 0;
   bool images = true;
   double error_scale = 0;
+  TechniqueParams technique;  // the scattering rows' own options (their records)
 };
 
 const std::vector<OptionRecord<ScatterRunOptions>>& scatter_run_options();

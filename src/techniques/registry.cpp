@@ -18,16 +18,27 @@ std::vector<std::vector<TechniqueRow> (*)()>& registered() {
   return functions;
 }
 
-// The hard-shadow options every row reads, once per key, in row order.
-std::vector<const TechniqueOption*> hard_options() {
+// The own options the rows of `families` read, once per key, in row order.
+std::vector<const TechniqueOption*> row_options(std::initializer_list<TechniqueFamily> families) {
   std::vector<const TechniqueOption*> options;
-  for (const TechniqueRow* row : family_rows(TechniqueFamily::HardShadow))
-    for (const TechniqueOption* o : row->options)
+  for (const TechniqueRow& row : technique_registry()) {
+    if (std::find(families.begin(), families.end(), row.family) == families.end()) continue;
+    for (const TechniqueOption* o : row.options)
       if (std::find_if(options.begin(), options.end(), [&](const TechniqueOption* known) {
             return known->spec.name == o->spec.name;
           }) == options.end())
         options.push_back(o);
+  }
   return options;
+}
+
+std::vector<const TechniqueOption*> hard_options() {
+  return row_options({TechniqueFamily::HardShadow});
+}
+
+std::vector<const TechniqueOption*> all_options() {
+  return row_options({TechniqueFamily::HardShadow, TechniqueFamily::SoftShadow,
+                      TechniqueFamily::Transmittance, TechniqueFamily::Scattering});
 }
 
 void check_moment_bias(const std::string& key, double alpha) {
@@ -171,9 +182,20 @@ std::string verify_default_list() {
 }
 
 std::vector<OptionSpec> technique_option_specs() {
+  return technique_option_specs({TechniqueFamily::HardShadow});
+}
+
+std::vector<OptionSpec> technique_option_specs(std::initializer_list<TechniqueFamily> families) {
   std::vector<OptionSpec> specs;
-  for (const TechniqueOption* o : hard_options()) specs.push_back(o->spec);
+  for (const TechniqueOption* o : row_options(families)) specs.push_back(o->spec);
   return specs;
+}
+
+void read_technique_options(const Config& config, TechniqueParams& params,
+                            std::initializer_list<TechniqueFamily> families) {
+  for (const TechniqueOption* o : row_options(families))
+    params.set(*o, o->spec.type == OptionType::Integer ? double(config.integer(o->spec.name))
+                                                       : config.number(o->spec.name));
 }
 
 void read_technique_options(const Config& config, TechniqueParams& params) {
@@ -191,8 +213,10 @@ TechniqueParams::TechniqueParams() {
   // Every record's default (written there only), parsed once.
   static const TechniqueParams defaults = [] {
     TechniqueParams p(Defaults{});
-    const Config config(technique_option_specs());
-    for (const TechniqueOption* o : hard_options()) {
+    std::vector<OptionSpec> specs;
+    for (const TechniqueOption* o : all_options()) specs.push_back(o->spec);
+    const Config config(specs);
+    for (const TechniqueOption* o : all_options()) {
       if (o->spec.type != OptionType::Number && o->spec.type != OptionType::Integer)
         throw std::logic_error(o->spec.name + ": a technique option is a number or an integer");
       p.values_[o->spec.name] = {o->spec.type, o->spec.type == OptionType::Integer
@@ -209,7 +233,7 @@ const TechniqueParams::Value& TechniqueParams::value(std::string_view key, Optio
   const auto it = values_.find(key);
   if (it == values_.end())
     throw std::logic_error("technique option '" + std::string(key) +
-                           "': no hard-shadow row declares it");
+                           "': no technique row declares it");
   if (it->second.type != type)
     throw std::logic_error("technique option '" + std::string(key) + "' is " +
                            (it->second.type == OptionType::Integer ? "an integer" : "a number"));
@@ -236,7 +260,7 @@ void TechniqueParams::set(std::string_view key, double v) {
   const auto it = values_.find(key);
   if (it == values_.end())
     throw std::logic_error("technique option '" + std::string(key) +
-                           "': no hard-shadow row declares it");
+                           "': no technique row declares it");
   if (it->second.type == OptionType::Integer && v != std::round(v))
     throw std::logic_error("technique option '" + std::string(key) + "' is an integer, got " +
                            round_trip(v));

@@ -6,6 +6,7 @@
 // references and targets, `verify`, `solve --technique/--alpha`, `momentbench options` and the
 // user guide's technique list all read this table, and test a row's properties, never its name.
 // Adding a technique of any family: its file (its code and its row) and its test.
+#include <initializer_list>
 #include <memory>
 #include <optional>
 #include <string>
@@ -170,8 +171,13 @@ std::string verify_default_list();
 // Every hard-shadow technique's option, once per key (shared keys such as esm.c appear in several
 // rows), in row order.
 std::vector<OptionSpec> technique_option_specs();
+// The same for the rows of `families`.
+std::vector<OptionSpec> technique_option_specs(std::initializer_list<TechniqueFamily> families);
 // Reads every technique option of `config` into `params`, validated (InputError naming the key).
 void read_technique_options(const Config& config, TechniqueParams& params);
+// Reads the options of the rows of `families` (which `config` must declare) into `params`.
+void read_technique_options(const Config& config, TechniqueParams& params,
+                            std::initializer_list<TechniqueFamily> families);
 // Sets every moment bias alpha of `params` (solve --alpha).
 void set_moment_bias(TechniqueParams& params, double alpha);
 // `momentbench options techniques`: a Markdown table of every row, a section per family.

@@ -16,6 +16,7 @@
 #include "raster/layer_stack.h"
 #include "scene/light_view.h"
 #include "scene/scene.h"
+#include "techniques/technique.h"
 #include "util/eigen.h"
 
 namespace mb {
@@ -67,8 +68,11 @@ struct ScatterRay {
 };
 
 // Options the scattering rows read (the scatter stage fills them from scatter.* keys).
-// Every field is set from its scatter.* record (scatter/scatter_run.cpp), which holds its default.
+// What the scattering rows are made with: each technique's own options (their records in the
+// technique's file), and the family's scatter.* records (scatter/scatter_run.cpp, which hold
+// their defaults).
 struct ScatterParams {
+  TechniqueParams technique;
   uint64_t seed = 0;  // scatter.seed: the jitter of sampling rows
   // The rectified map of the prefiltered rows (docs/scattering.md §3.1): its texels along r and
   // rows along phi (scatter.light_resolution), and the depth texels left free at either end of a
