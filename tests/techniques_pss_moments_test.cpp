@@ -127,7 +127,7 @@ TEST(TechniquesPssMoments, CsmApproachesPssExactAsItsTermsGrow) {
   for (const int terms : {2, 8, 32}) {
     ScatterParams p = params(0.5);
     p.technique.set("scatter.csm_terms", terms);
-    p.technique.set("csm.damping", 0);
+    p.technique.set("scatter.csm_damping", 0);
     const auto csm = make_scatter_technique("pss_csm", p);
     csm->prepare(setup);
     double error = 0;

@@ -24,8 +24,7 @@ std::vector<OptionSpec> scatter_specs() {
     if (spec.name == "dataset") spec.default_value = "scattering";
     specs.push_back(spec);
   }
-  for (auto& s : option_specs(scatter_run_options())) specs.push_back(s);
-  for (auto& s : technique_option_specs({TechniqueFamily::Scattering})) specs.push_back(s);
+  for (auto& s : scatter_run_option_specs()) specs.push_back(s);
   return specs;
 }
 
@@ -39,12 +38,7 @@ int run_scatter_command(const ScatterOptions& options) {
   auto cmd = CommandRun::begin(scatter_specs(), options.common);
   if (!cmd) return 0;
   const Config& config = cmd->config();
-  ScatterRunOptions run;
-  read_options(config, scatter_run_options(), run);
-  read_technique_options(config, run.technique, {TechniqueFamily::Scattering});
-  if (run.techniques.empty()) throw InputError("techniques: expected at least one technique");
-  const ScatterParams params = scatter_params(run);
-  for (const auto& name : run.techniques) make_scatter_technique(name, params);  // names fail here
+  const ScatterRunOptions run = scatter_run_options_from(config);
   const DatasetDesc dataset = load_dataset(config.string("dataset"));
   const std::vector<ScatterScene> scenes = scatter_scenes(dataset);
 
@@ -77,12 +71,7 @@ int run_scatter_command(const ScatterOptions& options) {
   context.dataset = dataset.name, context.version = meta.version, context.git_sha = meta.git_sha;
   context.compiler = meta.compiler, context.started = meta.started_utc;
   context.threads = cmd->threads();
-  context.settings_text =
-      "light maps " + std::to_string(run.reference_resolution) + "², rays without a surface " +
-      round_trip(run.max_distance) + " scene units, ray-marching seed " + std::to_string(run.seed) +
-      ", irradiance E = 1 (docs/scattering.md §1); reference " + run.reference +
-      "; rectified maps " + std::to_string(run.light_resolution) + "², guard band " +
-      round_trip(run.guard_band) + " depth texels, beta " + round_trip(run.beta) + " (§3)";
+  context.settings_text = describe_scatter_settings(run);
   context.reference = run.reference;
   context.epipole_degrees = run.epipole_degrees;
   context.pixels = overall.front().stats.pixels;

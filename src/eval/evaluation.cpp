@@ -133,8 +133,7 @@ void check_lp_interval(const std::vector<ViewData>& views, double lo, double hi)
 }
 
 const TechniqueRow& shadow_row(const std::string& name) {
-  if (const TechniqueRow* row = find_technique(name, TechniqueFamily::SoftShadow)) return *row;
-  return technique_row(name, TechniqueFamily::HardShadow);
+  return technique_row(name, {TechniqueFamily::HardShadow, TechniqueFamily::SoftShadow});
 }
 
 bool is_view_reference(const std::string& technique, double light_angle_deg) {

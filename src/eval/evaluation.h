@@ -26,12 +26,17 @@ struct ViewData {
 };
 
 struct EvalSettings {
-  GaussianKernel kernel = make_gaussian_kernel(9, 2.4);
+  // The option records' defaults (eval/eval_config.h; written there only), as a library caller or
+  // a test gets them.
+  EvalSettings();
+  struct Unset {};
+  explicit EvalSettings(Unset) {}  // what shadow_settings_from fills
+  GaussianKernel kernel;
   BiasParams
       bias;  // delta_f and the reference: techniques see z_f - delta_f (docs/reference.md §3)
   TechniqueParams technique;
   // How translucent moment maps blend (translucent.blend; the reference is always exact).
-  BlendOrder blend = BlendOrder::Sorted;
+  BlendOrder blend{};
   // The light of every view that names none, unless the dataset lists light_angles (light.angle,
   // light.directions; docs/soft-shadows.md §1).
   AreaLight light;

@@ -79,4 +79,8 @@ OitFrameResult evaluate_oit_frame(const DeepFrame& frame, const std::string& sce
                                   const OitParams& params, int threads, const LabConverter& lab,
                                   bool quiet);
 
+// The sentence a report states the run's settings in: the warp and its range, MBOIT's beta and
+// bias, and the lp: rows' grid, interval, backend and lp.beta.
+std::string describe_oit_settings(const OitParams& params);
+
 }  // namespace mb

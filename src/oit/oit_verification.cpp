@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "scene/procedural.h"
+#include "techniques/oit/mboit_row.h"
 #include "techniques/oit/oit_technique.h"
 #include "techniques/registry.h"
 #include "util/error.h"
@@ -61,9 +62,9 @@ OitVerifyRow verify_mboit(const std::string& technique, int pixels, uint64_t see
   row.kind = recipe.kind;
   row.lo = recipe.lo, row.hi = recipe.hi;
   row.tolerance = recipe.tolerance;
-  closed.beta = 0;
-  lp.lp.lp = lp::Discretization{row.lo, row.hi, 256, false};
-  lp.lp.lp.continuous = true;
+  closed.technique.set(kMboitBeta, 0);
+  lp.technique.lp = lp::Discretization{row.lo, row.hi, 256, false};
+  lp.technique.lp.continuous = true;
   auto mboit = make_oit_technique(technique, closed);
   auto reference = make_oit_technique(row.lp_basis, lp);
   SeededRandom rng(seed);

@@ -42,11 +42,6 @@ const std::vector<OptionRecord<ScatterRunOptions>>& scatter_run_options() {
         "pixel's in-scattering is that of an infinite ray to about 1e-5 of S_max.",
         1e-9, 1e9},
        &ScatterRunOptions::max_distance},
-      {{"scatter.seed", OptionType::Integer, "1",
-        "Seed of the per-pixel jitter of ray marching (docs/scattering.md §3): the answers are "
-        "a function of it and the pixel only, whatever the thread count.",
-        0, 9007199254740992.0},
-       &ScatterRunOptions::seed},
       {{"scatter.light_resolution", OptionType::Integer, "1024",
         "The prefiltered rows' maps (docs/scattering.md §3.1): the light view's layer 0 that the "
         "rectified map resamples is rendered at this resolution, and the rectified map has as "
@@ -116,11 +111,39 @@ ScatterParams scatter_params(const ScatterRunOptions& options) {
                      " (scatter.light_resolution); expected below half of it");
   ScatterParams params;
   params.technique = options.technique;
-  params.seed = uint64_t(options.seed);
   params.light_resolution = options.light_resolution;
   params.guard_band = options.guard_band;
   params.beta = options.beta;
   return params;
+}
+
+std::vector<OptionSpec> scatter_run_option_specs() {
+  std::vector<OptionSpec> specs = option_specs(scatter_run_options());
+  for (auto& s : technique_option_specs({TechniqueFamily::Scattering})) specs.push_back(s);
+  return specs;
+}
+
+ScatterRunOptions scatter_run_options_from(const Config& config) {
+  ScatterRunOptions run;
+  read_options(config, scatter_run_options(), run);
+  read_technique_options(config, run.technique);
+  if (run.techniques.empty()) throw InputError("techniques: expected at least one technique");
+  const ScatterParams params = scatter_params(run);  // the guard band's check
+  for (const auto& name : run.techniques) make_scatter_technique(name, params);
+  return run;
+}
+
+std::string describe_scatter_settings(const ScatterRunOptions& run) {
+  std::string own;
+  for (const OptionSpec& spec : technique_option_specs({TechniqueFamily::Scattering}))
+    own += ", " + spec.name + " " +
+           (spec.type == OptionType::Integer ? std::to_string(run.technique.integer(spec.name))
+                                             : round_trip(run.technique.number(spec.name)));
+  return "light maps " + std::to_string(run.reference_resolution) + "², rays without a surface " +
+         round_trip(run.max_distance) + " scene units" + own +
+         ", irradiance E = 1 (docs/scattering.md §1); reference " + run.reference +
+         "; rectified maps " + std::to_string(run.light_resolution) + "², guard band " +
+         round_trip(run.guard_band) + " depth texels, beta " + round_trip(run.beta) + " (§3)";
 }
 
 std::vector<ScatterScene> scatter_scenes(const DatasetDesc& dataset) {

@@ -20,7 +20,6 @@ struct ScatterRunOptions {
   std::vector<std::string> techniques;
   int reference_resolution = 0;
   double max_distance = 0;
-  int64_t seed = 0;
   int light_resolution = 0;
   double guard_band = 0;
   double epipole_degrees = 0;
@@ -28,10 +27,18 @@ struct ScatterRunOptions {
   double beta = 0;
   bool images = true;
   double error_scale = 0;
-  TechniqueParams technique;  // the scattering rows' own options (their records)
+  TechniqueParams technique;  // the techniques' own options (their rows' records)
 };
 
 const std::vector<OptionRecord<ScatterRunOptions>>& scatter_run_options();
+// The scatter stage's records and the scattering rows' own options.
+std::vector<OptionSpec> scatter_run_option_specs();
+// ScatterRunOptions of a config declaring scatter_run_option_specs(); InputError for an empty or
+// unknown technique before any work.
+ScatterRunOptions scatter_run_options_from(const Config& config);
+// The report's settings sentence: the light maps, the sky rays' length and every technique
+// option's value.
+std::string describe_scatter_settings(const ScatterRunOptions& run);
 // What the scattering rows read of these options.
 ScatterParams scatter_params(const ScatterRunOptions& options);
 

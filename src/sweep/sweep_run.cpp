@@ -20,7 +20,9 @@
 #include "sweep/run_identity.h"
 #include "sweep/sweep_directory.h"
 #include "sweep/sweep_plan.h"
+#include "techniques/lp_options.h"
 #include "techniques/lp_technique.h"
+#include "techniques/oit/mboit_row.h"
 #include "techniques/oit/oit_options.h"
 #include "techniques/registry.h"
 #include "techniques/technique.h"
@@ -140,6 +142,19 @@ std::vector<OptionSpec> sweep_option_specs() {
   std::vector<OptionSpec> specs = option_specs(candidate_options());
   for (const auto& spec : oit_option_specs()) specs.push_back(spec);
   for (auto& s : option_specs(screen_options())) specs.push_back(s);
+  return specs;
+}
+
+std::vector<OptionSpec> sweep_target_specs(const std::string& target) {
+  std::vector<OptionSpec> specs = option_specs(candidate_options());
+  for (auto& s : option_specs(screen_options())) specs.push_back(s);
+  if (target == "transparency") {
+    for (auto& s : oit_option_specs()) specs.push_back(s);
+    for (auto& s : lp_option_specs()) specs.push_back(s);
+  } else {
+    for (auto& s : option_specs(dataset_option_records())) specs.push_back(s);
+    for (auto& s : hard_shadow_option_specs()) specs.push_back(s);
+  }
   return specs;
 }
 
@@ -424,7 +439,7 @@ namespace {
 
 // The transparency target's settings sentence (the report's and a resume's "settings").
 std::string describe_transparency(const SweepSettings& s) {
-  const auto& lp = s.oit.lp;
+  const auto& lp = s.oit.technique;
   return "target transparency: lp:<candidate> with lp.beta " + round_trip(lp.lp_beta) +
          " on the warped depth (" +
          std::string(s.oit.warp == WarpKind::Linear ? "linear" : "logarithmic") +
@@ -435,7 +450,17 @@ std::string describe_transparency(const SweepSettings& s) {
          round_trip(lp.lp.lo) + ", " + round_trip(lp.lp.hi) +
          "] and the pixel's fragment depths, backend " + lp.lp_backend +
          "; error: opacity-weighted |T_ref - T|; MBOIT references at beta " +
-         round_trip(s.oit.beta);
+         round_trip(s.oit.technique.number(kMboitBeta));
+}
+
+// The shadow maps' sizes of `views`, as `resolution` is written: "64", or "48, 64" when the
+// dataset's views differ.
+std::string map_sizes(const std::vector<ViewData>& views) {
+  std::set<int> sizes;
+  for (const ViewData& v : views) sizes.insert(v.map.width);
+  std::string text;
+  for (int size : sizes) text += (text.empty() ? "" : ", ") + std::to_string(size);
+  return text;
 }
 
 // What the sweep measures, rendered before anything is written (bad input leaves no output).
@@ -488,11 +513,16 @@ void run_sweep(const SweepSettings& s, const SweepJob& job) {
   const DatasetDesc dataset = load_dataset(s.dataset);
   if (job.out.empty()) throw InputError("--out: a sweep needs an output directory");
   const PreparedTarget prepared = prepare_target(s, dataset, job.quiet);
+  // `resolution` 0 keeps the dataset's: the identity holds the maps' size it gave, so that a run
+  // at 0 and one naming the same size are one measurement (docs/sweeps.md "Identity").
+  const std::string meta_resolution =
+      s.target != "transparency" ? map_sizes(prepared.views) : std::string();
   // The output directory is the sweep's state: new unless resuming, then it must match.
   const std::string shard_text = std::to_string(job.shard) + "/" + std::to_string(job.shards);
   // The run's identity: every measurement option's value; the dataset by its name.
   std::map<std::string, std::string> meta = measurement_meta(s.config_yaml, s.specs);
   meta["dataset"] = dataset.name;
+  if (!meta_resolution.empty()) meta["resolution"] = meta_resolution;
   meta.insert({{"target", s.target},
                {"git_sha", collect_run_metadata(s.eval.threads, {}).git_sha},
                {"catalog_size", std::to_string(plan.catalog.size())},

@@ -47,6 +47,9 @@ using P = TechniqueParams;
 const TechniqueOption kCsmTerms{{"csm.terms", OptionType::Integer, "8",
                                  "CSM Fourier terms M (2M channels: cos and sin of (2k - 1) pi z).",
                                  1, 16}};
+const TechniqueOption kCsmDamping{
+    {"csm.damping", OptionType::Number, "2",
+     "CSM ringing suppression: term k scaled by exp(-damping (k/M)^2).", 0, 100}};
 
 std::vector<std::string> csm_lp_basis(const P& p) {
   return csm_channels(p.integer(kCsmTerms));
@@ -70,9 +73,5 @@ std::vector<TechniqueRow> rows() {
 const TechniqueRegistration kRegistered(rows);
 
 }  // namespace
-
-const TechniqueOption kCsmDamping{
-    {"csm.damping", OptionType::Number, "2",
-     "CSM ringing suppression: term k scaled by exp(-damping (k/M)^2).", 0, 100}};
 
 }  // namespace mb

@@ -16,7 +16,6 @@ inline const char* const kNotProven = "not proven";
 // Options read by the rows of more than one file.
 extern const TechniqueOption kHamburgerBeta;  // hamburger.beta (power_moments.cpp)
 extern const TechniqueOption kEsmC;           // esm.c (esm.cpp)
-extern const TechniqueOption kCsmDamping;     // csm.damping (csm.cpp; pss_csm damps as csm does)
 
 // verify's LP basis of a row whose basis does not depend on its options (VerifyRecipe::lp_basis).
 template <const char* kSet>

@@ -41,6 +41,12 @@ std::vector<const TechniqueOption*> all_options() {
                       TechniqueFamily::Transmittance, TechniqueFamily::Scattering});
 }
 
+bool declares(const Config& config, const std::string& key) {
+  const std::vector<OptionSpec>& specs = config.specs();
+  return std::any_of(specs.begin(), specs.end(),
+                     [&](const OptionSpec& s) { return s.name == key; });
+}
+
 void check_moment_bias(const std::string& key, double alpha) {
   if (!(alpha >= 0 && alpha < 1))
     throw InputError(key + ": expected alpha in [0, 1), got " + round_trip(alpha));
@@ -127,21 +133,33 @@ const std::string& role_name(TechniqueFamily family, RowRole role) {
 }
 
 const TechniqueRow& technique_row(const std::string& name, TechniqueFamily family) {
-  if (const TechniqueRow* row = find_technique(name, family)) return *row;
+  return technique_row(name, {family});
+}
+
+const TechniqueRow& technique_row(const std::string& name,
+                                  std::initializer_list<TechniqueFamily> families) {
+  for (TechniqueFamily family : families)
+    if (const TechniqueRow* row = find_technique(name, family)) return *row;
   const TechniqueRow* row = find_technique(name);
   std::vector<std::string> names;
-  for (const TechniqueRow* r : family_rows(family))
-    if (!r->prefix()) names.push_back(r->name);
+  std::string valid, titles;
+  for (TechniqueFamily family : families) {
+    for (const TechniqueRow* r : family_rows(family))
+      if (!r->prefix()) names.push_back(r->name);
+    valid += (valid.empty() ? "" : "; ") +
+             (families.size() > 1 ? family_title(family) + ": " : std::string()) +
+             names_of(family) +
+             (family == TechniqueFamily::HardShadow
+                  ? " (e.g. lp:power4, lp:trig4, lp:z;exp(-z);sin(pi z);z^3)"
+                  : "");
+    titles += (titles.empty() ? "" : " or ") + family_title(family);
+  }
   const std::string guess = closest_match(name, names);
-  throw InputError("unknown technique '" + name + "'" +
-                   (row ? " (a technique of " + family_title(row->family) + ", expected one of " +
-                              family_title(family) + ")"
-                        : "") +
-                   (guess.empty() ? "" : " (did you mean '" + guess + "'?)") +
-                   "; valid: " + names_of(family) +
-                   (family == TechniqueFamily::HardShadow
-                        ? " (e.g. lp:power4, lp:trig4, lp:z;exp(-z);sin(pi z);z^3)"
-                        : ""));
+  throw InputError(
+      "unknown technique '" + name + "'" +
+      (row ? " (a technique of " + family_title(row->family) + ", expected one of " + titles + ")"
+           : "") +
+      (guess.empty() ? "" : " (did you mean '" + guess + "'?)") + "; valid: " + valid);
 }
 
 std::string default_techniques(TechniqueFamily family) {
@@ -181,27 +199,17 @@ std::string verify_default_list() {
   return "[" + list + "]";
 }
 
-std::vector<OptionSpec> technique_option_specs() {
-  return technique_option_specs({TechniqueFamily::HardShadow});
-}
-
 std::vector<OptionSpec> technique_option_specs(std::initializer_list<TechniqueFamily> families) {
   std::vector<OptionSpec> specs;
   for (const TechniqueOption* o : row_options(families)) specs.push_back(o->spec);
   return specs;
 }
 
-void read_technique_options(const Config& config, TechniqueParams& params,
-                            std::initializer_list<TechniqueFamily> families) {
-  for (const TechniqueOption* o : row_options(families))
-    params.set(*o, o->spec.type == OptionType::Integer ? double(config.integer(o->spec.name))
-                                                       : config.number(o->spec.name));
-}
-
 void read_technique_options(const Config& config, TechniqueParams& params) {
-  for (const TechniqueOption* o : hard_options())
-    params.set(*o, o->spec.type == OptionType::Integer ? double(config.integer(o->spec.name))
-                                                       : config.number(o->spec.name));
+  for (const TechniqueOption* o : all_options())
+    if (declares(config, o->spec.name))
+      params.set(*o, o->spec.type == OptionType::Integer ? double(config.integer(o->spec.name))
+                                                         : config.number(o->spec.name));
 }
 
 void set_moment_bias(TechniqueParams& params, double alpha) {

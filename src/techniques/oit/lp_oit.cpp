@@ -48,8 +48,10 @@ std::vector<TechniqueRow> rows() {
            .default_run = true,
            .example = "lp:power4",
            .solves_lp = true,
-           .make_oit = [](const std::string& name, const OitParams& p)
-               -> std::unique_ptr<OitTechnique> { return std::make_unique<LpOit>(name, p.lp); },
+           .make_oit = [](const std::string& name,
+                          const OitParams& p) -> std::unique_ptr<OitTechnique> {
+             return std::make_unique<LpOit>(name, p.technique);
+           },
            // The six-moment LP beside the candidates of a transparency sweep.
            .sweep_references = {{.name = "lp:power6"}}}};
 }

@@ -3,7 +3,8 @@
 // test [d < z] is a square wave of period 2 in z - d, 1/2 + 2 Σ_k sin(c_k (z - d)) / c_k with
 // c_k = (2k - 1) pi, k = 1..M (scatter.csm_terms); its terms split into cos(c_k d) and sin(c_k d),
 // 2M channels whose prefix sums along a row give the series of the ray's shadowed fraction. Term k
-// is damped by exp(-damping (k / M)²) (csm.damping, as the hard-shadow csm row damps). Unlike that
+// is damped by exp(-damping (k / M)²) (scatter.csm_damping, as csm.damping damps the hard-shadow
+// csm row; a key of its own, as every family's options are its own). Unlike that
 // row, the series is not sharpened (2S - 1): the shadowed fraction is the mean of the test over the
 // row, which the series' mean gives, and sharpening would not commute with that mean. The
 // truncated series rings: not a bound.
@@ -12,7 +13,6 @@
 #include <memory>
 #include <numbers>
 
-#include "techniques/hard_rows.h"
 #include "techniques/registry.h"
 #include "techniques/scatter/prefiltered_scatter.h"
 
@@ -26,12 +26,19 @@ const TechniqueOption kScatterCsmTerms{
      "seed 004 §2.6's 32 coefficients.",
      1, 64}};
 
+const TechniqueOption kScatterCsmDamping{
+    {"scatter.csm_damping", OptionType::Number, "2",
+     "Ringing suppression of pss_csm (docs/scattering.md §3.2): term k scaled by "
+     "exp(-damping (k/M)^2), as csm.damping damps the hard-shadow csm row. 2: csm.damping's "
+     "default; seed 004 §2.6 does not state its damping.",
+     0, 100}};
+
 class PssCsm : public PrefilteredScatter {
  public:
   PssCsm(const std::string& name, const ScatterParams& params)
       : PrefilteredScatter(name, params),
         terms_(params.technique.integer(kScatterCsmTerms)),
-        damping_(params.technique.number(kCsmDamping)) {}
+        damping_(params.technique.number(kScatterCsmDamping)) {}
 
  protected:
   void prefilter(const RectifiedMap& map) override {
@@ -72,7 +79,7 @@ std::vector<TechniqueRow> rows() {
            .storage = "rectified map, prefix sums of 2M Fourier coefficients in double",
            .bound = "not proven: the truncated series rings (Gibbs)",
            .unproven_reason = "a truncated Fourier series of the shadow test rings",
-           .options = {&kScatterCsmTerms, &kCsmDamping},
+           .options = {&kScatterCsmTerms, &kScatterCsmDamping},
            .family_options = {"scatter.light_resolution", "scatter.guard_band"},
            .default_run = true,
            .make_scatter = [](const std::string& name,

@@ -67,13 +67,11 @@ struct ScatterRay {
   uint64_t pixel = 0;  // the pixel's index in its image, for seeded per-pixel randomness
 };
 
-// Options the scattering rows read (the scatter stage fills them from scatter.* keys).
 // What the scattering rows are made with: each technique's own options (their records in the
-// technique's file), and the family's scatter.* records (scatter/scatter_run.cpp, which hold
-// their defaults).
+// technique's file, e.g. raymarch's scatter.seed), read from the config by the scatter stage, and
+// the family's scatter.* records (scatter/scatter_run.cpp, which hold their defaults).
 struct ScatterParams {
   TechniqueParams technique;
-  uint64_t seed = 0;  // scatter.seed: the jitter of sampling rows
   // The rectified map of the prefiltered rows (docs/scattering.md §3.1): its texels along r and
   // rows along phi (scatter.light_resolution), and the depth texels left free at either end of a
   // row's range of inclinations (scatter.guard_band).
