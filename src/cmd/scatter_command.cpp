@@ -8,6 +8,7 @@
 #include "cmd/commands.h"
 #include "report/scatter_report.h"
 #include "scatter/scatter_run.h"
+#include "techniques/registry.h"
 #include "util/error.h"
 #include "util/number_text.h"
 #include "util/output_dir.h"
@@ -55,9 +56,12 @@ int run_scatter_command(const ScatterOptions& options) {
       overall[k].seconds += r.seconds[k];
     }
     ++context.frames;
+    context.epipole_lines.push_back(r.scene + "/" + r.view + "/" + r.camera + ": " +
+                                    std::to_string(r.epipole_pixels) + " of " +
+                                    std::to_string(size_t(r.width) * r.height));
     if (run.images)
       context.sheets.push_back(write_scatter_images(
-          r, run.techniques,
+          r, run.techniques, run.reference,
           (out.staging() / "images" / (r.scene + "_" + r.view + "_" + r.camera)).string(),
           run.error_scale));
   });
@@ -68,6 +72,8 @@ int run_scatter_command(const ScatterOptions& options) {
   context.compiler = meta.compiler, context.started = meta.started_utc;
   context.threads = cmd->threads();
   context.settings_text = describe_scatter_settings(run);
+  context.reference = run.reference;
+  context.epipole_degrees = run.epipole_degrees;
   context.pixels = overall.front().stats.pixels;
   context.non_default = config.non_default();
   context.error_scale = run.error_scale;
