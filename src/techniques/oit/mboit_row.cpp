@@ -6,9 +6,9 @@ namespace mb {
 
 const TechniqueOption kMboitBeta{
     .spec = {"oit.beta", OptionType::Number, "0.25",
-     "MBOIT's overestimation: A = A- + beta (A+ - A-) from the canonical representation "
-     "(0.25 is the value of the authors' code; 0 gives their lower bound of absorbance).",
-     0, 1},
+             "MBOIT's overestimation: A = A- + beta (A+ - A-) from the canonical representation "
+             "(0.25 is the value of the authors' code; 0 gives their lower bound of absorbance).",
+             0, 1},
     .zero_is_sharp = true};
 
 TechniqueRow mboit_row(const std::string& prefix, const std::string& kind, int moments, int variant,

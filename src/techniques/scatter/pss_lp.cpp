@@ -1,9 +1,9 @@
 // pss_lp:<basis> (docs/scattering.md §3.2): Problem 1 on the row-prefiltered moments of any basis.
 // The prefix sums of a rectified row are the moments of a distribution of depths — the row's texels
-// up to the ray's end, weighted by transmittance (docs/reference.md §11) — so the shadowed fraction
-// of the ray is that distribution's CDF at the ray's depth, and the LP bounds it sharply for any
-// basis: beta 0 (scatter.beta) the sharp lower bound, never too dark against pss_exact; 1 the
-// sharp upper bound; between them the blend. The LP is the project's one fragment solver
+// up to the ray's end, weighted by transmittance (docs/scattering.md §3.2) — so the shadowed
+// fraction of the ray is that distribution's CDF at the ray's depth, and the LP bounds it sharply
+// for any basis: beta 0 (scatter.beta) the sharp lower bound, never too dark against pss_exact; 1
+// the sharp upper bound; between them the blend. The LP is the project's one fragment solver
 // (techniques/lp_fragment_solver.h), through the lp:<basis> technique, with the ray's own
 // distribution as the kernel's: its depths join the grid, so the program is feasible by
 // construction and the answer is Problem 1 for exactly the moments a prefix sum holds.
