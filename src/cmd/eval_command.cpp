@@ -107,6 +107,7 @@ int run_eval(const EvalOptions& options) {
   context.compiler = meta.compiler, context.started = meta.started_utc, context.threads = threads;
   context.settings_text = describe_settings(settings) + soft_text;
   context.reference = settings.bias.reference;
+  context.area_light = !soft_text.empty();
   context.views = views.size();
   for (const auto& v : views) context.receivers += v.fragments.size();
   context.non_default = config.non_default();

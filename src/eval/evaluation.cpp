@@ -110,7 +110,9 @@ std::string describe_area_lights(const std::vector<ViewData>& views, const AreaL
         std::find(angles.begin(), angles.end(), v.soft.angle_deg) == angles.end())
       angles.push_back(v.soft.angle_deg);
   if (angles.empty()) return "";
-  std::string text = "; reference: the area light's shadow (docs/soft-shadows.md §1), lights of ";
+  std::string text =
+      "; views lit by an area light: their reference is that light's shadow, not PCF "
+      "(docs/soft-shadows.md §1), lights of ";
   for (size_t i = 0; i < angles.size(); ++i) text += (i ? ", " : "") + round_trip(angles[i]);
   return text + " degrees, " + std::to_string(light.directions) + " directions each; the " +
          role_name(TechniqueFamily::HardShadow, RowRole::Reference) + " row is the hard shadow";

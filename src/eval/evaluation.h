@@ -66,7 +66,8 @@ std::vector<Scene> build_dataset_scenes(const DatasetDesc& dataset);
 std::vector<ViewData> prepare_views(const std::vector<Scene>& scenes, const DatasetDesc& dataset,
                                     int resolution, const EvalSettings& settings, bool quiet);
 
-// For reports: "; reference: the area light's shadow ..." naming the views' light angles and N, or
+// For reports: "; views lit by an area light: their reference is that light's shadow ..." naming
+// the views' light angles and N, or
 // "" when every view is lit by a hard light.
 std::string describe_area_lights(const std::vector<ViewData>& views, const AreaLight& light);
 
