@@ -2,7 +2,8 @@
 // a boundary moment vector pushed just outside the moment cone by rounding is answered within its
 // box, a vector far outside is infeasible with its distance from the cone, and on many boundary
 // vectors of few atoms the box's G never exceeds the atoms' own mass in front of z_f (the atoms are
-// one of the distributions the box admits).
+// one of the distributions the box admits) nor falls below it at the box's other end, 1 minus its
+// least mass behind z_f.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -43,6 +44,13 @@ TEST(MomentBox, ABoundaryVectorJustOutsideIsAnsweredAndOneFarOutsideIsNot) {
       solve_moment_box(factory, just_outside, ulp_box(factory, just_outside, 8));
   ASSERT_EQ(boxed.status, ProblemStatus::Optimal);
   EXPECT_NEAR(boxed.G, 1.0 / 3, 1e-6);  // two atoms determine the distribution
+  // The box's largest G from above: 1 minus its least mass strictly behind z_f, here 2/3.
+  Problem behind = just_outside;
+  behind.behind = true;
+  const MomentBoxAnswer upper =
+      solve_moment_box(factory, behind, ulp_box(factory, just_outside, 8));
+  ASSERT_EQ(upper.status, ProblemStatus::Optimal);
+  EXPECT_NEAR(upper.G, 2.0 / 3, 1e-6);
 
   b[3] -= 1e-3;
   const Problem far = factory.from_moments(b, 0.5);
@@ -76,6 +84,14 @@ TEST(MomentBox, BoundaryVectorsOfFewAtomsAreAnsweredAsLowerBounds) {
       double below = 0;
       for (int a = 0; a < atoms; ++a) below += z[a] < zf ? w[a] : 0;
       EXPECT_LE(box.G, below + 1e-7) << set << " instance " << i;
+      // The atoms lie in the box, so their G lies within its range: at most 1 minus the box's
+      // least mass strictly behind z_f (solve's `range`, docs/reference.md §2).
+      Problem behind = p;
+      behind.behind = true;
+      const MomentBoxAnswer upper = solve_moment_box(factory, behind, ulp_box(factory, p, 4));
+      ASSERT_EQ(upper.status, ProblemStatus::Optimal) << set << " instance " << i;
+      EXPECT_GE(1 - upper.G, below - 1e-7) << set << " instance " << i;
+      EXPECT_GE(1 - upper.G, box.G - 1e-7) << set << " instance " << i;
     }
   }
   EXPECT_GE(answered, total - 2);

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <sstream>
 
 #include "util/error.h"
@@ -88,6 +89,31 @@ TEST(SolveQuery, MomentToleranceIsAKeyOfALine) {
       "\n");
   const SolveBatch batch = solve_batch(SolveSettings(), in, "x", false);
   EXPECT_EQ(batch.lines.find("unknown key"), std::string::npos) << batch.lines;
+}
+
+// Two atoms on grid points whose fourth moment rounds two ulps outside the cone: the exact LP has
+// no answer, the box of 8 ulps does (the generic box, on the grid). The two atoms determine the
+// distribution, so the box's range is [1/3, 1/3] and holds their G (docs/reference.md §2).
+TEST(SolveQuery, AGridBoxAnswerStatesTheRangeOverTheBox) {
+  SolveSettings s;
+  s.basis = {"power4"};
+  s.interval = {0, 1};
+  s.grid = 129;
+  s.discretization = "grid";
+  const double z[2] = {0.25, 0.75}, w[2] = {1.0 / 3, 2.0 / 3};
+  s.moments.assign(4, 0.0);
+  for (int j = 0; j < 4; ++j)
+    for (int a = 0; a < 2; ++a) s.moments[j] += w[a] * std::pow(z[a], j + 1);
+  s.moments[3] = std::nextafter(std::nextafter(s.moments[3], 0.0), 0.0);
+  s.zf = 0.5;
+  s.moment_tolerance = 8;
+  const auto answer = solve_instance(s);
+  ASSERT_EQ(answer["status"], "optimal") << answer.dump();
+  ASSERT_TRUE(answer.contains("exact_status")) << answer.dump();
+  ASSERT_TRUE(answer.contains("range")) << answer.dump();
+  EXPECT_NEAR(answer["range"][0].get<double>(), 1.0 / 3, 1e-6);
+  EXPECT_NEAR(answer["range"][1].get<double>(), 1.0 / 3, 1e-6);
+  EXPECT_NE(answer["range_of"].get<std::string>().find("upper bound"), std::string::npos);
 }
 
 // A distribution's depths must lie in the interval (docs/reference.md §1), as eval refuses an LP

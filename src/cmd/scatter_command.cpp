@@ -44,28 +44,16 @@ int run_scatter_command(const ScatterOptions& options) {
 
   StagedOutputDir& out = cmd->out();
   if (run.images) std::filesystem::create_directories(out.staging() / "images");
-  std::vector<ScatterRow> overall, per_frame;
-  std::vector<std::vector<ScatterRow>> frame_rows(run.techniques.size());  // per technique
-  for (const auto& name : run.techniques) overall.push_back({name, "all", "all", "all", {}, 0});
+  ScatterRows rows(run.techniques);
   ScatterReportContext context;
   run_scatter(scenes, run, cmd->threads(), options.common.quiet, [&](const ScatterFrameResult& r) {
-    for (size_t k = 0; k < run.techniques.size(); ++k) {
-      frame_rows[k].push_back(
-          {run.techniques[k], r.scene, r.view, r.camera, r.stats[k], r.seconds[k]});
-      overall[k].stats.merge(r.stats[k]);
-      overall[k].seconds += r.seconds[k];
-    }
-    ++context.frames;
-    context.epipole_lines.push_back(r.scene + "/" + r.view + "/" + r.camera + ": " +
-                                    std::to_string(r.epipole_pixels) + " of " +
-                                    std::to_string(size_t(r.width) * r.height));
+    rows.add(r);
     if (run.images)
       context.sheets.push_back(write_scatter_images(
           r, run.techniques, run.reference,
           (out.staging() / "images" / (r.scene + "_" + r.view + "_" + r.camera)).string(),
           run.error_scale));
   });
-  for (const auto& rows : frame_rows) per_frame.insert(per_frame.end(), rows.begin(), rows.end());
 
   const RunMetadata& meta = cmd->metadata();
   context.dataset = dataset.name, context.version = meta.version, context.git_sha = meta.git_sha;
@@ -74,10 +62,12 @@ int run_scatter_command(const ScatterOptions& options) {
   context.settings_text = describe_scatter_settings(run);
   context.reference = run.reference;
   context.epipole_degrees = run.epipole_degrees;
-  context.pixels = overall.front().stats.pixels;
+  context.frames = rows.frames();
+  context.epipole_lines = rows.epipole_lines();
+  context.pixels = rows.overall().front().stats.pixels;
   context.non_default = config.non_default();
   context.error_scale = run.error_scale;
-  const ScatterReport report = render_scatter_report(context, overall, per_frame);
+  const ScatterReport report = render_scatter_report(context, rows.overall(), rows.per_frame());
   write_file_atomically(out / "report.md", report.markdown);
   write_file_atomically(out / "errors.csv", report.errors_csv);
   cmd->finish();

@@ -7,7 +7,6 @@
 #include "cmd/commands.h"
 #include "eval/eval_config.h"
 #include "eval/evaluation.h"
-#include "oit/oit_verification.h"
 #include "report/oit_report.h"
 #include "report/verify_report.h"
 #include "scene/dataset.h"
@@ -21,31 +20,12 @@ namespace mb {
 
 std::vector<OptionSpec> verify_specs() {
   auto specs = dataset_option_specs();
-  for (auto& s : shadow_option_specs()) specs.push_back(s);
+  for (auto& s : hard_shadow_option_specs()) specs.push_back(s);
   for (auto& s : option_specs(verify_options())) specs.push_back(s);
   return specs;
 }
 
 namespace {
-
-// Notes for targets that exceed their storage box (reported, not failed) and, when verify fails,
-// the targets that disagree with the LP; true when every target that decides the exit passed.
-bool print_verdicts(const VerifyRun& run, bool all_passed) {
-  for (const auto& r : run.results)
-    if (!r.passed() && !r.decides_exit())
-      std::fprintf(stderr,
-                   "momentbench: verify: note: %s exceeds its storage box (%zu instances, by up to "
-                   "%.3g; %zu above an LP witness): reported; verify.moment_box=strict fails it\n",
-                   r.target.technique.c_str(), r.beyond_tolerance, r.largest_excess, r.above_lp);
-  if (all_passed) return true;
-  for (const auto& r : run.results)
-    if (!r.passed() && r.decides_exit())
-      std::fprintf(stderr,
-                   "momentbench: verify: %s disagrees with the LP (%zu beyond tolerance, %zu "
-                   "above an LP witness)\n",
-                   r.target.technique.c_str(), r.beyond_tolerance, r.above_lp);
-  return false;
-}
 
 int run_verify(const CommonOptions& options) {
   auto cmd = CommandRun::begin(verify_specs(), options);
@@ -57,21 +37,8 @@ int run_verify(const CommonOptions& options) {
   VerifySettings v;
   read_options(config, verify_options(), v);
   const VerifyPlan plan = make_verify_plan(v, settings.technique);
-  for (const auto& name : v.oit_techniques) check_oit_verify_technique(name);  // before output
   StagedOutputDir& out = cmd->out();
   const VerifyRun run = run_verification(plan, data, settings, options.quiet);
-  std::vector<OitVerifyRow> oit_rows;
-  for (const auto& name : v.oit_techniques)
-    oit_rows.push_back(verify_mboit(name, v.oit_pixels, v.seed));
-  bool oit_passed = true;
-  for (const auto& r : oit_rows)
-    if (!r.passed()) {
-      oit_passed = false;
-      std::fprintf(stderr,
-                   "momentbench: verify: %s disagrees with the LP (%zu of %zu fragments beyond "
-                   "%g in T, %zu LP failures)\n",
-                   r.technique.c_str(), r.beyond, r.fragments, r.tolerance, r.lp_failures);
-    }
 
   const RunMetadata& meta = cmd->metadata();
   VerifyReportContext context;
@@ -83,8 +50,8 @@ int run_verify(const CommonOptions& options) {
   context.grids = plan.grids;
   if (plan.continuous) context.grids.push_back(0);
   const VerifyReport report = render_verify_report(context, run.results, run.instances);
-  write_file_atomically(out / "verify.md", report.markdown + oit_verify_section(oit_rows));
-  if (!oit_rows.empty()) write_file_atomically(out / "verify_oit.csv", oit_verify_csv(oit_rows));
+  write_file_atomically(out / "verify.md", report.markdown + oit_verify_section(run.oit));
+  if (!run.oit.empty()) write_file_atomically(out / "verify_oit.csv", oit_verify_csv(run.oit));
   write_file_atomically(out / "verify.csv", report.csv);
   write_file_atomically(out / "worst.csv", report.worst_csv);
   cmd->finish();
@@ -92,8 +59,11 @@ int run_verify(const CommonOptions& options) {
   const std::string& text = report.markdown;
   std::fputs(text.substr(0, text.find("\n## Worst")).c_str(), stdout);
   std::fputs("\n", stdout);
-  std::fputs(oit_verify_section(oit_rows).c_str(), stdout);
-  return print_verdicts(run, report.all_passed) && oit_passed ? 0 : 5;
+  std::fputs(oit_verify_section(run.oit).c_str(), stdout);
+  bool passed = true;
+  for (const auto& line : verify_verdicts(run, report.all_passed, passed))
+    std::fprintf(stderr, "momentbench: verify: %s\n", line.c_str());
+  return passed ? 0 : 5;
 }
 
 }  // namespace

@@ -105,8 +105,10 @@ std::vector<long double> dual_in_basis(const MomentBox& box, long double constan
 // enter as nonbasic columns at zero, so the last basis stays feasible: a warm start.
 class BoxLp {
  public:
-  BoxLp(const Basis& basis, const MomentBox& box, double zf, std::span<const double> points)
-      : basis_(basis), box_(box), zf_(zf), lp_(glp_create_prob()) {
+  // behind: minimise the mass strictly behind z_f instead (Problem::behind).
+  BoxLp(const Basis& basis, const MomentBox& box, double zf, std::span<const double> points,
+        bool behind = false)
+      : basis_(basis), box_(box), zf_(zf), behind_(behind), lp_(glp_create_prob()) {
     check_box(basis, box);
     glp_term_out(GLP_OFF);
     const int m = int(basis.size());
@@ -137,7 +139,7 @@ class BoxLp {
         rows[i + 2] = i + 2, values[i + 2] = s[size_t(i) * n + p] / scale_[i];
       glp_set_mat_col(lp_, first + p, m + 1, rows.data(), values.data());
       glp_set_col_bnds(lp_, first + p, GLP_LO, 0, 0);
-      glp_set_obj_coef(lp_, first + p, points[p] < zf_ ? 1 : 0);
+      glp_set_obj_coef(lp_, first + p, (behind_ ? points[p] > zf_ : points[p] < zf_) ? 1 : 0);
       points_.push_back(points[p]);
     }
   }
@@ -219,6 +221,7 @@ class BoxLp {
   const Basis& basis_;
   const MomentBox& box_;
   double zf_;
+  bool behind_ = false;
   glp_prob* lp_;
   bool solved_ = false;
   std::vector<double> scale_, points_;
@@ -377,8 +380,8 @@ std::vector<double> problem_points(const Problem& problem) {
 }  // namespace
 
 MomentBoxAnswer solve_moment_box(const Basis& basis, const MomentBox& box, double zf,
-                                 std::span<const double> points) {
-  BoxLp lp(basis, box, zf, points);
+                                 std::span<const double> points, bool behind) {
+  BoxLp lp(basis, box, zf, points, behind);
   MomentBoxAnswer out = lp.answer(lp.solve());
   if (out.status == ProblemStatus::Infeasible)
     out.relative_distance = relative_distance(basis, box, points);
@@ -389,7 +392,8 @@ MomentBoxAnswer solve_moment_box(const ProblemFactory& factory, const Problem& p
                                  std::span<const double> tolerance) {
   const MomentBox box = MomentBox::of_moments(
       problem.moments, std::vector<double>(tolerance.begin(), tolerance.end()));
-  return solve_moment_box(factory.basis(), box, problem.zf, problem_points(problem));
+  return solve_moment_box(factory.basis(), box, problem.zf, problem_points(problem),
+                          problem.behind);
 }
 
 std::vector<double> ulp_box(const ProblemFactory& factory, const Problem& problem, double ulps) {

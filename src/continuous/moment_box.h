@@ -39,10 +39,12 @@ struct MomentBoxAnswer {
   double relative_distance = 0;
 };
 
-// On the given points of I.
+// On the given points of I; `behind`: the least mass strictly behind z_f instead (Problem::behind),
+// so that 1 minus it bounds G over the box from above.
 MomentBoxAnswer solve_moment_box(const Basis& basis, const MomentBox& box, double zf,
-                                 std::span<const double> points);
-// `problem` from factory.from_moments (its points and untransformed moments are the box's centre).
+                                 std::span<const double> points, bool behind = false);
+// `problem` from factory.from_moments (its points and untransformed moments are the box's centre;
+// its `behind` chooses the objective).
 MomentBoxAnswer solve_moment_box(const ProblemFactory& factory, const Problem& problem,
                                  std::span<const double> tolerance);
 

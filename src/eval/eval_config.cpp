@@ -159,10 +159,10 @@ EvalSettings shadow_settings_from(const Config& config, int threads) {
   read_options(config, translucent_options(), o);
   s.blend = o.blend == "submission" ? BlendOrder::Submission : BlendOrder::Sorted;
   read_options(config, light_options(), o);
-  read_options(config, area_light_options(), o);
+  read_declared_options(config, area_light_options(), o);
   s.light.angle_deg = o.light_angle;
   s.light.directions = o.light_directions;
-  read_options(config, soft_option_records(), s.soft);
+  read_declared_options(config, soft_option_records(), s.soft);
   s.bias.reference = parse_reference(o.reference, "reference");
   s.bias.slope = o.bias_slope;
   s.bias.constant = o.bias_constant;

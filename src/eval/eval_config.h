@@ -16,7 +16,8 @@ std::vector<OptionSpec> hard_shadow_option_specs();
 // The kernel.* keys alone (commands that need no technique parameters; the lp.* keys:
 // techniques/lp_options.h).
 GaussianKernel kernel_from(const Config& config);
-// Validated settings from a resolved config (InputError naming the key on bad values).
+// Validated settings from a resolved config (InputError naming the key on bad values); the soft
+// shadow and area-light keys take their defaults where `config` does not declare them (verify).
 EvalSettings shadow_settings_from(const Config& config, int threads);
 // `techniques` with the `oracle` row added where the receiver-plane reference needs it
 // (docs/reference.md §3: every table then shows the oracle floor, the bias's own error).

@@ -139,7 +139,9 @@ const TechniqueRow& shadow_row(const std::string& name) {
 }
 
 bool is_view_reference(const std::string& technique, double light_angle_deg) {
-  return technique_role(technique) == RowRole::Reference && !(light_angle_deg > 0);
+  return technique_role(technique, {TechniqueFamily::HardShadow, TechniqueFamily::SoftShadow}) ==
+             RowRole::Reference &&
+         !(light_angle_deg > 0);
 }
 
 double technique_darkening_bound(const std::string& name, const EvalSettings& settings) {

@@ -184,21 +184,27 @@ OitFrameResult evaluate_oit_frame(const DeepFrame& frame, const std::string& sce
   return result;
 }
 
-std::string describe_oit_settings(const OitParams& p) {
-  return "depth warp: " + std::string(p.warp == WarpKind::Linear ? "linear" : "logarithmic") +
+std::string describe_oit_warp(const OitParams& p) {
+  return std::string(p.warp == WarpKind::Linear ? "linear" : "logarithmic") +
          (p.depth_range == DepthRangeKind::Fragments
               ? " between each camera's nearest and farthest transparent fragment"
               : " over the depth range of the bounding sphere of each scene's transparent "
                 "geometry (seed 003)") +
-         " (docs/transparency.md §2); " +
+         " (docs/transparency.md §2)";
+}
+
+std::string describe_oit_lp(const TechniqueParams& t) {
+  return "grid " + std::to_string(t.lp.grid) + " on [" + round_trip(t.lp.lo) + ", " +
+         round_trip(t.lp.hi) + "] of the warped depth and the pixel's fragment depths, backend " +
+         t.lp_backend + ", lp.beta " + round_trip(t.lp_beta);
+}
+
+std::string describe_oit_settings(const OitParams& p) {
+  return "depth warp: " + describe_oit_warp(p) + "; " +
          technique_option_text({TechniqueFamily::Transmittance}, p.technique) +
          ", MBOIT's moment bias " + round_trip(p.double_bias.power[0]) +
-         " (double; float and 16-bit variants: the authors' code's biases); lp: grid " +
-         std::to_string(p.technique.lp.grid) + " on [" + round_trip(p.technique.lp.lo) + ", " +
-         round_trip(p.technique.lp.hi) +
-         "] of the warped depth and the pixel's fragment depths, "
-         "backend " +
-         p.technique.lp_backend + ", lp.beta " + round_trip(p.technique.lp_beta);
+         " (double; float and 16-bit variants: the authors' code's biases); lp: " +
+         describe_oit_lp(p.technique);
 }
 
 }  // namespace mb

@@ -83,5 +83,9 @@ OitFrameResult evaluate_oit_frame(const DeepFrame& frame, const std::string& sce
 // The sentence a report states the run's settings in: the warp and its range, MBOIT's beta and
 // bias, and the lp: rows' grid, interval, backend and lp.beta.
 std::string describe_oit_settings(const OitParams& params);
+// Its parts that a transparency sweep states too: the depth warp and its range, and the lp: rows'
+// LP (grid, interval, backend, lp.beta).
+std::string describe_oit_warp(const OitParams& params);
+std::string describe_oit_lp(const TechniqueParams& technique);
 
 }  // namespace mb

@@ -14,6 +14,13 @@ namespace mb {
 
 namespace {
 
+// eval's rows are hard and soft shadows alike.
+constexpr std::initializer_list<TechniqueFamily> kShadowFamilies = {TechniqueFamily::HardShadow,
+                                                                    TechniqueFamily::SoftShadow};
+RowRole role_of(const std::string& name) {
+  return technique_role(name, kShadowFamilies);
+}
+
 std::string number(double v) {
   return round_trip(v);
 }
@@ -144,8 +151,7 @@ std::string summary_lines(const EvalReportContext& ctx, const std::vector<EvalRo
   for (const auto& r : overall) {
     headline << (headline.tellp() > 0 ? ", " : "") << r.technique << " "
              << percent_text(r.stats.mean()) << " %";
-    if (technique_role(r.technique) != RowRole::Reference &&
-        technique_role(r.technique) != RowRole::BiasFloor &&
+    if (role_of(r.technique) != RowRole::Reference && role_of(r.technique) != RowRole::BiasFloor &&
         (!lowest || r.stats.mean() < lowest->stats.mean()))
       lowest = &r;
   }
@@ -207,8 +213,7 @@ EvalReport render_eval_report(const EvalReportContext& ctx, const std::vector<Ev
   for (const auto& line : ctx.non_default) report << "- option " << line << "\n";
   report << "\n" << protocol_text(ctx.reference, ctx.area_light) << "\n\n";
   for (const auto& r : overall)
-    if (technique_role(r.technique) == RowRole::BiasFloor &&
-        ctx.reference == Reference::ReceiverPlane)
+    if (role_of(r.technique) == RowRole::BiasFloor && ctx.reference == Reference::ReceiverPlane)
       report << "**Oracle floor: " << percent_text(r.stats.mean())
              << " %.** The error of F_Z(z_f - delta_f) itself against the receiver-plane "
                 "reference: the part of every "
@@ -232,7 +237,7 @@ EvalReport render_eval_report(const EvalReportContext& ctx, const std::vector<Ev
   for (const auto& r : overall)
     if (r.stats.failures)
       report << "\n**" << r.technique << "**: " << r.stats.failures << " fragments failed; "
-             << (technique_solves_lp(r.technique)
+             << (technique_solves_lp(r.technique, kShadowFamilies)
                      ? "their LPs had no certified answer (shown lit); another lp.grid or "
                        "lp.backend may solve them.\n"
                      : "raise the technique's alpha, or the LP grid, and re-run.\n");

@@ -52,7 +52,7 @@ std::string summary(const OitReportContext& ctx, const std::vector<OitRow>& over
   for (const auto& r : overall) {
     headline << (headline.tellp() > 0 ? ", " : "") << r.technique << " "
              << format_number(r.stats.delta_e_mean(), "%.3f");
-    if (technique_role(r.technique) != RowRole::Reference &&
+    if (technique_role(r.technique, {TechniqueFamily::Transmittance}) != RowRole::Reference &&
         (!best || r.stats.delta_e_mean() < best->stats.delta_e_mean()))
       best = &r;
   }

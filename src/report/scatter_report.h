@@ -10,12 +10,6 @@
 
 namespace mb {
 
-struct ScatterRow {
-  std::string technique, scene, view, camera;  // "all" in the overall rows
-  ScatterStats stats;
-  double seconds = 0;
-};
-
 struct ScatterReportContext {
   std::string dataset, version, git_sha, compiler, started, settings_text;
   int threads = 0;
@@ -25,7 +19,7 @@ struct ScatterReportContext {
   double error_scale = 0;
   std::string reference;  // scatter.reference
   double epipole_degrees = 0;
-  std::vector<std::string> epipole_lines;  // per light view and camera: "<frame>: N of M"
+  std::vector<std::string> epipole_lines;  // ScatterRows::epipole_lines()
 };
 
 struct ScatterReport {

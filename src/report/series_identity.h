@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "report/sweep_report.h"
+#include "report/sweep_series.h"
 
 namespace mb {
 

@@ -2,59 +2,13 @@
 // Sweep results -> the report a researcher reads (docs/design.md §Data flow: report): ranked
 // tables, the reference techniques, the paper's findings checked on this data (docs/reference.md
 // §3), and CSVs at full precision for the plots. Several databases (e.g. sweeps of 2, 3 and 4
-// functions) become series of one report, compared in one histogram.
-#include <map>
+// functions) become series of one report (report/sweep_series.h), compared in one histogram.
 #include <string>
 #include <vector>
 
-#include "sweep/results_store.h"
-#include "util/config.h"
+#include "report/sweep_series.h"
 
 namespace mb {
-
-struct SweepSeries {
-  std::string database;                     // path of its results.sqlite
-  std::string label;                        // "4 functions", unique within a report
-  std::map<std::string, std::string> meta;  // ResultsStore::meta
-  // Candidates by mean error, ties by id. A screened sweep's (sweep --screen) holds every screened
-  // candidate: the exact row where it was evaluated exactly, its estimate (estimated) otherwise.
-  std::vector<ResultRow> ranked;
-  size_t exact = 0, estimated = 0;    // rows of each kind in `ranked`
-  std::vector<ResultRow> references;  // by name
-  int size = 0;                       // functions per candidate
-  // Its identity as the report states it (report/series_identity.h): "key value" of the options
-  // allowed to differ between series, and of the other measurement options off their defaults.
-  std::vector<std::string> own_values, off_default;
-  double best() const { return ranked.front().mean; }
-  double median() const;
-  // Candidates whose mean error is at most the best's plus `margin` (absolute, as a fraction).
-  size_t within(double margin) const;
-  // A sweep of target transparency (sweep/sweep_target.h); older databases are shadow sweeps.
-  bool transparency() const {
-    const auto it = meta.find("target");
-    return it != meta.end() && it->second == "transparency";
-  }
-};
-
-// Candidates of `s` strictly better than `mean`.
-size_t better_than(const SweepSeries& s, double mean);
-// "rank r of N (b better, p %)", or "behind all N candidates".
-std::string rank_text(const SweepSeries& s, double mean);
-
-// What the series of one report must share: the value of every measurement option of `specs`
-// (the sweep's option records, sweep/run_identity.h) but those in `allow_different`.
-struct SeriesIdentity {
-  std::vector<OptionSpec> specs;
-  std::vector<std::string> allow_different;  // report --allow-different
-};
-
-// Opens each database (InputError for one with no candidates, or for series whose measurement
-// options differ: each differing key with both values, unless the identity allows it).
-std::vector<SweepSeries> load_sweep_series(const std::vector<std::string>& databases,
-                                           const SeriesIdentity& identity);
-
-// The series the ranked tables and reference rows come from: the most functions per candidate.
-const SweepSeries& main_series(const std::vector<SweepSeries>& series);
 
 struct SweepReportTables {
   std::string candidates_csv, histogram_csv, series_csv, references_csv;

@@ -86,7 +86,7 @@ void finding_closed_forms(std::ostringstream& md, const SweepSeries& main) {
   md << "### The closed forms and references among the candidates\n\n";
   bool any = false;
   for (const auto& r : main.references) {
-    if (technique_role(r.name) == RowRole::Reference) continue;
+    if (technique_role(r.name, {TechniqueFamily::Transmittance}) == RowRole::Reference) continue;
     any = true;
     md << "- " << r.name << ": " << pct(r.mean) << ", " << rank_text(main, r.mean) << "\n";
   }

@@ -318,4 +318,26 @@ void run_scatter(const std::vector<ScatterScene>& scenes, const ScatterRunOption
   }
 }
 
+ScatterRows::ScatterRows(const std::vector<std::string>& techniques) : frames_(techniques.size()) {
+  for (const auto& name : techniques) overall_.push_back({name, "all", "all", "all", {}, 0});
+}
+
+void ScatterRows::add(const ScatterFrameResult& r) {
+  for (size_t k = 0; k < overall_.size(); ++k) {
+    frames_[k].push_back(
+        {overall_[k].technique, r.scene, r.view, r.camera, r.stats[k], r.seconds[k]});
+    overall_[k].stats.merge(r.stats[k]);
+    overall_[k].seconds += r.seconds[k];
+  }
+  epipole_lines_.push_back(r.scene + "/" + r.view + "/" + r.camera + ": " +
+                           std::to_string(r.epipole_pixels) + " of " +
+                           std::to_string(size_t(r.width) * r.height));
+}
+
+std::vector<ScatterRow> ScatterRows::per_frame() const {
+  std::vector<ScatterRow> rows;
+  for (const auto& frame : frames_) rows.insert(rows.end(), frame.begin(), frame.end());
+  return rows;
+}
+
 }  // namespace mb

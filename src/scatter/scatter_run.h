@@ -78,6 +78,33 @@ struct ScatterFrameResult {
   std::shared_ptr<const RectifiedMap> rectified;
 };
 
+// One row of `scatter`'s tables: a technique on one light view and camera, or on all of them.
+struct ScatterRow {
+  std::string technique, scene, view, camera;  // "all" in the overall rows
+  ScatterStats stats;
+  double seconds = 0;
+};
+
+// The rows of `scatter`'s tables, gathered one light view and camera at a time (run_scatter hands
+// each frame over as soon as it is computed and keeps none).
+class ScatterRows {
+ public:
+  explicit ScatterRows(const std::vector<std::string>& techniques);
+  void add(const ScatterFrameResult& result);
+  // Each technique over every light view and camera ("all").
+  const std::vector<ScatterRow>& overall() const { return overall_; }
+  // Each technique on each light view and camera, technique-major as eval's per-view rows.
+  std::vector<ScatterRow> per_frame() const;
+  size_t frames() const { return epipole_lines_.size(); }
+  // Per light view and camera, "<scene>/<view>/<camera>: N of M": the pixels near the epipole.
+  const std::vector<std::string>& epipole_lines() const { return epipole_lines_; }
+
+ private:
+  std::vector<ScatterRow> overall_;
+  std::vector<std::vector<ScatterRow>> frames_;  // per technique
+  std::vector<std::string> epipole_lines_;
+};
+
 // Every light view (its layer 0 at scatter.reference_resolution, and at scatter.light_resolution
 // for the prefiltered rows) and camera of every scene, each technique of `options`; `each` is
 // called per light view and camera as soon as it is computed.

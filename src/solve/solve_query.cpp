@@ -160,6 +160,22 @@ json support_json(const std::vector<double>& points, const std::vector<double>& 
   return support;
 }
 
+// The rounded kernel's G lies anywhere in the box (docs/reference.md §2): from the box's least G to
+// 1 minus its least mass strictly behind z_f, on the LP's points as the box's G is.
+void add_box_range(json& out, const lp::ProblemFactory& factory, const lp::Problem& exact,
+                   const std::vector<double>& tolerance, double least) {
+  lp::Problem behind = exact;
+  behind.behind = true;
+  const lp::MomentBoxAnswer upper = lp::solve_moment_box(factory, behind, tolerance);
+  const bool found = upper.status == lp::ProblemStatus::Optimal;
+  out["range"] = {std::clamp(least, 0.0, 1.0), found ? std::clamp(1 - upper.G, least, 1.0) : 1.0};
+  const std::string of = "G over the rounding box on the LP's points: from its least G to ";
+  out["range_of"] = of + (found ? "the largest mass at or in front of zf of a distribution in it, "
+                                  "an upper bound of G there"
+                                : std::string("1 (the box problem of its largest mass was ") +
+                                      lp::to_string(upper.status) + ")");
+}
+
 // What a box answer's G, lower, bracket and proven are (docs/reference.md §2).
 constexpr const char* kBoxBracketOf =
     "G, lower, bracket and proven: the least G over the moments' rounding box, not the rounded "
@@ -256,6 +272,7 @@ json solve_one(lp::Backend& backend, FactoryCache& factories,
     if (box.status == lp::ProblemStatus::Optimal) {
       out["G"] = box.G;
       out["support"] = support_json(box.support, box.weights);
+      add_box_range(out, factory, exact, tolerance, box.G);
     } else if (box.status == lp::ProblemStatus::Infeasible) {
       out["relative_distance"] = box.relative_distance;
     }

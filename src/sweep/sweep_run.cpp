@@ -463,16 +463,8 @@ namespace {
 
 // The transparency target's settings sentence (the report's and a resume's "settings").
 std::string describe_transparency(const SweepSettings& s) {
-  const auto& lp = s.oit.technique;
-  return "target transparency: lp:<candidate> with lp.beta " + round_trip(lp.lp_beta) +
-         " on the warped depth (" +
-         std::string(s.oit.warp == WarpKind::Linear ? "linear" : "logarithmic") +
-         (s.oit.depth_range == DepthRangeKind::BoundingSphere
-              ? " over the transparent geometry's bounding sphere seen from each camera"
-              : " between each camera's nearest and farthest transparent fragment") +
-         ", docs/transparency.md §2), grid " + std::to_string(lp.lp.grid) + " on [" +
-         round_trip(lp.lp.lo) + ", " + round_trip(lp.lp.hi) +
-         "] and the pixel's fragment depths, backend " + lp.lp_backend +
+  return "target transparency: lp:<candidate> on the " + describe_oit_warp(s.oit) + " depth; LP " +
+         describe_oit_lp(s.oit.technique) +
          "; error: opacity-weighted |T_ref - T|; the references' own options: " +
          technique_option_text({TechniqueFamily::Transmittance}, s.oit.technique);
 }

@@ -41,12 +41,6 @@ std::vector<const TechniqueOption*> all_options() {
                       TechniqueFamily::Transmittance, TechniqueFamily::Scattering});
 }
 
-bool declares(const Config& config, const std::string& key) {
-  const std::vector<OptionSpec>& specs = config.specs();
-  return std::any_of(specs.begin(), specs.end(),
-                     [&](const OptionSpec& s) { return s.name == key; });
-}
-
 void check_moment_bias(const std::string& key, double alpha) {
   if (!(alpha >= 0 && alpha < 1))
     throw InputError(key + ": expected alpha in [0, 1), got " + round_trip(alpha));
@@ -116,13 +110,24 @@ const TechniqueRow* find_technique(std::string_view name, std::optional<Techniqu
   return found;
 }
 
-RowRole technique_role(std::string_view name) {
-  const TechniqueRow* row = find_technique(name);
+namespace {
+
+const TechniqueRow* find_in(std::string_view name,
+                            std::initializer_list<TechniqueFamily> families) {
+  for (const TechniqueFamily family : families)
+    if (const TechniqueRow* row = find_technique(name, family)) return row;
+  return nullptr;
+}
+
+}  // namespace
+
+RowRole technique_role(std::string_view name, std::initializer_list<TechniqueFamily> families) {
+  const TechniqueRow* row = find_in(name, families);
   return row ? row->role : RowRole::Technique;
 }
 
-bool technique_solves_lp(std::string_view name) {
-  const TechniqueRow* row = find_technique(name);
+bool technique_solves_lp(std::string_view name, std::initializer_list<TechniqueFamily> families) {
+  const TechniqueRow* row = find_in(name, families);
   return row && row->solves_lp;
 }
 
@@ -217,7 +222,7 @@ std::string technique_option_text(std::initializer_list<TechniqueFamily> familie
 
 void read_technique_options(const Config& config, TechniqueParams& params) {
   for (const TechniqueOption* o : all_options())
-    if (declares(config, o->spec.name))
+    if (config.declares(o->spec.name))
       params.set(*o, o->spec.type == OptionType::Integer ? double(config.integer(o->spec.name))
                                                          : config.number(o->spec.name));
 }

@@ -152,10 +152,11 @@ std::vector<const TechniqueRow*> family_rows(TechniqueFamily family);
 // when given (lp:<basis> is a row of several), or nullptr.
 const TechniqueRow* find_technique(std::string_view name,
                                    std::optional<TechniqueFamily> family = std::nullopt);
-// The role of `name`'s row (RowRole::Technique for a name of no row), and whether it solves the
-// LP: for reports, which test a row's properties, never a name.
-RowRole technique_role(std::string_view name);
-bool technique_solves_lp(std::string_view name);
+// The role of `name`'s row in the first of `families` that has one (RowRole::Technique for a name
+// of no row), and whether it solves the LP: for reports, which test a row's properties, never a
+// name. The family is named since a name (lp:<basis>) may be a row of several.
+RowRole technique_role(std::string_view name, std::initializer_list<TechniqueFamily> families);
+bool technique_solves_lp(std::string_view name, std::initializer_list<TechniqueFamily> families);
 // The name of `family`'s first row with `role` (its reference, ...), for the reports' words; a
 // logic_error when the family has none.
 const std::string& role_name(TechniqueFamily family, RowRole role);

@@ -1,5 +1,6 @@
 #include "util/config.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -272,6 +273,11 @@ double Config::number(const std::string& name) const {
     throw std::logic_error(name + " is not a number option");
   return values_.at(name).node.as<double>();
 }
+bool Config::declares(const std::string& name) const {
+  return std::any_of(specs_.begin(), specs_.end(),
+                     [&](const OptionSpec& s) { return s.name == name; });
+}
+
 bool Config::boolean(const std::string& name) const {
   if (spec(name).type != OptionType::Boolean)
     throw std::logic_error(name + " is not a boolean option");

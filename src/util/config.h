@@ -72,6 +72,8 @@ class Config {
   // "key: value" for every option whose value differs from its default (for report headers).
   std::vector<std::string> non_default() const;
   const std::vector<OptionSpec>& specs() const { return specs_; }
+  // Whether `name` is one of this configuration's options (a command declares only what it reads).
+  bool declares(const std::string& name) const;
   // A markdown table of all options (for the README).
   std::string options_markdown() const;
 

@@ -77,4 +77,14 @@ void read_defaults(const std::vector<OptionRecord<S>>& records, S& settings) {
   read_options(Config(option_specs(records)), records, settings);
 }
 
+// The records' values where `config` declares their keys, their defaults elsewhere: what a command
+// declaring only part of a group reads (verify and a hard-shadow sweep declare no area light).
+template <class S>
+void read_declared_options(const Config& config, const std::vector<OptionRecord<S>>& records,
+                           S& settings) {
+  read_defaults(records, settings);
+  for (const auto& r : records)
+    if (config.declares(r.spec.name)) read_option(config, r.spec.name, r.field, settings);
+}
+
 }  // namespace mb

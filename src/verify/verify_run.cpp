@@ -20,6 +20,18 @@ std::vector<int> ascending_grids(const std::vector<int64_t>& sizes) {
   return grids;
 }
 
+// A row's option that verify sets to its own value (the row's key, verify's key, verify's value).
+struct ReplacedOption {
+  std::string key, by;
+  double value;
+  bool integer = false;  // the row's option is an integer (TechniqueParams::integer)
+};
+std::vector<ReplacedOption> replaced_options(const VerifySettings& v) {
+  return {{"esm.c", "verify.esm_c", v.esm_c},
+          {"evsm.c_positive", "verify.evsm_c", v.evsm_c},
+          {"csm.terms", "verify.csm_terms", double(v.csm_terms), true}};
+}
+
 }  // namespace
 
 VerifyPlan make_verify_plan(const VerifySettings& v, const TechniqueParams& technique) {
@@ -29,27 +41,21 @@ VerifyPlan make_verify_plan(const VerifySettings& v, const TechniqueParams& tech
   // verify's own values of these rows' options (verify_options.cpp: scales the LP can represent);
   // a value given for the row's option itself would be replaced, so it is refused.
   const TechniqueParams defaults;
-  const auto replace = [&](const char* key, double given, double default_value, double value,
-                           const char* by) {
+  for (const auto& [key, by, value, integer] : replaced_options(v)) {
+    const double given = integer ? technique.integer(key) : technique.number(key);
+    const double default_value = integer ? defaults.integer(key) : defaults.number(key);
     if (given != default_value)
-      throw InputError(std::string(key) + ": " + round_trip(given) +
-                       "; verify judges this row at " + by + " (" + round_trip(value) +
-                       ", a scale the LP represents), expected its default " +
-                       round_trip(default_value) + " (set " + by + " instead)");
-  };
-  replace("esm.c", technique.number("esm.c"), defaults.number("esm.c"), v.esm_c, "verify.esm_c");
-  replace("evsm.c_positive", technique.number("evsm.c_positive"),
-          defaults.number("evsm.c_positive"), v.evsm_c, "verify.evsm_c");
-  replace("csm.terms", technique.integer("csm.terms"), defaults.integer("csm.terms"), v.csm_terms,
-          "verify.csm_terms");
-  plan.params.set("esm.c", v.esm_c);
-  plan.params.set("evsm.c_positive", v.evsm_c);
-  plan.params.set("csm.terms", v.csm_terms);
+      throw InputError(key + ": " + round_trip(given) + "; verify judges this row at " + by + " (" +
+                       round_trip(value) + ", a scale the LP represents), expected its " +
+                       "default " + round_trip(default_value) + " (set " + by + " instead)");
+    plan.params.set(key, value);
+  }
   plan.targets = verify_targets(v.techniques, plan.params);
   for (auto& t : plan.targets) {
     t.storage_box = t.storage_box && v.moment_box != "off";
     t.storage_strict = v.moment_box == "strict";
   }
+  for (const auto& name : v.oit_techniques) check_oit_verify_technique(name);
   plan.grids = ascending_grids(v.grids);
   plan.continuous = v.discretization == "continuous";
   // A pass over no instances would prove nothing.
@@ -80,7 +86,35 @@ VerifyRun run_verification(const VerifyPlan& plan, const DatasetOptions& data,
     bar.advance(1);
     bar.finish();
   }
+  for (const auto& name : v.oit_techniques)
+    run.oit.push_back(verify_mboit(name, v.oit_pixels, v.seed));
   return run;
+}
+
+std::vector<std::string> verify_verdicts(const VerifyRun& run, bool all_passed, bool& passed) {
+  std::vector<std::string> lines;
+  for (const auto& r : run.results)
+    if (!r.passed() && !r.decides_exit())
+      lines.push_back("note: " + r.target.technique + " exceeds its storage box (" +
+                      std::to_string(r.beyond_tolerance) + " instances, by up to " +
+                      format_number(r.largest_excess, "%.3g") + "; " + std::to_string(r.above_lp) +
+                      " above an LP witness): reported; verify.moment_box=strict fails it");
+  passed = all_passed;
+  if (!all_passed)
+    for (const auto& r : run.results)
+      if (!r.passed() && r.decides_exit())
+        lines.push_back(r.target.technique + " disagrees with the LP (" +
+                        std::to_string(r.beyond_tolerance) + " beyond tolerance, " +
+                        std::to_string(r.above_lp) + " above an LP witness)");
+  for (const auto& r : run.oit)
+    if (!r.passed()) {
+      passed = false;
+      lines.push_back(r.technique + " disagrees with the LP (" + std::to_string(r.beyond) + " of " +
+                      std::to_string(r.fragments) + " fragments beyond " +
+                      format_number(r.tolerance, "%g") + " in T, " + std::to_string(r.lp_failures) +
+                      " LP failures)");
+    }
+  return lines;
 }
 
 }  // namespace mb

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "eval/evaluation.h"
+#include "oit/oit_verification.h"
 #include "scene/dataset_options.h"
 #include "verify/verification.h"
 #include "verify/verify_options.h"
@@ -20,7 +21,8 @@ struct VerifyPlan {
   bool continuous = true;  // the continuous interval decides, not the finest grid
 };
 
-// InputError naming the key on unknown techniques, unordered grids or nothing to verify.
+// InputError naming the key on unknown techniques (of either family), unordered grids or nothing
+// to verify.
 VerifyPlan make_verify_plan(const VerifySettings& settings, const TechniqueParams& technique);
 
 struct VerifyRun {
@@ -28,9 +30,15 @@ struct VerifyRun {
   size_t random_count = 0;
   std::string dataset_name = "none";        // when no dataset kernels were sampled
   std::vector<VerifySolverResult> results;  // one per target, in order
+  std::vector<OitVerifyRow> oit;            // one per verify.oit_techniques, in order
 };
 
 VerifyRun run_verification(const VerifyPlan& plan, const DatasetOptions& data,
                            const EvalSettings& settings, bool quiet);
+
+// The lines verify prints to stderr: a note for each target beyond its storage box (reported, not
+// failed) and, when a target that decides the exit failed (`all_passed` false, the report's
+// verdict) or a transmittance row disagrees, one line each. `passed`: whether verify exits 0.
+std::vector<std::string> verify_verdicts(const VerifyRun& run, bool all_passed, bool& passed);
 
 }  // namespace mb

@@ -44,18 +44,10 @@ const std::vector<OptionRecord<OitOptions>>& oit_records() {
   return records;
 }
 
-bool declares(const Config& config, const std::string& key) {
-  const std::vector<OptionSpec>& specs = config.specs();
-  return std::any_of(specs.begin(), specs.end(),
-                     [&](const OptionSpec& s) { return s.name == key; });
-}
-
 // The oit.* values of `config` where it declares them, the records' defaults otherwise.
 void read_oit_options(const Config& config, OitParams& params) {
-  static const Config defaults(option_specs(oit_records()));
   OitOptions o{};
-  for (const auto& r : oit_records())
-    read_option(declares(config, r.spec.name) ? config : defaults, r.spec.name, r.field, o);
+  read_declared_options(config, oit_records(), o);
   params.warp = warp_kind(o.warp);
   params.depth_range = depth_range_kind(o.depth_range);
 }
