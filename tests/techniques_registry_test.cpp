@@ -308,3 +308,26 @@ TEST(EsmFallback, ZmaxOffsetAndThresholdDecide) {
 
 }  // namespace
 }  // namespace mb
+
+namespace mb {
+namespace {
+
+// A row's catalog_basis is what a transparency sweep's report looks its basis up by among the
+// candidates (docs/transparency.md §7): each name must be a catalog name exactly as candidates
+// spell them, and the MBOIT rows that the catalog can express must have one.
+TEST(TechniqueRegistry, CatalogBasesAreCatalogNames) {
+  const std::vector<std::string>& catalog = catalog_names();
+  int with_basis = 0;
+  for (const TechniqueRow& row : technique_registry()) {
+    if (row.catalog_basis.empty()) continue;
+    ++with_basis;
+    EXPECT_FALSE(row.catalog_basis_label.empty()) << row.name;
+    for (const auto& f : row.catalog_basis)
+      EXPECT_NE(std::find(catalog.begin(), catalog.end(), f), catalog.end())
+          << row.name << ": " << f;
+  }
+  EXPECT_EQ(with_basis, 3);  // MBOIT power4, power6 and trig2
+}
+
+}  // namespace
+}  // namespace mb

@@ -11,23 +11,31 @@ namespace mb {
 
 namespace {
 
-// MBOIT's bases that the catalog holds (docs/transparency.md §7). The power variants' moments
-// (2u - 1)^k span, with the constant, the same functions as u^k, so the LP is the same. The
-// trigonometric variants use frequencies (2 pi - theta) k with the wrapping zone theta = 0.1 pi;
-// the catalog has them for theta = 0 only.
+// MBOIT's bases that the catalog holds: the transmittance rows' catalog_basis
+// (docs/transparency.md §7).
 struct MboitBasis {
   std::set<std::string> functions;
-  const char* label;
+  std::string label;
 };
 
 const std::vector<MboitBasis>& mboit_bases() {
-  static const std::vector<MboitBasis> bases = {
-      {{"z", "z^2", "z^3", "z^4"}, "MBOIT power4's basis"},
-      {{"z", "z^2", "z^3", "z^4", "z^5", "z^6"}, "MBOIT power6's basis"},
-      {{"sin(2 pi z)", "cos(2 pi z)", "sin(4 pi z)", "cos(4 pi z)"},
-       "MBOIT trig2's basis without the wrapping zone"},
-  };
+  static const std::vector<MboitBasis> bases = [] {
+    std::vector<MboitBasis> out;
+    for (const TechniqueRow* row : family_rows(TechniqueFamily::Transmittance))
+      if (!row->catalog_basis.empty())
+        out.push_back(
+            {{row->catalog_basis.begin(), row->catalog_basis.end()}, row->catalog_basis_label});
+    return out;
+  }();
   return bases;
+}
+
+// "MBOIT power4's basis: 4; ...": each basis with its number of functions.
+std::string basis_sizes() {
+  std::string text;
+  for (const auto& b : mboit_bases())
+    text += (text.empty() ? "" : "; ") + b.label + ": " + std::to_string(b.functions.size());
+  return text;
 }
 
 std::set<std::string> function_set(const std::string& candidate) {
@@ -76,8 +84,8 @@ void finding_mboit_bases(std::ostringstream& md, const std::vector<SweepSeries>&
          << s.ranked.front().name << ")\n";
     }
   if (!any)
-    md << "- no MBOIT basis has " << main_series(series).size
-       << " functions (power4 and trig2 have 4, power6 has 6)\n";
+    md << "- no MBOIT basis has " << main_series(series).size << " functions (" << basis_sizes()
+       << ")\n";
   md << "\nMBOIT trig2 and trig3 with the authors' wrapping zone use frequencies 1.9 pi k, outside "
         "the catalog; give `candidates` or `oit_references` their functions to place them.\n\n";
 }
@@ -131,7 +139,7 @@ std::string transparency_protocol_text() {
 std::string mboit_basis_mark(const std::string& candidate) {
   const std::set<std::string> functions = function_set(candidate);
   for (const auto& b : mboit_bases())
-    if (b.functions == functions) return std::string(" (") + b.label + ")";
+    if (b.functions == functions) return " (" + b.label + ")";
   return "";
 }
 

@@ -131,6 +131,11 @@ struct TechniqueRow {
   // Its place in `verify.techniques`' default list (1, 2, ...; 0: not checked by default).
   int verify_place = 0;
   std::vector<SweepReference> sweep_references;
+  // The catalog's functions that span (with the constant) what the row's moments span, where the
+  // catalog has them: a transparency sweep's report places the row's basis among its candidates
+  // (docs/transparency.md §7), named by `catalog_basis_label`.
+  std::vector<std::string> catalog_basis;
+  std::string catalog_basis_label;
   bool prefix() const { return !name.empty() && name.back() == ':'; }
   bool matches(std::string_view given) const;
   // What follows a family row's name in lists ("raymarch:<N>").

@@ -115,8 +115,17 @@ OitVerifyRecipe verify_recipe(const OitParams&) {
 
 template <int kMoments, int kVariant>
 TechniqueRow row() {
-  return mboit_row("mboit_power", "power", kMoments, kVariant, 30, make<kMoments, kVariant>,
-                   kVariant == 0 && kMoments < 8 ? verify_recipe<kMoments> : nullptr);
+  TechniqueRow r =
+      mboit_row("mboit_power", "power", kMoments, kVariant, 30, make<kMoments, kVariant>,
+                kVariant == 0 && kMoments < 8 ? verify_recipe<kMoments> : nullptr);
+  // The moments (2u - 1)^k span, with the constant, what u^k do: the catalog's powers (up to its
+  // z^6). The double variant stands for the basis.
+  if (kVariant == 0 && kMoments <= 6) {
+    for (int k = 1; k <= kMoments; ++k)
+      r.catalog_basis.push_back(k == 1 ? "z" : "z^" + std::to_string(k));
+    r.catalog_basis_label = "MBOIT power" + std::to_string(kMoments) + "'s basis";
+  }
+  return r;
 }
 
 std::vector<TechniqueRow> rows() {

@@ -94,8 +94,16 @@ OitVerifyRecipe verify_recipe(const OitParams& p) {
 
 template <int kMoments, int kVariant>
 TechniqueRow row() {
-  return mboit_row("mboit_trig", "trigonometric", kMoments, kVariant, 60, make<kMoments, kVariant>,
-                   kVariant == 0 && kMoments < 4 ? verify_recipe<kMoments> : nullptr);
+  TechniqueRow r =
+      mboit_row("mboit_trig", "trigonometric", kMoments, kVariant, 60, make<kMoments, kVariant>,
+                kVariant == 0 && kMoments < 4 ? verify_recipe<kMoments> : nullptr);
+  // The catalog's trigonometric functions have frequencies 2 pi k, the wrapping zone 0 (the
+  // authors' 0.1 pi gives 1.9 pi k, outside it), and k up to 2.
+  if (kVariant == 0 && kMoments == 2) {
+    r.catalog_basis = {"sin(2 pi z)", "cos(2 pi z)", "sin(4 pi z)", "cos(4 pi z)"};
+    r.catalog_basis_label = "MBOIT trig2's basis without the wrapping zone";
+  }
+  return r;
 }
 
 std::vector<TechniqueRow> rows() {
