@@ -118,7 +118,7 @@ std::string area_light_angle(const SweepSeries& series, const std::vector<Option
 }  // namespace
 
 void drop_bounds_under_area_light(SweepSeries& series, const SeriesIdentity& identity) {
-  if (series.transparency()) return;
+  if (series.target() != "shadows") return;
   const std::string light = area_light_angle(series, identity.specs);
   if (light.empty()) return;
   const std::string reason =

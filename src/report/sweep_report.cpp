@@ -10,6 +10,7 @@
 #include "eval/error_stats.h"
 #include "report/darkening.h"
 #include "report/series_identity.h"
+#include "report/sweep_scattering.h"
 #include "report/sweep_transparency.h"
 #include "shadow/fragments.h"
 #include "sweep/candidates.h"
@@ -425,6 +426,7 @@ std::string sweep_report_markdown(const std::vector<SweepSeries>& series,
                                   const std::string& histogram_note) {
   const SweepSeries& main = main_series(series);
   const bool transparency = main.transparency();
+  const bool scattering = main.target() == "scattering";
   std::ostringstream md;
   md << "# Sweep report\n\n" << summary_lines(series);
   for (const auto& s : series) {
@@ -468,8 +470,9 @@ std::string sweep_report_markdown(const std::vector<SweepSeries>& series,
   md << "- LPs: " << lps << ", of which infeasible or unstable: " << failures << " ("
      << percent_text(lps ? double(failures) / double(lps) : 0)
      << " %; these fragments count as lit)\n\n"
-     << (transparency
-             ? transparency_protocol_text()
+     << (transparency ? transparency_protocol_text()
+         : scattering
+             ? scattering_protocol_text()
              : protocol_text(meta["reference"] == "receiver_plane" ? Reference::ReceiverPlane
                                                                    : Reference::Biased))
      << "\n\n";
@@ -495,11 +498,14 @@ std::string sweep_report_markdown(const std::vector<SweepSeries>& series,
   md << histogram_note;
   if (transparency)
     transparency_findings(md, series);
+  else if (scattering)
+    scattering_findings(md, series);
   else
     findings(md, series);
 
-  const std::string columns =
-      transparency ? "T too high % | T too low %" : "leak % | over-darkening %";
+  const std::string columns = transparency ? "T too high % | T too low %"
+                              : scattering ? "too bright % | too dark %"
+                                           : "leak % | over-darkening %";
   const std::vector<const SweepSeries*> shown = reference_series(series);
   for (const SweepSeries* s : shown) {
     md << "## Reference techniques on the same dataset"

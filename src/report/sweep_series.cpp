@@ -95,4 +95,25 @@ const SweepSeries& main_series(const std::vector<SweepSeries>& series) {
   return *main;
 }
 
+std::set<std::string> candidate_functions(const std::string& candidate) {
+  std::set<std::string> out;
+  size_t at = 0;
+  while (at <= candidate.size()) {
+    size_t end = candidate.find(';', at);
+    if (end == std::string::npos) end = candidate.size();
+    std::string f = candidate.substr(at, end - at);
+    f.erase(0, f.find_first_not_of(' '));
+    f.erase(f.find_last_not_of(' ') + 1);
+    if (!f.empty()) out.insert(f);
+    at = end + 1;
+  }
+  return out;
+}
+
+const ResultRow* find_candidate(const SweepSeries& s, const std::set<std::string>& functions) {
+  for (const auto& r : s.ranked)
+    if (candidate_functions(r.name) == functions) return &r;
+  return nullptr;
+}
+
 }  // namespace mb

@@ -4,6 +4,7 @@
 // the rest), its reference rows and its identity, and the series of one report checked to be
 // measured alike (report/series_identity.h).
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -29,11 +30,13 @@ struct SweepSeries {
   double median() const;
   // Candidates whose mean error is at most the best's plus `margin` (absolute, as a fraction).
   size_t within(double margin) const;
-  // A sweep of target transparency (sweep/sweep_target.h); older databases are shadow sweeps.
-  bool transparency() const {
+  // Its target (sweep/sweep_target.h): shadows, transparency or scattering; older databases are
+  // shadow sweeps.
+  std::string target() const {
     const auto it = meta.find("target");
-    return it != meta.end() && it->second == "transparency";
+    return it == meta.end() ? "shadows" : it->second;
   }
+  bool transparency() const { return target() == "transparency"; }
 };
 
 // Candidates of `s` strictly better than `mean`.
@@ -52,6 +55,11 @@ struct SeriesIdentity {
 // options differ: each differing key with both values, unless the identity allows it).
 std::vector<SweepSeries> load_sweep_series(const std::vector<std::string>& databases,
                                            const SeriesIdentity& identity);
+
+// A candidate's functions ("z; z^2" -> {z, z^2}), and the candidate of `s` with exactly these
+// functions (nullptr when not evaluated).
+std::set<std::string> candidate_functions(const std::string& candidate);
+const ResultRow* find_candidate(const SweepSeries& s, const std::set<std::string>& functions);
 
 // The series the ranked tables and reference rows come from: the most functions per candidate.
 const SweepSeries& main_series(const std::vector<SweepSeries>& series);

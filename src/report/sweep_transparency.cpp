@@ -38,27 +38,6 @@ std::string basis_sizes() {
   return text;
 }
 
-std::set<std::string> function_set(const std::string& candidate) {
-  std::set<std::string> out;
-  size_t at = 0;
-  while (at <= candidate.size()) {
-    size_t end = candidate.find(';', at);
-    if (end == std::string::npos) end = candidate.size();
-    std::string f = candidate.substr(at, end - at);
-    f.erase(0, f.find_first_not_of(' '));
-    f.erase(f.find_last_not_of(' ') + 1);
-    if (!f.empty()) out.insert(f);
-    at = end + 1;
-  }
-  return out;
-}
-
-const ResultRow* find_candidate(const SweepSeries& s, const std::set<std::string>& functions) {
-  for (const auto& r : s.ranked)
-    if (function_set(r.name) == functions) return &r;
-  return nullptr;
-}
-
 std::string pct(double fraction) {
   return percent_text(fraction) + " %";
 }
@@ -137,7 +116,7 @@ std::string transparency_protocol_text() {
 }
 
 std::string mboit_basis_mark(const std::string& candidate) {
-  const std::set<std::string> functions = function_set(candidate);
+  const std::set<std::string> functions = candidate_functions(candidate);
   for (const auto& b : mboit_bases())
     if (b.functions == functions) return " (" + b.label + ")";
   return "";

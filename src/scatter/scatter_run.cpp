@@ -10,6 +10,7 @@
 #include "eval/evaluation.h"
 #include "raster/render_camera.h"
 #include "raster/render_view.h"
+#include "scatter/scatter_frames.h"
 #include "techniques/registry.h"
 #include "util/error.h"
 #include "util/number_text.h"
@@ -133,6 +134,35 @@ ScatterRunOptions scatter_run_options_from(const Config& config) {
   return run;
 }
 
+namespace {
+
+// What a scattering sweep does not read of scatter's options: the rows it runs are its candidates
+// and references, its reference is pss_exact, it writes no images.
+bool sweep_reads(const std::string& key) {
+  return key != "techniques" && key != "images" && key != "scatter.error_scale" &&
+         key != "scatter.reference";
+}
+
+}  // namespace
+
+std::vector<OptionSpec> scatter_sweep_option_specs() {
+  std::vector<OptionSpec> specs;
+  for (auto& s : scatter_run_option_specs())
+    if (sweep_reads(s.name)) specs.push_back(s);
+  return specs;
+}
+
+ScatterRunOptions scatter_sweep_options_from(const Config& config) {
+  ScatterRunOptions run;
+  read_declared_options(config, scatter_run_options(), run);
+  read_technique_options(config, run.technique);
+  run.techniques.clear();
+  run.reference = "pss_exact";
+  run.images = false;
+  scatter_params(run);  // the guard band's check
+  return run;
+}
+
 std::string describe_scatter_settings(const ScatterRunOptions& run) {
   std::string own = technique_option_text({TechniqueFamily::Scattering}, run.technique);
   if (!own.empty()) own = ", " + own;
@@ -142,6 +172,14 @@ std::string describe_scatter_settings(const ScatterRunOptions& run) {
          "; rectified maps " + std::to_string(run.light_resolution) + "², guard band " +
          round_trip(run.guard_band) + " depth texels, beta " + round_trip(run.beta) + " (§3)";
 }
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
 
 std::vector<ScatterScene> scatter_scenes(const DatasetDesc& dataset) {
   std::vector<ScatterScene> out;
@@ -169,67 +207,6 @@ std::vector<ScatterScene> scatter_scenes(const DatasetDesc& dataset) {
   return out;
 }
 
-namespace {
-
-// A camera's view rays, the surfaces they end at and those surfaces' attenuated radiance.
-struct CameraRays {
-  std::vector<ScatterRay> rays;
-  std::vector<Eigen::Vector3d> surface;
-};
-
-// L_s of the nearest surface: its diffuse colour times max(0, n . l) / pi, shadowed by the same
-// map (offset 1.5 texels along its normal against acne), then attenuated by exp(-sigma_t s).
-// Only the images show it; no error reads it.
-CameraRays camera_rays(const ScatterScene& s, const CameraDesc& camera, const CameraImage& image,
-                       const LightDepthMap& light, double max_distance) {
-  const CameraFrame frame(camera);
-  const Eigen::Vector3d to_light = light.frame->to_light();
-  const double offset = 1.5 * light.frame->world_per_texel();
-  CameraRays out;
-  out.rays.resize(size_t(image.width) * image.height);
-  out.surface.assign(out.rays.size(), Eigen::Vector3d::Zero());
-  for (int y = 0; y < image.height; ++y)
-    for (int x = 0; x < image.width; ++x) {
-      const size_t p = size_t(y) * image.width + x;
-      ScatterRay& ray = out.rays[p];
-      ray.direction = frame.ray(x, y), ray.pixel = p, ray.length = max_distance;
-      if (image.offsets[p] == image.offsets[p + 1]) continue;
-      const size_t f = image.offsets[p];
-      ray.length = (image.point[f] - frame.position()).norm();
-      const auto& tri = s.scene.mesh.triangles[image.triangle[f]];
-      const auto& v = s.scene.mesh.vertices;
-      Eigen::Vector3d n = (v[tri[1]] - v[tri[0]]).cross(v[tri[2]] - v[tri[0]]).normalized();
-      if (s.scene.two_sided[image.triangle[f]] && n.dot(to_light) < 0) n = -n;
-      const double cosine = n.dot(to_light);
-      if (!(cosine > 0) || !light.lit(image.point[f] + offset * n)) continue;
-      out.surface[p] = s.scene.color[s.scene.part[image.triangle[f]]] *
-                       (cosine / std::numbers::pi) * std::exp(-s.medium.extinction * ray.length);
-    }
-  return out;
-}
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-// L of every ray by one technique, in parallel over image rows.
-std::vector<double> lit_lengths(const ScatterTechnique& technique,
-                                const std::vector<ScatterRay>& rays, int width, int threads) {
-  std::vector<double> out(rays.size());
-  const int rows = int(rays.size() / size_t(width));
-  ParallelErrors parallel;
-#pragma omp parallel for num_threads(threads) schedule(dynamic, 1)
-  for (int y = 0; y < rows; ++y)
-    parallel.capture([&] {
-      for (size_t p = size_t(y) * width; p < size_t(y + 1) * width; ++p)
-        out[p] = technique.lit_length(rays[p]);
-    });
-  parallel.rethrow();
-  return out;
-}
-
-}  // namespace
-
 double scattering_factor(const MediumDesc& medium, const Eigen::Vector3d& to_light,
                          const Eigen::Vector3d& direction) {
   return medium.scattering() * medium.phase_value((-to_light).dot(-direction));
@@ -240,7 +217,6 @@ void run_scatter(const std::vector<ScatterScene>& scenes, const ScatterRunOption
                  const std::function<void(const ScatterFrameResult&)>& each) {
   const ScatterParams params = scatter_params(options);
   const auto reference = make_scatter_technique(options.reference, params);
-  const double epipole_cos = std::cos(options.epipole_degrees * std::numbers::pi / 180);
   std::vector<std::unique_ptr<ScatterTechnique>> techniques;
   for (const auto& name : options.techniques)
     techniques.push_back(make_scatter_technique(name, params));
@@ -248,64 +224,33 @@ void run_scatter(const std::vector<ScatterScene>& scenes, const ScatterRunOption
     std::vector<CameraImage> images;
     for (const auto& camera : s.scene.cameras)
       images.push_back(render_camera(s.scene, camera, threads));
-    for (LightViewDesc view : s.scene.views) {
-      view.resolution = options.reference_resolution;
-      check_render_memory(view.resolution, "scatter.reference_resolution");
-      const LayerStack stack = render_view(s.scene, view, threads);
-      const LightFrame light_frame(view, s.scene.mesh.vertices);  // render_view's projection
-      const LightDepthMap light(light_frame, stack);
-      // The prefiltered rows' map: the same view at scatter.light_resolution (render_view fits
-      // the same projection to the scene at any resolution).
-      std::unique_ptr<LayerStack> rectify_stack;
-      std::unique_ptr<LightFrame> rectify_frame;
-      std::unique_ptr<LightDepthMap> rectify_light;
-      const LightDepthMap* rectify = &light;
-      if (options.light_resolution != options.reference_resolution) {
-        LightViewDesc low = view;
-        low.resolution = options.light_resolution;
-        check_render_memory(low.resolution, "scatter.light_resolution");
-        rectify_stack = std::make_unique<LayerStack>(render_view(s.scene, low, threads));
-        rectify_frame = std::make_unique<LightFrame>(low, s.scene.mesh.vertices);
-        rectify_light = std::make_unique<LightDepthMap>(*rectify_frame, *rectify_stack);
-        rectify = rectify_light.get();
-      }
-      const MediumDesc& medium = s.medium;
+    for (const LightViewDesc& view : s.scene.views) {
+      const auto light = render_scatter_light(s.scene, view, options, threads);
       for (size_t c = 0; c < s.scene.cameras.size(); ++c) {
         const CameraDesc& camera = s.scene.cameras[c];
-        ProgressBar bar("scatter " + s.scene.name + "/" + view.name + "/" + camera.name,
-                        techniques.size() + 1, quiet);
-        const CameraRays rays = camera_rays(s, camera, images[c], light, options.max_distance);
-        const ScatterSetup setup{&light,          &s.scene,          &view,  &camera,
-                                 camera.position, medium.extinction, rectify};
+        const ScatterFrame frame = make_scatter_frame(s, light, camera, images[c], options);
+        ProgressBar bar("scatter " + frame.name(), techniques.size() + 1, quiet);
+        const ScatterSetup setup = frame.setup();
         ScatterFrameResult r;
         r.scene = s.scene.name, r.view = view.name, r.camera = camera.name;
-        r.width = images[c].width, r.height = images[c].height;
-        r.surface = rays.surface;
+        r.width = frame.width, r.height = frame.height;
+        r.surface = frame.surface;
+        r.s_max = frame.s_max;
+        r.epipole_pixels = frame.epipole_pixels;
         if (options.images)
           r.rectified = std::make_shared<const RectifiedMap>(
-              *rectify, camera, medium.extinction,
+              light->rectify(), camera, s.medium.extinction,
               RectifiedSettings{params.light_resolution, params.guard_band});
-        std::vector<double> factor(rays.rays.size());
-        for (size_t p = 0; p < factor.size(); ++p) {
-          const ScatterRay& ray = rays.rays[p];
-          if (std::abs(ray.direction.dot(light.frame->to_light())) > epipole_cos)
-            ++r.epipole_pixels;
-          factor[p] = scattering_factor(medium, light.frame->to_light(), ray.direction);
-          r.s_max.push_back(factor[p] * transmittance_integral(0, ray.length, medium.extinction));
-        }
         reference->prepare(setup);
-        r.reference = lit_lengths(*reference, rays.rays, r.width, threads);
-        for (size_t p = 0; p < factor.size(); ++p) r.reference[p] *= factor[p];
+        r.reference = frame_inscatter(*reference, frame, threads);
         bar.advance();
         for (auto& technique : techniques) {
           const auto start = std::chrono::steady_clock::now();
           technique->prepare(setup);
-          std::vector<double> inscatter = lit_lengths(*technique, rays.rays, r.width, threads);
+          std::vector<double> inscatter = frame_inscatter(*technique, frame, threads);
           ScatterStats stats;
-          for (size_t p = 0; p < factor.size(); ++p) {
-            inscatter[p] *= factor[p];
+          for (size_t p = 0; p < inscatter.size(); ++p)
             stats.add(inscatter[p], r.reference[p], r.s_max[p]);
-          }
           r.seconds.push_back(seconds_since(start));
           r.inscatter.push_back(std::move(inscatter));
           r.stats.push_back(stats);

@@ -18,6 +18,7 @@
 #include "sweep/oit_target.h"
 #include "sweep/results_store.h"
 #include "sweep/run_identity.h"
+#include "sweep/scatter_target.h"
 #include "sweep/sweep_directory.h"
 #include "sweep/sweep_plan.h"
 #include "techniques/lp_options.h"
@@ -38,13 +39,13 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-// The transmittance rows oit runs by default, then the family's sweep references (the LP beside
-// the candidates').
-std::string oit_reference_default() {
+// The rows of `family` that its command runs by default, then the family's sweep references (the
+// LP beside the candidates').
+std::string reference_default(TechniqueFamily family) {
   std::string list;
-  for (const TechniqueRow* row : family_rows(TechniqueFamily::Transmittance))
+  for (const TechniqueRow* row : family_rows(family))
     if (row->default_run && !row->prefix()) list += (list.empty() ? "" : ", ") + row->name;
-  for (const SweepReference& reference : sweep_references(TechniqueFamily::Transmittance))
+  for (const SweepReference& reference : sweep_references(family))
     list += (list.empty() ? "" : ", ") + reference.name;
   return "[" + list + "]";
 }
@@ -77,13 +78,21 @@ const std::vector<OptionRecord<SweepSettings>>& candidate_options() {
         "G per receiver of a shadow dataset against PCF; transparency, the LP's sharp "
         "absorbance bound per fragment of a transparency dataset's cameras against the exact "
         "transmittance (opacity-weighted, docs/transparency.md §7; `resolution` and the "
-        "kernel's keys do not apply).",
+        "kernel's keys do not apply); scattering, pss_lp:<candidate> at beta 0 per view ray of "
+        "a scattering dataset's light views and cameras against pss_exact (docs/scattering.md "
+        "§6; scatter.* apply, `resolution` and the kernel's keys do not).",
         -kInfinity,
         kInfinity,
-        {"shadows", "transparency"}},
+        {"shadows", "transparency", "scattering"}},
        &SweepSettings::target},
+      {selects_runs({"scatter_references", OptionType::StringList,
+                     reference_default(TechniqueFamily::Scattering),
+                     "target scattering: scattering techniques evaluated once on the same light "
+                     "views and cameras against pss_exact, for the report (at scatter.beta)."}),
+       &SweepSettings::scatter_references},
       {selects_runs(
-           {"oit_references", OptionType::StringList, oit_reference_default(),
+           {"oit_references", OptionType::StringList,
+            reference_default(TechniqueFamily::Transmittance),
             "target transparency: oit techniques evaluated once on the same frames, for the report "
             "(MBOIT at oit.beta, lp:<basis> at lp.beta)."}),
        &SweepSettings::oit_references},
@@ -140,6 +149,7 @@ const std::vector<OptionRecord<ScreenSettings>>& screen_options() {
 std::vector<OptionSpec> sweep_option_specs() {
   std::vector<OptionSpec> specs = option_specs(candidate_options());
   for (const auto& spec : oit_option_specs()) specs.push_back(spec);
+  for (const auto& spec : scatter_sweep_option_specs()) specs.push_back(spec);
   for (auto& s : option_specs(screen_options())) specs.push_back(s);
   return specs;
 }
@@ -150,6 +160,16 @@ std::vector<OptionSpec> sweep_target_specs(const std::string& target) {
   if (target == "transparency") {
     for (auto& s : oit_option_specs()) specs.push_back(s);
     for (auto& s : lp_option_specs()) specs.push_back(s);
+  } else if (target == "scattering") {
+    for (auto& s : option_specs(dataset_option_records()))
+      if (s.name != "resolution") specs.push_back(s);  // scatter.reference_resolution sets it
+    for (auto& s : scatter_sweep_option_specs()) specs.push_back(s);
+    // The candidates' LP: the lp.* keys pss_lp reads (its row's family options).
+    const TechniqueRow& pss_lp = technique_row("pss_lp:", TechniqueFamily::Scattering);
+    for (auto& s : lp_option_specs())
+      if (std::find(pss_lp.family_options.begin(), pss_lp.family_options.end(), s.name) !=
+          pss_lp.family_options.end())
+        specs.push_back(s);
   } else {
     for (auto& s : option_specs(dataset_option_records())) specs.push_back(s);
     for (auto& s : hard_shadow_option_specs()) specs.push_back(s);
@@ -190,14 +210,14 @@ SweepSettings sweep_settings_from(const Config& config, int threads) {
   read_options(config, candidate_options(), s);
   // A transparency sweep may rank MBOIT's blend A- + beta (A+ - A-) of any basis; a shadow sweep
   // ranks the sharp bound (the blend over-darkens, docs/reference.md §2).
-  if (s.eval.technique.lp_beta != 0 && s.target != "transparency")
+  if (s.eval.technique.lp_beta != 0 && s.target == "shadows")
     throw InputError("lp.beta: " + std::to_string(s.eval.technique.lp_beta) +
                      "; a shadow sweep ranks bases by their sharp lower bound, expected 0 (eval "
                      "takes lp.beta > 0; so does a sweep with target transparency)");
   // Problem 1 bounds the hard shadow F_Z(z_f) (docs/reference.md §3); the area light's shadow is
   // no F_Z, and every technique may darken past it (docs/soft-shadows.md §1): ranking bases
   // against it would rank nothing the LP proves.
-  if (s.eval.light.angle_deg > 0 && s.target != "transparency")
+  if (s.eval.light.angle_deg > 0 && s.target == "shadows")
     throw InputError("light.angle: " + round_trip(s.eval.light.angle_deg) +
                      "; a shadow sweep ranks bases by Problem 1's bound on the hard shadow, not "
                      "an area light's (docs/soft-shadows.md), expected 0 (eval takes light.angle "
@@ -205,8 +225,10 @@ SweepSettings sweep_settings_from(const Config& config, int threads) {
   read_options(config, screen_options(), s.screen);
   refuse_unread_options(config, s.target);
   s.oit = oit_params_from(config);
-  s.references =
-      s.target == "transparency" ? s.oit_references : with_oracle_row(s.references, s.eval.bias);
+  s.scatter = scatter_sweep_options_from(config);
+  s.references = s.target == "transparency" ? s.oit_references
+                 : s.target == "scattering" ? s.scatter_references
+                                            : with_oracle_row(s.references, s.eval.bias);
   s.config_yaml = config.to_yaml();
   return s;
 }
@@ -481,8 +503,10 @@ std::string map_sizes(const std::vector<ViewData>& views) {
 
 // What the sweep measures, rendered before anything is written (bad input leaves no output).
 struct PreparedTarget {
-  std::vector<ViewData> views;     // shadows
-  std::vector<SceneFrame> frames;  // transparency
+  std::vector<ViewData> views;               // shadows
+  std::vector<SceneFrame> frames;            // transparency
+  std::vector<ScatterScene> scatter_scenes;  // scattering: the scenes its frames point into
+  std::vector<ScatterFrame> scatter_frames;
   std::unique_ptr<SweepTarget> target;
 };
 
@@ -498,6 +522,10 @@ PreparedTarget prepare_target(const SweepSettings& s, const DatasetDesc& dataset
                        "] excludes part of the warped depth [0, 1] of target transparency "
                        "(expected lp.lo <= 0 and lp.hi >= 1)");
     p.target = make_oit_target(p.frames, s.oit, s.eval.threads);
+  } else if (s.target == "scattering") {
+    p.scatter_scenes = scatter_scenes(dataset);
+    p.scatter_frames = prepare_scatter_frames(p.scatter_scenes, s.scatter, s.eval.threads);
+    p.target = make_scatter_target(p.scatter_frames, s.scatter, s.eval.threads);
   } else {
     // A dataset's light_angles, or a scene's view naming its own light angle, make area lights as
     // light.angle does (sweep_settings_from refuses those); refused before rendering.
@@ -532,7 +560,7 @@ void run_sweep(const SweepSettings& s, const SweepJob& job) {
   // `resolution` 0 keeps the dataset's: the identity holds the maps' size it gave, so that a run
   // at 0 and one naming the same size are one measurement (docs/sweeps.md "Identity").
   const std::string meta_resolution =
-      s.target != "transparency" ? map_sizes(prepared.views) : std::string();
+      s.target == "shadows" ? map_sizes(prepared.views) : std::string();
   // The output directory is the sweep's state: new unless resuming, then it must match.
   const std::string shard_text = std::to_string(job.shard) + "/" + std::to_string(job.shards);
   // The run's identity: every measurement option's value; the dataset by its name.
@@ -544,8 +572,11 @@ void run_sweep(const SweepSettings& s, const SweepJob& job) {
                {"catalog_size", std::to_string(plan.catalog.size())},
                {"combination_size", std::to_string(plan.size)},
                {"planned", std::to_string(plan.ids.size())},
-               {"settings", s.target == "transparency"
-                                ? describe_transparency(s)
+               {"settings", s.target == "transparency" ? describe_transparency(s)
+                            : s.target == "scattering"
+                                ? "target scattering: pss_lp:<candidate> at beta 0 against "
+                                  "pss_exact; " +
+                                      describe_scatter_settings(s.scatter)
                                 : "shadow maps " + meta_resolution + " texels a side; " +
                                       describe_settings(s.eval)}});
   ResultsStore store = open_sweep_directory(

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "eval/evaluation.h"
+#include "scatter/scatter_run.h"
 #include "screen/screening.h"
 #include "techniques/oit/oit_technique.h"
 #include "util/config.h"
@@ -27,8 +28,10 @@ struct ScreenSettings {
 // The sweep's options as typed fields (sweep_specs declares them).
 struct SweepSettings {
   EvalSettings eval;
-  std::string target;                       // sweep_target.h: shadows or transparency
+  std::string target;                       // sweep_target.h: shadows, transparency or scattering
   std::vector<std::string> oit_references;  // the transparency target's reference rows
+  std::vector<std::string> scatter_references;  // the scattering target's
+  ScatterRunOptions scatter;                    // the scattering target's scatter.* options
   // Their MBOIT overestimation (oit.beta), the warped depth of every technique (oit.warp) and the
   // candidates' LP (lp.*).
   OitParams oit;

@@ -2,8 +2,10 @@
 // What a sweep measures its candidates on (docs/sweeps.md, "Targets"). `shadows`: a shadow
 // dataset's views, Problem 1's G per receiver against PCF (docs/reference.md §3). `transparency`:
 // a transparency dataset's camera frames, the LP's sharp absorbance bound per fragment against the
-// exact transmittance (docs/transparency.md §7). The orchestration (sweep_run.cpp) sees only this
-// interface, so resume, shards, screening and the results store are the same for both.
+// exact transmittance (docs/transparency.md §7). `scattering`: a scattering dataset's light views
+// and cameras, pss_lp:<candidate> at beta 0 per view ray against pss_exact (docs/scattering.md
+// §6). The orchestration (sweep_run.cpp) sees only this interface, so resume, shards, screening
+// and the results store are the same for all.
 #include <cstdint>
 #include <limits>
 #include <memory>

@@ -12,6 +12,9 @@
 #   transparency  target transparency on tests/data/oit_tiny.yaml: the same rows for 1 and 2
 #            threads and after kill -9 and --resume; screened; MBOIT's basis marked in the report;
 #            its candidate's error equals `oit`'s lp:power4 transmittance error
+#   scattering  target scattering on scattering_tiny: the same rows for 1 and 2 threads and after
+#            kill -9 and --resume; screened; the power-moment candidate's error equals `scatter`'s
+#            pss_lp:power4 at beta 0 against pss_exact, and the report places it
 # Results are compared through `report`'s candidates.csv and references.csv (everything but time).
 set -eu
 mb=$1 work=$2 check=$3
@@ -218,6 +221,51 @@ oit = {r["camera"]: float(r["transmittance_error"]) for r in csv.DictReader(open
 a, b = sweep["z; z^2; z^3; z^4"], oit["all"]
 assert abs(a - b) <= 1e-9, (a, b)
 PY
+  ;;
+scattering)
+  sc=(--set target=scattering --set dataset=scattering_tiny --set combination_size=2 --set sample=8 --set sample_seed=3 --set "scatter_references=[pss_msm4]")
+  "$mb" sweep -q "${sc[@]}" --set threads=2 -o "$work/sc2"
+  results "$work/sc2"
+  "$mb" sweep -q "${sc[@]}" --set threads=1 -o "$work/sc1"
+  results "$work/sc1"
+  same "$work/sc2" "$work/sc1"
+  # Killed mid-way, resumed: the same rows.
+  "$mb" sweep -q "${sc[@]}" --set threads=1 -o "$work/sck" 2>/dev/null &
+  pid=$!
+  for _ in $(seq 1 600); do
+    [ "$(count "$work/sck")" -ge 2 ] && break
+    sleep 0.02
+  done
+  kill -9 $pid
+  wait $pid 2>/dev/null || true
+  n=$(count "$work/sck")
+  [ "$n" -lt 8 ] || { echo "sweep_checks: the kill did not land mid-way ($n)"; exit 1; }
+  "$mb" sweep -q "${sc[@]}" --resume -o "$work/sck"
+  results "$work/sck"
+  same "$work/sc2" "$work/sck"
+  # Screened: estimates and exact rows apart.
+  "$mb" sweep -q "${sc[@]}" --screen 0.3 --set screen.top=2 -o "$work/scs"
+  results "$work/scs"
+  grep -q "(estimate) |" "$work/scs.report/report.md"
+  # The power moments' candidate as `scatter` measures pss_lp:power4 at beta 0 against pss_exact.
+  "$mb" sweep -q --set target=scattering --set dataset=scattering_tiny --set "scatter_references=[]" \
+      --set "candidates=[z; z^2; z^3; z^4, z; exp(z); exp(-z); log(1+z)]" -o "$work/scm"
+  results "$work/scm"
+  grep -q "power moments: .*rank [12] of 2" "$work/scm.report/report.md"
+  grep -q "Target scattering" "$work/scm.report/report.md"
+  "$mb" scatter -q --set dataset=scattering_tiny --set images=false --set scatter.beta=0 --set scatter.reference=pss_exact \
+      --set "techniques=[pss_lp:power4]" -o "$work/sc_cmd" >/dev/null
+  /usr/bin/python3 - "$work/scm.report/candidates.csv" "$work/sc_cmd/errors.csv" <<'PY'
+import csv, sys
+sweep = {r["functions"]: float(r["mean_error"]) for r in csv.DictReader(open(sys.argv[1]))}
+rows = [r for r in csv.DictReader(open(sys.argv[2])) if r["scene"] == "all"]
+a, b = sweep["z; z^2; z^3; z^4"], float(rows[0]["mean_error"])
+assert abs(a - b) <= 1e-12 * max(1.0, b), (a, b)
+PY
+  # Options another target reads are refused, naming the key.
+  if "$mb" sweep -q --set target=scattering --set dataset=scattering_tiny --set kernel.size=5 -o "$work/scbad" 2>"$work/err"; then exit 1; fi
+  grep -q "kernel.size" "$work/err"
+  [ ! -e "$work/scbad" ]
   ;;
 esac
 echo "sweep_checks $check: ok"

@@ -10,6 +10,7 @@
 #include <atomic>
 #include <map>
 #include <mutex>
+#include <set>
 #include <vector>
 
 #include "techniques/lp_technique.h"
@@ -33,6 +34,12 @@ class PssLp : public PrefilteredScatter {
       : PrefilteredScatter(name, params), lp_name_(lp_name_of(name)), instance_(next_instance()) {
     technique_.lp_beta = params.beta;
     make_lp_technique(lp_name_, technique_);  // a bad basis fails here, before any work
+    std::lock_guard<std::mutex> lock(live_mutex());
+    live().insert(instance_);
+  }
+  ~PssLp() override {
+    std::lock_guard<std::mutex> lock(live_mutex());
+    live().erase(instance_);
   }
   size_t failures() const override { return failures_; }
 
@@ -57,8 +64,10 @@ class PssLp : public PrefilteredScatter {
 
  private:
   // An LP technique is not thread-safe, and its GLPK objects must be freed by the thread that
-  // made them: each thread keeps its own per technique instance, made on first use and freed when
-  // the thread ends. Each answers from scratch, so which thread answers a ray changes no bit.
+  // made them: each thread keeps its own per technique instance, made on first use. Each answers
+  // from scratch, so which thread answers a ray changes no bit. A sweep makes an instance per
+  // candidate: a thread frees what it made for instances since destroyed when it first serves a
+  // new one, so that it holds LPs only for live instances.
   struct Scratch {
     std::unique_ptr<Technique> lp;
     std::vector<double> depths, weights;
@@ -67,10 +76,24 @@ class PssLp : public PrefilteredScatter {
     static std::atomic<uint64_t> count{0};
     return ++count;
   }
+  static std::set<uint64_t>& live() {
+    static std::set<uint64_t> instances;
+    return instances;
+  }
+  static std::mutex& live_mutex() {
+    static std::mutex mutex;
+    return mutex;
+  }
   Scratch& scratch() const {
     thread_local std::map<uint64_t, Scratch> per_instance;
+    const auto found = per_instance.find(instance_);
+    if (found != per_instance.end()) return found->second;
+    {
+      std::lock_guard<std::mutex> lock(live_mutex());
+      std::erase_if(per_instance, [](const auto& entry) { return !live().count(entry.first); });
+    }
     Scratch& s = per_instance[instance_];
-    if (!s.lp) s.lp = make_lp_technique(lp_name_, technique_);
+    s.lp = make_lp_technique(lp_name_, technique_);
     return s;
   }
 
