@@ -69,12 +69,12 @@ const std::vector<OptionRecord<ScatterRunOptions>>& scatter_run_options() {
         "(mipmapped) sample of the light map's power moments over the rectified texel's "
         "footprint turned into two depths and weights, each warped into an inclination "
         "(pss_exact counts both with their weights; exact and raymarch never read the rectified "
-        "map). `point` by default, although the seed prefers filtered for its stability: every "
-        "documented error of the pss rows is measured under point, and at the default 1024² "
-        "maps, finer than the 360 x 240 cameras, filtered lowers pss_msm4's mean error on the "
-        "scattering house's `outside` camera by 7 % (0.0169 to 0.0156 over 8 turns of 0.1 "
-        "degree) but does not narrow its spread over the turns (std 5.8e-5, filtered 7.6e-5); "
-        "at 256² it does (1.4e-4 to 9.5e-5; docs/scattering.md §3.3).",
+        "map). `point` by default so that the pss rows' documented errors, all measured under "
+        "it, stay true, although the seed and the measurements favour filtered: on the "
+        "scattering house with the default 1024² maps it lowers pss_exact's mean error by 4 to "
+        "11 % and the per-pixel flicker of pss_exact and pss_msm4 over 8 camera turns of 0.1 "
+        "degree by 8 to 37 % (41 to 58 % at 256²), at 3 to 4 times the map's build time "
+        "(docs/scattering.md §3.3).",
         -std::numeric_limits<double>::infinity(),
         std::numeric_limits<double>::infinity(),
         {"point", "filtered"}},
