@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "scatter/scatter_run.h"
+#include "test_support.h"
 
 namespace mb {
 namespace {
@@ -34,34 +35,43 @@ std::vector<ScatterScene> tiny() {
 }
 
 TEST(ScatterPrefiltered, SameAnswersForAnyThreadCount) {
-  const ScatterRunOptions run =
-      defaults({"pss_exact", "pss_lp:power4", "pss_msm4", "pss_msm4_16bit", "pss_msm6", "pss_csm"});
-  const auto one = run_on(tiny(), run, 1), two = run_on(tiny(), run, 2);
-  ASSERT_EQ(one.size(), 1u);
-  EXPECT_EQ(one[0].inscatter, two[0].inscatter);
-  for (const auto& stats : one[0].stats) EXPECT_GT(stats.mean_error(), 0);
+  for (const std::string resample : {"point", "filtered"}) {
+    ScatterRunOptions run = defaults(
+        {"pss_exact", "pss_lp:power4", "pss_msm4", "pss_msm4_16bit", "pss_msm6", "pss_csm"});
+    run.resample = resample;
+    const auto one = run_on(tiny(), run, 1), two = run_on(tiny(), run, 2);
+    ASSERT_EQ(one.size(), 1u);
+    EXPECT_EQ(one[0].inscatter, two[0].inscatter) << resample;
+    for (const auto& stats : one[0].stats) EXPECT_GT(stats.mean_error(), 0) << resample;
+  }
 }
 
 // The LP's lower bound on the shadowed fraction of the row's own distribution (docs/reference.md
-// §11): the in-scattering is never below pss_exact's, but for the LP's certified tolerance.
+// §11): the in-scattering is never below pss_exact's, but for the LP's certified tolerance. Under
+// filtered resampling pss_exact counts each texel's two depths with their weights, the
+// distribution whose moments the rows sum, so the bound holds there too.
 TEST(ScatterPrefiltered, LpAtBetaZeroIsNeverTooDarkAgainstPssExact) {
-  ScatterRunOptions run = defaults({"pss_lp:power4", "pss_lp:trig4"});
-  run.reference = "pss_exact", run.beta = 0;
-  const auto frames = run_on(tiny(), run, 2);
-  ASSERT_EQ(frames.size(), 1u);
-  const ScatterFrameResult& r = frames[0];
-  for (size_t k = 0; k < r.inscatter.size(); ++k) {
-    size_t darker = 0, brighter = 0;
-    for (size_t p = 0; p < r.reference.size(); ++p) {
-      EXPECT_GE(r.inscatter[k][p], r.reference[p] - 1e-8 * r.s_max[p]) << k << " " << p;
-      darker += r.inscatter[k][p] < r.reference[p];
-      brighter += r.inscatter[k][p] > r.reference[p] * (1 + 1e-9);
+  for (const std::string resample : {"point", "filtered"}) {
+    ScatterRunOptions run = defaults({"pss_lp:power4", "pss_lp:trig4"});
+    run.reference = "pss_exact", run.beta = 0, run.resample = resample;
+    const auto frames = run_on(tiny(), run, 2);
+    ASSERT_EQ(frames.size(), 1u);
+    const ScatterFrameResult& r = frames[0];
+    for (size_t k = 0; k < r.inscatter.size(); ++k) {
+      size_t darker = 0, brighter = 0;
+      for (size_t p = 0; p < r.reference.size(); ++p) {
+        EXPECT_GE(r.inscatter[k][p], r.reference[p] - 1e-8 * r.s_max[p]) << k << " " << p;
+        darker += r.inscatter[k][p] < r.reference[p];
+        brighter += r.inscatter[k][p] > r.reference[p] * (1 + 1e-9);
+      }
+      std::printf(
+          "%s at beta 0, %s resampling: too dark %.3g, too bright %.3g (%zu pixels "
+          "brighter)\n",
+          run.techniques[k].c_str(), resample.c_str(), r.stats[k].too_dark(),
+          r.stats[k].too_bright(), brighter);
+      EXPECT_LT(r.stats[k].too_dark(), 1e-9);
+      EXPECT_GT(brighter, 0u);  // not pss_exact itself: the moments lose something
     }
-    std::printf("%s at beta 0: too dark %.3g, too bright %.3g (%zu pixels brighter)\n",
-                run.techniques[k].c_str(), r.stats[k].too_dark(), r.stats[k].too_bright(),
-                brighter);
-    EXPECT_LT(r.stats[k].too_dark(), 1e-9);
-    EXPECT_GT(brighter, 0u);  // not pss_exact itself: the moments lose something
   }
 }
 
@@ -81,6 +91,23 @@ TEST(ScatterPrefiltered, PssExactApproachesTheReferenceAsTheLightMapGrows) {
     previous = error;
   }
   EXPECT_LT(previous, 0.01);
+}
+
+// scatter.resample (docs/scattering.md §3.1) takes point or filtered; anything else is refused
+// with the key, the value and the valid ones.
+TEST(ScatterPrefiltered, RefusesAnUnknownResampling) {
+  Config config(scatter_run_option_specs());
+  const std::string error = testing_support::input_error_of([&] {
+    config.set("scatter.resample=bilinear");
+    scatter_run_options_from(config);
+  });
+  EXPECT_NE(error.find("scatter.resample"), std::string::npos) << error;
+  EXPECT_NE(error.find("bilinear"), std::string::npos) << error;
+  EXPECT_NE(error.find("point, filtered"), std::string::npos) << error;
+  Config good(scatter_run_option_specs());
+  good.set("scatter.resample=filtered");
+  EXPECT_EQ(scatter_params(scatter_run_options_from(good)).resample, Resample::Filtered);
+  EXPECT_EQ(scatter_params(defaults({"pss_exact"})).resample, Resample::Point);
 }
 
 }  // namespace

@@ -121,24 +121,32 @@ TEST(TechniquesRectifiedMap, ViewRaysLandOnTheirRowAtTheirDepthInsideTheGuardBan
   EXPECT_NEAR(most, hi, 1e-9);
 }
 
-TEST(TechniquesRectifiedMap, PrefixSumsEqualDirectSums) {
+// Under filtered resampling (seed 004 §2.3) a texel holds two depths with weights; the plane's
+// edge against the empty border gives such texels, and the sums blend their two moment vectors.
+class PrefixSums : public testing::TestWithParam<Resample> {};
+
+TEST_P(PrefixSums, EqualDirectSums) {
   const FacingPlane s;
   const LightDepthMap light(*s.frame, s.stack);
-  const RectifiedMap map(light, s.camera, kSigma, {kMapRes, kGuard});
+  const RectifiedMap map(light, s.camera, kSigma, {kMapRes, kGuard, GetParam()});
   const auto power = [](double z, double* out) {
     for (int j = 0; j < 4; ++j) out[j] = std::pow(z, j + 1);
   };
   const RowPrefixSums sums(map, 4, power);
+  int split = 0;
   for (int v = 0; v < map.height(); v += 9) {
     const double delta = map.delta(v);
     long double weight = 0, moment[4] = {};
     for (int k = 1; k <= map.width(); ++k) {
-      const double d = map.depth(k - 1, v);
+      const TwoDepths t = map.texel(k - 1, v);
+      split += t.weight[1] > 0;
       const long double w = (std::exp(-(long double)kSigma * (k - 1) * delta) -
                              std::exp(-(long double)kSigma * k * delta)) /
                             kSigma;
       weight += w;
-      for (int j = 0; j < 4; ++j) moment[j] += w * std::pow((long double)d, j + 1);
+      for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < 2; ++i)
+          moment[j] += w * t.weight[i] * std::pow((long double)t.depth[i], j + 1);
       // Σ w_{i,v} is the integral of exp(-sigma t) over the first k texels.
       EXPECT_NEAR(map.prefix_weight(v, k), (1 - std::exp(-kSigma * k * delta)) / kSigma,
                   1e-12 / kSigma);
@@ -162,7 +170,17 @@ TEST(TechniquesRectifiedMap, PrefixSumsEqualDirectSums) {
       for (int j = 0; j < 4; ++j) EXPECT_NEAR(mean[j], double(direct[j] / total), 1e-13);
     }
   }
+  if (GetParam() == Resample::Filtered)
+    EXPECT_GT(split, 0);
+  else
+    EXPECT_EQ(split, 0);
 }
+
+INSTANTIATE_TEST_SUITE_P(TechniquesRectifiedMap, PrefixSums,
+                         testing::Values(Resample::Point, Resample::Filtered),
+                         [](const testing::TestParamInfo<Resample>& info) {
+                           return info.param == Resample::Point ? "Point" : "Filtered";
+                         });
 
 }  // namespace
 }  // namespace mb

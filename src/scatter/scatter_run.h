@@ -22,6 +22,7 @@ struct ScatterRunOptions {
   double max_distance = 0;
   int light_resolution = 0;
   double guard_band = 0;
+  std::string resample;
   double epipole_degrees = 0;
   std::string reference;
   double beta = 0;

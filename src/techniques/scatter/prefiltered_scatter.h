@@ -33,7 +33,8 @@ class PrefilteredScatter : public ScatterTechnique {
 
  protected:
   PrefilteredScatter(std::string name, const ScatterParams& params)
-      : ScatterTechnique(std::move(name)), settings_{params.light_resolution, params.guard_band} {}
+      : ScatterTechnique(std::move(name)),
+        settings_{params.light_resolution, params.guard_band, params.resample} {}
   // Once per map: the technique's prefix sums.
   virtual void prefilter(const RectifiedMap& map) = 0;
   // The shadowed fraction of the ray's part of its row, in [0, 1]; thread-safe.

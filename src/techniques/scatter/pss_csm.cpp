@@ -80,7 +80,7 @@ std::vector<TechniqueRow> rows() {
            .bound = "not proven: the truncated series rings (Gibbs)",
            .unproven_reason = "a truncated Fourier series of the shadow test rings",
            .options = {&kScatterCsmTerms, &kScatterCsmDamping},
-           .family_options = {"scatter.light_resolution", "scatter.guard_band"},
+           .family_options = {"scatter.light_resolution", "scatter.guard_band", "scatter.resample"},
            .default_run = true,
            .make_scatter = [](const std::string& name,
                               const ScatterParams& params) -> std::unique_ptr<ScatterTechnique> {

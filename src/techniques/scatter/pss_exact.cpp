@@ -3,6 +3,10 @@
 // the ray's end whose first surface lies in front of the ray's depth: what prefiltering alone
 // answers. Its distance to `exact` is the rectification's (nearest row, nearest light-map texel,
 // Delta(v) at the row's mean inclination); a moment row's distance to it is its moments' loss.
+// Under scatter.resample filtered a texel holds Algorithm 1's two depths with their weights
+// (seed 004 §2.3), and each counts with its weight: pss_exact stays the exact CDF of the
+// distribution whose moments the moment rows sum, so that their distance to it is still their
+// moments' loss alone, and the filter's blur joins the rectification's distance to `exact`.
 #include <vector>
 
 #include "techniques/registry.h"
@@ -20,15 +24,19 @@ class PssExact : public PrefilteredScatter {
  protected:
   void prefilter(const RectifiedMap&) override {}
   double shadowed_fraction(const RectifiedRay& ray) const override {
-    const std::span<const double> row = map().row(ray.row);
     const int width = map().width();
-    if (!(ray.x > 0)) return row[0] < ray.depth ? 1 : 0;
+    // The share of texel u's depths (one, or filtered resampling's two) in front of the ray.
+    const auto share = [&](int u) {
+      const TwoDepths t = map().texel(u, ray.row);
+      return (t.depth[0] < ray.depth ? t.weight[0] : 0) +
+             (t.depth[1] < ray.depth ? t.weight[1] : 0);
+    };
+    if (!(ray.x > 0)) return share(0);
     double shadowed = 0;
     const int whole = int(std::min(std::floor(ray.x), double(width)));
-    for (int u = 0; u < whole; ++u)
-      if (row[size_t(u)] < ray.depth) shadowed += map().texel_weight(ray.row, u);
-    if (whole < width && row[size_t(whole)] < ray.depth)
-      shadowed += (ray.x - whole) * map().texel_weight(ray.row, whole);
+    for (int u = 0; u < whole; ++u) shadowed += share(u) * map().texel_weight(ray.row, u);
+    if (whole < width)
+      shadowed += share(whole) * ((ray.x - whole) * map().texel_weight(ray.row, whole));
     // Beyond the map every light ray is empty (depth 1): lit.
     return shadowed / map().weight_sum(ray.row, ray.x);
   }
@@ -45,7 +53,7 @@ std::vector<TechniqueRow> rows() {
            .bound = "none: the rectification's error has either sign",
            .unproven_reason = "the rectified map resamples the light map and takes Delta(v) at "
                               "the row's mean inclination",
-           .family_options = {"scatter.light_resolution", "scatter.guard_band"},
+           .family_options = {"scatter.light_resolution", "scatter.guard_band", "scatter.resample"},
            .default_run = true,
            .make_scatter = [](const std::string& name,
                               const ScatterParams& params) -> std::unique_ptr<ScatterTechnique> {

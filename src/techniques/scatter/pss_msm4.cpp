@@ -92,7 +92,7 @@ std::unique_ptr<ScatterTechnique> make(const std::string& name, const ScatterPar
 
 std::vector<TechniqueRow> rows() {
   const std::vector<std::string> family{"scatter.light_resolution", "scatter.guard_band",
-                                        "scatter.beta"};
+                                        "scatter.resample", "scatter.beta"};
   return {{.name = "pss_msm4",
            .family = TechniqueFamily::Scattering,
            .rank = 30,

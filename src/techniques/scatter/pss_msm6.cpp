@@ -72,7 +72,8 @@ std::vector<TechniqueRow> rows() {
            .bound = "not proven: six moments rounded to double (docs/reference.md §4)",
            .unproven_reason = "six moments rounded to double, and scatter.beta",
            .options = {&kPssMsm6Alpha},
-           .family_options = {"scatter.light_resolution", "scatter.guard_band", "scatter.beta"},
+           .family_options = {"scatter.light_resolution", "scatter.guard_band", "scatter.resample",
+                              "scatter.beta"},
            .default_run = true,
            .make_scatter = [](const std::string& name,
                               const ScatterParams& params) -> std::unique_ptr<ScatterTechnique> {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <string>
 
@@ -96,17 +97,36 @@ RectifiedMap::RectifiedMap(const LightDepthMap& light, const CameraDesc& camera,
   const double dz = light.frame->to_raster(p + axes_[2]).z() - r0.z();
   depth_.resize(size_t(width_) * height_);
   prefix_.resize(size_t(width_ + 1) * height_);
+  // Filtered (seed 004 §2.3): the texel's footprint in light texels is the larger of its extents
+  // along r and across it (dr and r dphi), as a GPU's trilinear filter takes the larger
+  // derivative; depth 1 of the moment map is an empty light ray, lit all along.
+  std::unique_ptr<LightMomentMap> moments;
+  if (settings.resample == Resample::Filtered) {
+    moments = std::make_unique<LightMomentMap>(light);
+    second_.resize(depth_.size()), second_weight_.resize(depth_.size());
+  }
+  const double texels_per_world = 1 / light.frame->world_per_texel();
   for (int v = 0; v < height_; ++v) {
     const double phi = azimuth(v);
     const Eigen::Vector3d out = std::cos(phi) * axes_[0] + std::sin(phi) * axes_[1];
     for (int u = 0; u < width_; ++u) {
       const double r = radius(u);
       const Eigen::Vector3d q = light.frame->to_raster(p + r * out);
-      const double stored = light.at(q.x(), q.y());
-      double d = 1;
-      if (!std::isinf(stored))
-        d = std::clamp(normalise(v, std::atan2(r, (stored - q.z()) / dz)), 0.0, 1.0);
-      depth_[size_t(v) * width_ + u] = d;
+      const auto warp = [&](double z) {
+        return std::clamp(normalise(v, std::atan2(r, (z - q.z()) / dz)), 0.0, 1.0);
+      };
+      const size_t i = size_t(v) * width_ + u;
+      if (!moments) {
+        const double stored = light.at(q.x(), q.y());
+        depth_[i] = std::isinf(stored) ? 1 : warp(stored);
+        continue;
+      }
+      double b[3];
+      moments->sample(q.x(), q.y(), std::max(dr_, r * dphi_) * texels_per_world, b);
+      const TwoDepths two = two_depths(b[0], b[1], b[2]);
+      depth_[i] = two.depth[0] < 1 ? warp(two.depth[0]) : 1;
+      second_[i] = two.depth[1] < 1 ? warp(two.depth[1]) : 1;
+      second_weight_[i] = two.weight[1];
     }
     double* sums = prefix_.data() + size_t(v) * (width_ + 1);
     sums[0] = 0;
@@ -161,12 +181,22 @@ RowPrefixSums::RowPrefixSums(const RectifiedMap& map, int channels, const Functi
   lit_.resize(size_t(channels_));
   b(1.0, lit_.data());
   std::vector<double> sum(static_cast<size_t>(channels_)), texel(static_cast<size_t>(channels_));
+  std::vector<double> second(static_cast<size_t>(channels_));
+  // b of texel (u, v): of its depth, or under filtered resampling its two depths' b blended by
+  // their weights (seed 004 §2.3: "linearly combine the two resulting vectors").
+  const auto texel_b = [&](int u, int v, double* out) {
+    const TwoDepths t = map.texel(u, v);
+    b(t.depth[0], out);
+    if (!(t.weight[1] > 0)) return;
+    b(t.depth[1], second.data());
+    for (int j = 0; j < channels_; ++j)
+      out[j] = t.weight[0] * out[j] + t.weight[1] * second[size_t(j)];
+  };
   for (int v = 0; v < map.height(); ++v) {
-    const std::span<const double> depths = map.row(v);
-    b(depths[0], at(v, 0).data());
+    texel_b(0, v, at(v, 0).data());
     std::fill(sum.begin(), sum.end(), 0.0);
     for (int u = 0; u < width_; ++u) {
-      b(depths[size_t(u)], texel.data());
+      texel_b(u, v, texel.data());
       const double w = map.texel_weight(v, u), total = map.prefix_weight(v, u + 1);
       const std::span<double> out = at(v, u + 1);
       for (int j = 0; j < channels_; ++j) {
@@ -202,17 +232,21 @@ void RowPrefixSums::mean(const RectifiedRay& ray, double* out) const {
 void ray_distribution(const RectifiedMap& map, const RectifiedRay& ray, std::vector<double>& depths,
                       std::vector<double>& weights) {
   depths.clear(), weights.clear();
-  const std::span<const double> row = map.row(ray.row);
+  // Texel u's depths, weighing `weight` in all.
+  const auto add = [&](int u, double weight) {
+    const TwoDepths t = map.texel(u, ray.row);
+    depths.push_back(t.depth[0]), weights.push_back(weight * t.weight[0]);
+    if (t.weight[1] > 0) depths.push_back(t.depth[1]), weights.push_back(weight * t.weight[1]);
+  };
   if (!(ray.x > 0)) {  // a ray of length 0 or along the light's axis reads its row's first texel
-    depths.push_back(row[0]), weights.push_back(1);
+    add(0, 1);
     return;
   }
   const int whole = int(std::min(std::floor(ray.x), double(map.width())));
-  for (int u = 0; u < whole; ++u)
-    depths.push_back(row[size_t(u)]), weights.push_back(map.texel_weight(ray.row, u));
+  for (int u = 0; u < whole; ++u) add(u, map.texel_weight(ray.row, u));
   if (whole < map.width()) {
     const double part = (ray.x - whole) * map.texel_weight(ray.row, whole);
-    if (part > 0) depths.push_back(row[size_t(whole)]), weights.push_back(part);
+    if (part > 0) add(whole, part);
   } else if (ray.x > map.width()) {
     const double beyond = map.weight_sum(ray.row, ray.x) - map.prefix_weight(ray.row, map.width());
     if (beyond > 0) depths.push_back(1), weights.push_back(beyond);

@@ -8,12 +8,16 @@
 // camera's view rays of that row plus a guard band). A view ray keeps theta and phi along its whole
 // length and its distance from the axis grows as t sin(theta), so it reads one row, up to the
 // texel of its end, at one depth: the transmittance-weighted prefix sums of a row answer every view
-// ray of that row at once.
+// ray of that row at once. scatter.resample chooses how a texel reads the light map: `point`, the
+// nearest light texel's depth, or `filtered`, seed 004 §2.3's Algorithm 1 (moment_resample.h):
+// a trilinear moment sample over the texel's footprint turned into two depths with weights, each
+// warped into an inclination, so that a texel holds a distribution of two depths.
 #include <functional>
 #include <span>
 #include <vector>
 
 #include "scene/camera.h"
+#include "techniques/scatter/moment_resample.h"
 #include "techniques/scatter/scatter_technique.h"
 
 namespace mb {
@@ -21,6 +25,7 @@ namespace mb {
 struct RectifiedSettings {
   int resolution = 0;     // texels along r (u) and rows along phi (v): scatter.light_resolution
   double guard_band = 0;  // scatter.guard_band: depth texels left free at either end of a row
+  Resample resample = Resample::Point;  // scatter.resample
 };
 
 // Where a view ray falls in the map: its row, its end along the row in texels (x = r_end / dr, the
@@ -41,10 +46,23 @@ class RectifiedMap {
 
   int width() const { return width_; }
   int height() const { return height_; }
-  // The normalised depth of texel (u, v): 1 where the light ray meets no surface (lit all along).
-  double depth(int u, int v) const { return depth_[size_t(v) * width_ + u]; }
-  std::span<const double> row(int v) const {
-    return {depth_.data() + size_t(v) * width_, size_t(width_)};
+  bool filtered() const { return !second_.empty(); }
+  // The normalised depths of texel (u, v), 1 where the light ray meets no surface (lit all along):
+  // one depth (weight 1) under point resampling; under filtered, Algorithm 1's two (the second's
+  // weight 0 where the sample held one depth).
+  TwoDepths texel(int u, int v) const {
+    const size_t i = size_t(v) * width_ + u;
+    TwoDepths t;
+    t.depth[0] = t.depth[1] = depth_[i];
+    if (filtered()) t.depth[1] = second_[i], t.weight[1] = second_weight_[i];
+    t.weight[0] = 1 - t.weight[1];
+    return t;
+  }
+  // Texel (u, v)'s mean normalised depth (the image of the map shows it): its one depth under
+  // point resampling.
+  double depth(int u, int v) const {
+    const TwoDepths t = texel(u, v);
+    return filtered() ? t.weight[0] * t.depth[0] + t.weight[1] * t.depth[1] : t.depth[0];
   }
   RectifiedRay locate(const Eigen::Vector3d& direction, double length) const;
 
@@ -80,7 +98,9 @@ class RectifiedMap {
   double sigma_ = 0, dr_ = 0, phi_lo_ = 0, dphi_ = 0;
   Eigen::Vector3d axes_[3];
   std::vector<Row> rows_;
-  std::vector<double> depth_;   // width x height, row-major
+  std::vector<double> depth_;   // width x height, row-major (filtered: each texel's nearer depth)
+  std::vector<double> second_;  // filtered only: each texel's farther depth and its weight
+  std::vector<double> second_weight_;
   std::vector<double> prefix_;  // (width + 1) per row: Σ_{i < k} w_{i,v}
   int row_of(double phi) const;
 };
@@ -114,7 +134,9 @@ class RowPrefixSums {
 
 // The row's own weighted distribution along a view ray (pss_exact, pss_lp): the depths of the
 // texels up to the ray's end with their weights (the last texel's in part, then the empty light
-// rays beyond the map at depth 1), in row order; their weights sum to weight_sum(row, x).
+// rays beyond the map at depth 1), in row order; their weights sum to weight_sum(row, x). Under
+// filtered resampling a texel gives its two depths, each with its share of the texel's weight
+// (one where the second's share is 0).
 void ray_distribution(const RectifiedMap& map, const RectifiedRay& ray, std::vector<double>& depths,
                       std::vector<double>& weights);
 

@@ -67,6 +67,10 @@ struct ScatterRay {
   uint64_t pixel = 0;  // the pixel's index in its image, for seeded per-pixel randomness
 };
 
+// How the rectified map reads the light map (scatter.resample; docs/scattering.md §3.1): the
+// nearest light texel's depth, or seed 004 §2.3's filtered moment sample (Algorithm 1).
+enum class Resample { Point, Filtered };
+
 // What the scattering rows are made with: each technique's own options (their records in the
 // technique's file, e.g. raymarch's scatter.seed), read from the config by the scatter stage, and
 // the family's scatter.* records (scatter/scatter_run.cpp, which hold their defaults).
@@ -77,6 +81,7 @@ struct ScatterParams {
   // row's range of inclinations (scatter.guard_band).
   int light_resolution = 0;
   double guard_band = 0;
+  Resample resample = Resample::Point;  // scatter.resample
   // scatter.beta: the blend G + beta (G+ - G) of the moment rows' bounds on the shadowed fraction.
   double beta = 0;
 };
