@@ -70,12 +70,8 @@ ScatterReport render_scatter_report(const ScatterReportContext& ctx,
      << " light views and cameras, " << ctx.pixels << " view rays in all.\n\n"
      << "- " << ctx.settings_text << "\n";
   for (const auto& line : ctx.non_default) md << "- option " << line << "\n";
-  md << "\nThe reference is "
-     << (ctx.reference == "pss_exact"
-             ? "pss_exact, the rectified row's own visibility (docs/scattering.md §3.2), so that "
-               "a moment row's error is its moments' loss alone"
-             : "the exact in-scattering I_ref against the light view's hard shadow map "
-               "(docs/scattering.md §2)")
+  md << "\nThe reference is " << ctx.reference << ", "
+     << technique_row(ctx.reference, TechniqueFamily::Scattering).as_reference
      << ". *mean error*: Σ|I − I_ref| / Σ S_max over the view rays, "
         "S_max the in-scattering of the ray were it lit everywhere (seed 000 §3.2's L1 measure: "
         "a short ray weighs less than a long one); *too bright*, *too dark*: its parts where I > "

@@ -19,6 +19,27 @@
 
 namespace mb {
 
+namespace {
+
+// The scattering rows others may be measured against (their rows' as_reference), by rank.
+std::vector<std::string> reference_rows() {
+  std::vector<std::string> names;
+  for (const TechniqueRow* row : family_rows(TechniqueFamily::Scattering))
+    if (!row->as_reference.empty()) names.push_back(row->name);
+  return names;
+}
+
+// "`exact`, the exact in-scattering ...; or `pss_exact`, ...".
+std::string reference_rows_text() {
+  std::string text;
+  for (const std::string& name : reference_rows())
+    text += (text.empty() ? "" : "; or ") + ("`" + name + "`, ") +
+            technique_row(name, TechniqueFamily::Scattering).as_reference;
+  return text;
+}
+
+}  // namespace
+
 // `techniques` chooses the rows; images and their scale change no measured number.
 const std::vector<OptionRecord<ScatterRunOptions>>& scatter_run_options() {
   static const std::vector<OptionRecord<ScatterRunOptions>> records{
@@ -89,15 +110,11 @@ const std::vector<OptionRecord<ScatterRunOptions>>& scatter_run_options() {
         "scale (about 15 units over 1024 texels of about 14 units).",
         0, 90},
        &ScatterRunOptions::epipole_degrees},
-      {{"scatter.reference",
-        OptionType::String,
-        "exact",
-        "What errors.csv measures against (docs/scattering.md §4): `exact`, the walk over the "
-        "hard shadow map (§2), or `pss_exact`, the rectified row's own visibility (§3.2), so "
-        "that a moment row's error is its moments' loss alone.",
-        -std::numeric_limits<double>::infinity(),
-        std::numeric_limits<double>::infinity(),
-        {"exact", "pss_exact"}},
+      {{"scatter.reference", OptionType::String,
+        role_name(TechniqueFamily::Scattering, RowRole::Reference),
+        "What errors.csv measures against (docs/scattering.md §4): " + reference_rows_text() + ".",
+        -std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+        reference_rows()},
        &ScatterRunOptions::reference},
       {{"scatter.beta", OptionType::Number, "0.5",
         "The moment rows' blend G + beta (G+ - G) of the sharp lower and upper bounds on a "

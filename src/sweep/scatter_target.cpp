@@ -13,7 +13,10 @@ namespace mb {
 
 namespace {
 
-constexpr const char* kReference = "pss_exact";
+// The rectified row's own visibility (docs/scattering.md §6): the row of role ExactReference.
+const std::string& reference_name() {
+  return role_name(TechniqueFamily::Scattering, RowRole::ExactReference);
+}
 
 // A pixel's error as ErrorStats counts it (see the header): nothing where the ray could scatter
 // nothing.
@@ -29,7 +32,7 @@ class ScatterTarget : public SweepTarget {
       : frames_(frames), params_(scatter_params(options)), threads_(threads) {
     candidate_params_ = params_;
     candidate_params_.beta = 0;
-    const auto reference = make_scatter_technique(kReference, params_);
+    const auto reference = make_scatter_technique(reference_name(), params_);
     for (const ScatterFrame& f : frames_) {
       reference->prepare(f.setup());
       reference_.push_back(frame_inscatter(*reference, f, threads_));

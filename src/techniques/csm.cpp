@@ -56,18 +56,20 @@ std::vector<std::string> csm_lp_basis(const P& p) {
 }
 
 std::vector<TechniqueRow> rows() {
-  return {
-      {.name = "csm",
-       .rank = 110,
-       .summary = "convolution shadow maps: a damped Fourier series of the test",
-       .storage = "double",
-       .bound = std::string(kNotProven) + ": truncation rings (Gibbs)",
-       .options = {&kCsmTerms, &kCsmDamping},
-       .make = [](const std::string&, const P& p) -> std::unique_ptr<Technique> {
-         return std::make_unique<CsmTechnique>(p.integer(kCsmTerms), p.number(kCsmDamping));
-       },
-       .verify = VerifyRecipe{.judge = VerifyRecipe::Judge::Exceedance, .lp_basis = csm_lp_basis},
-       .verify_place = 12}};
+  return {{.name = "csm",
+           .rank = 110,
+           .summary = "convolution shadow maps: a damped Fourier series of the test",
+           .storage = "double",
+           .bound = std::string(kNotProven) + ": truncation rings (Gibbs)",
+           .options = {&kCsmTerms, &kCsmDamping},
+           .make = [](const std::string&, const P& p) -> std::unique_ptr<Technique> {
+             return std::make_unique<CsmTechnique>(p.integer(kCsmTerms), p.number(kCsmDamping));
+           },
+           .verify = VerifyRecipe{.judge = VerifyRecipe::Judge::Exceedance,
+                                  .lp_basis = csm_lp_basis,
+                                  .replaced = &kCsmTerms,
+                                  .verify_key = "verify.csm_terms"},
+           .verify_place = 12}};
 }
 
 const TechniqueRegistration kRegistered(rows);

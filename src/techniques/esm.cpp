@@ -29,21 +29,24 @@ std::vector<std::string> esm_basis(const TechniqueParams& p) {
 }
 
 std::vector<TechniqueRow> rows() {
-  return {{.name = "esm",
-           .rank = 30,
-           .summary = "exponential shadow maps: Markov on exp(c z)",
-           .storage = "double",
-           .bound = kProvenBound,
-           .options = {&kEsmC},
-           .default_run = true,
-           .make = [](const std::string&, const TechniqueParams& p) -> std::unique_ptr<Technique> {
-             return std::make_unique<EsmTechnique>(p.number(kEsmC));
-           },
-           .verify = VerifyRecipe{.lp_basis = esm_basis, .lo = -4},
-           .verify_place = 5,
-           .sweep_references = {{.expectation = "one exponential moment: far behind (seed 000 "
-                                                "Figure 4)",
-                                 .place = 2}}}};
+  return {
+      {.name = "esm",
+       .rank = 30,
+       .summary = "exponential shadow maps: Markov on exp(c z)",
+       .storage = "double",
+       .bound = kProvenBound,
+       .options = {&kEsmC},
+       .default_run = true,
+       .make = [](const std::string&, const TechniqueParams& p) -> std::unique_ptr<Technique> {
+         return std::make_unique<EsmTechnique>(p.number(kEsmC));
+       },
+       .verify =
+           VerifyRecipe{
+               .lp_basis = esm_basis, .lo = -4, .replaced = &kEsmC, .verify_key = "verify.esm_c"},
+       .verify_place = 5,
+       .sweep_references = {{.expectation = "one exponential moment: far behind (seed 000 "
+                                            "Figure 4)",
+                             .place = 2}}}};
 }
 
 const TechniqueRegistration kRegistered(rows);

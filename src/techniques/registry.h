@@ -60,6 +60,10 @@ struct VerifyRecipe {
   bool on_r = false;              // Problem 1 on all of R (Hamburger, VSM)
   bool cantelli_support = false;  // VSM: Cantelli's two extremal points join the LP's points
   const TechniqueOption* alpha = nullptr;  // storage rows: their moment bias
+  // The row's own option that verify sets to its verify.* value `verify_key` (a scale the LP can
+  // represent; verify refuses a value given for the row's option itself).
+  const TechniqueOption* replaced = nullptr;
+  const char* verify_key = nullptr;
 };
 
 // How `verify` checks a transmittance row against the LP of the same information on seeded random
@@ -77,7 +81,8 @@ enum class RowRole {
   Reference,       // the reference itself (a sanity row: error 0, no image of its error)
   BiasFloor,       // F_Z(z_f - delta_f): added to every table under the receiver-plane reference
   ExactReference,  // soft shadows: the heuristic with nothing sampled, every soft row's second
-                   // reference; transmittance: the sorted composite itself
+                   // reference; transmittance: the sorted composite itself; scattering: the
+                   // rectified row's own visibility, the moment rows' second reference
 };
 
 // What a sweep measures of a row beside its candidates, and what the seeds found of it: the
@@ -111,6 +116,9 @@ struct TechniqueRow {
   std::vector<const TechniqueOption*> options;  // its own options (TechniqueParams)
   std::vector<std::string> family_options;  // keys its family's own records declare (soft.*, oit.*)
   RowRole role = RowRole::Technique;
+  // A row others may be measured against (scatter.reference): what errors against it mean, for
+  // the report's sentence; empty for a row that is no reference.
+  std::string as_reference;
   bool default_run = false;     // in its command's default `techniques`
   std::string example;          // a family row's name in examples and default lists
   bool audits_blocker = false;  // eval audits its blocker search (docs/soft-shadows.md §3)

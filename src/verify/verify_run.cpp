@@ -1,5 +1,11 @@
 #include "verify/verify_run.h"
 
+#include <algorithm>
+#include <stdexcept>
+#include <type_traits>
+#include <variant>
+
+#include "techniques/registry.h"
 #include "util/error.h"
 #include "util/number_text.h"
 #include "util/progress.h"
@@ -20,16 +26,31 @@ std::vector<int> ascending_grids(const std::vector<int64_t>& sizes) {
   return grids;
 }
 
-// A row's option that verify sets to its own value (the row's key, verify's key, verify's value).
-struct ReplacedOption {
-  std::string key, by;
-  double value;
-  bool integer = false;  // the row's option is an integer (TechniqueParams::integer)
-};
-std::vector<ReplacedOption> replaced_options(const VerifySettings& v) {
-  return {{"esm.c", "verify.esm_c", v.esm_c},
-          {"evsm.c_positive", "verify.evsm_c", v.evsm_c},
-          {"csm.terms", "verify.csm_terms", double(v.csm_terms), true}};
+// verify's value of one of its own keys (a number or an integer record of verify_options()).
+double verify_value(const VerifySettings& v, const std::string& key) {
+  for (const auto& r : verify_options())
+    if (r.spec.name == key)
+      return std::visit(
+          [&](auto member) -> double {
+            using T = std::remove_reference_t<decltype(v.*member)>;
+            if constexpr (std::is_arithmetic_v<T>)
+              return double(v.*member);
+            else
+              throw std::logic_error(key + ": not a number of verify");
+          },
+          r.field);
+  throw std::logic_error(key + ": no option of verify");
+}
+
+// The rows' options verify replaces by its own (their recipes' `replaced`), each once.
+std::vector<const VerifyRecipe*> replacing_recipes() {
+  std::vector<const VerifyRecipe*> out;
+  for (const TechniqueRow* row : family_rows(TechniqueFamily::HardShadow))
+    if (row->verify && row->verify->replaced &&
+        std::none_of(out.begin(), out.end(),
+                     [&](const VerifyRecipe* r) { return r->replaced == row->verify->replaced; }))
+      out.push_back(&*row->verify);
+  return out;
 }
 
 }  // namespace
@@ -41,14 +62,18 @@ VerifyPlan make_verify_plan(const VerifySettings& v, const TechniqueParams& tech
   // verify's own values of these rows' options (verify_options.cpp: scales the LP can represent);
   // a value given for the row's option itself would be replaced, so it is refused.
   const TechniqueParams defaults;
-  for (const auto& [key, by, value, integer] : replaced_options(v)) {
-    const double given = integer ? technique.integer(key) : technique.number(key);
-    const double default_value = integer ? defaults.integer(key) : defaults.number(key);
+  for (const VerifyRecipe* recipe : replacing_recipes()) {
+    const TechniqueOption& o = *recipe->replaced;
+    const std::string key = o.spec.name, by = recipe->verify_key;
+    const bool whole = o.spec.type == OptionType::Integer;
+    const double value = verify_value(v, by);
+    const double given = whole ? technique.integer(o) : technique.number(o);
+    const double default_value = whole ? defaults.integer(o) : defaults.number(o);
     if (given != default_value)
       throw InputError(key + ": " + round_trip(given) + "; verify judges this row at " + by + " (" +
                        round_trip(value) + ", a scale the LP represents), expected its " +
                        "default " + round_trip(default_value) + " (set " + by + " instead)");
-    plan.params.set(key, value);
+    plan.params.set(o, value);
   }
   plan.targets = verify_targets(v.techniques, plan.params);
   for (auto& t : plan.targets) {

@@ -99,6 +99,8 @@ std::vector<TechniqueRow> rows() {
            .storage = "shadow map (layer 0)",
            .bound = "0 (the reference itself)",
            .role = RowRole::Reference,
+           .as_reference = "the exact in-scattering I_ref against the light view's hard shadow "
+                           "map (docs/scattering.md §2)",
            .default_run = true,
            .make_scatter = [](const std::string& name,
                               const ScatterParams&) -> std::unique_ptr<ScatterTechnique> {

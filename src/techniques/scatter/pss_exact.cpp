@@ -54,6 +54,10 @@ std::vector<TechniqueRow> rows() {
            .unproven_reason = "the rectified map resamples the light map and takes Delta(v) at "
                               "the row's mean inclination",
            .family_options = {"scatter.light_resolution", "scatter.guard_band", "scatter.resample"},
+           .role = RowRole::ExactReference,
+           .as_reference =
+               "the rectified row's own visibility (docs/scattering.md §3.2), so that a "
+               "moment row's error is its moments' loss alone",
            .default_run = true,
            .make_scatter = [](const std::string& name,
                               const ScatterParams& params) -> std::unique_ptr<ScatterTechnique> {
