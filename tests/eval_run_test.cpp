@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "eval/eval_config.h"
+#include "test_support.h"
 
 namespace mb {
 namespace {
@@ -83,6 +84,69 @@ TEST(EvalRun, DefaultSettingsAreTheRecordsDefaults) {
   Config config(shadow_option_specs());
   config.set("kernel.sigma=1.5");
   EXPECT_EQ(shadow_settings_from(config, 1).kernel.sigma, 1.5);
+}
+
+}  // namespace
+}  // namespace mb
+
+namespace mb {
+namespace {
+
+// What `eval` checks before and after rendering (eval/eval_run.h): the rows it runs, each made
+// before any work; the LP interval where a row solves the LP, and only there; the blocker audit
+// where a row asks for it, and only there; the receivers it reports.
+TEST(EvalRun, TechniqueListIsCheckedAndGainsTheOracleUnderReceiverPlane) {
+  EvalSettings settings;
+  const std::string empty = testing_support::input_error_of([&] { eval_techniques({}, settings); });
+  EXPECT_EQ(empty.rfind("techniques:", 0), 0u) << empty;
+  const std::string unknown = testing_support::input_error_of([&] {
+    eval_techniques({"pcf", "vsm_nope"}, settings);
+  });
+  EXPECT_NE(unknown.find("vsm_nope"), std::string::npos) << unknown;
+  // A name its row parses, with a part the row's own check refuses.
+  EXPECT_NE(testing_support::input_error_of([&] {
+              eval_techniques({"pcf", "msm_soft:lp:nobasis"}, settings);
+            }),
+            "");
+  settings.bias.reference = Reference::Biased;
+  EXPECT_EQ(eval_techniques({"pcf", "vsm"}, settings), (std::vector<std::string>{"pcf", "vsm"}));
+  settings.bias.reference = Reference::ReceiverPlane;
+  EXPECT_EQ(eval_techniques({"pcf", "vsm"}, settings),
+            (std::vector<std::string>{"pcf", "vsm", "oracle"}));
+}
+
+TEST(EvalRun, LpIntervalAndBlockerAuditOnlyWhereARowNeedsThem) {
+  EvalSettings settings;
+  settings.threads = 2;
+  settings.light.angle_deg = 2;
+  settings.light.directions = 4;
+  const auto views = prepare_views(load_dataset("tiny"), 24, settings, true);
+  ASSERT_FALSE(views.empty());
+  size_t receivers = 0;
+  for (const auto& v : views) receivers += v.fragments.size();
+  EXPECT_GT(receivers, 0u);
+  EXPECT_EQ(receiver_count(views), receivers);
+
+  settings.technique.lp.lo = 0.999;  // excludes the tiny views' depths
+  EXPECT_EQ(testing_support::input_error_of([&] {
+              check_eval_views(views, {"pcf", "vsm"}, settings);
+            }),
+            "");
+  const std::string lp = testing_support::input_error_of([&] {
+    check_eval_views(views, {"pcf", "lp:power4"}, settings);
+  });
+  EXPECT_EQ(lp.rfind("lp.lo, lp.hi:", 0), 0u) << lp;
+  settings.technique.lp.lo = EvalSettings().technique.lp.lo;
+  EXPECT_EQ(testing_support::input_error_of([&] {
+              check_eval_views(views, {"pcf", "lp:power4"}, settings);
+            }),
+            "");
+
+  EXPECT_TRUE(eval_blocker_audits(views, {"pcf", "pcss"}, settings).empty());
+  const auto audits = eval_blocker_audits(views, {"pcf", "msm_soft"}, settings);
+  ASSERT_EQ(audits.size(), views.size());  // every view is lit by the area light
+  EXPECT_EQ(audits[0].scene + "/" + audits[0].view, views[0].scene + "/" + views[0].view);
+  EXPECT_FALSE(audits[0].rows.empty());
 }
 
 }  // namespace

@@ -291,3 +291,57 @@ TEST(OitRun, OitParamsAreTheRecordsValues) {
 }
 
 }  // namespace mb
+
+namespace mb {
+namespace {
+
+// `oit`'s run as a library unit (run_oit): on the oit tiny dataset its rows are each frame's
+// evaluate_oit_frame in frame order, the sink sees every frame once, in order, with that frame's
+// result, and bad technique lists are refused before any work, naming the key or the name.
+TEST(OitRun, RunOitRowsAreEachFramesResultInOrder) {
+  const std::vector<SceneFrame> frames =
+      render_dataset_frames(load_dataset(MOMENTBENCH_TEST_DATA "/oit_tiny.yaml"), 2);
+  ASSERT_GE(frames.size(), 2u);
+  const std::vector<std::string> techniques = {"exact", "wboit", "mboit_power4"};
+  std::vector<std::string> seen;
+  const OitRows rows = run_oit(frames, techniques, {}, 2, true,
+                               [&](const SceneFrame& frame, const OitFrameResult& result) {
+                                 EXPECT_EQ(result.scene, frame.scene);
+                                 EXPECT_EQ(result.camera, frame.frame.camera);
+                                 EXPECT_EQ(result.composites.size(), techniques.size());
+                                 seen.push_back(frame.scene + "/" + frame.frame.camera);
+                               });
+  ASSERT_EQ(seen.size(), frames.size());
+  const std::vector<OitRow> cameras = rows.per_camera();
+  ASSERT_EQ(cameras.size(), techniques.size() * frames.size());
+  const LabConverter lab;
+  OitRows direct(techniques);
+  for (size_t f = 0; f < frames.size(); ++f) {
+    EXPECT_EQ(seen[f], frames[f].scene + "/" + frames[f].frame.camera);
+    const OitFrameResult r =
+        evaluate_oit_frame(frames[f].frame, frames[f].scene, techniques, {}, 1, lab, true);
+    direct.add(r);
+    for (size_t k = 0; k < techniques.size(); ++k) {
+      const OitRow& row = cameras[k * frames.size() + f];
+      EXPECT_EQ(row.technique + " " + row.camera, techniques[k] + " " + seen[f]);
+      EXPECT_EQ(row.stats.transmittance_error(), r.stats[k].transmittance_error()) << row.camera;
+      EXPECT_EQ(row.stats.delta_e, r.stats[k].delta_e) << row.technique << " " << row.camera;
+    }
+  }
+  for (size_t k = 0; k < techniques.size(); ++k) {
+    EXPECT_EQ(rows.overall()[k].stats.fragments, direct.overall()[k].stats.fragments);
+    EXPECT_EQ(rows.overall()[k].stats.delta_e_sum, direct.overall()[k].stats.delta_e_sum);
+  }
+  EXPECT_GT(rows.overall()[1].stats.transmittance_error(), 0);  // wboit is no exact composite
+
+  const std::string empty = testing_support::input_error_of([] { check_oit_techniques({}, {}); });
+  EXPECT_EQ(empty.rfind("techniques:", 0), 0u) << empty;
+  const std::string unknown = testing_support::input_error_of([] {
+    check_oit_techniques({"exact", "mboit_nope"}, {});
+  });
+  EXPECT_NE(unknown.find("mboit_nope"), std::string::npos) << unknown;
+  EXPECT_EQ(testing_support::input_error_of([&] { check_oit_techniques(techniques, {}); }), "");
+}
+
+}  // namespace
+}  // namespace mb

@@ -1,7 +1,6 @@
 // `momentbench eval`: techniques x dataset -> error table (stdout, report.md), errors.csv, one
 // error histogram CSV per technique, shadow and error images per view, and under area lights with
 // msm_soft, blocker_audit.csv (docs/soft-shadows.md §3).
-#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -21,7 +20,6 @@
 #include "report/eval_report.h"
 #include "report/shadow_images.h"
 #include "techniques/technique.h"
-#include "util/error.h"
 #include "util/number_text.h"
 #include "util/output_dir.h"
 #include "util/run_metadata.h"
@@ -50,13 +48,8 @@ int run_eval(const EvalOptions& options) {
   read_options(config, eval_run_options(), run);
   const int threads = cmd->threads();
   EvalSettings settings = shadow_settings_from(config, threads);
-  if (run.techniques.empty()) throw InputError("techniques: expected at least one technique");
-  const auto techniques = with_oracle_row(run.techniques, settings.bias);
-  // Construct every technique once before any work: unknown names fail here, with no output.
-  for (const auto& name : techniques) {
-    if (const TechniqueRow& row = shadow_row(name); row.check) row.check(name, settings.technique);
-    technique_darkening_reason(name, settings);
-  }
+  // Every technique made once before any work: unknown names fail here, with no output.
+  const auto techniques = eval_techniques(run.techniques, settings);
   DatasetDesc dataset = load_dataset(data.dataset);
   const std::vector<Scene> scenes = build_dataset_scenes(dataset);
   if (run.camera_images) check_dataset_cameras(scenes, dataset);
@@ -66,9 +59,7 @@ int run_eval(const EvalOptions& options) {
   auto views = prepare_views(scenes, dataset, data.resolution, settings, quiet);
   const std::string soft_text = describe_area_lights(views, settings.light);
   const auto darkening_reason = darkening_reasons(techniques, settings, views);
-  for (const auto& name : techniques)
-    if (shadow_row(name).solves_lp)
-      check_lp_interval(views, settings.technique.lp.lo, settings.technique.lp.hi);
+  check_eval_views(views, techniques, settings);
   std::filesystem::create_directories(out.staging() / "histograms");
   if (run.images) std::filesystem::create_directories(out.staging() / "images");
   const auto write = [&](const std::string& name, const ViewData& view,
@@ -95,10 +86,7 @@ int run_eval(const EvalOptions& options) {
                           });
 
   // A blocker search against its sharp bounds (docs/soft-shadows.md §3).
-  std::vector<ViewBlockerAudit> audits;
-  if (std::any_of(techniques.begin(), techniques.end(),
-                  [](const std::string& name) { return shadow_row(name).audits_blocker; }))
-    audits = audit_blocker_searches(views, settings);
+  const auto audits = eval_blocker_audits(views, techniques, settings);
   if (!audits.empty()) write_file_atomically(out / "blocker_audit.csv", blocker_audit_csv(audits));
 
   const RunMetadata& meta = cmd->metadata();
@@ -109,7 +97,7 @@ int run_eval(const EvalOptions& options) {
   context.reference = settings.bias.reference;
   context.area_light = !soft_text.empty();
   context.views = views.size();
-  for (const auto& v : views) context.receivers += v.fragments.size();
+  context.receivers = receiver_count(views);
   context.non_default = config.non_default();
   context.images = run.images, context.error_scale = run.error_scale;
   context.sections = blocker_audit_section(audits);

@@ -14,7 +14,6 @@
 #include "report/oit_report.h"
 #include "techniques/lp_options.h"
 #include "techniques/oit/oit_options.h"
-#include "util/error.h"
 #include "util/number_text.h"
 #include "util/output_dir.h"
 #include "util/run_metadata.h"
@@ -45,7 +44,7 @@ struct OitOptions {
   CommonOptions common;
 };
 
-int run_oit(const OitOptions& options) {
+int run_oit_command(const OitOptions& options) {
   auto cmd = CommandRun::begin(oit_specs(), options.common);
   if (!cmd) return 0;
   const Config& config = cmd->config();
@@ -53,28 +52,25 @@ int run_oit(const OitOptions& options) {
   read_options(config, oit_run_options(), run);
   const int threads = cmd->threads();
   const OitParams params = oit_params_from(config);
-  if (run.techniques.empty()) throw InputError("techniques: expected at least one technique");
-  for (const auto& name : run.techniques) make_oit_technique(name, params);  // names fail here
+  check_oit_techniques(run.techniques, params);
   const DatasetDesc dataset = load_dataset(config.string("dataset"));
   const std::vector<SceneFrame> frames = render_dataset_frames(dataset, threads);
 
   StagedOutputDir& out = cmd->out();
   if (run.images) std::filesystem::create_directories(out.staging() / "images");
   if (run.deep_frames) std::filesystem::create_directories(out.staging() / "frames");
-  const LabConverter lab;
-  OitRows rows(run.techniques);
   OitReportContext context;
-  for (const auto& [scene, frame] : frames) {
-    const std::string stem = scene + "_" + frame.camera;
+  const auto write = [&](const SceneFrame& frame, const OitFrameResult& result) {
+    const std::string stem = frame.scene + "_" + frame.frame.camera;
     if (run.deep_frames)
-      write_deep_frame_exr(frame, scene, (out.staging() / "frames" / (stem + ".exr")).string());
-    const OitFrameResult result = evaluate_oit_frame(frame, scene, run.techniques, params, threads,
-                                                     lab, options.common.quiet);
-    rows.add(result);
+      write_deep_frame_exr(frame.frame, frame.scene,
+                           (out.staging() / "frames" / (stem + ".exr")).string());
     if (run.images)
       context.sheets.push_back(write_oit_images(
           result, run.techniques, (out.staging() / "images" / stem).string(), run.delta_e_scale));
-  }
+  };
+  const OitRows rows =
+      run_oit(frames, run.techniques, params, threads, options.common.quiet, write);
   const RunMetadata& meta = cmd->metadata();
   context.dataset = dataset.name, context.version = meta.version, context.git_sha = meta.git_sha;
   context.compiler = meta.compiler, context.started = meta.started_utc, context.threads = threads;
@@ -101,7 +97,8 @@ void register_oit_command(CLI::App& app, std::function<int()>& action) {
       "Evaluate order-independent transparency techniques against exact compositing on a "
       "dataset's cameras");
   add_common_options(*command, options->common);
-  command->callback([options, &action] { action = [options] { return run_oit(*options); }; });
+  command->callback(
+      [options, &action] { action = [options] { return run_oit_command(*options); }; });
 }
 
 }  // namespace mb

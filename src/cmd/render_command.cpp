@@ -1,5 +1,4 @@
 // `momentbench render`: dataset -> one deep EXR LayerStack per view, previews and statistics.
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 
@@ -7,10 +6,9 @@
 #include "cmd/commands.h"
 #include "raster/deep_exr.h"
 #include "raster/previews.h"
-#include "raster/render_view.h"
+#include "raster/render_dataset.h"
 #include "report/render_stats.h"
 #include "scene/dataset.h"
-#include "util/error.h"
 #include "util/option_record.h"
 #include "util/output_dir.h"
 #include "util/run_metadata.h"
@@ -54,45 +52,23 @@ int run_render(const RenderOptions& options) {
   RenderSettings render;
   read_options(config, render_options(), render);
   const int threads = cmd->threads();
-  DatasetDesc dataset = load_dataset(data.dataset);
-  int resolution = data.resolution;
-  if (resolution == 0) resolution = dataset.resolution;
-
+  const DatasetDesc dataset = load_dataset(data.dataset);
   // Parse and build every scene before writing anything: bad input leaves no output behind.
-  std::vector<Scene> scenes;
-  for (const auto& file : dataset.scene_files) {
-    scenes.push_back(build_scene(parse_scene(file)));
-    if (resolution > 0)
-      for (auto& view : scenes.back().views) view.resolution = resolution;
-  }
+  const std::vector<Scene> scenes = build_render_scenes(dataset, data.resolution);
   StagedOutputDir& out = cmd->out();
+  for (const auto& scene : scenes) std::filesystem::create_directories(out.staging() / scene.name);
 
   std::vector<RenderStatsRow> rows;
-  size_t fragments = 0;
-  for (const auto& scene : scenes) {
-    std::filesystem::create_directories(out.staging() / scene.name);
-    for (const auto& view : scene.views) {
-      auto start = std::chrono::steady_clock::now();
-      LayerStack stack = render_view(scene, view, threads);
-      const double seconds =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      std::string base = (out.staging() / scene.name / view.name).string();
-      write_deep_exr(stack, base + ".exr");
-      if (render.previews) {
-        write_depth_preview(stack, base + "_depth.png");
-        write_layer_count_preview(stack, base + "_layers.png");
-      }
-      rows.push_back({scene.name, view.name, view.resolution,
-                      compute_stats(stack, scene.mesh.triangles.size()), seconds});
-      fragments += rows.back().stats.fragments;
-      if (!options.common.quiet) std::fputs(render_stats_line(rows.back()).c_str(), stderr);
+  render_views(scenes, dataset, threads, [&](const RenderedView& r) {
+    const std::string base = (out.staging() / r.scene.name / r.view.name).string();
+    write_deep_exr(r.stack, base + ".exr");
+    if (render.previews) {
+      write_depth_preview(r.stack, base + "_depth.png");
+      write_layer_count_preview(r.stack, base + "_layers.png");
     }
-  }
-  // As eval and verify say of a dataset without receivers: nothing rendered is an error.
-  if (fragments == 0)
-    throw InputError(dataset.file + ": dataset " + dataset.name +
-                     " has nothing to render: no view of any scene rasterizes a fragment (every "
-                     "triangle degenerate, or no geometry inside the views)");
+    rows.push_back({r.scene.name, r.view.name, r.view.resolution, r.stats, r.seconds});
+    if (!options.common.quiet) std::fputs(render_stats_line(rows.back()).c_str(), stderr);
+  });
   const std::string table = render_stats_table(rows);
   write_file_atomically(out / "stats.csv", render_stats_csv(rows));
   write_file_atomically(out / "stats.md",

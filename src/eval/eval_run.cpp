@@ -5,8 +5,10 @@
 #include <limits>
 #include <stdexcept>
 
+#include "eval/eval_config.h"
 #include "techniques/registry.h"
 #include "techniques/soft/soft_technique.h"
+#include "util/error.h"
 
 namespace mb {
 
@@ -38,12 +40,6 @@ const std::vector<OptionRecord<EvalRunOptions>>& eval_run_options() {
 }
 
 namespace {
-
-size_t receiver_count(const std::vector<ViewData>& views) {
-  size_t receivers = 0;
-  for (const auto& v : views) receivers += v.fragments.size();
-  return receivers;
-}
 
 // The row's error split by where the receivers lie (ShadowRegion), in fragment order.
 void add_regions(const Fragments& f, const std::vector<double>& shadow, EvalRow& row) {
@@ -88,6 +84,39 @@ std::vector<ExactPcss> exact_pcss(const std::vector<ViewData>& views,
 }
 
 }  // namespace
+
+std::vector<std::string> eval_techniques(const std::vector<std::string>& techniques,
+                                         const EvalSettings& settings) {
+  if (techniques.empty()) throw InputError("techniques: expected at least one technique");
+  std::vector<std::string> rows = with_oracle_row(techniques, settings.bias);
+  for (const auto& name : rows) {
+    if (const TechniqueRow& row = shadow_row(name); row.check) row.check(name, settings.technique);
+    technique_darkening_reason(name, settings);
+  }
+  return rows;
+}
+
+void check_eval_views(const std::vector<ViewData>& views,
+                      const std::vector<std::string>& techniques, const EvalSettings& settings) {
+  if (std::any_of(techniques.begin(), techniques.end(),
+                  [](const std::string& name) { return shadow_row(name).solves_lp; }))
+    check_lp_interval(views, settings.technique.lp.lo, settings.technique.lp.hi);
+}
+
+std::vector<ViewBlockerAudit> eval_blocker_audits(const std::vector<ViewData>& views,
+                                                  const std::vector<std::string>& techniques,
+                                                  const EvalSettings& settings) {
+  if (std::none_of(techniques.begin(), techniques.end(),
+                   [](const std::string& name) { return shadow_row(name).audits_blocker; }))
+    return {};
+  return audit_blocker_searches(views, settings);
+}
+
+size_t receiver_count(const std::vector<ViewData>& views) {
+  size_t receivers = 0;
+  for (const auto& v : views) receivers += v.fragments.size();
+  return receivers;
+}
 
 void merge_row(EvalRow& total, const EvalRow& row) {
   total.stats.merge(row.stats);

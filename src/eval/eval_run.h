@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "eval/blocker_audit_run.h"
 #include "eval/error_stats.h"
 #include "eval/evaluation.h"
 #include "util/option_record.h"
@@ -21,6 +22,27 @@ struct EvalRunOptions {
 };
 
 const std::vector<OptionRecord<EvalRunOptions>>& eval_run_options();
+
+// The rows `eval` runs: `techniques` with the oracle row where the reference needs it
+// (with_oracle_row), each made once before any work so that bad input leaves no output:
+// InputError for an empty list ("techniques"), a name no shadow row has, or parameters its row
+// refuses.
+std::vector<std::string> eval_techniques(const std::vector<std::string>& techniques,
+                                         const EvalSettings& settings);
+
+// What the rendered views must hold for the rows to measure what they claim: where a row solves
+// the LP, lp.lo and lp.hi enclose every depth a kernel sees (check_lp_interval's InputError).
+void check_eval_views(const std::vector<ViewData>& views,
+                      const std::vector<std::string>& techniques, const EvalSettings& settings);
+
+// The blocker search audited against its sharp bounds (docs/soft-shadows.md §3) when a row asks
+// for it (TechniqueRow::audits_blocker): audit_blocker_searches; none otherwise.
+std::vector<ViewBlockerAudit> eval_blocker_audits(const std::vector<ViewData>& views,
+                                                  const std::vector<std::string>& techniques,
+                                                  const EvalSettings& settings);
+
+// Every view's receivers, summed (what the report counts and the progress bars run over).
+size_t receiver_count(const std::vector<ViewData>& views);
 
 // One technique on one view ("all" rows sum its views).
 struct EvalRow {

@@ -184,6 +184,24 @@ OitFrameResult evaluate_oit_frame(const DeepFrame& frame, const std::string& sce
   return result;
 }
 
+void check_oit_techniques(const std::vector<std::string>& techniques, const OitParams& params) {
+  if (techniques.empty()) throw InputError("techniques: expected at least one technique");
+  for (const auto& name : techniques) make_oit_technique(name, params);  // names fail here
+}
+
+OitRows run_oit(const std::vector<SceneFrame>& frames, const std::vector<std::string>& techniques,
+                const OitParams& params, int threads, bool quiet, const OitFrameSink& each) {
+  const LabConverter lab;
+  OitRows rows(techniques);
+  for (const auto& frame : frames) {
+    const OitFrameResult result =
+        evaluate_oit_frame(frame.frame, frame.scene, techniques, params, threads, lab, quiet);
+    rows.add(result);
+    if (each) each(frame, result);
+  }
+  return rows;
+}
+
 std::string describe_oit_warp(const OitParams& p) {
   return std::string(p.warp == WarpKind::Linear ? "linear" : "logarithmic") +
          (p.depth_range == DepthRangeKind::Fragments

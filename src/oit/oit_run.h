@@ -2,6 +2,7 @@
 // What `oit` runs (docs/transparency.md §4): its options declared once as records, and every
 // technique on one camera's deep frame against the exact composite. The command adds the outputs;
 // this is reachable from tests.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -79,6 +80,19 @@ OitFrameResult evaluate_oit_frame(const DeepFrame& frame, const std::string& sce
                                   const std::vector<std::string>& techniques,
                                   const OitParams& params, int threads, const LabConverter& lab,
                                   bool quiet);
+
+// The rows `oit` runs, each made once before any work: InputError for an empty list ("techniques"),
+// a name no transmittance row has or parameters its row refuses, so bad input leaves no output.
+void check_oit_techniques(const std::vector<std::string>& techniques, const OitParams& params);
+
+// Called with each frame and its result, in frame order, before the next frame is evaluated (where
+// the command writes its images and deep frames: a frame's composites are held one at a time).
+using OitFrameSink = std::function<void(const SceneFrame& frame, const OitFrameResult& result)>;
+
+// Every technique on every frame against the exact composite (evaluate_oit_frame), with a
+// progress bar per frame unless `quiet`: the rows of `oit`'s tables.
+OitRows run_oit(const std::vector<SceneFrame>& frames, const std::vector<std::string>& techniques,
+                const OitParams& params, int threads, bool quiet, const OitFrameSink& each = {});
 
 // The sentence a report states the run's settings in: the warp and its range, MBOIT's beta and
 // bias, and the lp: rows' grid, interval, backend and lp.beta.
