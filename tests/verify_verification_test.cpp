@@ -326,3 +326,58 @@ TEST(VerifyCsm, ExceedingTheSharpBoundIsCountedNotJudged) {
 
 }  // namespace
 }  // namespace mb
+
+#include "moments/hamburger.h"
+#include "moments/storage.h"
+
+namespace mb {
+namespace {
+
+// Six moments in double, alpha = 0, with one sign of the forward substitution flipped
+// (moments/hamburger.h): a broken closed form that verify must fail.
+class FlippedSixMoments : public Technique {
+ public:
+  FlippedSixMoments() : Technique("hamburger6", Basis::parse({"power6"}), double_storage()) {}
+  double shadow(const FragmentInput& in) override {
+    return hamburger6_sign_flipped(in.moments.data(), in.zf).lower;
+  }
+};
+
+// Six moments are judged over their double rounding box (verify/rounding_box.h): Problem 1 at the
+// moments the closed form read, bracketed by the exact moments' certificate and a 50-digit witness,
+// and its upper bound G + w_1 through the mirrored problem. The closed form (seed 004 §2.5's
+// stable steps) passes both, with every upper bound inside its bracket to 1e-9 on these instances;
+// the same steps with one sign flipped fail, and the report's all_passed (verify's exit status 5)
+// says so.
+TEST(VerifyRoundingBox, SixMomentsPassAndAFlippedSignFails) {
+  const TechniqueParams params = verify_params(TechniqueParams{});
+  const auto instances = random_verify_instances(60, 59);
+  const VerifyTarget target = verify_targets({"hamburger6"}, params).front();
+  ASSERT_TRUE(target.rounding_box);
+  ASSERT_TRUE(target.upper_judged);
+  const VerifySolverResult good = verify_solver(
+      target, [&] { return make_technique("hamburger6", params); }, instances, {64}, true, 1e-6, 3,
+      2);
+  EXPECT_TRUE(good.passed()) << good.beyond_tolerance << " beyond, " << good.above_lp << " above, "
+                             << good.upper_beyond << " upper beyond";
+  EXPECT_EQ(good.undefined, 0u);
+  // 1-3 atoms (18 of the 60) make the read moments singular: no witness; judged against the LP.
+  EXPECT_LE(good.unwitnessed, 20u);
+  EXPECT_GE(good.upper_compared, 36u);
+  EXPECT_LT(good.upper_max_difference, 1e-9);
+  EXPECT_LT(good.box_max_outside, 1e-9);
+  const VerifySolverResult flipped = verify_solver(
+      target, [] { return std::make_unique<FlippedSixMoments>(); }, instances, {64}, true, 1e-6, 3,
+      2);
+  EXPECT_FALSE(flipped.passed());
+  EXPECT_GT(flipped.beyond_tolerance, 10u);
+  EXPECT_GT(flipped.box_max_outside, 1e-2);
+  VerifyReportContext context;
+  context.grids = {64, 0};
+  const std::vector<VerifySolverResult> alone{good}, both{good, flipped};
+  EXPECT_TRUE(render_verify_report(context, alone, instances).all_passed);
+  EXPECT_FALSE(render_verify_report(context, both, instances).all_passed);
+}
+
+}  // namespace
+}  // namespace mb

@@ -20,6 +20,7 @@
 #include "util/error.h"
 #include "util/number_text.h"
 #include "util/parallel_errors.h"
+#include "verify/rounding_box.h"
 
 namespace mb {
 
@@ -43,6 +44,12 @@ void solve_continuous(const VerifyTarget& target, const Basis& basis, int degree
                                         target.on_r ? kInf : target.hi, lp::kContinuousSeedGrid};
     lp::LocalPowerSolution local =
         lp::solve_power_locally(problem, inst.depths, inst.weights, inst.zf, backend);
+    if (target.rounding_box && local.solution.ok() && local.solution.proven) {
+      const RoundedMomentBracket b =
+          six_moment_bracket(c.moments, inst.zf, local.solution.coefficients,
+                             local.solution.violation, local.mean, local.scale);
+      if (b.inside) c.box_lower = b.lower, c.box_upper = b.upper, c.upper_floor = b.upper_at;
+    }
     s = std::move(local.solution);
     witness.points = std::move(local.support);
     witness.weights = std::move(local.weights);
@@ -143,7 +150,8 @@ std::vector<VerifyTarget> verify_targets(const std::vector<std::string>& techniq
     t.upper = t.exact && t.on_r &&
               (t.lp_basis == std::vector<std::string>{"power4"} ||
                t.lp_basis == std::vector<std::string>{"power6"});
-    t.upper_judged = t.upper && t.lp_basis == std::vector<std::string>{"power4"};
+    t.rounding_box = t.upper && t.lp_basis == std::vector<std::string>{"power6"};
+    t.upper_judged = t.upper;
     out.push_back(std::move(t));
   }
   return out;
@@ -282,6 +290,33 @@ void solve_upper(const VerifyTarget& target, const VerifyInstance& inst, VerifyC
   if (s.call == lp::CallStatus::Ok && s.status == lp::ProblemStatus::Optimal) c.lp_upper = 1 - s.G;
 }
 
+// The upper bound of six moments over their rounding box: G+ at the moments the closed form read,
+// b~, is 1 - G of the mirrored problem (z -> -z: the mass behind z_f is the mass in front of -z_f,
+// docs/reference.md §7), so the mirrored instance's continuous LP and witness bracket it as
+// six_moment_bracket brackets G; the non-mirrored witness's mass at or below z_f bounds it from
+// below as well. Compared is the closed form's G + w_1 on b~ itself.
+void solve_upper_box(const VerifyInstance& inst, VerifyCase& c, lp::Backend& backend) {
+  if (!std::isfinite(c.upper_floor)) return;  // the read moments have no witness
+  const double* read = c.moments.data();
+  const MsmBound<double> r = hamburger6(read, inst.zf);
+  if (!std::isfinite(r.lower + r.at_zf)) return;
+  std::vector<double> mirrored(inst.depths.size()), mirrored_read(6);
+  for (size_t a = 0; a < mirrored.size(); ++a) mirrored[a] = -inst.depths[a];
+  for (int k = 0; k < 6; ++k) mirrored_read[k] = k % 2 == 0 ? -read[k] : read[k];
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const lp::LocalPowerProblem problem{6, -kInf, kInf, lp::kContinuousSeedGrid};
+  const lp::LocalPowerSolution local =
+      lp::solve_power_locally(problem, mirrored, inst.weights, -inst.zf, backend);
+  if (!local.solution.ok() || !local.solution.proven) return;
+  const RoundedMomentBracket m =
+      six_moment_bracket(mirrored_read, -inst.zf, local.solution.coefficients,
+                         local.solution.violation, local.mean, local.scale);
+  if (!m.inside) return;
+  c.closed_upper = r.lower + r.at_zf;
+  c.lp_upper = 1 - m.lower;
+  c.upper_floor = std::max(c.upper_floor, 1 - m.upper);
+}
+
 // The upper-bound comparison of solve_upper, reduced: within the tolerance and the instance's
 // rounding allowance, or (a node beyond reach) at least not below the LP's maximum.
 void reduce_upper(const std::vector<VerifyCase>& cases, double tolerance,
@@ -289,7 +324,15 @@ void reduce_upper(const std::vector<VerifyCase>& cases, double tolerance,
   for (const auto& c : cases) {
     if (!std::isfinite(c.closed_upper) || !std::isfinite(c.lp_upper)) continue;
     ++result.upper_compared;
-    const double d = c.closed_upper - c.lp_upper, allowed = tolerance + c.rounding;
+    const double allowed = tolerance + c.rounding;
+    if (std::isfinite(c.upper_floor)) {  // rounding-box rows: outside [upper_floor, lp_upper]
+      const double outside =
+          std::max({0.0, c.closed_upper - c.lp_upper, c.upper_floor - c.closed_upper});
+      result.upper_max_difference = std::max(result.upper_max_difference, outside);
+      result.upper_beyond += outside > allowed;
+      continue;
+    }
+    const double d = c.closed_upper - c.lp_upper;
     if (c.upper_limited) {
       ++result.upper_limited;
       result.upper_beyond += d < -allowed;
@@ -383,10 +426,20 @@ void reduce_cases(const VerifyTarget& target, const std::vector<VerifyCase>& cas
     const double d = std::abs(c.closed_form - c.lp.back());
     // The continuous LP's G lies in [upper - bracket, upper]: judged is the distance from there.
     const double off = c.closed_form > c.lp.back() ? d : std::max(0.0, d - c.bracket);
-    if (box_rows)  // a lower bound of the box problem: judged from above only
+    if (box_rows) {  // a lower bound of the box problem: judged from above only
       result.beyond_tolerance += c.closed_form - c.lp.back() > kAboveLpSlack + target.alpha;
-    else
+    } else if (target.rounding_box && continuous && std::isfinite(c.box_lower)) {
+      // Problem 1 at the read moments (verify/rounding_box.h), to the closed form's own rounding.
+      const double outside =
+          std::max({0.0, c.box_lower - c.closed_form, c.closed_form - c.box_upper});
+      result.box_max_outside = std::max(result.box_max_outside, outside);
+      result.beyond_tolerance += outside > tolerance + c.rounding;
+    } else {
+      // Read moments without a witness (singular: 1-3 atoms; or outside the moment cone) are
+      // judged against the exact moments' LP, as the other rows.
+      result.unwitnessed += target.rounding_box && continuous;
       result.beyond_tolerance += off > tolerance + c.rounding;
+    }
     finest.push_back({box_rows ? c.closed_form - c.lp.back() : d, c.instance});
     if (box_rows) result.largest_excess = std::max(result.largest_excess, finest.back().first);
   }
@@ -493,7 +546,12 @@ VerifySolverResult verify_solver(const VerifyTarget& target, const TechniqueMake
         else if (continuous)
           solve_continuous(target, lp_basis, degree, seed_factory, instances[i], *fast, cases[i],
                            witnesses[i].back());
-        if (target.upper) solve_upper(target, instances[i], cases[i], *fast, *glpk);
+        // Six moments' upper bound needs the continuous LP's certificates (solve_upper_box).
+        if (target.rounding_box) {
+          if (continuous) solve_upper_box(instances[i], cases[i], *fast);
+        } else if (target.upper) {
+          solve_upper(target, instances[i], cases[i], *fast, *glpk);
+        }
       });
   }
   errors.rethrow();

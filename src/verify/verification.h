@@ -48,10 +48,12 @@ struct VerifyTarget {
   // Hamburger's rows (power4, power6 on R): also the upper bound G + w_1 of the canonical
   // distribution through z_f (seed 004's beta = 1) against the LP's maximum (docs/reference.md §2).
   bool upper = false;
-  // Whether the upper comparison decides the verdict: four moments (agreement to ~1e-10 on real
-  // kernels); six moments' closed form loses digits on near-singular Hankel matrices even in local
-  // coordinates (up to ~1e-5 on the default dataset's kernels, FINDINGS §7b), so it is reported.
+  // Whether the upper comparison decides the verdict (both rows).
   bool upper_judged = false;
+  // Six power moments on R: judged over their double rounding box (verify/rounding_box.h), i.e.
+  // against Problem 1 at the moments the closed form read, bracketed by the exact moments'
+  // certificate and a 50-digit witness; the upper bound likewise, through the mirrored problem.
+  bool rounding_box = false;
 };
 
 // The §6 table for the given technique names (InputError for names without an LP counterpart).
@@ -102,6 +104,13 @@ struct VerifyCase {
   double closed_upper = std::numeric_limits<double>::quiet_NaN();
   double lp_upper = std::numeric_limits<double>::quiet_NaN();
   bool upper_limited = false;
+  // target.rounding_box: Problem 1 at the read moments lies in [box_lower, box_upper]; NaN where
+  // the read moments have no witness (outside the moment cone: nothing to judge). The upper bound
+  // G+ at the read moments lies in [upper_floor, lp_upper] (lp_upper then is the mirrored
+  // certificate's bound, not a grid LP's maximum).
+  double box_lower = std::numeric_limits<double>::quiet_NaN();
+  double box_upper = std::numeric_limits<double>::quiet_NaN();
+  double upper_floor = std::numeric_limits<double>::quiet_NaN();
   // The worst cases only: the finest grid's LP solved by the exact arbiter (lp/exact_backend.h)
   // with the distribution's exact image as right-hand side; NaN elsewhere, or where it failed.
   double lp_exact = std::numeric_limits<double>::quiet_NaN();
@@ -126,6 +135,10 @@ struct VerifySolverResult {
   // Instances whose bracket is wider than 1e-6 (the exchange stalled on an LP it could not
   // certify): judged only from above there, against the bracket's lower end from below.
   size_t unresolved = 0;
+  // target.rounding_box: instances whose read moments have no witness (judged against the exact
+  // moments' LP instead) and the largest distance of a closed form outside its bracket.
+  size_t unwitnessed = 0;
+  double box_max_outside = 0;
   std::vector<VerifyCase> worst;        // by |dG| on the finest grid, largest first
   std::vector<VerifyCase> worst_above;  // above an LP witness, by how far (largest first)
   // Storage rows judged against their box (target.storage_box with the continuous ground
