@@ -185,7 +185,11 @@ void cubic_roots_once_polished(double c3, double c2, double c1, double c0, doubl
 double newton_weight_sum(const double* m, const double* x, const double* values) {
   double d[4] = {values[0], values[1], values[2], values[3]};
   for (int order = 1; order < 4; ++order)
-    for (int i = 3; i >= order; --i) d[i] = (d[i] - d[i - 1]) / (x[i] - x[i - order]);
+    for (int i = 3; i >= order; --i) {
+      // A double root (clamped discriminant) carries equal values: the flat interpolant there.
+      const double dx = x[i] - x[i - order];
+      d[i] = dx != 0 ? (d[i] - d[i - 1]) / dx : 0;
+    }
   // p = d0 + (z - x0)(d1 + (z - x1)(d2 + (z - x2) d3)), expanded from the inside out.
   double poly[4] = {d[3], 0, 0, 0};
   for (int i = 2, degree = 0; i >= 0; --i, ++degree) {

@@ -314,6 +314,16 @@ void solve_upper_box(const VerifyInstance& inst, VerifyCase& c, lp::Backend& bac
   if (!m.inside) return;
   c.closed_upper = r.lower + r.at_zf;
   c.lp_upper = 1 - m.lower;
+  // The closed form's own rounding moves G+ as the mirrored problem's certificate says (as
+  // solve_continuous's allowance for G).
+  long double rounding = 0;
+  for (size_t j = 1; j < local.coefficients.size(); ++j) {
+    long double scale = 0;
+    for (size_t a = 0; a < mirrored.size(); ++a)
+      scale += inst.weights[a] * std::pow(std::abs((long double)mirrored[a]), (long double)j);
+    rounding += std::abs(local.coefficients[j]) * scale;
+  }
+  c.upper_rounding = std::min(kMaxRoundingAllowance, double(rounding * std::ldexp(1.0L, -49)));
   c.upper_floor = std::max(c.upper_floor, 1 - m.upper);
 }
 
@@ -324,7 +334,7 @@ void reduce_upper(const std::vector<VerifyCase>& cases, double tolerance,
   for (const auto& c : cases) {
     if (!std::isfinite(c.closed_upper) || !std::isfinite(c.lp_upper)) continue;
     ++result.upper_compared;
-    const double allowed = tolerance + c.rounding;
+    const double allowed = tolerance + std::max(c.rounding, c.upper_rounding);
     if (std::isfinite(c.upper_floor)) {  // rounding-box rows: outside [upper_floor, lp_upper]
       const double outside =
           std::max({0.0, c.closed_upper - c.lp_upper, c.upper_floor - c.closed_upper});

@@ -111,6 +111,7 @@ struct VerifyCase {
   double box_lower = std::numeric_limits<double>::quiet_NaN();
   double box_upper = std::numeric_limits<double>::quiet_NaN();
   double upper_floor = std::numeric_limits<double>::quiet_NaN();
+  double upper_rounding = 0;  // as `rounding`, from the mirrored problem's certificate
   // The worst cases only: the finest grid's LP solved by the exact arbiter (lp/exact_backend.h)
   // with the distribution's exact image as right-hand side; NaN elsewhere, or where it failed.
   double lp_exact = std::numeric_limits<double>::quiet_NaN();
