@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# The LP engine's answers must not depend on the instruction set (src/lp/lanes/lanes.h). Builds
-# lp_bench for other -march targets and compares its four warm rows with NATIVE_BUILD's:
+# The LP engine's answers must not depend on the instruction set (src/lp/lanes/lanes.h). The
+# native build's lp_runs_dump writes the fragments of lp_bench's warm runs once; lp_replay, which
+# links the LP engine alone (lp/, basis/), is built for other -march targets and solves them as
+# the native lp_replay does:
 #  - x86-64-v3 (AVX2 + FMA): the same answers hash, bit for bit, and the same pivots;
 #  - x86-64 (SSE2, no FMA): the compiler cannot contract a * b + c into one rounding as the other
 #    builds do, so single LPs differ in the last bits; every answer is still certified to 1e-9
@@ -13,19 +15,14 @@ work=${2:-build/isa}
 python=/usr/bin/python3
 jobs=$(nproc)
 
-rows() {  # BINARY -> "row answers pivots g_sum lps not_optimal" lines
-  "$1" --benchmark_filter='SolveRuns/fast_warm' --benchmark_min_time=0.01 --benchmark_repetitions=1 \
-      --benchmark_format=json 2>/dev/null |
-    "$python" -c 'import json, sys
-for b in json.load(sys.stdin)["benchmarks"]:
-    print(b["name"].split("/")[1], "%d" % b["answers"], repr(b["pivots"]), repr(b["g_sum"]),
-          "%d" % b["lps_per_pass"], repr(b["not_optimal"]))'
-}
-
-[[ -x $native/tests/bench/lp_bench ]] || { echo "no $native/tests/bench/lp_bench: build first" >&2; exit 2; }
+for tool in lp_runs_dump lp_replay; do
+  [[ -x $native/tests/bench/$tool ]] || { echo "no $native/tests/bench/$tool: build first" >&2; exit 2; }
+done
 launcher=$(sed -n 's/^CMAKE_CXX_COMPILER_LAUNCHER:[A-Z]*=//p' "$native/CMakeCache.txt" 2>/dev/null || true)
 mkdir -p "$work"
-rows "$native/tests/bench/lp_bench" >"$work/native.txt"
+"$native/tests/bench/lp_runs_dump" "$work/runs.bin"
+# Lines "row answers pivots g_sum lps not_optimal" (tests/bench/lp_replay.cpp).
+"$native/tests/bench/lp_replay" "$work/runs.bin" >"$work/native.txt"
 status=0
 for target in x86-64-v3 x86-64; do
   dir=$work/$target
@@ -33,8 +30,8 @@ for target in x86-64-v3 x86-64; do
   # suite then compiles nothing it compiled before.
   cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release -DMOMENTBENCH_NATIVE=OFF \
       -DMOMENTBENCH_MARCH="$target" ${launcher:+-DCMAKE_CXX_COMPILER_LAUNCHER="$launcher"} >/dev/null
-  cmake --build "$dir" -j"$jobs" --target lp_bench >"$dir.log" 2>&1 || { tail -20 "$dir.log"; exit 1; }
-  rows "$dir/tests/bench/lp_bench" >"$dir.txt"
+  cmake --build "$dir" -j"$jobs" --target lp_replay >"$dir.log" 2>&1 || { tail -20 "$dir.log"; exit 1; }
+  "$dir/tests/bench/lp_replay" "$work/runs.bin" >"$dir.txt"
   "$python" - "$work/native.txt" "$dir.txt" "$target" <<'PY' || status=1
 import sys
 native = {l.split()[0]: l.split() for l in open(sys.argv[1])}

@@ -4,7 +4,7 @@
 # and exits 1 if there is one.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-order=(util scene raster basis moments lp continuous shadow techniques solve eval camera oit screen sweep verify report cmd)
+order=(util scene raster basis moments lp continuous shadow techniques solve eval camera oit scatter screen sweep verify report cmd)
 # One pass over every include line (grep's "file:line"), so the check costs one process, not
 # several per include.
 grep -rHE '^#include "[a-z_]+/' src | awk -v order="${order[*]}" '

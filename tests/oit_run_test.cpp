@@ -4,6 +4,7 @@
 #include "oit/oit_run.h"
 
 #include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
 
 #include <cmath>
 #include <cstring>
@@ -13,8 +14,11 @@
 #include "eval/eval_config.h"
 #include "oit/color_difference.h"
 #include "oit/oit_verification.h"
+#include "scatter/scatter_run.h"
 #include "scene/scene.h"
 #include "shadow/compositing.h"
+#include "techniques/lp_options.h"
+#include "techniques/oit/oit_options.h"
 #include "techniques/registry.h"
 #include "techniques/soft/soft_technique.h"
 #include "test_support.h"
@@ -22,6 +26,33 @@
 
 namespace mb {
 namespace {
+
+// `oit`'s tables: each technique's cameras summed into its "all" row, and the per-camera rows
+// technique-major.
+TEST(OitRows, SumsEveryCameraAndListsThemTechniqueMajor) {
+  OitRows rows({"exact", "wboit"});
+  for (const char* camera : {"front", "side"}) {
+    OitFrameResult r;
+    r.scene = "garden", r.camera = camera;
+    r.stats.resize(2);
+    r.stats[0].fragments = 3, r.stats[1].fragments = 5;
+    r.stats[1].delta_e = {1.5f};
+    r.seconds = {1, 2};
+    rows.add(r);
+  }
+  ASSERT_EQ(rows.overall().size(), 2u);
+  EXPECT_EQ(rows.overall()[0].camera, "all");
+  EXPECT_EQ(rows.overall()[0].stats.fragments, 6u);
+  EXPECT_EQ(rows.overall()[1].stats.fragments, 10u);
+  EXPECT_EQ(rows.overall()[1].stats.delta_e.size(), 2u);
+  EXPECT_EQ(rows.overall()[1].seconds, 4);
+  const std::vector<OitRow> cameras = rows.per_camera();
+  ASSERT_EQ(cameras.size(), 4u);
+  EXPECT_EQ(cameras[0].technique + " " + cameras[0].camera, "exact garden/front");
+  EXPECT_EQ(cameras[1].technique + " " + cameras[1].camera, "exact garden/side");
+  EXPECT_EQ(cameras[2].technique + " " + cameras[2].camera, "wboit garden/front");
+  EXPECT_EQ(cameras[3].stats.fragments, 5u);
+}
 
 TEST(OitMetrics, LabOfWhiteAndOfTheRedPrimary) {
   const LabConverter lab;
@@ -182,6 +213,8 @@ TEST(OitRun, EveryFamilyOptionOfARowIsADeclaredOption) {
   for (const auto& s : technique_option_specs()) declared.insert(s.name);
   for (const auto& r : soft_option_records()) declared.insert(r.spec.name);
   for (const auto& r : oit_run_options()) declared.insert(r.spec.name);
+  for (const auto& s : oit_option_specs()) declared.insert(s.name);
+  for (const auto& r : scatter_run_options()) declared.insert(r.spec.name);
   for (const auto& s : lp_option_specs()) declared.insert(s.name);
   size_t listed = 0;
   for (const TechniqueRow& row : technique_registry())
@@ -193,4 +226,27 @@ TEST(OitRun, EveryFamilyOptionOfARowIsADeclaredOption) {
 }
 
 }  // namespace
+// OitParams' options come from their records: a default-made one holds the records' defaults, and
+// oit_params_from reads the keys a config declares (a sweep's lacks oit.depth_range) and lp.*.
+TEST(OitRun, OitParamsAreTheRecordsValues) {
+  const OitParams defaults;
+  const Config records(oit_option_specs());
+  EXPECT_EQ(defaults.beta, YAML::Load(records.value_text("oit.beta")).as<double>());
+  EXPECT_EQ(defaults.warp, warp_kind(records.string("oit.warp")));
+  EXPECT_EQ(defaults.depth_range, depth_range_kind(records.string("oit.depth_range")));
+  EXPECT_EQ(defaults.lp.lp_backend, TechniqueParams().lp_backend);
+  std::vector<OptionSpec> specs = lp_option_specs();
+  for (const auto& s : oit_option_specs())
+    if (s.name != "oit.depth_range") specs.push_back(s);
+  Config config(specs);
+  config.set("oit.beta=0.5");
+  config.set("oit.warp=linear");
+  config.set("lp.grid=64");
+  const OitParams read = oit_params_from(config);
+  EXPECT_EQ(read.beta, 0.5);
+  EXPECT_EQ(read.warp, WarpKind::Linear);
+  EXPECT_EQ(read.depth_range, defaults.depth_range);
+  EXPECT_EQ(read.lp.lp.grid, 64);
+}
+
 }  // namespace mb

@@ -212,7 +212,7 @@ TEST(Translucent, FourierOpacityMappingConvergesAndIgnoresTheOrder) {
   double previous = 1;
   for (int terms : {1, 4, 16, 64}) {
     TechniqueParams params;
-    params.fom_terms = terms;
+    params.set("fom.terms", terms);
     const double error = std::abs(make_technique("fom", params)->shadow(in) - 0.5);
     EXPECT_LT(error, previous + 1e-12) << terms;
     previous = error;

@@ -54,7 +54,7 @@ TEST(Evsm, OnePlaneIsLitAndAnOccluderInFrontShadows) {
 TEST(Evsm, TwoPlanesGiveTheWarpedCantelliBound) {
   TechniqueParams params;
   auto t = make_technique("evsm2", params);
-  const double a = 0.3, b = 0.6, delta = 1e-4, c = params.evsm_c_positive;
+  const double a = 0.3, b = 0.6, delta = 1e-4, c = params.number("evsm.c_positive");
   for (double p : {0.05, 0.25, 0.5, 0.8}) {
     const double wa = std::exp(c * a), wb = std::exp(c * b), wf = std::exp(c * (b - delta));
     const double mu = p * wa + (1 - p) * wb;
@@ -72,7 +72,7 @@ TEST(Evsm, TwoPlanesGiveTheWarpedCantelliBound) {
 // stays within 1e-3 of double. Exponents 4 and 2 keep the LP's rows well scaled.
 TEST(Evsm, NeverAboveTheSharpBoundOfItsBasisAndFloatAgrees) {
   TechniqueParams params;
-  params.evsm_c_positive = 4, params.evsm_c_negative = 2;
+  params.set("evsm.c_positive", 4), params.set("evsm.c_negative", 2);
   auto two = make_technique("evsm2", params), four = make_technique("evsm4", params);
   auto two_float = make_technique("evsm2_float", params);
   auto four_float = make_technique("evsm4_float", params);
@@ -152,7 +152,7 @@ TEST(Lvsm, OccludersInEarlierLayersDoNotLeakLight) {
 // depth is lit; with many undamped terms an occluder far in front shadows fully.
 TEST(Csm, FourierSeriesOfTheShadowTest) {
   TechniqueParams params;
-  params.csm_terms = 6, params.csm_damping = 1.5;
+  params.set("csm.terms", 6), params.set("csm.damping", 1.5);
   auto csm = make_technique("csm", params);
   EXPECT_EQ(csm->basis().size(), 12u);
   const std::vector<double> depths{0.2, 0.55}, weights{0.35, 0.65};
@@ -167,7 +167,7 @@ TEST(Csm, FourierSeriesOfTheShadowTest) {
         << "zf " << zf;
   }
   EXPECT_EQ(evsm(*csm, {0.4}, {1.0}, 0.4 - 1e-4), 0.0);
-  params.csm_terms = 16, params.csm_damping = 0;
+  params.set("csm.terms", 16), params.set("csm.damping", 0);
   auto sharp = make_technique("csm", params);
   EXPECT_GT(evsm(*sharp, {0.2}, {1.0}, 0.7), 0.95);
   EXPECT_GT(csm->darkening_bound(), 1.0);  // not a lower bound: reports show its over-darkening

@@ -1,11 +1,16 @@
 // The technique registry and its first new rows, ESM with failure classification (seed 002 §3.3).
 #include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
+#include <stdexcept>
 #include <vector>
 
 #include "basis/basis.h"
+#include "techniques/lp_options.h"
+#include "techniques/lp_technique.h"
 #include "techniques/registry.h"
 #include "util/config.h"
 #include "util/error.h"
@@ -39,20 +44,21 @@ TEST(TechniqueRegistry, EveryFamilyIsOneTableOfRows) {
       EXPECT_LE(std::pair(rows[i - 1].family, rows[i - 1].rank), std::pair(row.family, row.rank))
           << row.name;
     }
-    const int factories =
-        (row.make != nullptr) + (row.make_soft != nullptr) + (row.make_oit != nullptr);
+    const int factories = (row.make != nullptr) + (row.make_soft != nullptr) +
+                          (row.make_oit != nullptr) + (row.make_scatter != nullptr);
     EXPECT_EQ(factories, 1) << row.name;
     EXPECT_EQ(row.make != nullptr, row.family == TechniqueFamily::HardShadow) << row.name;
     EXPECT_EQ(row.make_soft != nullptr, row.family == TechniqueFamily::SoftShadow) << row.name;
     EXPECT_EQ(row.make_oit != nullptr, row.family == TechniqueFamily::Transmittance) << row.name;
+    EXPECT_EQ(row.make_scatter != nullptr, row.family == TechniqueFamily::Scattering) << row.name;
     EXPECT_FALSE(row.summary.empty()) << row.name;
     EXPECT_FALSE(row.bound.empty()) << row.name;
     if (row.prefix() && row.default_run) {
       EXPECT_FALSE(row.example.empty()) << row.name;
     }
   }
-  for (TechniqueFamily family :
-       {TechniqueFamily::HardShadow, TechniqueFamily::SoftShadow, TechniqueFamily::Transmittance})
+  for (TechniqueFamily family : {TechniqueFamily::HardShadow, TechniqueFamily::SoftShadow,
+                                 TechniqueFamily::Transmittance, TechniqueFamily::Scattering})
     EXPECT_FALSE(family_rows(family).empty()) << family_title(family);
   EXPECT_EQ(find_technique("lp:power4", TechniqueFamily::Transmittance)->family,
             TechniqueFamily::Transmittance);
@@ -74,26 +80,78 @@ TEST(TechniqueRegistry, EveryFamilyIsOneTableOfRows) {
   EXPECT_LT(table.find("Soft shadows:"), table.find("Transmittance:"));
 }
 
-// Defaults are written once, in the option records: a default-made TechniqueParams holds them.
+// Defaults are written once, in the option records: a default-made TechniqueParams holds each
+// record's default, parsed here from the record's own text, and the lp.* records' for its LP.
 TEST(TechniqueRegistry, DefaultParametersAreTheRecordsDefaults) {
   const TechniqueParams params;
-  Config config(technique_option_specs());
-  config.set("csm.terms=5");
-  TechniqueParams read;
-  read_technique_options(config, read);
-  EXPECT_EQ(read.csm_terms, 5);
-  EXPECT_EQ(read.esm_c, params.esm_c);
-  EXPECT_EQ(params.esm_c, 80);
-  EXPECT_EQ(params.lvsm_layers, 4);
-  EXPECT_EQ(params.hamburger4_float_alpha, 5e-6);
+  const std::vector<OptionSpec> specs = technique_option_specs();
+  ASSERT_GT(specs.size(), 15u);
+  for (const OptionSpec& spec : specs) {
+    const double expected = YAML::Load(spec.default_value).as<double>();
+    if (spec.type == OptionType::Integer) {
+      EXPECT_EQ(params.integer(spec.name), expected) << spec.name;
+    } else {
+      ASSERT_EQ(spec.type, OptionType::Number) << spec.name;
+      EXPECT_EQ(params.number(spec.name), expected) << spec.name;
+    }
+  }
+  const Config lp(lp_option_specs());
+  EXPECT_EQ(params.lp.grid, lp.integer("lp.grid"));
+  EXPECT_EQ(params.lp.lo, lp.number("lp.lo"));
+  EXPECT_EQ(params.lp.hi, lp.number("lp.hi"));
+  EXPECT_EQ(params.lp.quantize, lp.boolean("lp.quantize"));
+  EXPECT_EQ(params.lp.continuous, lp.string("lp.discretization") == "continuous");
+  EXPECT_EQ(params.lp_backend, lp.string("lp.backend"));
+  EXPECT_EQ(params.lp_moment_box, lp.string("lp.moment_box"));
+  EXPECT_EQ(params.lp_beta, lp.number("lp.beta"));
   EXPECT_EQ(default_techniques(TechniqueFamily::Transmittance).back(), ']');
+}
+
+// A key no row declares, or read as the wrong type, is a programming error, not a value.
+TEST(TechniqueRegistry, AnUnknownOrMistypedKeyIsAnError) {
+  TechniqueParams params;
+  EXPECT_THROW(params.number("esm.k"), std::logic_error);
+  EXPECT_THROW(params.integer("esm.k"), std::logic_error);
+  EXPECT_THROW(params.set("esm.k", 1), std::logic_error);
+  EXPECT_THROW(params.integer("esm.c"), std::logic_error);     // a number
+  EXPECT_THROW(params.number("csm.terms"), std::logic_error);  // an integer
+  EXPECT_THROW(params.set("csm.terms", 2.5), std::logic_error);
+  EXPECT_NO_THROW(params.set("csm.terms", 2));
+  EXPECT_EQ(params.integer("csm.terms"), 2);
+}
+
+// An option set in a config reaches the technique that declares it: esm.c = 20 makes ESM's map
+// exp(20 z) and its bound Markov's for that exponent.
+TEST(TechniqueRegistry, AConfigValueReachesItsTechnique) {
+  Config config(technique_option_specs());
+  config.set("esm.c=20");
+  TechniqueParams params;
+  read_technique_options(config, params);
+  EXPECT_EQ(params.number("esm.c"), 20);
+  const auto set = make_technique("esm", params);
+  const auto plain = make_technique("esm", TechniqueParams());
+  EXPECT_EQ(set->basis().names(), Basis::parse({"exp(20*z)"}).names());
+  // Atoms of mass 1/2 at 0.2 and 0.45, received at 0.5: Markov's bound on exp(c z) for each c,
+  // 0.815 at c = 20 and 0.991 at the default 80.
+  std::vector<double> answers;
+  for (const auto& [technique, c] :
+       {std::pair{set.get(), 20.0}, std::pair{plain.get(), TechniqueParams().number("esm.c")}}) {
+    const double moment = 0.5 * std::exp(c * 0.2) + 0.5 * std::exp(c * 0.45);
+    FragmentInput in;
+    in.moments = {&moment, 1};
+    in.zf = 0.5;
+    answers.push_back(technique->shadow(in));
+    EXPECT_NEAR(answers.back(), 1 - 0.5 * std::exp(-0.3 * c) - 0.5 * std::exp(-0.05 * c), 1e-12)
+        << c;
+  }
+  EXPECT_LT(answers[0], answers[1] - 0.1);
 }
 
 // verify's LP for a row reads the same number of channels as the technique's map: the LP answers
 // Problem 1 for the information the technique has (docs/reference.md §6).
 TEST(TechniqueRegistry, VerifyRecipesSpanTheTechniquesOwnChannels) {
   TechniqueParams params;
-  params.csm_terms = 3;
+  params.set("csm.terms", 3);
   int recipes = 0;
   for (const auto& row : technique_registry()) {
     if (!row.verify) continue;
@@ -110,6 +168,41 @@ TEST(TechniqueRegistry, VerifyRecipesSpanTheTechniquesOwnChannels) {
   EXPECT_EQ(recipes, 12);
 }
 
+// The default lists of `sweep` and `verify` and the sweep report's claims come from the rows:
+// each reference is a technique of its family, places are unique, and the rows that solve the
+// continuous Problem 1 on [0, 1] in closed form are sweep references beside their LP.
+TEST(TechniqueRegistry, DefaultListsAndClaimsComeFromTheRows) {
+  const TechniqueParams params;
+  std::set<std::string> references;
+  std::set<int> classic_places, verify_places;
+  for (const SweepReference& r : sweep_references(TechniqueFamily::HardShadow)) {
+    EXPECT_EQ(make_technique(r.name, params)->name(), r.name);
+    references.insert(r.name);
+    if (!r.expectation.empty()) {
+      EXPECT_TRUE(classic_places.insert(r.place).second) << r.name;
+    }
+    if (!r.moments.empty()) {
+      EXPECT_GT(r.seed_error, 0) << r.name;
+    }
+  }
+  EXPECT_EQ(classic_places.size(), 6u);
+  for (const SweepReference& r : sweep_references(TechniqueFamily::Transmittance))
+    EXPECT_NE(find_technique(r.name, TechniqueFamily::Transmittance), nullptr) << r.name;
+  for (const auto& row : technique_registry())
+    if (row.verify_place > 0) {
+      EXPECT_TRUE(row.verify.has_value()) << row.name;
+      EXPECT_TRUE(verify_places.insert(row.verify_place).second) << row.name;
+    }
+  EXPECT_EQ(verify_default_list().front(), '[');
+  std::vector<std::string> continuous;
+  for (const TechniqueRow* row : family_rows(TechniqueFamily::HardShadow))
+    if (const std::string lp = continuous_lp_of(*row); !lp.empty()) {
+      continuous.push_back(row->name + " " + lp);
+      EXPECT_TRUE(references.count(lp) && references.count(row->name)) << row->name;
+    }
+  EXPECT_EQ(continuous, (std::vector<std::string>{"hausdorff4 lp:power4", "tmsm lp:trig4"}));
+}
+
 TEST(TechniqueRegistry, OptionsAreDeclaredOnceAndReadIntoTheirFields) {
   std::set<std::string> keys;
   for (const auto& spec : technique_option_specs())
@@ -123,20 +216,20 @@ TEST(TechniqueRegistry, OptionsAreDeclaredOnceAndReadIntoTheirFields) {
   config.set("esm.zmax_offset=0.25");
   TechniqueParams params;
   read_technique_options(config, params);
-  EXPECT_EQ(params.esm_c, 33);
-  EXPECT_EQ(params.lvsm_layers, 3);
-  EXPECT_EQ(params.esm_zmax_offset, 0.25);
-  EXPECT_EQ(params.hamburger4_alpha, 1e-10);  // the declared default
+  EXPECT_EQ(params.number("esm.c"), 33);
+  EXPECT_EQ(params.integer("lvsm.layers"), 3);
+  EXPECT_EQ(params.number("esm.zmax_offset"), 0.25);
+  EXPECT_EQ(params.number("hamburger4.alpha"), 1e-10);  // the declared default
 }
 
 TEST(TechniqueRegistry, MomentBiasReplacesEveryAlphaAndIsChecked) {
   TechniqueParams params;
   set_moment_bias(params, 0.125);
-  EXPECT_EQ(params.hamburger4_alpha, 0.125);
-  EXPECT_EQ(params.hamburger4_16bit_alpha, 0.125);
-  EXPECT_EQ(params.tmsm_float_alpha, 0.125);
-  EXPECT_EQ(params.esm_c, TechniqueParams().esm_c);  // not an alpha
-  params.hamburger6_alpha = 1;
+  EXPECT_EQ(params.number("hamburger4.alpha"), 0.125);
+  EXPECT_EQ(params.number("hamburger4_16bit.alpha"), 0.125);
+  EXPECT_EQ(params.number("tmsm_float.alpha"), 0.125);
+  EXPECT_EQ(params.number("esm.c"), TechniqueParams().number("esm.c"));  // not an alpha
+  params.set("hamburger6.alpha", 1);
   EXPECT_THROW(make_technique("vsm", params), InputError);
 }
 
@@ -163,7 +256,8 @@ TEST(EsmFallback, WithoutADeeperTexelBothAreEsm) {
   auto esm = make_technique("esm", params);
   for (const char* name : {"esm_zmax", "esm_threshold"}) {
     auto t = make_technique(name, params);
-    EXPECT_EQ(t->shadow(k.input(0.5, params.esm_c)), esm->shadow(k.input(0.5, params.esm_c)))
+    EXPECT_EQ(t->shadow(k.input(0.5, params.number("esm.c"))),
+              esm->shadow(k.input(0.5, params.number("esm.c"))))
         << name;
     EXPECT_EQ(t->fallbacks(), 0u) << name;
   }
@@ -171,7 +265,7 @@ TEST(EsmFallback, WithoutADeeperTexelBothAreEsm) {
 
 TEST(EsmFallback, AFailingFragmentGetsTheTwoByTwoCustomPcf) {
   TechniqueParams params;
-  const double c = params.esm_c, zf = 0.5;
+  const double c = params.number("esm.c"), zf = 0.5;
   Kernel k;
   // The 2x2 block at the centre (taps 40, 41, 49, 50): two occluders at 0.2, two surfaces at 0.9
   // behind the receiver; the rest of the kernel at 0.95, behind too, so both classifiers fail.
@@ -193,15 +287,15 @@ TEST(EsmFallback, ZmaxOffsetAndThresholdDecide) {
   Kernel k;
   k.depths[0] = 0.505;  // one texel just behind z_f = 0.5, within the default offset 0.01
   auto zmax = make_technique("esm_zmax", params);
-  zmax->shadow(k.input(0.5, params.esm_c));
+  zmax->shadow(k.input(0.5, params.number("esm.c")));
   EXPECT_EQ(zmax->fallbacks(), 0u);
-  params.esm_zmax_offset = 0.001;
+  params.set("esm.zmax_offset", 0.001);
   zmax = make_technique("esm_zmax", params);
-  zmax->shadow(k.input(0.5, params.esm_c));
+  zmax->shadow(k.input(0.5, params.number("esm.c")));
   EXPECT_EQ(zmax->fallbacks(), 1u);
   // Threshold: the filtered value (1/81) e^{80 * 0.005} + (80/81) e^{-16} is about 0.0184 < 1.01.
   auto threshold = make_technique("esm_threshold", params);
-  threshold->shadow(k.input(0.5, params.esm_c));
+  threshold->shadow(k.input(0.5, params.number("esm.c")));
   EXPECT_EQ(threshold->fallbacks(), 0u);
 }
 

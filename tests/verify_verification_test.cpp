@@ -32,7 +32,7 @@ class Verify : public ::testing::Test {
  protected:
   Verify()
       : params_(verify_params(TechniqueParams{})), instances_(random_verify_instances(400, 77)) {
-    params_.esm_c = 10;
+    params_.set("esm.c", 10);
   }
   VerifySolverResult run(const std::string& target_name, const TechniqueMaker& make) {
     const VerifyTarget target = verify_targets({target_name}, params_).front();
@@ -130,7 +130,7 @@ namespace {
 // |dG| is large, and EVSM shifted up by 0.02 is caught above the LP.
 TEST(VerifyLowerBound, EvsmPassesAsALowerBoundAndAShiftedOneFails) {
   TechniqueParams params = verify_params(TechniqueParams{});
-  params.evsm_c_positive = 5;
+  params.set("evsm.c_positive", 5);
   const auto instances = random_verify_instances(300, 91);
   for (const char* name : {"evsm2", "evsm4"}) {
     const VerifyTarget target = verify_targets({name}, params).front();
@@ -196,7 +196,7 @@ TEST(VerifyContinuous, ExactClosedFormsPassAndABrokenOneFails) {
   std::vector<VerifySolverResult> results;
   for (const char* name : {"hamburger4", "hausdorff4", "tmsm", "vsm", "esm", "hamburger6"}) {
     TechniqueParams p = params;
-    p.esm_c = 10;
+    p.set("esm.c", 10);
     const VerifyTarget target = verify_targets({name}, p).front();
     const VerifySolverResult r = verify_solver(
         target, [&] { return make_technique(name, p); }, instances, {64}, true, 1e-6, 3, 2);
@@ -254,7 +254,7 @@ namespace {
 // turns false.
 TEST(VerifyStorageBox, StorageVariantsAreJudgedAgainstTheirBox) {
   TechniqueParams params = verify_params(TechniqueParams{});
-  params.hamburger4_float_alpha = params.tmsm_float_alpha = 3e-4;
+  params.set("hamburger4_float.alpha", 3e-4), params.set("tmsm_float.alpha", 3e-4);
   const auto instances = random_verify_instances(80, 31);
   VerifyReportContext context;
   context.grids = {64, 0};
@@ -269,7 +269,7 @@ TEST(VerifyStorageBox, StorageVariantsAreJudgedAgainstTheirBox) {
     EXPECT_EQ(r.grids.back().compared, instances.size()) << name;  // every box LP answered
   }
   TechniqueParams unbiased = params;
-  unbiased.hamburger4_float_alpha = 0;
+  unbiased.set("hamburger4_float.alpha", 0);
   VerifyTarget target = verify_targets({"hamburger4_float"}, unbiased).front();
   const VerifySolverResult bare = verify_solver(
       target, [&] { return make_technique("hamburger4_float", unbiased); }, instances, {64}, true,
@@ -297,7 +297,7 @@ TEST(VerifyStorageBox, StorageVariantsAreJudgedAgainstTheirBox) {
 // exceeds it on about half, by up to ~0.2.
 TEST(VerifyCsm, ExceedingTheSharpBoundIsCountedNotJudged) {
   TechniqueParams params = verify_params(TechniqueParams{});
-  params.csm_terms = 3;
+  params.set("csm.terms", 3);
   const auto instances = random_verify_instances(60, 8);
   const VerifyTarget target = verify_targets({"csm"}, params).front();
   ASSERT_TRUE(target.exceedance);

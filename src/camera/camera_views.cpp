@@ -142,13 +142,16 @@ void evaluate_camera_views(const std::vector<Scene>& scenes, const DatasetDesc& 
         const CameraView& view = out.view;
         std::vector<std::string>& names = out.names;
         std::vector<std::vector<double>>& shadows = out.shadows;
-        if (view.receivers.soft.angle_deg > 0) {  // the area light's shadow leads the sheet
-          names.push_back("area_light");
+        const double angle = view.receivers.soft.angle_deg;
+        if (angle > 0) {  // the area light's shadow leads the sheet
+          names.push_back(kAreaLightShadow);
           shadows.push_back(view.receivers.fragments.pcf);
+          out.reference.push_back(true);
         }
         for (const auto& name : techniques) {
           names.push_back(name);
           shadows.push_back(evaluate_technique(view.receivers, name, settings, nullptr).shadow);
+          out.reference.push_back(is_view_reference(name, angle));
         }
         each(out);
         bar.advance();

@@ -41,13 +41,15 @@ CameraView camera_view(const Scene& scene, const LightViewDesc& light, const Vie
 // InputError unless some scene of `dataset` names a camera (checked before any work).
 void check_dataset_cameras(const std::vector<Scene>& scenes, const DatasetDesc& dataset);
 // One camera seeing a scene lit by one of its light views, with each technique's shadow per
-// receiver: under an area light its own shadow first, named "area_light" (the reference), then
-// the techniques in the order asked for.
+// receiver: under an area light its own shadow first, named kAreaLightShadow (the reference),
+// then the techniques in the order asked for; `reference` marks the view's reference
+// (is_view_reference), which has no difference image.
 struct CameraShadows {
   std::string scene, light;
   CameraView view;
   std::vector<std::string> names;
   std::vector<std::vector<double>> shadows;
+  std::vector<bool> reference;
 };
 
 // Every camera of every scene (`scenes`, built from `dataset`), lit by each of the scene's light

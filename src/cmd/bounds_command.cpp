@@ -9,6 +9,7 @@
 #include "eval/eval_config.h"
 #include "report/bounds_report.h"
 #include "scene/dataset.h"
+#include "techniques/lp_options.h"
 #include "util/error.h"
 #include "util/number_text.h"
 #include "util/option_record.h"

@@ -66,6 +66,15 @@ std::optional<CommandRun> CommandRun::begin(std::vector<OptionSpec> specs,
   return CommandRun(std::move(config), options);
 }
 
+std::optional<CommandRun> CommandRun::begin(std::vector<OptionSpec> specs,
+                                            const CommonOptions& options, const CLI::App& command,
+                                            const std::vector<FlagKey>& flags) {
+  Config config = resolve_config(std::move(specs), options);
+  apply_flags(command, config, flags);
+  if (print_config_if_asked(config, options)) return std::nullopt;
+  return CommandRun(std::move(config), options);
+}
+
 StagedOutputDir& CommandRun::out() {
   if (!out_) out_ = std::make_unique<StagedOutputDir>(options_->out, options_->force);
   return *out_;

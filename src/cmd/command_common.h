@@ -34,15 +34,32 @@ bool print_config_if_asked(const Config& config, const CommonOptions& options);
 void write_run_record(const StagedOutputDir& out, const Config& config, const RunMetadata& meta);
 // Defaults, then the config file, then every --set in order.
 Config resolve_config(std::vector<OptionSpec> specs, const CommonOptions& options);
+
+// A command's own flags as shorthands of option keys: each flag given on the command line sets its
+// key after the config file and every --set (a list flag gives a list; a flag without a value
+// gives true, or false for a "!--no-x" flag), so --print-config shows it and it is validated
+// like --set.
+struct FlagKey {
+  std::string flag;                   // as registered, e.g. "--grid"
+  std::string key;                    // the option key, e.g. "grid"
+  std::function<YAML::Node()> value;  // the flag's parsed value, as YAML
+};
+void apply_flags(const CLI::App& command, Config& config, const std::vector<FlagKey>& flags);
+
 // One run of a command that writes an output directory, the prologue and epilogue every such
 // command shares (docs/design.md §Commands): the resolved config and thread count first, the staged
 // output directory only once the command has checked its input (bad input leaves no output), and
-// at the end config.yaml, run.yaml and the atomic commit.
+// at the end config.yaml, run.yaml and the atomic commit (or, for a command that records its run
+// otherwise, out().commit()).
 class CommandRun {
  public:
-  // resolve_config; nullopt when --print-config printed the config (the command then stops).
+  // resolve_config, then the command's own `flags` (apply_flags); nullopt when --print-config
+  // printed the config (the command then stops).
   static std::optional<CommandRun> begin(std::vector<OptionSpec> specs,
                                          const CommonOptions& options);
+  static std::optional<CommandRun> begin(std::vector<OptionSpec> specs,
+                                         const CommonOptions& options, const CLI::App& command,
+                                         const std::vector<FlagKey>& flags);
   const Config& config() const { return config_; }
   // The `threads` option resolved (0: every core); 1 for a command without one.
   int threads() const { return threads_; }
@@ -61,17 +78,6 @@ class CommandRun {
   std::unique_ptr<StagedOutputDir> out_;
   std::optional<RunMetadata> metadata_;
 };
-
-// A command's own flags as shorthands of option keys: each flag given on the command line sets its
-// key after the config file and every --set (a list flag gives a list; a flag without a value
-// gives true, or false for a "!--no-x" flag), so --print-config shows it and it is validated
-// like --set.
-struct FlagKey {
-  std::string flag;                   // as registered, e.g. "--grid"
-  std::string key;                    // the option key, e.g. "grid"
-  std::function<YAML::Node()> value;  // the flag's parsed value, as YAML
-};
-void apply_flags(const CLI::App& command, Config& config, const std::vector<FlagKey>& flags);
 
 // The argv of this process, for run metadata.
 const std::vector<std::string>& process_arguments();

@@ -17,6 +17,7 @@ void register_report_command(CLI::App& app, std::function<int()>& action);
 void register_verify_command(CLI::App& app, std::function<int()>& action);
 void register_bounds_command(CLI::App& app, std::function<int()>& action);
 void register_oit_command(CLI::App& app, std::function<int()>& action);
+void register_scatter_command(CLI::App& app, std::function<int()>& action);
 // `momentbench options`: every command's option table as Markdown (the README's lists).
 void register_options_command(CLI::App& app, std::function<int()>& action);
 
@@ -30,5 +31,6 @@ std::vector<OptionSpec> report_specs();
 std::vector<OptionSpec> verify_specs();
 std::vector<OptionSpec> bounds_specs();
 std::vector<OptionSpec> oit_specs();
+std::vector<OptionSpec> scatter_specs();
 
 }  // namespace mb

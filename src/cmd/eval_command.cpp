@@ -74,18 +74,19 @@ int run_eval(const EvalOptions& options) {
       check_lp_interval(views, settings.technique.lp.lo, settings.technique.lp.hi);
   std::filesystem::create_directories(out.staging() / "histograms");
   if (run.images) std::filesystem::create_directories(out.staging() / "images");
-  const auto write_images = [&](const std::string& name, const ViewData& view,
-                                const std::vector<double>& shadow) {
+  const auto write = [&](const std::string& name, const ViewData& view,
+                         const std::vector<double>& shadow, bool reference) {
     if (!run.images) return;
     const std::string base =
         (out.staging() / "images" / (view.scene + "_" + view.view + "_")).string();
-    // The reference has no error image; under an area light pcf is the hard shadow, which has.
-    const bool reference = name == "area_light" || (shadow_row(name).role == RowRole::Reference &&
-                                                    !(view.soft.angle_deg > 0));
     write_shadow_images(view, shadow, base + file_stem(name), reference ? 0 : run.error_scale);
   };
+  const auto write_images = [&](const std::string& name, const ViewData& view,
+                                const std::vector<double>& shadow) {
+    write(name, view, shadow, is_view_reference(name, view.soft.angle_deg));
+  };
   for (const auto& view : views)
-    if (view.soft.angle_deg > 0) write_images("area_light", view, view.fragments.pcf);
+    if (view.soft.angle_deg > 0) write(kAreaLightShadow, view, view.fragments.pcf, true);
   const EvalRows rows = evaluate_techniques(views, techniques, settings, quiet, write_images);
   for (const auto& total : rows.overall)
     write_file_atomically(out / ("histograms/" + file_stem(total.technique) + ".csv"),

@@ -12,6 +12,8 @@
 #include "oit/oit_run.h"
 #include "report/eval_report.h"
 #include "report/oit_report.h"
+#include "techniques/lp_options.h"
+#include "techniques/oit/oit_options.h"
 #include "util/error.h"
 #include "util/number_text.h"
 #include "util/output_dir.h"
@@ -27,7 +29,12 @@ std::vector<OptionSpec> oit_specs() {
     if (spec.name == "dataset") spec.default_value = "transparency";
     specs.push_back(spec);
   }
-  for (auto& s : option_specs(oit_run_options())) specs.push_back(s);
+  // The transmittance family's options right after the techniques they set.
+  for (auto& s : option_specs(oit_run_options())) {
+    specs.push_back(s);
+    if (s.name == "techniques")
+      for (auto& o : oit_option_specs()) specs.push_back(o);
+  }
   for (auto& s : lp_option_specs()) specs.push_back(s);
   return specs;
 }
@@ -61,11 +68,7 @@ int run_oit(const OitOptions& options) {
   OitRunOptions run;
   read_options(config, oit_run_options(), run);
   const int threads = cmd->threads();
-  OitParams params;
-  params.beta = run.beta;
-  params.warp = warp_kind(run.warp);
-  params.depth_range = depth_range_kind(run.depth_range);
-  read_lp_params(config, params.lp);
+  const OitParams params = oit_params_from(config);
   if (run.techniques.empty()) throw InputError("techniques: expected at least one technique");
   for (const auto& name : run.techniques) make_oit_technique(name, params);  // names fail here
   const DatasetDesc dataset = load_dataset(config.string("dataset"));
@@ -75,9 +78,7 @@ int run_oit(const OitOptions& options) {
   if (run.images) std::filesystem::create_directories(out.staging() / "images");
   if (run.deep_frames) std::filesystem::create_directories(out.staging() / "frames");
   const LabConverter lab;
-  std::vector<OitRow> overall;
-  std::vector<std::vector<OitRow>> camera_rows(run.techniques.size());  // per technique
-  for (const auto& name : run.techniques) overall.push_back({name, "all", {}, 0});
+  OitRows rows(run.techniques);
   OitReportContext context;
   for (const auto& [scene, frame] : frames) {
     const std::string stem = scene + "_" + frame.camera;
@@ -85,31 +86,21 @@ int run_oit(const OitOptions& options) {
       write_deep_frame_exr(frame, scene, (out.staging() / "frames" / (stem + ".exr")).string());
     const OitFrameResult result = evaluate_oit_frame(frame, scene, run.techniques, params, threads,
                                                      lab, options.common.quiet);
-    for (size_t k = 0; k < run.techniques.size(); ++k) {
-      camera_rows[k].push_back(
-          {run.techniques[k], scene + "/" + frame.camera, result.stats[k], result.seconds[k]});
-      overall[k].stats.merge(result.stats[k]);
-      overall[k].seconds += result.seconds[k];
-    }
+    rows.add(result);
     if (run.images)
       context.sheets.push_back(write_oit_images(
           result, run.techniques, (out.staging() / "images" / stem).string(), run.delta_e_scale));
   }
-  // Technique-major, as eval's per-view rows.
-  std::vector<OitRow> per_camera;
-  for (const auto& rows : camera_rows)
-    per_camera.insert(per_camera.end(), rows.begin(), rows.end());
-
   const RunMetadata& meta = cmd->metadata();
   context.dataset = dataset.name, context.version = meta.version, context.git_sha = meta.git_sha;
   context.compiler = meta.compiler, context.started = meta.started_utc, context.threads = threads;
   context.settings_text = describe(params);
   context.cameras = frames.size();
-  context.fragments = overall.front().stats.fragments;
-  context.pixels = overall.front().stats.pixels;
+  context.fragments = rows.overall().front().stats.fragments;
+  context.pixels = rows.overall().front().stats.pixels;
   context.non_default = config.non_default();
   context.delta_e_scale = run.delta_e_scale;
-  const OitReport report = render_oit_report(context, overall, per_camera);
+  const OitReport report = render_oit_report(context, rows.overall(), rows.per_camera());
   write_file_atomically(out / "report.md", report.markdown);
   write_file_atomically(out / "errors.csv", report.errors_csv);
   cmd->finish();

@@ -1,16 +1,16 @@
 // `momentbench render`: dataset -> one deep EXR LayerStack per view, previews and statistics.
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <sstream>
 
 #include "cmd/command_common.h"
 #include "cmd/commands.h"
 #include "raster/deep_exr.h"
 #include "raster/previews.h"
 #include "raster/render_view.h"
+#include "report/render_stats.h"
 #include "scene/dataset.h"
 #include "util/error.h"
-#include "util/number_text.h"
 #include "util/option_record.h"
 #include "util/output_dir.h"
 #include "util/run_metadata.h"
@@ -67,19 +67,14 @@ int run_render(const RenderOptions& options) {
   }
   StagedOutputDir& out = cmd->out();
 
-  std::ostringstream csv, table;
-  csv << "scene,view,resolution,triangles,fragments,receivers,covered_texels,max_layers,mean_"
-         "layers,seconds\n";
-  table << "| scene | view | resolution | triangles | fragments | receivers | max layers | mean "
-           "layers | seconds |\n"
-        << "|---|---|---|---|---|---|---|---|---|\n";
+  std::vector<RenderStatsRow> rows;
   size_t fragments = 0;
   for (const auto& scene : scenes) {
     std::filesystem::create_directories(out.staging() / scene.name);
     for (const auto& view : scene.views) {
       auto start = std::chrono::steady_clock::now();
       LayerStack stack = render_view(scene, view, threads);
-      double seconds =
+      const double seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       std::string base = (out.staging() / scene.name / view.name).string();
       write_deep_exr(stack, base + ".exr");
@@ -87,21 +82,10 @@ int run_render(const RenderOptions& options) {
         write_depth_preview(stack, base + "_depth.png");
         write_layer_count_preview(stack, base + "_layers.png");
       }
-      LayerStackStats s = compute_stats(stack, scene.mesh.triangles.size());
-      fragments += s.fragments;
-      char mean[32];
-      std::snprintf(mean, sizeof mean, "%.3f", s.mean_layers);
-      csv << scene.name << "," << view.name << "," << view.resolution << "," << s.triangles << ","
-          << s.fragments << "," << s.receivers << "," << s.covered_texels << "," << s.max_layers
-          << "," << round_trip(s.mean_layers) << "," << round_trip(seconds) << "\n";
-      table << "| " << scene.name << " | " << view.name << " | " << view.resolution << " | "
-            << s.triangles << " | " << s.fragments << " | " << s.receivers << " | " << s.max_layers
-            << " | " << mean << " | " << seconds << " |\n";
-      if (!options.common.quiet)
-        std::fprintf(stderr,
-                     "%s/%s: %zu fragments, %zu receivers, max %d layers, mean %s (%.2f s)\n",
-                     scene.name.c_str(), view.name.c_str(), s.fragments, s.receivers, s.max_layers,
-                     mean, seconds);
+      rows.push_back({scene.name, view.name, view.resolution,
+                      compute_stats(stack, scene.mesh.triangles.size()), seconds});
+      fragments += rows.back().stats.fragments;
+      if (!options.common.quiet) std::fputs(render_stats_line(rows.back()).c_str(), stderr);
     }
   }
   // As eval and verify say of a dataset without receivers: nothing rendered is an error.
@@ -109,11 +93,12 @@ int run_render(const RenderOptions& options) {
     throw InputError(dataset.file + ": dataset " + dataset.name +
                      " has nothing to render: no view of any scene rasterizes a fragment (every "
                      "triangle degenerate, or no geometry inside the views)");
-  write_file_atomically(out / "stats.csv", csv.str());
+  const std::string table = render_stats_table(rows);
+  write_file_atomically(out / "stats.csv", render_stats_csv(rows));
   write_file_atomically(out / "stats.md",
-                        "# Layer stacks of dataset " + dataset.name + "\n\n" + table.str());
+                        "# Layer stacks of dataset " + dataset.name + "\n\n" + table);
   cmd->finish();
-  std::fputs(table.str().c_str(), stdout);
+  std::fputs(table.c_str(), stdout);
   return 0;
 }
 

@@ -17,43 +17,10 @@ namespace {
 
 struct ReportOptions {
   std::vector<std::string> results;
-  std::string out;
-  bool force = false, quiet = false, plot = true;
+  bool plot = true;
   int bins = 60;
   std::vector<std::string> allow_different;
 };
-
-int run_report(const ReportOptions& o) {
-  const std::vector<SweepSeries> series =
-      load_sweep_series(o.results, {sweep_specs(), o.allow_different});
-  StagedOutputDir out(o.out, o.force);
-  const SweepReportTables tables = sweep_report_tables(series, o.bins);
-  write_file_atomically(out / "candidates.csv", tables.candidates_csv);
-  write_file_atomically(out / "series.csv", tables.series_csv);
-  write_file_atomically(out / "references.csv", tables.references_csv);
-  write_file_atomically(out / "histogram.csv", tables.histogram_csv);
-  std::string plot_note;
-  const bool transparency = main_series(series).transparency();
-  if (o.plot)
-    plot_note = run_plot_script(
-        "plot_histogram.py",
-        {"--histogram", (out.staging() / "histogram.csv").string(), "--series",
-         (out.staging() / "series.csv").string(), "--references",
-         (out.staging() / "references.csv").string(), "--candidates",
-         (out.staging() / "candidates.csv").string(), "--error",
-         transparency ? "mean |T_ref - T|" : "mean |PCF - G|", "--over",
-         transparency ? "transparent fragments, opacity-weighted" : "receiver fragments"},
-        (out.staging() / "histogram").string(), "candidate histogram", o.quiet);
-  const std::string text = sweep_report_markdown(series, plot_note);
-  write_file_atomically(out / "report.md", text);
-  out.commit();
-  std::fputs(text.c_str(), stdout);
-  return 0;
-}
-
-}  // namespace
-
-namespace {
 
 const std::vector<OptionRecord<ReportOptions>>& report_options() {
   static const std::vector<OptionRecord<ReportOptions>> records{
@@ -70,6 +37,44 @@ const std::vector<OptionRecord<ReportOptions>>& report_options() {
        &ReportOptions::allow_different},
   };
   return records;
+}
+
+int run_report(const CLI::App& command, const CommonOptions& common, const ReportOptions& flags) {
+  auto cmd = CommandRun::begin(report_specs(), common, command,
+                               {{"--no-plot", "plot", [&] { return YAML::Node(flags.plot); }},
+                                {"--bins", "bins", [&] { return YAML::Node(flags.bins); }},
+                                {"--allow-different", "allow_different",
+                                 [&] { return YAML::Node(flags.allow_different); }}});
+  if (!cmd) return 0;
+  ReportOptions o = flags;
+  read_options(cmd->config(), report_options(), o);
+  if (o.results.empty()) throw InputError("report: give one or more results databases");
+  if (common.out.empty()) throw InputError("report: --out DIR is required");
+  const std::vector<SweepSeries> series =
+      load_sweep_series(o.results, {sweep_specs(), o.allow_different});
+  StagedOutputDir& out = cmd->out();
+  const SweepReportTables tables = sweep_report_tables(series, o.bins);
+  write_file_atomically(out / "candidates.csv", tables.candidates_csv);
+  write_file_atomically(out / "series.csv", tables.series_csv);
+  write_file_atomically(out / "references.csv", tables.references_csv);
+  write_file_atomically(out / "histogram.csv", tables.histogram_csv);
+  std::string plot_note;
+  const bool transparency = main_series(series).transparency();
+  if (o.plot)
+    plot_note = run_plot_script(
+        "plot_histogram.py",
+        {"--histogram", (out.staging() / "histogram.csv").string(), "--series",
+         (out.staging() / "series.csv").string(), "--references",
+         (out.staging() / "references.csv").string(), "--candidates",
+         (out.staging() / "candidates.csv").string(), "--error",
+         transparency ? "mean |T_ref - T|" : "mean |PCF - G|", "--over",
+         transparency ? "transparent fragments, opacity-weighted" : "receiver fragments"},
+        (out.staging() / "histogram").string(), "candidate histogram", common.quiet);
+  const std::string text = sweep_report_markdown(series, plot_note);
+  write_file_atomically(out / "report.md", text);
+  out.commit();
+  std::fputs(text.c_str(), stdout);
+  return 0;
 }
 
 }  // namespace
@@ -95,21 +100,7 @@ void register_report_command(CLI::App& app, std::function<int()>& action) {
       ->allow_extra_args(false)  // one key an occurrence: the databases after it stay positional
       ->delimiter(',');
   command->callback([options, common, command, &action] {
-    action = [options, common, command] {
-      Config config = resolve_config(report_specs(), *common);
-      apply_flags(*command, config,
-                  {{"--no-plot", "plot", [&] { return YAML::Node(options->plot); }},
-                   {"--bins", "bins", [&] { return YAML::Node(options->bins); }},
-                   {"--allow-different", "allow_different",
-                    [&] { return YAML::Node(options->allow_different); }}});
-      if (print_config_if_asked(config, *common)) return 0;
-      ReportOptions o = *options;
-      o.out = common->out, o.force = common->force, o.quiet = common->quiet;
-      read_options(config, report_options(), o);
-      if (o.results.empty()) throw InputError("report: give one or more results databases");
-      if (o.out.empty()) throw InputError("report: --out DIR is required");
-      return run_report(o);
-    };
+    action = [options, common, command] { return run_report(*command, *common, *options); };
   });
 }
 

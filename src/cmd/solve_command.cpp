@@ -25,9 +25,8 @@ YAML::Node yaml_of(const T& value) {
 }
 
 int run_solve_command(const CLI::App& command, const CommonOptions& common, SolveSettings flags) {
-  Config config = resolve_config(solve_specs(), common);
-  apply_flags(
-      command, config,
+  auto cmd = CommandRun::begin(
+      solve_specs(), common, command,
       {{"--basis", "basis", [&] { return yaml_of(flags.basis); }},
        {"--interval", "interval", [&] { return yaml_of(flags.interval); }},
        {"--grid", "grid", [&] { return yaml_of(flags.grid); }},
@@ -46,8 +45,8 @@ int run_solve_command(const CLI::App& command, const CommonOptions& common, Solv
        {"--discretization", "discretization", [&] { return yaml_of(flags.discretization); }},
        {"--moment-tolerance", "moment_tolerance",
         [&] { return yaml_of(flags.moment_tolerance); }}});
-  if (print_config_if_asked(config, common)) return 0;
-  const SolveSettings o = solve_settings_from(config);
+  if (!cmd) return 0;
+  const SolveSettings o = solve_settings_from(cmd->config());
   if (o.input.empty()) {
     const nlohmann::json answer = solve_instance(o);
     std::printf("%s\n", answer.dump(2).c_str());

@@ -30,10 +30,10 @@ struct SweepOptions {
 };
 
 int run_sweep_command(const SweepOptions& options) {
-  Config config = resolve_config(sweep_specs(), options.common);
-  apply_flags(*options.command, config,
-              {{"--screen", "screen.fraction", [&] { return YAML::Node(options.screen); }}});
-  if (print_config_if_asked(config, options.common)) return 0;
+  auto cmd = CommandRun::begin(
+      sweep_specs(), options.common, *options.command,
+      {{"--screen", "screen.fraction", [&] { return YAML::Node(options.screen); }}});
+  if (!cmd) return 0;
   SweepJob job;
   std::tie(job.shard, job.shards) = parse_shard(options.shard);
   job.out = options.common.out;
@@ -41,8 +41,8 @@ int run_sweep_command(const SweepOptions& options) {
   job.force = options.common.force;
   job.quiet = options.common.quiet;
   job.arguments = process_arguments();
-  SweepSettings settings =
-      sweep_settings_from(config, resolve_thread_count(dataset_options_from(config).threads));
+  // The sweep stages and commits its own output directory (a killed sweep resumes).
+  SweepSettings settings = sweep_settings_from(cmd->config(), cmd->threads());
   settings.specs = sweep_specs();
   run_sweep(settings, job);
   return 0;

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <limits>
 
-#include "lp/solution.h"
+#include "techniques/lp_options.h"
 #include "techniques/registry.h"
 #include "util/error.h"
 #include "util/number_text.h"
@@ -16,19 +16,13 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// The protocol's and the LP's keys as plain fields; shadow_settings_from turns them into the
-// kernel, the bias and the LP discretisation.
+// The protocol's keys as plain fields; shadow_settings_from turns them into the kernel and the
+// bias.
 struct ShadowOptions {
   int kernel_size = 9;
   double kernel_sigma = 2.4;
   std::string reference;
   double bias_slope = 1, bias_constant = 1e-4;
-  int lp_grid = 256;
-  double lp_lo = 0, lp_hi = 1;
-  std::string lp_discretization;
-  bool lp_quantize = false;
-  std::string lp_backend, lp_moment_box;
-  double lp_beta = 0;
   std::string blend;
   double light_angle = 0;
   int light_directions = 64;
@@ -110,52 +104,6 @@ const std::vector<OptionRecord<ShadowOptions>>& light_options() {
   return records;
 }
 
-const std::vector<OptionRecord<ShadowOptions>>& lp_options() {
-  static const std::vector<OptionRecord<ShadowOptions>> records{
-      {{"lp.grid", OptionType::Integer, "256",
-        "LP techniques: uniform grid points on the interval.", 2, 1e7},
-       &ShadowOptions::lp_grid},
-      {{"lp.lo", OptionType::Number, "0", "LP techniques: admissible interval, lower end."},
-       &ShadowOptions::lp_lo},
-      {{"lp.hi", OptionType::Number, "1", "LP techniques: admissible interval, upper end."},
-       &ShadowOptions::lp_hi},
-      {{"lp.discretization",
-        OptionType::String,
-        "grid",
-        "LP techniques: grid (Problem 1 on the grid and the kernel's depths, warm-started) or "
-        "continuous (on all of [lp.lo, lp.hi], exchange method with a certificate; "
-        "docs/reference.md "
-        "§2).",
-        -kInf,
-        kInf,
-        {"grid", "continuous"}},
-       &ShadowOptions::lp_discretization},
-      {{"lp.quantize", OptionType::Boolean, "false",
-        "LP techniques: round depths to the grid instead of adding them."},
-       &ShadowOptions::lp_quantize},
-      {{"lp.backend", OptionType::String, "fast", "LP backend.", -kInf, kInf, lp::backend_names()},
-       &ShadowOptions::lp_backend},
-      {{"lp.moment_box",
-        OptionType::String,
-        "none",
-        "LP techniques: none (the kernel's exact moments) or a storage format (double, float32, "
-        "unorm16 for power4/power2): Problem 1 over every distribution whose stored moments lie "
-        "within that format's rounding of the kernel's (docs/reference.md §2; GLPK, no warm "
-        "start).",
-        -kInf,
-        kInf,
-        {"none", "double", "float32", "unorm16"}},
-       &ShadowOptions::lp_moment_box},
-      {{"lp.beta", OptionType::Number, "0",
-        "LP techniques: G + beta (G+ - G), G+ the LP's maximum of the mass at or in front of z_f "
-        "(docs/reference.md §2): seed 004's blend of its closed forms' bounds, for any basis. 0 is "
-        "the sharp lower bound; above 0 an LP may over-darken. Grid discretisation only.",
-        0, 1},
-       &ShadowOptions::lp_beta},
-  };
-  return records;
-}
-
 }  // namespace
 
 std::vector<OptionSpec> shadow_option_specs() {
@@ -166,7 +114,7 @@ std::vector<OptionSpec> shadow_option_specs() {
   for (auto& s : option_specs(light_options())) specs.push_back(s);
   for (auto& s : option_specs(soft_option_records())) specs.push_back(s);
   for (auto& s : technique_option_specs()) specs.push_back(s);
-  for (auto& s : option_specs(lp_options())) specs.push_back(s);
+  for (auto& s : lp_option_specs()) specs.push_back(s);
   return specs;
 }
 
@@ -174,43 +122,6 @@ GaussianKernel kernel_from(const Config& config) {
   ShadowOptions o;
   read_options(config, kernel_options(), o);
   return make_gaussian_kernel(o.kernel_size, o.kernel_sigma);
-}
-
-lp::Discretization lp_discretization_from(const Config& config) {
-  ShadowOptions o;
-  read_options(config, lp_options(), o);
-  lp::Discretization d;
-  d.grid = o.lp_grid;
-  d.lo = o.lp_lo;
-  d.hi = o.lp_hi;
-  d.quantize = o.lp_quantize;
-  d.continuous = o.lp_discretization == "continuous";
-  if (!(d.lo < d.hi)) throw InputError("lp.lo, lp.hi: expected lo < hi");
-  return d;
-}
-
-std::string lp_backend_from(const Config& config) {
-  ShadowOptions o;
-  read_options(config, lp_options(), o);
-  return o.lp_backend;
-}
-
-std::vector<OptionSpec> lp_option_specs() {
-  return option_specs(lp_options());
-}
-
-void read_lp_params(const Config& config, TechniqueParams& t) {
-  ShadowOptions o;
-  read_options(config, lp_options(), o);
-  t.lp = lp_discretization_from(config);
-  t.lp_backend = o.lp_backend;
-  t.lp_moment_box = o.lp_moment_box;
-  t.lp_beta = o.lp_beta;
-  if (t.lp_beta > 0 && (t.lp.continuous || t.lp_moment_box != "none"))
-    throw InputError(
-        "lp.beta: " + std::to_string(t.lp_beta) +
-        " needs the LP's maximum, which is solved on the grid only; expected lp.beta = 0 with "
-        "lp.discretization = continuous or an lp.moment_box");
 }
 
 EvalSettings shadow_settings_from(const Config& config, int threads) {

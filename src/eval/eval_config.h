@@ -10,14 +10,9 @@
 namespace mb {
 
 std::vector<OptionSpec> shadow_option_specs();
-// The kernel.* and lp.* keys alone (commands that need no technique parameters).
+// The kernel.* keys alone (commands that need no technique parameters; the lp.* keys:
+// techniques/lp_options.h).
 GaussianKernel kernel_from(const Config& config);
-lp::Discretization lp_discretization_from(const Config& config);
-std::string lp_backend_from(const Config& config);
-// The lp.* keys alone, and their values into the LP fields of `params` (discretisation, backend,
-// moment box, beta), validated: for commands whose LP is not a shadow's (oit).
-std::vector<OptionSpec> lp_option_specs();
-void read_lp_params(const Config& config, TechniqueParams& params);
 // Validated settings from a resolved config (InputError naming the key on bad values).
 EvalSettings shadow_settings_from(const Config& config, int threads);
 // `techniques` with the `oracle` row added where the receiver-plane reference needs it

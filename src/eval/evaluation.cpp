@@ -112,8 +112,8 @@ std::string describe_area_lights(const std::vector<ViewData>& views, const AreaL
   if (angles.empty()) return "";
   std::string text = "; reference: the area light's shadow (docs/soft-shadows.md §1), lights of ";
   for (size_t i = 0; i < angles.size(); ++i) text += (i ? ", " : "") + round_trip(angles[i]);
-  return text + " degrees, " + std::to_string(light.directions) +
-         " directions each; the pcf row is the hard shadow";
+  return text + " degrees, " + std::to_string(light.directions) + " directions each; the " +
+         role_name(TechniqueFamily::HardShadow, RowRole::Reference) + " row is the hard shadow";
 }
 
 void check_lp_interval(const std::vector<ViewData>& views, double lo, double hi) {
@@ -135,6 +135,10 @@ void check_lp_interval(const std::vector<ViewData>& views, double lo, double hi)
 const TechniqueRow& shadow_row(const std::string& name) {
   if (const TechniqueRow* row = find_technique(name, TechniqueFamily::SoftShadow)) return *row;
   return technique_row(name, TechniqueFamily::HardShadow);
+}
+
+bool is_view_reference(const std::string& technique, double light_angle_deg) {
+  return technique_role(technique) == RowRole::Reference && !(light_angle_deg > 0);
 }
 
 double technique_darkening_bound(const std::string& name, const EvalSettings& settings) {

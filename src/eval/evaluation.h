@@ -77,6 +77,12 @@ struct TechniqueResult {
 
 // The row of a shadow technique (hard or soft) `name`; InputError (as make_technique's) otherwise.
 const TechniqueRow& shadow_row(const std::string& name);
+// What images name the shadow of an area light itself: a view's reference under it.
+inline constexpr const char* kAreaLightShadow = "area_light";
+// Whether `technique`'s shadow is the reference of a view lit at `light_angle_deg`, which has no
+// error image: the Reference row's under a hard light; under an area light the reference is the
+// light's own shadow (kAreaLightShadow), and that row's is the hard shadow, which has an error.
+bool is_view_reference(const std::string& technique, double light_angle_deg);
 // The technique's proven darkening bound and the reason it has none (Technique::darkening_bound):
 // a soft technique claims none (its row's reason).
 double technique_darkening_bound(const std::string& name, const EvalSettings& settings);

@@ -3,7 +3,6 @@
 #include <omp.h>
 
 #include <chrono>
-#include <limits>
 
 #include "techniques/registry.h"
 #include "util/error.h"
@@ -24,31 +23,6 @@ const std::vector<OptionRecord<OitRunOptions>>& oit_run_options() {
                      "forms, or "
                      "lp:<basis> on the warped depth, e.g. lp:power4, lp:trig4)."}),
        &OitRunOptions::techniques},
-      {{"oit.beta", OptionType::Number, "0.25",
-        "MBOIT's overestimation: A = A- + beta (A+ - A-) from the canonical representation "
-        "(0.25 is the value of the authors' code; 0 gives their lower bound of absorbance).",
-        0, 1},
-       &OitRunOptions::beta},
-      {{"oit.warp",
-        OptionType::String,
-        "logarithmic",
-        "Depth warp onto [0, 1] that every moment-based technique takes its moments of "
-        "(docs/transparency.md §2): logarithmic, the seed's; linear, to measure what it gains.",
-        -std::numeric_limits<double>::infinity(),
-        std::numeric_limits<double>::infinity(),
-        {"logarithmic", "linear"}},
-       &OitRunOptions::warp},
-      {{"oit.depth_range",
-        OptionType::String,
-        "fragments",
-        "The depth range the warp maps onto [0, 1] (docs/transparency.md §2): fragments, the "
-        "frame's nearest and farthest transparent fragment; bounding_sphere, seed 003's, the "
-        "bounding sphere of the scene's transparent geometry along the view (wider: it holds "
-        "geometry the frame does not see).",
-        -std::numeric_limits<double>::infinity(),
-        std::numeric_limits<double>::infinity(),
-        {"fragments", "bounding_sphere"}},
-       &OitRunOptions::depth_range},
       {measures_nothing(
            {"images", OptionType::Boolean, "true",
             "Per camera: the reference and each technique's composite, its CIEDE2000 difference in "
@@ -153,6 +127,25 @@ void run_technique(const DeepFrame& frame, const FrameReference& reference, cons
 }
 
 }  // namespace
+
+OitRows::OitRows(const std::vector<std::string>& techniques) : cameras_(techniques.size()) {
+  for (const auto& name : techniques) overall_.push_back({name, "all", {}, 0});
+}
+
+void OitRows::add(const OitFrameResult& result) {
+  for (size_t k = 0; k < overall_.size(); ++k) {
+    cameras_[k].push_back({overall_[k].technique, result.scene + "/" + result.camera,
+                           result.stats[k], result.seconds[k]});
+    overall_[k].stats.merge(result.stats[k]);
+    overall_[k].seconds += result.seconds[k];
+  }
+}
+
+std::vector<OitRow> OitRows::per_camera() const {
+  std::vector<OitRow> rows;
+  for (const auto& camera : cameras_) rows.insert(rows.end(), camera.begin(), camera.end());
+  return rows;
+}
 
 OitFrameResult evaluate_oit_frame(const DeepFrame& frame, const std::string& scene,
                                   const std::vector<std::string>& techniques,

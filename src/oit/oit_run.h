@@ -17,14 +17,12 @@ namespace mb {
 
 struct OitRunOptions {
   std::vector<std::string> techniques;
-  double beta = 0.25;
-  std::string warp = "logarithmic";
-  std::string depth_range = "fragments";
   bool images = true;
   bool deep_frames = true;
   double delta_e_scale = 10;
 };
 
+// The command's own records; the techniques' (oit.*, lp.*) are techniques/oit/oit_options.h's.
 const std::vector<OptionRecord<OitRunOptions>>& oit_run_options();
 
 // Every technique on one deep frame: its composite and per-pixel CIEDE2000 (for images) and its
@@ -38,6 +36,29 @@ struct OitFrameResult {
   std::vector<std::vector<float>> delta_e;   // per technique, per pixel; -1: no transparency
   std::vector<OitStats> stats;               // per technique
   std::vector<double> seconds;               // per technique, wall clock
+};
+
+// One row of `oit`'s tables: a technique on one camera, or on all of them.
+struct OitRow {
+  std::string technique, camera;  // camera: "<scene>/<camera>", or "all"
+  OitStats stats;
+  double seconds = 0;
+};
+
+// The rows of `oit`'s tables, gathered one camera's result at a time (a frame's composites are
+// held one camera at a time).
+class OitRows {
+ public:
+  explicit OitRows(const std::vector<std::string>& techniques);
+  void add(const OitFrameResult& result);
+  // Each technique over every camera ("all").
+  const std::vector<OitRow>& overall() const { return overall_; }
+  // Each technique on each camera, technique-major as eval's per-view rows.
+  std::vector<OitRow> per_camera() const;
+
+ private:
+  std::vector<OitRow> overall_;
+  std::vector<std::vector<OitRow>> cameras_;  // per technique
 };
 
 // A camera's deep frame and the scene it shows.

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "eval/error_stats.h"
+#include "techniques/registry.h"
 #include "util/number_text.h"
 
 namespace mb {
@@ -48,7 +49,10 @@ std::string blocker_audit_section(const std::vector<ViewBlockerAudit>& audits) {
     }
   if (by_angle.empty()) return "";
   std::ostringstream md;
-  md << "## msm_soft's blocker search against its sharp bounds\n\n"
+  std::string audited;  // the soft rows whose blocker search eval audits
+  for (const TechniqueRow* row : family_rows(TechniqueFamily::SoftShadow))
+    if (row->audits_blocker) audited += (audited.empty() ? "" : ", ") + row->name;
+  md << "## " << audited << "'s blocker search against its sharp bounds\n\n"
      << "On evenly spaced receivers whose search region holds a blocker (soft.audit per view; "
         "blocker_audit.csv), the mean blocker depth that any distribution with the region's four "
         "moments allows lies in [lo, hi] (docs/soft-shadows.md §3). Seed 004's estimate outside "

@@ -9,7 +9,6 @@
 
 #include "report/colour_bar.h"
 #include "report/eval_report.h"
-#include "techniques/registry.h"
 #include "util/image_writer.h"
 
 namespace mb {
@@ -82,7 +81,8 @@ std::vector<float> difference_image(const CameraView& view, const std::vector<do
 }
 
 void write_camera_images(const CameraView& view, const std::vector<std::string>& names,
-                         const std::vector<std::vector<double>>& shadows, const std::string& base,
+                         const std::vector<std::vector<double>>& shadows,
+                         const std::vector<bool>& references, const std::string& base,
                          double scale) {
   const int w = view.width, h = view.height, label = 18, gap = 4;
   const int columns = std::max(1, int(std::ceil(std::sqrt(double(names.size())))));
@@ -98,11 +98,7 @@ void write_camera_images(const CameraView& view, const std::vector<std::string>&
     const std::vector<float> image = shade_camera_view(view, shadows[k]);
     write_image(base + "_" + file_stem(names[k]) + ".png", w, h, 3, image);
     std::vector<float> diff = difference_image(view, shadows[k], scale);
-    // The reference has no difference: PCF, or under an area light its shadow (pcf is then the
-    // hard shadow, which has).
-    const bool soft = view.receivers.soft.angle_deg > 0;
-    const bool reference =
-        names[k] == "area_light" || (technique_role(names[k]) == RowRole::Reference && !soft);
+    const bool reference = references[k];  // no difference: camera/camera_views.h
     if (!reference)
       write_with_colour_bar(base + "_" + file_stem(names[k]) + "_diff.png", diff, w, h, bar);
     const int x0 = int(k % columns) * cell_w, y0 = int(k / columns) * cell_h;
@@ -127,7 +123,7 @@ void write_camera_images(const CameraShadows& shadows, const std::filesystem::pa
                          double scale) {
   std::filesystem::create_directories(dir);
   write_camera_images(
-      shadows.view, shadows.names, shadows.shadows,
+      shadows.view, shadows.names, shadows.shadows, shadows.reference,
       (dir / (shadows.scene + "_" + shadows.light + "_" + shadows.view.camera)).string(), scale);
 }
 

@@ -17,11 +17,12 @@ std::vector<float> shade_camera_view(const CameraView& view, const std::vector<d
 std::vector<float> difference_image(const CameraView& view, const std::vector<double>& shadow,
                                     double scale);
 
-// Writes `<base>_<stem>.png` and `<base>_<stem>_diff.png` per technique (the reference first, no
-// difference: PCF, or under an area light `area_light`, its shadow) and `<base>_sheet.png`: every
+// Writes `<base>_<stem>.png` per technique and `<base>_<stem>_diff.png` per technique that is not
+// `references`' (is_view_reference, or an area light's own shadow), and `<base>_sheet.png`: every
 // technique's image above its difference, labelled.
 void write_camera_images(const CameraView& view, const std::vector<std::string>& names,
-                         const std::vector<std::vector<double>>& shadows, const std::string& base,
+                         const std::vector<std::vector<double>>& shadows,
+                         const std::vector<bool>& references, const std::string& base,
                          double scale);
 // write_camera_images of one camera view into `dir` as <scene>_<light view>_<camera>_*.png.
 void write_camera_images(const CameraShadows& shadows, const std::filesystem::path& dir,

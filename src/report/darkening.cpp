@@ -2,6 +2,7 @@
 
 #include <sstream>
 
+#include "techniques/registry.h"
 #include "util/number_text.h"
 
 namespace mb {
@@ -43,7 +44,9 @@ std::string protocol_text(Reference reference) {
     text +=
         " Reference: receiver_plane, each tap against the fragment's own plane (the ideal filtered "
         "hard shadow); "
-        "the 'oracle' row, F_Z(z_f - delta_f) itself, is the floor that the bias sets for every "
+        "the '" +
+        role_name(TechniqueFamily::HardShadow, RowRole::BiasFloor) +
+        "' row, F_Z(z_f - delta_f) itself, is the floor that the bias sets for every "
         "technique.";
   return text;
 }

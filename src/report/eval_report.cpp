@@ -75,7 +75,9 @@ std::string against_pcss_section(const std::vector<EvalRow>& overall,
                                  const std::vector<EvalRow>& per_angle) {
   std::ostringstream s;
   s << "## Against exact PCSS\n\n"
-    << "Each technique's shadow against `pcss_exact`'s on the same receivers (pcss_errors.csv has "
+    << "Each technique's shadow against `"
+    << role_name(TechniqueFamily::SoftShadow, RowRole::ExactReference)
+    << "`'s on the same receivers (pcss_errors.csv has "
        "every view): the part of its error that is its own sampling, table or moments, not the "
        "PCSS heuristic's (docs/soft-shadows.md §2). Lighter: the technique shows more light.\n\n"
     << "| technique | views | receivers | mean difference % | lighter % | darker % | max |\n"

@@ -10,12 +10,6 @@
 
 namespace mb {
 
-struct OitRow {
-  std::string technique, camera;  // camera: "<scene>/<camera>", or "all"
-  OitStats stats;
-  double seconds = 0;
-};
-
 struct OitReportContext {
   std::string dataset, version, git_sha, compiler, started, settings_text;
   int threads = 0;

@@ -27,16 +27,6 @@ namespace {
 // (0.01 % = 1e-4), as Peters' dissertation counts candidates that realize the top performance.
 constexpr double kTieMargins[] = {1e-4, 5e-4, 1e-3};
 
-// The seed paper's numbers (seed 000 §3.2) that the findings compare against.
-constexpr double kPaperPower = 0.0219, kPaperTrig = 0.0193;
-
-// A candidate's name as the sweep writes it ("f1; f2; ..."), for a named basis set.
-std::string candidate_name(const std::string& set) {
-  std::string name;
-  for (const auto& f : named_basis_set(set)) name += (name.empty() ? "" : "; ") + f;
-  return name;
-}
-
 // The hard-shadow reference row (pcf's role): it has no rank among the candidates.
 bool is_hard_reference(const std::string& name) {
   const TechniqueRow* row = find_technique(name, TechniqueFamily::HardShadow);
@@ -114,34 +104,64 @@ void finding_sizes(std::ostringstream& md, const std::vector<SweepSeries>& serie
   }
 }
 
-// The power and trigonometric bases (the paper: 2.19 % and 1.93 %, the best).
+// The references whose basis the seed paper ranked (seed 000 §3.2), in row order.
+std::vector<SweepReference> ranked_bases() {
+  std::vector<SweepReference> bases;
+  for (const SweepReference& r : sweep_references(TechniqueFamily::HardShadow))
+    if (!r.moments.empty()) bases.push_back(r);
+  return bases;
+}
+
+// A candidate's name as the sweep writes it ("f1; f2; ..."), for an lp: reference.
+std::string candidate_name(const SweepReference& reference) {
+  std::string name;
+  for (const std::string& item : lp_technique_basis(reference.name)) {
+    std::vector<std::string> set = named_basis_set(item);
+    if (set.empty()) set = {item};
+    for (const auto& f : set) name += (name.empty() ? "" : "; ") + f;
+  }
+  return name;
+}
+
+// The bases the seed paper ranked, against the candidates and the paper's numbers.
 void finding_bases(std::ostringstream& md, const std::vector<SweepSeries>& series) {
   const SweepSeries& main = main_series(series);
   md << "### Power and trigonometric moments (" << main.label << ")\n\n";
-  for (const auto& [label, set, paper] :
-       {std::tuple{"power moments", "power4", kPaperPower},
-        std::tuple{"trigonometric moments", "trig4", kPaperTrig}}) {
-    const ResultRow* candidate = find_row(main.ranked, candidate_name(set));
-    const ResultRow* reference = find_row(main.references, std::string("lp:") + set);
+  const std::vector<SweepReference> bases = ranked_bases();
+  for (const SweepReference& basis : bases) {
+    const std::string label = basis.moments + " moments";
+    const ResultRow* candidate = find_row(main.ranked, candidate_name(basis));
+    const ResultRow* reference = find_row(main.references, basis.name);
     const ResultRow* row = candidate ? candidate : reference;
     if (!row) {
-      md << "- " << label << ": neither among the candidates nor a reference (add `lp:" << set
+      md << "- " << label << ": neither among the candidates nor a reference (add `" << basis.name
          << "` to `references`)\n";
       continue;
     }
-    md << "- " << label << " (" << candidate_name(set) << "): " << pct(row->mean) << ", "
+    md << "- " << label << " (" << candidate_name(basis) << "): " << pct(row->mean) << ", "
        << rank_text(main, row->mean) << (candidate ? "" : ", from the reference row")
-       << "; the paper: " << pct(paper) << "\n";
+       << "; the paper: " << pct(basis.seed_error) << "\n";
   }
-  const ResultRow* power = find_row(main.references, "lp:power4");
-  const ResultRow* trig = find_row(main.references, "lp:trig4");
-  if (power && trig)
-    md << "\nThe paper found trigonometric moments best and power moments close behind. Here "
-       << (trig->mean < power->mean
-               ? "trigonometric moments are the better of the two"
-               : "power moments are the better of the two (the paper: trigonometric)")
-       << ", by " << percent_text(std::abs(trig->mean - power->mean))
+  // The paper's best basis against its runner-up, where both were measured.
+  std::vector<std::pair<const SweepReference*, const ResultRow*>> measured;
+  for (const SweepReference& basis : bases)
+    if (const ResultRow* row = find_row(main.references, basis.name))
+      measured.emplace_back(&basis, row);
+  std::stable_sort(measured.begin(), measured.end(), [](const auto& a, const auto& b) {
+    return a.first->seed_error < b.first->seed_error;
+  });
+  if (measured.size() == 2 && measured.size() == bases.size()) {
+    const auto& [best, best_row] = measured[0];
+    const auto& [next, next_row] = measured[1];
+    md << "\nThe paper found " << best->moments << " moments best and " << next->moments
+       << " moments close behind. Here "
+       << (best_row->mean < next_row->mean
+               ? best->moments + " moments are the better of the two"
+               : next->moments + " moments are the better of the two (the paper: " + best->moments +
+                     ")")
+       << ", by " << percent_text(std::abs(best_row->mean - next_row->mean))
        << " percentage points; the best candidate is " << pct(main.best()) << ".\n";
+  }
   md << "\n";
 }
 
@@ -149,61 +169,55 @@ void finding_bases(std::ostringstream& md, const std::vector<SweepSeries>& serie
 void finding_lp_grid_bias(std::ostringstream& md, const std::vector<SweepSeries>& series) {
   const SweepSeries& main = main_series(series);
   // The LP grid's bias (docs/reference.md §2): a grid admits fewer distributions than the interval,
-  // so every candidate's LP error is optimistic. Two bases have closed forms of the continuous
-  // Problem 1 on [0, 1] (Hausdorff 4MSM, trigonometric MSM), so this run measures the bias there.
-  {
-    const std::optional<LpGridIdentity> lp_grid = lp_grid_of(main.meta);
-    const bool parsed = lp_grid.has_value();
-    const int grid = parsed ? lp_grid->grid : 0;
-    const double lo = parsed ? lp_grid->lo : 0, hi = parsed ? lp_grid->hi : 0;
-    md << "### The LP grid's bias (" << main.label << ")\n\n";
-    if (!parsed) {
-      md << "- the database does not record its LP discretisation\n\n";
-    } else {
-      md << "Each candidate is judged by an LP on " << grid << " grid points of [" << round_trip(lo)
-         << ", " << round_trip(hi)
-         << "] plus the kernel's depths. A grid admits fewer distributions than the interval, so "
-            "every LP error is optimistic (docs/reference.md §2), by an amount that varies by "
-            "candidate. Measured in this run where the continuous problem has a closed form:\n\n";
-      bool measured = false;
-      for (const auto& [lp_name, closed, basis] :
-           {std::tuple{"lp:power4", "hausdorff4", "power moments"},
-            std::tuple{"lp:trig4", "tmsm", "trigonometric moments"}}) {
-        const ResultRow* lp_row = find_row(main.references, lp_name);
-        const ResultRow* exact = find_row(main.references, closed);
-        if (!lp_row || !exact || lo != 0 || hi != 1) continue;
-        measured = true;
-        md << "- " << basis << ": " << lp_name << " " << pct(lp_row->mean) << " on the grid, "
-           << closed << " " << pct(exact->mean) << " on [0, 1]: the grid understates the error by "
-           << percent_text(exact->mean - lp_row->mean) << " percentage points\n";
-      }
-      if (!measured)
-        md << "- not measured: it needs the references lp:power4 and hausdorff4 or lp:trig4 and "
-              "tmsm, and the LP on [0, 1]\n";
-      md << "\nDifferences between candidates smaller than this bias are not resolved by the LP "
-            "(compare the tie margins below); a finer `lp.grid` shrinks it.\n\n";
-    }
+  // so every candidate's LP error is optimistic. Rows that solve the continuous Problem 1 on
+  // [0, 1] in closed form (techniques/lp_technique.h, continuous_lp_of) measure the bias there.
+  const std::optional<LpGridIdentity> lp_grid = lp_grid_of(main.meta);
+  md << "### The LP grid's bias (" << main.label << ")\n\n";
+  if (!lp_grid) {
+    md << "- the database does not record its LP discretisation\n\n";
+    return;
   }
+  const double lo = lp_grid->lo, hi = lp_grid->hi;
+  md << "Each candidate is judged by an LP on " << lp_grid->grid << " grid points of ["
+     << round_trip(lo) << ", " << round_trip(hi)
+     << "] plus the kernel's depths. A grid admits fewer distributions than the interval, so "
+        "every LP error is optimistic (docs/reference.md §2), by an amount that varies by "
+        "candidate. Measured in this run where the continuous problem has a closed form:\n\n";
+  bool measured = false;
+  std::string needs;
+  for (const TechniqueRow* closed : family_rows(TechniqueFamily::HardShadow)) {
+    const std::string lp_name = continuous_lp_of(*closed);
+    if (lp_name.empty()) continue;
+    needs += (needs.empty() ? "" : " or ") + lp_name + " and " + closed->name;
+    std::string basis = lp_name;
+    for (const SweepReference& r : ranked_bases())
+      if (r.name == lp_name) basis = r.moments + " moments";
+    const ResultRow* lp_row = find_row(main.references, lp_name);
+    const ResultRow* exact = find_row(main.references, closed->name);
+    if (!lp_row || !exact || lo != 0 || hi != 1) continue;
+    measured = true;
+    md << "- " << basis << ": " << lp_name << " " << pct(lp_row->mean) << " on the grid, "
+       << closed->name << " " << pct(exact->mean)
+       << " on [0, 1]: the grid understates the error by "
+       << percent_text(exact->mean - lp_row->mean) << " percentage points\n";
+  }
+  if (!measured)
+    md << "- not measured: it needs the references " << needs << ", and the LP on [0, 1]\n";
+  md << "\nDifferences between candidates smaller than this bias are not resolved by the LP "
+        "(compare the tie margins below); a finer `lp.grid` shrinks it.\n\n";
 }
 
-// The classic techniques against the candidates.
+// The classic techniques against the candidates, with what the seeds found of each.
 void finding_classics(std::ostringstream& md, const std::vector<SweepSeries>& series) {
   const SweepSeries& main = main_series(series);
   md << "### Classic techniques (" << main.label << ")\n\n";
-  const struct {
-    const char* name;
-    const char* expectation;
-  } classics[] = {
-      {"vsm", "two moments: far behind every four-function candidate (seed 000 Figure 4)"},
-      {"esm", "one exponential moment: far behind (seed 000 Figure 4)"},
-      {"hamburger4", "the power moments' closed form on R: slightly above lp:power4 on [0, 1]"},
-      {"hausdorff4",
-       "the power moments' closed form on [0, 1]: equal to lp:power4 up to the LP's grid"},
-      {"tmsm", "the trigonometric closed form: equal to lp:trig4 up to the LP's grid"},
-      {"hamburger6", "six moments: better than every four-function candidate (seed 004)"},
-  };
+  std::vector<SweepReference> classics;
+  for (const SweepReference& r : sweep_references(TechniqueFamily::HardShadow))
+    if (!r.expectation.empty()) classics.push_back(r);
+  std::stable_sort(classics.begin(), classics.end(),
+                   [](const auto& a, const auto& b) { return a.place < b.place; });
   bool any = false;
-  for (const auto& c : classics) {
+  for (const SweepReference& c : classics) {
     const ResultRow* r = find_row(main.references, c.name);
     if (!r) continue;
     any = true;
@@ -489,7 +503,19 @@ std::string sweep_report_markdown(const std::vector<SweepSeries>& series,
        << "\n";
   }
   auto meta = main.meta;
-  md << "- dataset " << meta["dataset"] << "; " << meta["settings"] << "\n";
+  // Series whose measurement options differ (report --allow-different) were measured under
+  // different settings: each states its own then, none is shown as the others'.
+  const auto setting_of = [](const SweepSeries& s) {
+    auto m = s.meta;
+    return "dataset " + m["dataset"] + "; " + m["settings"];
+  };
+  const bool shared = std::all_of(series.begin(), series.end(), [&](const SweepSeries& s) {
+    return setting_of(s) == setting_of(main);
+  });
+  if (shared)
+    md << "- " << setting_of(main) << "\n";
+  else
+    for (const auto& s : series) md << "- " << s.label << ": " << setting_of(s) << "\n";
   uint64_t failures = 0, lps = 0;
   for (const auto& s : series)
     for (const auto& r : s.ranked)

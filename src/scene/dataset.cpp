@@ -46,6 +46,7 @@ DatasetDesc load_dataset(const std::string& name_or_path) {
     desc.scene_files.push_back(path.lexically_normal().string());
   }
   if (desc.scene_files.empty()) root.fail("scenes", "a dataset needs at least one scene");
+  desc.medium = parse_medium(root);
   root.finish();
   return desc;
 }

@@ -1,8 +1,11 @@
 #pragma once
 // A dataset: the scenes (and so the light views) an evaluation runs on (docs/reference.md §3: the
 // paper used four views of three scenes).
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "scene/medium.h"
 
 namespace mb {
 
@@ -14,6 +17,8 @@ struct DatasetDesc {
   // Soft shadows (docs/soft-shadows.md §1): each view that names no light angle of its own is
   // evaluated once per angle listed here, in degrees; empty: the option light.angle.
   std::vector<double> light_angles;
+  // The medium of every scene that declares none of its own (docs/scattering.md §1).
+  std::optional<MediumDesc> medium;
 };
 
 // `name_or_path` is a YAML file, or a name looked up in the source tree's configs/datasets/.

@@ -263,6 +263,7 @@ SceneDesc parse_scene(const std::string& file) {
     camera.finish();
     desc.cameras.push_back(c);
   }
+  desc.medium = parse_medium(root);
   root.finish();
   return desc;
 }
@@ -278,6 +279,7 @@ Scene build_scene(const SceneDesc& desc) {
   scene.name = desc.name;
   scene.views = desc.views;
   scene.cameras = desc.cameras;
+  scene.medium = desc.medium;
   for (const auto& part : desc.parts) {
     scene.opacity.push_back(part.opacity);
     scene.color.push_back(part.color);

@@ -2,11 +2,13 @@
 // A scene: parts (mesh files or procedural generators, each with a transform) and the light views
 // that look at it. Parsed from YAML into description structs first, then built into triangles.
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "scene/camera.h"
 #include "scene/light_view.h"
+#include "scene/medium.h"
 #include "scene/mesh.h"
 #include "scene/opacity.h"
 
@@ -37,7 +39,8 @@ struct SceneDesc {
   std::string file;
   std::vector<PartDesc> parts;
   std::vector<LightViewDesc> views;
-  std::vector<CameraDesc> cameras;  // optional: camera images of the techniques' shadows
+  std::vector<CameraDesc> cameras;   // optional: camera images of the techniques' shadows
+  std::optional<MediumDesc> medium;  // optional: what `scatter` lights (docs/scattering.md §1)
 };
 
 struct Scene {
@@ -50,6 +53,7 @@ struct Scene {
   bool translucent() const;            // some part is not opaque
   std::vector<LightViewDesc> views;
   std::vector<CameraDesc> cameras;
+  std::optional<MediumDesc> medium;
 };
 
 SceneDesc parse_scene(const std::string& file);

@@ -106,6 +106,18 @@ void check_depths_inside(const Instance& instance, const std::vector<double>& in
                                : ""));
 }
 
+// Extra points join I's discretisation (docs/reference.md §2): one outside the interval would make
+// Problem 1's admissible set larger than the interval, and the answer no answer on I.
+void check_points_inside(const std::vector<double>& points, const std::vector<double>& interval,
+                         const std::string& points_key, const std::string& interval_key) {
+  for (double p : points)
+    if (!(interval[0] <= p && p <= interval[1]))
+      throw InputError(points_key + ": point " + round_trip(p) + " lies outside " + interval_key +
+                       " [" + round_trip(interval[0]) + ", " + round_trip(interval[1]) +
+                       "]; expected points of the interval (they refine its discretisation), "
+                       "or an interval that holds them");
+}
+
 // Raw moments stand for every vector within their rounding (docs/reference.md §2): where G moves
 // across that box by more than the answer's own uncertainty (the bracket, or the certificate on a
 // grid), the range says how little the moments determine (continuous/moment_range.h).
@@ -422,6 +434,9 @@ json solve_line(const std::string& line, int number, const SolveSettings& o, lp:
   check_depths_inside(instance, interval, "key 'depths'",
                       query.has("interval") ? "key 'interval'" : "key 'interval' (default)",
                       query.has("points"));
+  if (query.has("points"))
+    check_points_inside(query.numbers("points"), interval, "key 'points'",
+                        query.has("interval") ? "key 'interval'" : "key 'interval' (default)");
   out.update(solve_one(
       backend, factories, query.strings("basis"), d, instance, query.number("zf"),
       query.has("points") ? query.numbers("points") : std::vector<double>{}, o.check,
@@ -520,6 +535,7 @@ nlohmann::json solve_instance(const SolveSettings& o) {
   const Instance instance = checked_instance(o.moments, o.depths, o.weights);
   check_depths_inside(instance, o.interval, "depths (--depths)", "interval (--interval)",
                       !o.points.empty());
+  check_points_inside(o.points, o.interval, "points (--points)", "interval (--interval)");
   FactoryCache factories;
   return solve_one(*backend, factories, o.basis, disc, instance, o.zf, o.points, o.check,
                    o.moment_tolerance);

@@ -23,9 +23,9 @@ struct FramePlan {
   double weight = 0;
 };
 
-FramePlan plan_frame(const DeepFrame& frame, WarpKind kind) {
+FramePlan plan_frame(const DeepFrame& frame, WarpKind kind, DepthRangeKind range) {
   FramePlan plan;
-  const DepthWarp warp = DepthWarp::between(frame.nearest(), frame.farthest(), kind);
+  const DepthWarp warp = frame_warp(frame, kind, range);
   plan.warped.resize(frame.fragments());
   plan.reference.resize(frame.fragments());
   for (size_t f = 0; f < frame.fragments(); ++f) plan.warped[f] = warp(frame.depth[f]);
@@ -45,19 +45,19 @@ constexpr const char* kRoundingReason =
     "not proven: the moments of close fragments, rounded to double, move the LP's bound "
     "(docs/transparency.md §7)";
 
-// The candidate's technique name: lp: and its functions.
+// The candidate's technique name: the LP of its functions.
 std::string lp_name(const Basis& basis) {
-  std::string name = "lp:";
-  const auto names = basis.names();
-  for (size_t j = 0; j < names.size(); ++j) name += (j ? "; " : "") + names[j];
-  return name;
+  std::string functions;
+  for (const std::string& f : basis.names()) functions += (functions.empty() ? "" : "; ") + f;
+  return lp_technique_name(functions);
 }
 
 class OitTarget : public SweepTarget {
  public:
   OitTarget(const std::vector<SceneFrame>& frames, const OitParams& params, int threads)
       : frames_(frames), params_(params), threads_(threads) {
-    for (const auto& f : frames_) plans_.push_back(plan_frame(f.frame, params_.warp));
+    for (const auto& f : frames_)
+      plans_.push_back(plan_frame(f.frame, params_.warp, params_.depth_range));
   }
 
   std::vector<std::string> view_names() const override {

@@ -21,6 +21,7 @@
 #include "sweep/sweep_directory.h"
 #include "sweep/sweep_plan.h"
 #include "techniques/lp_technique.h"
+#include "techniques/oit/oit_options.h"
 #include "techniques/registry.h"
 #include "techniques/technique.h"
 #include "util/error.h"
@@ -36,12 +37,15 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-// The transmittance rows oit runs by default, with the six-moment LP beside the candidates'.
+// The transmittance rows oit runs by default, then the family's sweep references (the LP beside
+// the candidates').
 std::string oit_reference_default() {
   std::string list;
   for (const TechniqueRow* row : family_rows(TechniqueFamily::Transmittance))
-    if (row->default_run && !row->prefix()) list += row->name + ", ";
-  return "[" + list + "lp:power6]";
+    if (row->default_run && !row->prefix()) list += (list.empty() ? "" : ", ") + row->name;
+  for (const SweepReference& reference : sweep_references(TechniqueFamily::Transmittance))
+    list += (list.empty() ? "" : ", ") + reference.name;
+  return "[" + list + "]";
 }
 
 // The catalog, the sample and the reference lists choose which candidates and rows a sweep
@@ -82,10 +86,9 @@ const std::vector<OptionRecord<SweepSettings>>& candidate_options() {
             "target transparency: oit techniques evaluated once on the same frames, for the report "
             "(MBOIT at oit.beta, lp:<basis> at lp.beta)."}),
        &SweepSettings::oit_references},
-      {selects_runs(
-           {"references", OptionType::StringList,
-            "[pcf, vsm, esm, hamburger4, hausdorff4, hamburger6, tmsm, lp:power4, lp:trig4]",
-            "Techniques evaluated once on the same dataset, for the report."}),
+      {selects_runs({"references", OptionType::StringList,
+                     sweep_reference_list(TechniqueFamily::HardShadow),
+                     "Techniques evaluated once on the same dataset, for the report."}),
        &SweepSettings::references},
   };
   return records;
@@ -131,18 +134,11 @@ const std::vector<OptionRecord<ScreenSettings>>& screen_options() {
 
 }  // namespace
 
-// oit.beta and oit.warp, declared with the oit command's options: the MBOIT reference rows'
-// overestimation and the depth warp of the transparency target.
-OptionSpec oit_spec(const std::string& name) {
-  for (const auto& spec : option_specs(oit_run_options()))
-    if (spec.name == name) return spec;
-  throw std::logic_error("oit_run_options lacks " + name);
-}
-
+// The transmittance family's options (techniques/oit/oit_options.h), every one of them: the MBOIT
+// reference rows' overestimation, and the depth warp and its range of the transparency target.
 std::vector<OptionSpec> sweep_option_specs() {
   std::vector<OptionSpec> specs = option_specs(candidate_options());
-  specs.push_back(oit_spec("oit.beta"));
-  specs.push_back(oit_spec("oit.warp"));
+  for (const auto& spec : oit_option_specs()) specs.push_back(spec);
   for (auto& s : option_specs(screen_options())) specs.push_back(s);
   return specs;
 }
@@ -169,8 +165,7 @@ SweepSettings sweep_settings_from(const Config& config, int threads) {
                      "an area light's (docs/soft-shadows.md), expected 0 (eval takes light.angle "
                      "> 0)");
   read_options(config, screen_options(), s.screen);
-  s.oit_beta = config.number("oit.beta");
-  s.oit_warp = config.string("oit.warp");
+  s.oit = oit_params_from(config);
   s.references =
       s.target == "transparency" ? s.oit_references : with_oracle_row(s.references, s.eval.bias);
   s.config_yaml = config.to_yaml();
@@ -429,15 +424,18 @@ namespace {
 
 // The transparency target's settings sentence (the report's and a resume's "settings").
 std::string describe_transparency(const SweepSettings& s) {
-  const auto& lp = s.eval.technique;
+  const auto& lp = s.oit.lp;
   return "target transparency: lp:<candidate> with lp.beta " + round_trip(lp.lp_beta) +
-         " on the warped depth (" + s.oit_warp +
-         " between each camera's nearest and farthest transparent fragment, docs/transparency.md "
-         "§2), grid " +
-         std::to_string(lp.lp.grid) + " on [" + round_trip(lp.lp.lo) + ", " + round_trip(lp.lp.hi) +
+         " on the warped depth (" +
+         std::string(s.oit.warp == WarpKind::Linear ? "linear" : "logarithmic") +
+         (s.oit.depth_range == DepthRangeKind::BoundingSphere
+              ? " over the transparent geometry's bounding sphere seen from each camera"
+              : " between each camera's nearest and farthest transparent fragment") +
+         ", docs/transparency.md §2), grid " + std::to_string(lp.lp.grid) + " on [" +
+         round_trip(lp.lp.lo) + ", " + round_trip(lp.lp.hi) +
          "] and the pixel's fragment depths, backend " + lp.lp_backend +
          "; error: opacity-weighted |T_ref - T|; MBOIT references at beta " +
-         round_trip(s.oit_beta);
+         round_trip(s.oit.beta);
 }
 
 // What the sweep measures, rendered before anything is written (bad input leaves no output).
@@ -458,11 +456,7 @@ PreparedTarget prepare_target(const SweepSettings& s, const DatasetDesc& dataset
       throw InputError("lp.lo, lp.hi: [" + round_trip(lp.lo) + ", " + round_trip(lp.hi) +
                        "] excludes part of the warped depth [0, 1] of target transparency "
                        "(expected lp.lo <= 0 and lp.hi >= 1)");
-    OitParams params;
-    params.beta = s.oit_beta;
-    params.warp = warp_kind(s.oit_warp);
-    params.lp = s.eval.technique;
-    p.target = make_oit_target(p.frames, params, s.eval.threads);
+    p.target = make_oit_target(p.frames, s.oit, s.eval.threads);
   } else {
     // A dataset's light_angles, or a scene's view naming its own light angle, make area lights as
     // light.angle does (sweep_settings_from refuses those); refused before rendering.

@@ -10,6 +10,7 @@
 
 #include "eval/evaluation.h"
 #include "screen/screening.h"
+#include "techniques/oit/oit_technique.h"
 #include "util/config.h"
 
 namespace mb {
@@ -28,8 +29,9 @@ struct SweepSettings {
   EvalSettings eval;
   std::string target = "shadows";           // sweep_target.h: shadows or transparency
   std::vector<std::string> oit_references;  // the transparency target's reference rows
-  double oit_beta = 0.25;                   // their MBOIT overestimation (oit.beta)
-  std::string oit_warp = "logarithmic";     // the warped depth of every technique (oit.warp)
+  // Their MBOIT overestimation (oit.beta), the warped depth of every technique (oit.warp) and the
+  // candidates' LP (lp.*).
+  OitParams oit;
   std::string dataset;
   int resolution = 0;
   std::vector<std::string> catalog, candidates, references;

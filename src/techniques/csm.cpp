@@ -44,17 +44,15 @@ class CsmTechnique : public Technique {
 
 using P = TechniqueParams;
 
-const TechniqueOption kCsmTerms{
-    {"csm.terms", OptionType::Integer, "8",
-     "CSM Fourier terms M (2M channels: cos and sin of (2k - 1) pi z).", 1, 16},
-    &P::csm_terms};
+const TechniqueOption kCsmTerms{{"csm.terms", OptionType::Integer, "8",
+                                 "CSM Fourier terms M (2M channels: cos and sin of (2k - 1) pi z).",
+                                 1, 16}};
 const TechniqueOption kCsmDamping{
     {"csm.damping", OptionType::Number, "2",
-     "CSM ringing suppression: term k scaled by exp(-damping (k/M)^2).", 0, 100},
-    &P::csm_damping};
+     "CSM ringing suppression: term k scaled by exp(-damping (k/M)^2).", 0, 100}};
 
 std::vector<std::string> csm_lp_basis(const P& p) {
-  return csm_channels(p.csm_terms);
+  return csm_channels(p.integer(kCsmTerms));
 }
 
 std::vector<TechniqueRow> rows() {
@@ -66,9 +64,10 @@ std::vector<TechniqueRow> rows() {
        .bound = std::string(kNotProven) + ": truncation rings (Gibbs)",
        .options = {&kCsmTerms, &kCsmDamping},
        .make = [](const std::string&, const P& p) -> std::unique_ptr<Technique> {
-         return std::make_unique<CsmTechnique>(p.csm_terms, p.csm_damping);
+         return std::make_unique<CsmTechnique>(p.integer(kCsmTerms), p.number(kCsmDamping));
        },
-       .verify = VerifyRecipe{.judge = VerifyRecipe::Judge::Exceedance, .lp_basis = csm_lp_basis}}};
+       .verify = VerifyRecipe{.judge = VerifyRecipe::Judge::Exceedance, .lp_basis = csm_lp_basis},
+       .verify_place = 12}};
 }
 
 const TechniqueRegistration kRegistered(rows);

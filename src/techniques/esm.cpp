@@ -25,7 +25,7 @@ class EsmTechnique : public Technique {
 // e^{c(z-1)}, the same span scaled by e^{-c}, whose values stay <= 1 (the LP recomputes the moments
 // from the distribution, so the scale of the closed form's moment does not matter).
 std::vector<std::string> esm_basis(const TechniqueParams& p) {
-  return {"exp(" + round_trip(p.esm_c) + "*(z-1))"};
+  return {"exp(" + round_trip(p.number(kEsmC)) + "*(z-1))"};
 }
 
 std::vector<TechniqueRow> rows() {
@@ -37,16 +37,19 @@ std::vector<TechniqueRow> rows() {
            .options = {&kEsmC},
            .default_run = true,
            .make = [](const std::string&, const TechniqueParams& p) -> std::unique_ptr<Technique> {
-             return std::make_unique<EsmTechnique>(p.esm_c);
+             return std::make_unique<EsmTechnique>(p.number(kEsmC));
            },
-           .verify = VerifyRecipe{.lp_basis = esm_basis, .lo = -4}}};
+           .verify = VerifyRecipe{.lp_basis = esm_basis, .lo = -4},
+           .verify_place = 5,
+           .sweep_references = {{.expectation = "one exponential moment: far behind (seed 000 "
+                                                "Figure 4)",
+                                 .place = 2}}}};
 }
 
 const TechniqueRegistration kRegistered(rows);
 
 }  // namespace
 
-const TechniqueOption kEsmC{{"esm.c", OptionType::Number, "80", "ESM exponent c.", 1e-6, 700},
-                            &TechniqueParams::esm_c};
+const TechniqueOption kEsmC{{"esm.c", OptionType::Number, "80", "ESM exponent c.", 1e-6, 700}};
 
 }  // namespace mb

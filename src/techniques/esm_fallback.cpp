@@ -91,19 +91,17 @@ const TechniqueOption kEsmZmaxOffset{
      "esm_zmax: a fragment fails when the kernel's deepest texel lies beyond z_f plus this offset "
      "(seed 002 §3.3 gives no value; 0.01 of the depth range clears a receiver's own sloped "
      "plane).",
-     0, 1},
-    &P::esm_zmax_offset};
+     0, 1}};
 const TechniqueOption kEsmThreshold{
     {"esm.threshold", OptionType::Number, "0.01",
      "ESM with the threshold classifier: a fragment fails when its filtered ESM value exceeds 1 + "
      "this epsilon (seed 002 §3.3 gives no value).",
-     0, 1e6},
-    &P::esm_fail_threshold};
+     0, 1e6}};
 
 template <EsmClassifier kClassifier>
 std::unique_ptr<Technique> make(const std::string& name, const P& p) {
-  return std::make_unique<EsmFallbackTechnique>(name, kClassifier, p.esm_c, p.esm_zmax_offset,
-                                                p.esm_fail_threshold);
+  return std::make_unique<EsmFallbackTechnique>(name, kClassifier, p.number(kEsmC),
+                                                p.number(kEsmZmaxOffset), p.number(kEsmThreshold));
 }
 
 std::vector<TechniqueRow> rows() {

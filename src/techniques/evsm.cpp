@@ -61,27 +61,28 @@ const TechniqueOption kEvsmCPositive{
     {"evsm.c_positive", OptionType::Number, "40",
      "EVSM exponent of the positive warp exp(c z) (exp(2 c z) must fit float32 for "
      "evsm*_float: c <= 44).",
-     1e-6, 300},
-    &P::evsm_c_positive};
+     1e-6, 300}};
 const TechniqueOption kEvsmCNegative{{"evsm.c_negative", OptionType::Number, "5",
-                                      "EVSM4 exponent of the negative warp -exp(-c z).", 1e-6, 300},
-                                     &P::evsm_c_negative};
+                                      "EVSM4 exponent of the negative warp -exp(-c z).", 1e-6,
+                                      300}};
 
 template <bool kFour, bool kFloat>
 std::unique_ptr<Technique> make(const std::string& name, const P& p) {
-  return std::make_unique<EvsmTechnique>(name, kFour, kFloat, p.evsm_c_positive, p.evsm_c_negative);
+  return std::make_unique<EvsmTechnique>(name, kFour, kFloat, p.number(kEvsmCPositive),
+                                         p.number(kEvsmCNegative));
 }
 
 // verify's LP: the warps scaled by their values at z = 1, so that the LP's columns stay <= 1
 // (esm.cpp).
 std::vector<std::string> evsm2_basis(const P& p) {
-  return {"exp(" + round_trip(p.evsm_c_positive) + "*(z-1))",
-          "exp(" + round_trip(2 * p.evsm_c_positive) + "*(z-1))"};
+  const double c = p.number(kEvsmCPositive);
+  return {"exp(" + round_trip(c) + "*(z-1))", "exp(" + round_trip(2 * c) + "*(z-1))"};
 }
 std::vector<std::string> evsm4_basis(const P& p) {
   std::vector<std::string> functions = evsm2_basis(p);
-  functions.push_back("-exp(-" + round_trip(p.evsm_c_negative) + "*z)");
-  functions.push_back("exp(-" + round_trip(2 * p.evsm_c_negative) + "*z)");
+  const double c = p.number(kEvsmCNegative);
+  functions.push_back("-exp(-" + round_trip(c) + "*z)");
+  functions.push_back("exp(-" + round_trip(2 * c) + "*z)");
   return functions;
 }
 
@@ -96,7 +97,8 @@ std::vector<TechniqueRow> rows() {
        .bound = kProvenBound,
        .options = {&kEvsmCPositive},
        .make = make<false, false>,
-       .verify = VerifyRecipe{.judge = VerifyRecipe::Judge::LowerBound, .lp_basis = evsm2_basis}},
+       .verify = VerifyRecipe{.judge = VerifyRecipe::Judge::LowerBound, .lp_basis = evsm2_basis},
+       .verify_place = 10},
       {.name = "evsm4",
        .rank = 70,
        .summary = "exponential VSM, both warps, the larger bound",
@@ -104,7 +106,8 @@ std::vector<TechniqueRow> rows() {
        .bound = kProvenBound,
        .options = {&kEvsmCPositive, &kEvsmCNegative},
        .make = make<true, false>,
-       .verify = VerifyRecipe{.judge = VerifyRecipe::Judge::LowerBound, .lp_basis = evsm4_basis}},
+       .verify = VerifyRecipe{.judge = VerifyRecipe::Judge::LowerBound, .lp_basis = evsm4_basis},
+       .verify_place = 11},
       {.name = "evsm2_float",
        .rank = 80,
        .summary = "evsm2 with float32 moments",

@@ -83,8 +83,7 @@ const TechniqueOption kFomTerms{
      "Fourier opacity mapping: terms M of the absorbance's series (2M + 1 coefficients; 3 fills "
      "two "
      "RGBA targets less one channel, the storage of two 4MSM maps; Jansen & Bavoil 2010 vary it).",
-     1, 16},
-    &TechniqueParams::fom_terms};
+     1, 16}};
 
 std::vector<TechniqueRow> rows() {
   return {
@@ -96,7 +95,7 @@ std::vector<TechniqueRow> rows() {
        .bound = std::string(kNotProven) + ": truncation rings, and filtering averages absorbance",
        .options = {&kFomTerms},
        .make = [](const std::string&, const TechniqueParams& p) -> std::unique_ptr<Technique> {
-         return std::make_unique<FomTechnique>(p.fom_terms);
+         return std::make_unique<FomTechnique>(p.integer(kFomTerms));
        }}};
 }
 

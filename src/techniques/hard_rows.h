@@ -28,7 +28,7 @@ inline constexpr char kPower2[] = "power2", kPower4[] = "power4", kPower6[] = "p
 // verify's recipe of a storage row (float32, 16-bit): a lower bound of Problem 1 over its storage's
 // moment box (docs/reference.md §6).
 inline VerifyRecipe storage_box(std::vector<std::string> (*basis)(const TechniqueParams&),
-                                double lo, double hi, bool on_r, double TechniqueParams::*alpha) {
+                                double lo, double hi, bool on_r, const TechniqueOption* alpha) {
   return {.judge = VerifyRecipe::Judge::StorageBox,
           .lp_basis = basis,
           .lo = lo,

@@ -66,7 +66,11 @@ std::vector<TechniqueRow> rows() {
            .storage = "double",
            .bound = "the LP's certified tolerance (lp::kCertifiedError)",
            .solves_lp = true,
-           .make = make_lp_technique}};
+           .make = make_lp_technique,
+           // The seed paper's two bases (seed 000 §3.2: 2.19 % and 1.93 %, the best).
+           .sweep_references = {
+               {.name = "lp:power4", .moments = "power", .seed_error = 0.0219},
+               {.name = "lp:trig4", .moments = "trigonometric", .seed_error = 0.0193}}}};
 }
 
 const TechniqueRegistration kRegistered(rows);
@@ -88,6 +92,18 @@ std::vector<std::string> lp_technique_basis(const std::string& name) {
   if (items.empty())
     throw InputError("technique '" + name + "': expected lp:<basis>, e.g. lp:power4");
   return items;
+}
+
+std::string lp_technique_name(const std::string& basis) {
+  return "lp:" + basis;
+}
+
+std::string continuous_lp_of(const TechniqueRow& row) {
+  if (!row.verify || row.verify->judge != VerifyRecipe::Judge::Exact || row.verify->on_r ||
+      row.verify->lo != 0 || row.verify->hi != 1)
+    return "";
+  const std::vector<std::string> basis = row.verify->lp_basis(TechniqueParams());
+  return basis.size() == 1 ? lp_technique_name(basis[0]) : "";
 }
 
 std::unique_ptr<Technique> make_lp_technique(const std::string& name, const TechniqueParams& p) {

@@ -20,5 +20,13 @@ std::unique_ptr<Technique> make_lp_technique(const std::string& name, const Tech
 
 // The functions of an `lp:` name.
 std::vector<std::string> lp_technique_basis(const std::string& name);
+// The `lp:` name of a basis given as in `lp:` ("power4", "z; z^2").
+std::string lp_technique_name(const std::string& basis);
+
+struct TechniqueRow;
+// The `lp:` technique whose Problem 1 on the continuous interval [0, 1] `row` solves in closed
+// form, as its verify recipe states (sharp, on [0, 1], one named basis): the sweep report measures
+// the LP grid's bias against it (docs/reference.md §2). "" for any other row.
+std::string continuous_lp_of(const TechniqueRow& row);
 
 }  // namespace mb

@@ -66,34 +66,34 @@ class PowerMomentTechnique : public ClosedFormTechnique {
 
 using P = TechniqueParams;
 
-const TechniqueOption kHamburger4Alpha{
-    {"hamburger4.alpha", OptionType::Number, "1e-10", "Moment bias of Hamburger 4MSM in double."},
-    &P::hamburger4_alpha,
-    true};
-const TechniqueOption kHamburger4FloatAlpha{{"hamburger4_float.alpha", OptionType::Number, "5e-6",
-                                             "Moment bias of Hamburger 4MSM in float32."},
-                                            &P::hamburger4_float_alpha,
-                                            true};
-const TechniqueOption kHamburger416bitAlpha{{"hamburger4_16bit.alpha", OptionType::Number, "3e-5",
-                                             "Moment bias of Hamburger 4MSM from 16-bit maps."},
-                                            &P::hamburger4_16bit_alpha,
-                                            true};
+const TechniqueOption kHamburger4Alpha{.spec = {"hamburger4.alpha", OptionType::Number, "1e-10",
+                                                "Moment bias of Hamburger 4MSM in double."},
+                                       .moment_bias = true};
+const TechniqueOption kHamburger4FloatAlpha{
+    .spec = {"hamburger4_float.alpha", OptionType::Number, "5e-6",
+             "Moment bias of Hamburger 4MSM in float32."},
+    .moment_bias = true};
+const TechniqueOption kHamburger416bitAlpha{
+    .spec = {"hamburger4_16bit.alpha", OptionType::Number, "3e-5",
+             "Moment bias of Hamburger 4MSM from 16-bit maps."},
+    .moment_bias = true};
 const TechniqueOption kHausdorff4Alpha{
-    {"hausdorff4.alpha", OptionType::Number, "1e-10", "Moment bias of Hausdorff 4MSM."},
-    &P::hausdorff4_alpha,
-    true};
+    .spec = {"hausdorff4.alpha", OptionType::Number, "1e-10", "Moment bias of Hausdorff 4MSM."},
+    .moment_bias = true};
 const TechniqueOption kHamburger6Alpha{
-    {"hamburger6.alpha", OptionType::Number, "1e-10",
-     "Moment bias of six-moment Hamburger MSM. Not a proven bound at any alpha (rounding of six "
-     "moments); measured over-darkening: up to 0.23 at 1e-10, none beyond alpha at 1e-8, which "
-     "costs 0.33 pp of mean error on the default dataset (FINDINGS §7d)."},
-    &P::hamburger6_alpha,
-    true};
+    .spec =
+        {"hamburger6.alpha", OptionType::Number, "1e-10",
+         "Moment bias of six-moment Hamburger MSM. Not a proven bound at any alpha (rounding of "
+         "six "
+         "moments); measured over-darkening: up to 0.23 at 1e-10, none beyond alpha at 1e-8, which "
+         "costs 0.33 pp of mean error on the default dataset (FINDINGS §7d)."},
+    .moment_bias = true};
 
 // A row's technique: its solver, storage and moment bias.
-template <PowerSolver kSolver, MomentStorage (*kStorage)(), double P::*kAlpha>
+template <PowerSolver kSolver, MomentStorage (*kStorage)(), const TechniqueOption* kAlpha>
 std::unique_ptr<Technique> make(const std::string& name, const P& p) {
-  return std::make_unique<PowerMomentTechnique>(name, kSolver, kStorage(), p.*kAlpha, p.beta);
+  return std::make_unique<PowerMomentTechnique>(name, kSolver, kStorage(), p.number(*kAlpha),
+                                                p.number(kHamburgerBeta));
 }
 
 std::vector<TechniqueRow> rows() {
@@ -106,8 +106,12 @@ std::vector<TechniqueRow> rows() {
        .bound = kAlphaBound,
        .options = {&kHamburger4Alpha, &kHamburgerBeta},
        .default_run = true,
-       .make = make<PowerSolver::Hamburger4, double_storage, &P::hamburger4_alpha>,
-       .verify = on_r},
+       .make = make<PowerSolver::Hamburger4, double_storage, &kHamburger4Alpha>,
+       .verify = on_r,
+       .verify_place = 1,
+       .sweep_references = {{.expectation = "the power moments' closed form on R: slightly above "
+                                            "lp:power4 on [0, 1]",
+                             .place = 3}}},
       {.name = "hamburger4_float",
        .rank = 140,
        .summary = "4MSM on R, float32 maps and arithmetic",
@@ -115,8 +119,9 @@ std::vector<TechniqueRow> rows() {
        .bound = std::string(kNotProven) + ": rounding of the moments",
        .options = {&kHamburger4FloatAlpha, &kHamburgerBeta},
        .default_run = true,
-       .make = make<PowerSolver::Hamburger4Float, float32_storage, &P::hamburger4_float_alpha>,
-       .verify = storage_box(fixed_lp_basis<kPower4>, -4, 5, true, &P::hamburger4_float_alpha)},
+       .make = make<PowerSolver::Hamburger4Float, float32_storage, &kHamburger4FloatAlpha>,
+       .verify = storage_box(fixed_lp_basis<kPower4>, -4, 5, true, &kHamburger4FloatAlpha),
+       .verify_place = 7},
       {.name = "hamburger4_16bit",
        .rank = 150,
        .summary = "4MSM on R from 16-bit maps with the transform theta_4",
@@ -124,8 +129,9 @@ std::vector<TechniqueRow> rows() {
        .bound = std::string(kNotProven) + ": 16-bit rounding of the moments",
        .options = {&kHamburger416bitAlpha, &kHamburgerBeta},
        .default_run = true,
-       .make = make<PowerSolver::Hamburger4, unorm16_power4_storage, &P::hamburger4_16bit_alpha>,
-       .verify = storage_box(fixed_lp_basis<kPower4>, -4, 5, true, &P::hamburger4_16bit_alpha)},
+       .make = make<PowerSolver::Hamburger4, unorm16_power4_storage, &kHamburger416bitAlpha>,
+       .verify = storage_box(fixed_lp_basis<kPower4>, -4, 5, true, &kHamburger416bitAlpha),
+       .verify_place = 8},
       {.name = "hausdorff4",
        .rank = 160,
        .summary = "4MSM on [0, 1] (Hausdorff), double",
@@ -133,8 +139,12 @@ std::vector<TechniqueRow> rows() {
        .bound = kAlphaBound,
        .options = {&kHausdorff4Alpha, &kHamburgerBeta},
        .default_run = true,
-       .make = make<PowerSolver::Hausdorff4, double_storage, &P::hausdorff4_alpha>,
-       .verify = VerifyRecipe{.lp_basis = fixed_lp_basis<kPower4>}},
+       .make = make<PowerSolver::Hausdorff4, double_storage, &kHausdorff4Alpha>,
+       .verify = VerifyRecipe{.lp_basis = fixed_lp_basis<kPower4>},
+       .verify_place = 2,
+       .sweep_references = {{.expectation = "the power moments' closed form on [0, 1]: equal to "
+                                            "lp:power4 up to the LP's grid",
+                             .place = 4}}},
       {.name = "hamburger6",
        .rank = 170,
        .summary = "six power moments on R, double",
@@ -143,9 +153,12 @@ std::vector<TechniqueRow> rows() {
                 "up to 0.23 at alpha 1e-10)",
        .options = {&kHamburger6Alpha, &kHamburgerBeta},
        .default_run = true,
-       .make = make<PowerSolver::Hamburger6, double_storage, &P::hamburger6_alpha>,
-       .verify =
-           VerifyRecipe{.lp_basis = fixed_lp_basis<kPower6>, .lo = -2, .hi = 3, .on_r = true}}};
+       .make = make<PowerSolver::Hamburger6, double_storage, &kHamburger6Alpha>,
+       .verify = VerifyRecipe{.lp_basis = fixed_lp_basis<kPower6>, .lo = -2, .hi = 3, .on_r = true},
+       .verify_place = 6,
+       .sweep_references = {
+           {.expectation = "six moments: better than every four-function candidate (seed 004)",
+            .place = 6}}}};
 }
 
 const TechniqueRegistration kRegistered(rows);
@@ -153,8 +166,8 @@ const TechniqueRegistration kRegistered(rows);
 }  // namespace
 
 const TechniqueOption kHamburgerBeta{
-    {"hamburger.beta", OptionType::Number, "0",
-     "G + beta * (weight at z_f): 0 lower bound, 1 upper (seed 004).", 0, 1},
-    &TechniqueParams::beta};
+    .spec = {"hamburger.beta", OptionType::Number, "0",
+             "G + beta * (weight at z_f): 0 lower bound, 1 upper (seed 004).", 0, 1},
+    .zero_is_sharp = true};
 
 }  // namespace mb

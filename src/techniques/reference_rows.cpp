@@ -33,7 +33,8 @@ std::vector<TechniqueRow> rows() {
            .default_run = true,
            .make = [](const std::string&, const TechniqueParams&) -> std::unique_ptr<Technique> {
              return std::make_unique<PcfTechnique>();
-           }},
+           },
+           .sweep_references = {{}}},
           {.name = "oracle",
            .rank = 10,
            .summary = "F_Z(z_f - delta_f): the floor the bias sets under receiver_plane",

@@ -1,10 +1,12 @@
 #include "techniques/registry.h"
 
 #include <algorithm>
+#include <cmath>
+#include <stdexcept>
 
+#include "techniques/lp_options.h"
 #include "util/error.h"
 #include "util/number_text.h"
-#include "util/option_record.h"
 
 namespace mb {
 
@@ -65,7 +67,7 @@ bool TechniqueRow::matches(std::string_view given) const {
 }
 
 std::string TechniqueRow::display_name() const {
-  return prefix() ? name + "<basis>" : name;
+  return prefix() ? name + parameter : name;
 }
 
 const std::vector<TechniqueRow>& technique_registry() {
@@ -107,6 +109,12 @@ bool technique_solves_lp(std::string_view name) {
   return row && row->solves_lp;
 }
 
+const std::string& role_name(TechniqueFamily family, RowRole role) {
+  for (const TechniqueRow* row : family_rows(family))
+    if (row->role == role) return row->name;
+  throw std::logic_error("no row of " + family_title(family) + " has the role asked for");
+}
+
 const TechniqueRow& technique_row(const std::string& name, TechniqueFamily family) {
   if (const TechniqueRow* row = find_technique(name, family)) return *row;
   const TechniqueRow* row = find_technique(name);
@@ -133,6 +141,35 @@ std::string default_techniques(TechniqueFamily family) {
   return "[" + list + "]";
 }
 
+std::vector<SweepReference> sweep_references(TechniqueFamily family) {
+  std::vector<SweepReference> references;
+  for (const TechniqueRow* row : family_rows(family))
+    for (SweepReference reference : row->sweep_references) {
+      if (reference.name.empty()) reference.name = row->name;
+      references.push_back(std::move(reference));
+    }
+  return references;
+}
+
+std::string sweep_reference_list(TechniqueFamily family) {
+  std::string list;
+  for (const SweepReference& reference : sweep_references(family))
+    list += (list.empty() ? "" : ", ") + reference.name;
+  return "[" + list + "]";
+}
+
+std::string verify_default_list() {
+  std::vector<const TechniqueRow*> rows;
+  for (const TechniqueRow& row : technique_registry())
+    if (row.verify && row.verify_place > 0) rows.push_back(&row);
+  std::stable_sort(rows.begin(), rows.end(), [](const TechniqueRow* a, const TechniqueRow* b) {
+    return a->verify_place < b->verify_place;
+  });
+  std::string list;
+  for (const TechniqueRow* row : rows) list += (list.empty() ? "" : ", ") + row->name;
+  return "[" + list + "]";
+}
+
 std::vector<OptionSpec> technique_option_specs() {
   std::vector<OptionSpec> specs;
   for (const TechniqueOption* o : hard_options()) specs.push_back(o->spec);
@@ -141,17 +178,73 @@ std::vector<OptionSpec> technique_option_specs() {
 
 void read_technique_options(const Config& config, TechniqueParams& params) {
   for (const TechniqueOption* o : hard_options())
-    read_option(config, o->spec.name, o->field, params);
+    params.set(*o, o->spec.type == OptionType::Integer ? double(config.integer(o->spec.name))
+                                                       : config.number(o->spec.name));
 }
 
 void set_moment_bias(TechniqueParams& params, double alpha) {
   for (const TechniqueOption* o : hard_options())
-    if (o->moment_bias) params.*std::get<double TechniqueParams::*>(o->field) = alpha;
+    if (o->moment_bias) params.set(*o, alpha);
 }
 
 TechniqueParams::TechniqueParams() {
-  // Every field from its record's default (the default is written there only).
-  read_technique_options(Config(technique_option_specs()), *this);
+  // Every record's default (written there only), parsed once.
+  static const TechniqueParams defaults = [] {
+    TechniqueParams p(Defaults{});
+    const Config config(technique_option_specs());
+    for (const TechniqueOption* o : hard_options()) {
+      if (o->spec.type != OptionType::Number && o->spec.type != OptionType::Integer)
+        throw std::logic_error(o->spec.name + ": a technique option is a number or an integer");
+      p.values_[o->spec.name] = {o->spec.type, o->spec.type == OptionType::Integer
+                                                   ? double(config.integer(o->spec.name))
+                                                   : config.number(o->spec.name)};
+    }
+    read_lp_params(Config(lp_option_specs()), p);
+    return p;
+  }();
+  *this = defaults;
+}
+
+const TechniqueParams::Value& TechniqueParams::value(std::string_view key, OptionType type) const {
+  const auto it = values_.find(key);
+  if (it == values_.end())
+    throw std::logic_error("technique option '" + std::string(key) +
+                           "': no hard-shadow row declares it");
+  if (it->second.type != type)
+    throw std::logic_error("technique option '" + std::string(key) + "' is " +
+                           (it->second.type == OptionType::Integer ? "an integer" : "a number"));
+  return it->second;
+}
+
+double TechniqueParams::number(std::string_view key) const {
+  return value(key, OptionType::Number).value;
+}
+
+int TechniqueParams::integer(std::string_view key) const {
+  return int(value(key, OptionType::Integer).value);
+}
+
+double TechniqueParams::number(const TechniqueOption& option) const {
+  return number(option.spec.name);
+}
+
+int TechniqueParams::integer(const TechniqueOption& option) const {
+  return integer(option.spec.name);
+}
+
+void TechniqueParams::set(std::string_view key, double v) {
+  const auto it = values_.find(key);
+  if (it == values_.end())
+    throw std::logic_error("technique option '" + std::string(key) +
+                           "': no hard-shadow row declares it");
+  if (it->second.type == OptionType::Integer && v != std::round(v))
+    throw std::logic_error("technique option '" + std::string(key) + "' is an integer, got " +
+                           round_trip(v));
+  it->second.value = v;
+}
+
+void TechniqueParams::set(const TechniqueOption& option, double v) {
+  set(option.spec.name, v);
 }
 
 std::vector<std::string> closed_form_technique_names() {
@@ -187,8 +280,7 @@ std::string technique_table_markdown() {
 
 std::unique_ptr<Technique> make_technique(const std::string& name, const TechniqueParams& p) {
   for (const TechniqueOption* o : hard_options())
-    if (o->moment_bias)
-      check_moment_bias(o->spec.name, p.*std::get<double TechniqueParams::*>(o->field));
+    if (o->moment_bias) check_moment_bias(o->spec.name, p.number(*o));
   return technique_row(name, TechniqueFamily::HardShadow).make(name, p);
 }
 

@@ -10,7 +10,6 @@
 #include <optional>
 #include <string>
 #include <string_view>
-#include <variant>
 #include <vector>
 
 #include "techniques/technique.h"
@@ -22,17 +21,24 @@ class SoftTechnique;
 struct SoftSetup;
 class OitTechnique;
 struct OitParams;
+class ScatterTechnique;
+struct ScatterParams;
 
 // The phenomenon a technique answers, in the order lists show them.
 enum class TechniqueFamily { HardShadow, SoftShadow, Transmittance, Scattering };
 // "hard shadows", "soft shadows", ... for lists and errors.
 std::string family_title(TechniqueFamily family);
 
+// A hard-shadow technique's option: its record (key, type Number or Integer, default, range, doc),
+// declared once in the technique's file and listed by the rows that read it. TechniqueParams holds
+// a value for every such record; the technique reads it back by the record (`p.number(kEsmC)`).
 struct TechniqueOption {
   OptionSpec spec;
-  std::variant<double TechniqueParams::*, int TechniqueParams::*> field;
   // An MSM moment bias alpha: must lie in [0, 1); `solve --alpha` replaces every one of them.
   bool moment_bias = false;
+  // A relaxation whose value 0 gives the sharp bound, as a moment bias 0 does (a beta blend, a
+  // variance clamp): verify sets both to 0 for the rows it judges Exact (docs/reference.md §6).
+  bool zero_is_sharp = false;
 };
 
 // How `verify` checks a technique against the LP of its own basis (docs/reference.md §6).
@@ -50,7 +56,7 @@ struct VerifyRecipe {
   double lo = 0, hi = 1;
   bool on_r = false;              // Problem 1 on all of R (Hamburger, VSM)
   bool cantelli_support = false;  // VSM: Cantelli's two extremal points join the LP's points
-  double TechniqueParams::*alpha = nullptr;  // storage rows: their moment bias
+  const TechniqueOption* alpha = nullptr;  // storage rows: their moment bias
 };
 
 // How `verify` checks a transmittance row against the LP of the same information on seeded random
@@ -69,6 +75,21 @@ enum class RowRole {
   BiasFloor,       // F_Z(z_f - delta_f): added to every table under the receiver-plane reference
   ExactReference,  // soft shadows: the heuristic with nothing sampled, every soft row's second
                    // reference; transmittance: the sorted composite itself
+};
+
+// What a sweep measures of a row beside its candidates, and what the seeds found of it: the
+// sweep's default `references` and `oit_references` list every row's, in row order, and the
+// report's findings print each claim beside the measured number (report/sweep_report.cpp).
+struct SweepReference {
+  std::string name;  // the technique as run: "" for the row's own name, or a family row's instance
+  // The seed paper ranked this basis (seed 000 §3.2): "power" for power moments, and its mean
+  // error there.
+  std::string moments;
+  double seed_error = 0;
+  // A classic technique's expected standing against the candidates, and its place in the
+  // report's list of them (1, 2, ...).
+  std::string expectation;
+  int place = 0;
 };
 
 struct TechniqueRow {
@@ -98,12 +119,19 @@ struct TechniqueRow {
                                               const SoftSetup& setup) = nullptr;
   std::unique_ptr<OitTechnique> (*make_oit)(const std::string& name,
                                             const OitParams& params) = nullptr;
+  std::unique_ptr<ScatterTechnique> (*make_scatter)(const std::string& name,
+                                                    const ScatterParams& params) = nullptr;
   // InputError before any work when `name` of a family row cannot be made with these settings.
   void (*check)(const std::string& name, const TechniqueParams& params) = nullptr;
   std::optional<VerifyRecipe> verify = std::nullopt;                 // none: no LP ground truth
   OitVerifyRecipe (*oit_verify)(const OitParams& params) = nullptr;  // none: not verified
+  // Its place in `verify.techniques`' default list (1, 2, ...; 0: not checked by default).
+  int verify_place = 0;
+  std::vector<SweepReference> sweep_references;
   bool prefix() const { return !name.empty() && name.back() == ':'; }
   bool matches(std::string_view given) const;
+  // What follows a family row's name in lists ("raymarch:<N>").
+  std::string parameter = "<basis>";
   // "lp:<basis>" for a family row, the name otherwise.
   std::string display_name() const;
 };
@@ -125,15 +153,24 @@ const TechniqueRow* find_technique(std::string_view name,
 // LP: for reports, which test a row's properties, never a name.
 RowRole technique_role(std::string_view name);
 bool technique_solves_lp(std::string_view name);
+// The name of `family`'s first row with `role` (its reference, ...), for the reports' words; a
+// logic_error when the family has none.
+const std::string& role_name(TechniqueFamily family, RowRole role);
 // The row of `name` in `family`, or an InputError listing that family's names.
 const TechniqueRow& technique_row(const std::string& name, TechniqueFamily family);
 // The names of a family's rows that `make` runs by default, as a YAML list ("[a, b]").
 std::string default_techniques(TechniqueFamily family);
+// Every SweepReference of a family's rows, in row order, with its name filled in.
+std::vector<SweepReference> sweep_references(TechniqueFamily family);
+// The names of a family's SweepReferences, and of the rows with a verify recipe in
+// verify_place order, as YAML lists ("[a, b]"): the defaults of `references` and
+// `verify.techniques`.
+std::string sweep_reference_list(TechniqueFamily family);
+std::string verify_default_list();
 // Every hard-shadow technique's option, once per key (shared keys such as esm.c appear in several
 // rows), in row order.
 std::vector<OptionSpec> technique_option_specs();
-// Reads every technique option of `config` into `params`' fields, validated (InputError naming
-// the key).
+// Reads every technique option of `config` into `params`, validated (InputError naming the key).
 void read_technique_options(const Config& config, TechniqueParams& params);
 // Sets every moment bias alpha of `params` (solve --alpha).
 void set_moment_bias(TechniqueParams& params, double alpha);

@@ -3,14 +3,17 @@
 // how that map is stored, and shadow(b, z_f) -> G. Closed forms (moments/) and LPs (lp/) both
 // implement it, so they appear in the same error tables.
 #include <limits>
+#include <map>
 #include <memory>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "basis/basis.h"
 #include "lp/problem.h"
 #include "moments/storage.h"
+#include "util/config.h"
 
 namespace mb {
 
@@ -27,28 +30,41 @@ struct FragmentInput {
   std::span<const double> kernel_alpha;  // each atom's opacity (shadow/fragments.h, kernel_atoms)
 };
 
-// Every hard-shadow technique's parameter, each read from the option record its row declares
-// (techniques/registry.h): a default-made TechniqueParams holds the records' defaults, which are
-// written there only. The LP's fields come from the lp.* options (eval/eval_config.h).
-struct TechniqueParams {
+struct TechniqueOption;
+
+// Every hard-shadow technique's parameter, keyed by the option record its file declares
+// (techniques/registry.h): a value for every registered record, a default-made TechniqueParams
+// holding each record's default, which is written there only. A technique reads its own by record
+// (`p.number(kEsmC)`) or key (`p.number("esm.c")`); a key no record declares is a logic_error.
+// Adding an option to a technique touches that technique's file only. The LP's fields are typed:
+// they are the lp: row's settings, shared by every consumer of the LP fragment solver, from the
+// lp.* records (techniques/lp_options.h).
+class TechniqueParams {
+ public:
   TechniqueParams();
-  double hamburger4_alpha, hamburger4_float_alpha, hamburger4_16bit_alpha;
-  double hausdorff4_alpha, hamburger6_alpha;
-  double tmsm_alpha, tmsm_float_alpha;
-  double beta;  // Hamburger: G + beta * (weight at z_f); 0 = lower bound, 1 = upper (seed 004)
-  double esm_c;
-  double esm_zmax_offset;     // esm.zmax_offset: fail when the kernel's deepest texel > z_f + this
-  double esm_fail_threshold;  // esm.threshold: fail when the filtered ESM value > 1 + this
-  double vsm_min_variance;
-  double evsm_c_positive, evsm_c_negative;  // EVSM warps exp(c+ z), -exp(-c- z)
-  int lvsm_layers;                          // LVSM depth layers
-  int csm_terms;                            // CSM Fourier terms M
-  double csm_damping;                       // CSM ringing suppression
-  int fom_terms;  // Fourier opacity mapping: terms M (2M + 1 coefficients)
+  double number(std::string_view key) const;
+  int integer(std::string_view key) const;
+  double number(const TechniqueOption& option) const;
+  int integer(const TechniqueOption& option) const;
+  // Sets a registered option (an integer option takes a whole number), unchecked against the
+  // record's range as a program's own value: read_technique_options checks what a user gives.
+  void set(std::string_view key, double value);
+  void set(const TechniqueOption& option, double value);
+
   lp::Discretization lp;
-  std::string lp_backend = "fast";
-  std::string lp_moment_box = "none";  // lp_technique.h, lp_moment_box
-  double lp_beta = 0;                  // G + lp_beta (G+ - G), G+ the LP's maximum (lp.beta)
+  std::string lp_backend;
+  std::string lp_moment_box;  // lp_fragment_solver.h, lp_moment_box
+  double lp_beta;             // G + lp_beta (G+ - G), G+ the LP's maximum (lp.beta)
+
+ private:
+  struct Defaults {};
+  explicit TechniqueParams(Defaults) {}  // empty: the default constructor's table is made so
+  struct Value {
+    OptionType type;
+    double value;
+  };
+  const Value& value(std::string_view key, OptionType type) const;
+  std::map<std::string, Value, std::less<>> values_;
 };
 
 class Technique {

@@ -43,15 +43,14 @@ class TmsmTechnique : public ClosedFormTechnique {
 
 using P = TechniqueParams;
 
-const TechniqueOption kTmsmAlpha{{"tmsm.alpha", OptionType::Number, "1e-10",
-                                  "Moment bias of trigonometric MSM in double (towards 0)."},
-                                 &P::tmsm_alpha,
-                                 true};
+const TechniqueOption kTmsmAlpha{
+    .spec = {"tmsm.alpha", OptionType::Number, "1e-10",
+             "Moment bias of trigonometric MSM in double (towards 0)."},
+    .moment_bias = true};
 const TechniqueOption kTmsmFloatAlpha{
-    {"tmsm_float.alpha", OptionType::Number, "5e-5",
-     "Moment bias of trigonometric MSM in float32 (measured: tmsm.md §6)."},
-    &P::tmsm_float_alpha,
-    true};
+    .spec = {"tmsm_float.alpha", OptionType::Number, "5e-5",
+             "Moment bias of trigonometric MSM in float32 (measured: tmsm.md §6)."},
+    .moment_bias = true};
 
 std::vector<TechniqueRow> rows() {
   return {{.name = "tmsm",
@@ -62,9 +61,14 @@ std::vector<TechniqueRow> rows() {
            .options = {&kTmsmAlpha, &kHamburgerBeta},
            .default_run = true,
            .make = [](const std::string& name, const P& p) -> std::unique_ptr<Technique> {
-             return std::make_unique<TmsmTechnique>(name, false, p.tmsm_alpha, p.beta);
+             return std::make_unique<TmsmTechnique>(name, false, p.number(kTmsmAlpha),
+                                                    p.number(kHamburgerBeta));
            },
-           .verify = VerifyRecipe{.lp_basis = fixed_lp_basis<kTrig4>}},
+           .verify = VerifyRecipe{.lp_basis = fixed_lp_basis<kTrig4>},
+           .verify_place = 3,
+           .sweep_references = {{.expectation = "the trigonometric closed form: equal to lp:trig4 "
+                                                "up to the LP's grid",
+                                 .place = 5}}},
           {.name = "tmsm_float",
            .rank = 190,
            .summary = "trigonometric MSM, float32",
@@ -73,9 +77,11 @@ std::vector<TechniqueRow> rows() {
            .options = {&kTmsmFloatAlpha, &kHamburgerBeta},
            .default_run = true,
            .make = [](const std::string& name, const P& p) -> std::unique_ptr<Technique> {
-             return std::make_unique<TmsmTechnique>(name, true, p.tmsm_float_alpha, p.beta);
+             return std::make_unique<TmsmTechnique>(name, true, p.number(kTmsmFloatAlpha),
+                                                    p.number(kHamburgerBeta));
            },
-           .verify = storage_box(fixed_lp_basis<kTrig4>, 0, 1, false, &P::tmsm_float_alpha)}};
+           .verify = storage_box(fixed_lp_basis<kTrig4>, 0, 1, false, &kTmsmFloatAlpha),
+           .verify_place = 9}};
 }
 
 const TechniqueRegistration kRegistered(rows);

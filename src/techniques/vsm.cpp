@@ -57,12 +57,11 @@ class LvsmTechnique : public Technique {
 using P = TechniqueParams;
 
 const TechniqueOption kVsmMinVariance{
-    {"vsm.min_variance", OptionType::Number, "0", "VSM variance clamp.", 0, 1},
-    &P::vsm_min_variance};
+    .spec = {"vsm.min_variance", OptionType::Number, "0", "VSM variance clamp.", 0, 1},
+    .zero_is_sharp = true};
 const TechniqueOption kLvsmLayers{
     {"lvsm.layers", OptionType::Integer, "4",
-     "LVSM depth layers: [0, 1] split evenly, a VSM per layer on the depth clamped to it.", 1, 8},
-    &P::lvsm_layers};
+     "LVSM depth layers: [0, 1] split evenly, a VSM per layer on the depth clamped to it.", 1, 8}};
 
 std::vector<TechniqueRow> rows() {
   return {{.name = "vsm",
@@ -73,7 +72,7 @@ std::vector<TechniqueRow> rows() {
            .options = {&kVsmMinVariance},
            .default_run = true,
            .make = [](const std::string&, const P& p) -> std::unique_ptr<Technique> {
-             return std::make_unique<VsmTechnique>(p.vsm_min_variance);
+             return std::make_unique<VsmTechnique>(p.number(kVsmMinVariance));
            },
            // Cantelli's second point mu - sigma^2 / (z_f - mu) runs far out when z_f ~ mu, hence
            // the wide interval (docs/reference.md §6).
@@ -81,7 +80,11 @@ std::vector<TechniqueRow> rows() {
                                   .lo = -20,
                                   .hi = 21,
                                   .on_r = true,
-                                  .cantelli_support = true}},
+                                  .cantelli_support = true},
+           .verify_place = 4,
+           .sweep_references = {{.expectation = "two moments: far behind every four-function "
+                                                "candidate (seed 000 Figure 4)",
+                                 .place = 1}}},
           {.name = "lvsm",
            .rank = 100,
            .summary = "layered VSM: Cantelli on the depth clamped to z_f's layer",
@@ -89,7 +92,8 @@ std::vector<TechniqueRow> rows() {
            .bound = kProvenBound,
            .options = {&kLvsmLayers, &kVsmMinVariance},
            .make = [](const std::string&, const P& p) -> std::unique_ptr<Technique> {
-             return std::make_unique<LvsmTechnique>(p.lvsm_layers, p.vsm_min_variance);
+             return std::make_unique<LvsmTechnique>(p.integer(kLvsmLayers),
+                                                    p.number(kVsmMinVariance));
            }}};
 }
 

@@ -62,7 +62,7 @@ BoundCurves compute_bound_curves(const BoundCurveRequest& r) {
     out.cdf.push_back(cdf);
   }
   for (const auto& spec : r.bases) {
-    const std::vector<std::string> items = lp_technique_basis("lp:" + spec);
+    const std::vector<std::string> items = lp_technique_basis(lp_technique_name(spec));
     const Basis full = Basis::parse(items);
     for (int m : r.sizes) {
       if (m < 1 || size_t(m) > full.size())

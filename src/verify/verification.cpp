@@ -146,7 +146,7 @@ std::vector<VerifyTarget> verify_targets(const std::vector<std::string>& techniq
     t.storage_box = r.judge == Judge::StorageBox;
     t.on_r = r.on_r;
     t.cantelli_support = r.cantelli_support;
-    t.alpha = r.alpha ? params.*r.alpha : 0;
+    t.alpha = r.alpha ? params.number(*r.alpha) : 0;
     t.upper = t.exact && t.on_r &&
               (t.lp_basis == std::vector<std::string>{"power4"} ||
                t.lp_basis == std::vector<std::string>{"power6"});
@@ -158,9 +158,10 @@ std::vector<VerifyTarget> verify_targets(const std::vector<std::string>& techniq
 }
 
 TechniqueParams verify_params(TechniqueParams p) {
-  p.hamburger4_alpha = p.hausdorff4_alpha = p.hamburger6_alpha = p.tmsm_alpha = 0;
-  p.beta = 0;
-  p.vsm_min_variance = 0;
+  for (const TechniqueRow* row : family_rows(TechniqueFamily::HardShadow))
+    if (row->verify && row->verify->judge == VerifyRecipe::Judge::Exact)
+      for (const TechniqueOption* o : row->options)
+        if (o->moment_bias || o->zero_is_sharp) p.set(*o, 0);
   return p;
 }
 

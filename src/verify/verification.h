@@ -59,7 +59,8 @@ struct VerifyTarget {
 // The §6 table for the given technique names (InputError for names without an LP counterpart).
 std::vector<VerifyTarget> verify_targets(const std::vector<std::string>& techniques,
                                          const TechniqueParams& params);
-// The technique parameters verify uses: exact solvers without bias, the others with their own.
+// The technique parameters verify uses: the rows it judges Exact without their relaxations (each
+// moment bias and TechniqueOption::zero_is_sharp option at 0), the others with their own.
 TechniqueParams verify_params(TechniqueParams params);
 
 // A depth distribution and a fragment depth: where an instance came from, for the report.

@@ -1,6 +1,7 @@
 #include "verify/verify_options.h"
 
 #include "oit/oit_verification.h"
+#include "techniques/registry.h"
 
 namespace mb {
 
@@ -18,9 +19,7 @@ std::string oit_verify_default() {
 const std::vector<OptionRecord<VerifySettings>>& verify_options() {
   static const std::vector<OptionRecord<VerifySettings>> records{
       {selects_runs(
-           {"verify.techniques", OptionType::StringList,
-            "[hamburger4, hausdorff4, tmsm, vsm, esm, hamburger6, hamburger4_float, "
-            "hamburger4_16bit, tmsm_float, evsm2, evsm4, csm]",
+           {"verify.techniques", OptionType::StringList, verify_default_list(),
             "Closed forms to check (docs/reference.md §6; EVSM as a lower bound of its basis)."}),
        &VerifySettings::techniques},
       {selects_runs(

@@ -25,9 +25,10 @@ VerifyPlan make_verify_plan(const VerifySettings& v, const TechniqueParams& tech
   VerifyPlan plan;
   plan.settings = v;
   plan.params = verify_params(technique);
-  plan.params.esm_c = v.esm_c;
-  plan.params.evsm_c_positive = v.evsm_c;
-  plan.params.csm_terms = v.csm_terms;
+  // verify's own values of these rows' options (verify_options.cpp: scales the LP can represent).
+  plan.params.set("esm.c", v.esm_c);
+  plan.params.set("evsm.c_positive", v.evsm_c);
+  plan.params.set("csm.terms", v.csm_terms);
   plan.targets = verify_targets(v.techniques, plan.params);
   for (auto& t : plan.targets) {
     t.storage_box = t.storage_box && v.moment_box != "off";

@@ -20,6 +20,7 @@
 #include "eval/warm_runs.h"
 #include "lp/problem.h"
 #include "lp/solution.h"
+#include "run_fragments.h"
 
 namespace mb::bench {
 
@@ -34,48 +35,45 @@ inline const std::vector<ViewData>& views() {
   return v;
 }
 
-// The sweep's atom map for its 9 x 9 kernel (eval/warm_runs.h).
-inline const KernelAtomMap& atom_map() {
-  static const KernelAtomMap map(9);
-  return map;
+// The fragments of the runs as the sweep solves them: the fragments of a warm-start band
+// (kWarmRunRows texel rows) in fragment order, the LP ones among them, within a window of
+// kRunColumns columns so that a pass stays short; three windows at evenly spaced places of every
+// view. The same fragments for every basis.
+inline const FragmentRuns& fragment_runs() {
+  static const FragmentRuns out = [] {
+    FragmentRuns runs;
+    GaussianKernel kernel = make_gaussian_kernel(9, 2.4);
+    constexpr int kRunsPerView = 3, kRunColumns = 48;
+    for (const auto& v : views()) {
+      const int bands = v.map.height / kWarmRunRows;
+      for (int r = 0; r < kRunsPerView && bands > 0; ++r) {
+        std::vector<RunFragment> run;
+        const int band = bands * (2 * r + 1) / (2 * kRunsPerView);
+        const int x0 =
+            std::max(0, v.map.width * (2 * r + 1) / (2 * kRunsPerView) - kRunColumns / 2);
+        for (size_t k = 0; k < v.fragments.size(); ++k) {
+          const size_t t = v.fragments.texel[k];
+          const int x = int(t % v.map.width), y = int(t / v.map.width);
+          if (warm_run_of(t, v.map.width) != band || x < x0 || x >= x0 + kRunColumns) continue;
+          if (v.fragments.oracle[k] == 0) continue;
+          RunFragment f{v.fragments.layer[k],   x, y, v.fragments.ztest[k], std::vector<double>(81),
+                        std::vector<double>(81)};
+          kernel_distribution(v.map, kernel, x, y, f.depths, f.weights);
+          run.push_back(std::move(f));
+        }
+        runs.push_back(std::move(run));
+      }
+    }
+    return runs;
+  }();
+  return out;
 }
 
-struct Run {
-  std::vector<lp::Problem> problems;
-  std::vector<lp::WarmStart> positions;
-};
-
-// Runs as the sweep solves them: the fragments of a warm-start band (kWarmRunRows texel rows)
-// in fragment order, the LP ones among them, within a window of kRunColumns columns so that a pass
-// stays short; three windows at evenly spaced places of every view. The same fragments for every
-// basis: run r's i-th problem is one fragment whatever `functions` are.
+// The runs' LPs for one basis: run r's i-th problem is one fragment whatever `functions` are.
 inline const std::vector<Run>& runs(const std::vector<std::string>& functions, int grid) {
   static std::map<std::pair<std::vector<std::string>, int>, std::vector<Run>> cache;
   auto& out = cache[{functions, grid}];
-  if (!out.empty()) return out;
-  lp::ProblemFactory factory(Basis::parse(functions), lp::Discretization{0, 1, grid, false});
-  GaussianKernel kernel = make_gaussian_kernel(9, 2.4);
-  std::vector<double> depths(81), weights(81);
-  constexpr int kRunsPerView = 3, kRunColumns = 48;
-  for (const auto& v : views()) {
-    const int bands = v.map.height / kWarmRunRows;
-    for (int r = 0; r < kRunsPerView && bands > 0; ++r) {
-      Run run;
-      const int band = bands * (2 * r + 1) / (2 * kRunsPerView);
-      const int x0 = std::max(0, v.map.width * (2 * r + 1) / (2 * kRunsPerView) - kRunColumns / 2);
-      for (size_t k = 0; k < v.fragments.size(); ++k) {
-        const size_t t = v.fragments.texel[k];
-        const int x = int(t % v.map.width), y = int(t / v.map.width);
-        if (warm_run_of(t, v.map.width) != band || x < x0 || x >= x0 + kRunColumns) continue;
-        const double zf = v.fragments.ztest[k];
-        if (v.fragments.oracle[k] == 0) continue;
-        kernel_distribution(v.map, kernel, x, y, depths, weights);
-        run.problems.push_back(factory.from_distribution(depths, weights, zf));
-        run.positions.push_back(warm_start_at(v.fragments.layer[k], x, y, &atom_map()));
-      }
-      out.push_back(std::move(run));
-    }
-  }
+  if (out.empty()) out = build_runs(fragment_runs(), functions, grid);
   return out;
 }
 

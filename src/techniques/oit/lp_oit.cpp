@@ -49,7 +49,9 @@ std::vector<TechniqueRow> rows() {
            .example = "lp:power4",
            .solves_lp = true,
            .make_oit = [](const std::string& name, const OitParams& p)
-               -> std::unique_ptr<OitTechnique> { return std::make_unique<LpOit>(name, p.lp); }}};
+               -> std::unique_ptr<OitTechnique> { return std::make_unique<LpOit>(name, p.lp); },
+           // The six-moment LP beside the candidates of a transparency sweep.
+           .sweep_references = {{.name = "lp:power6"}}}};
 }
 
 const TechniqueRegistration kRegistered(rows);

@@ -24,9 +24,13 @@ struct OitBiases {
   double power[3], trig[3];
 };
 
+// A transmittance technique's parameters. beta, warp and depth_range are the oit.* options, whose
+// records (techniques/oit/oit_options.h) give a default-made OitParams their defaults; the rest are
+// the techniques' constants.
 struct OitParams {
-  // MBOIT's overestimation beta: A = A- + beta (A+ - A-) (docs/transparency.md §3).
-  double beta = 0.25;
+  OitParams();
+  // MBOIT's overestimation beta: A = A- + beta (A+ - A-) (docs/transparency.md §3; oit.beta).
+  double beta;
   // Moment bias of the MBOIT closed forms in double (docs/transparency.md §3, "Constants").
   // Moment biases (docs/transparency.md §3, "Constants"): double as the shadow closed forms; float
   // and 16-bit the values of the authors' code as its public ports carry them.
@@ -37,12 +41,16 @@ struct OitParams {
   // (docs/transparency.md §5).
   double wrapping_zone = 0.1 * 3.14159265358979323846;
   // The depth warp onto [0, 1] the moments are taken of (docs/transparency.md §2; oit.warp).
-  WarpKind warp = WarpKind::Logarithmic;
+  WarpKind warp;
   // The range it maps onto [0, 1] (docs/transparency.md §2; oit.depth_range).
-  DepthRangeKind depth_range = DepthRangeKind::Fragments;
+  DepthRangeKind depth_range;
   // lp:<basis>: the LP's grid, backend and lp.beta (0: the sharp bound e^{-A-}); its interval is
   // that of the warped depth, [0, 1], unless a caller widens it (the closed forms' R).
   TechniqueParams lp;
+
+ private:
+  struct Defaults {};
+  explicit OitParams(Defaults) {}  // the default constructor's table is made so
 };
 
 class OitTechnique {

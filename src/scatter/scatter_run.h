@@ -1,0 +1,63 @@
+#pragma once
+// What `scatter` runs (docs/scattering.md §4): its options declared once as records, and every
+// scattering technique on every light view and camera of a dataset against the exact
+// in-scattering. The command adds the outputs; this is reachable from tests.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "scatter/scatter_stats.h"
+#include "scene/dataset.h"
+#include "scene/scene.h"
+#include "techniques/scatter/scatter_technique.h"
+#include "util/option_record.h"
+
+namespace mb {
+
+struct ScatterRunOptions {
+  std::vector<std::string> techniques;
+  int reference_resolution = 0;
+  double max_distance = 0;
+  int64_t seed = 0;
+  bool images = true;
+  double error_scale = 0;
+};
+
+const std::vector<OptionRecord<ScatterRunOptions>>& scatter_run_options();
+
+// A scene `scatter` can light: opaque, with cameras, and its medium (its own or the dataset's).
+struct ScatterScene {
+  Scene scene;
+  MediumDesc medium;
+};
+// The dataset's scenes that have cameras; InputError, before any work, when none has, when one is
+// translucent (the seed defines single scattering for opaque occluders), or when a scene with
+// cameras has no medium or one that scatters nothing (albedo 0).
+std::vector<ScatterScene> scatter_scenes(const DatasetDesc& dataset);
+
+// sigma_s f E of a view ray along the unit `direction`, irradiance E = 1: the phase function's
+// angle lies between the light's propagation direction (-to_light) and the direction from the
+// scattering point towards the camera (-direction), so g > 0 brightens rays looking into the light.
+double scattering_factor(const MediumDesc& medium, const Eigen::Vector3d& to_light,
+                         const Eigen::Vector3d& direction);
+
+// One light view and camera: per pixel the exact in-scattering I_ref, S_max and the surface's
+// attenuated radiance, and per technique its I, statistics and wall-clock time. Bit-identical for
+// any thread count (each pixel is answered on its own; sums run in pixel order).
+struct ScatterFrameResult {
+  std::string scene, view, camera;
+  int width = 0, height = 0;
+  std::vector<double> reference, s_max;
+  std::vector<Eigen::Vector3d> surface;        // e^{-sigma_t s} L_s (linear RGB, irradiance E = 1)
+  std::vector<std::vector<double>> inscatter;  // per technique, per pixel
+  std::vector<ScatterStats> stats;
+  std::vector<double> seconds;
+};
+
+// Every light view (its layer 0 at scatter.reference_resolution) and camera of every scene, each
+// technique of `options`; `each` is called per light view and camera as soon as it is computed.
+void run_scatter(const std::vector<ScatterScene>& scenes, const ScatterRunOptions& options,
+                 int threads, bool quiet,
+                 const std::function<void(const ScatterFrameResult&)>& each);
+
+}  // namespace mb
