@@ -63,6 +63,16 @@ std::string summary_lines(std::span<const VerifySolverResult> results,
       noted += (noted.empty() ? "" : ", ") + r.target.technique;
   }
   std::string attention = failed.empty() ? "" : "**" + failed + " fail**";
+  // The failing row's instance furthest beyond its allowance, so that the summary names it.
+  for (const auto& r : results)
+    if (r.judged() && !r.passed() && r.decides_exit() && !r.worst_outside.empty() &&
+        r.worst_outside.front().beyond() > 0) {
+      const VerifyJudgement& j = r.worst_outside.front();
+      attention += " (" + r.target.technique + " furthest: instance " +
+                   std::to_string(j.c.instance) + ", " + instances[j.c.instance].source + ", " +
+                   (j.upper ? "G+ " : "G ") + num(j.closed_form) + " outside [" + num(j.lo) + ", " +
+                   num(j.hi) + "] by " + num(j.outside()) + ", allowed " + num(j.allowed) + ")";
+    }
   if (!noted.empty())
     attention += (attention.empty() ? "" : "; ") + noted +
                  " exceed their storage box (quantization noise, reported: seed 000 §4.3)";
@@ -228,10 +238,12 @@ void write_worst_cases(std::ostream& md, std::ostream& worst, const VerifyReport
                        std::span<const VerifyInstance> instances, bool continuous) {
   worst << "technique,kind,rank,source,zf,moments,depths,weights,G_closed_form";
   for (int g : ctx.grids) worst << ",G_lp_" << (g ? std::to_string(g) : "continuous");
-  worst << ",G_lp_exact\n";
-  md << "\n## Worst cases\n\nPer solver: the largest |dG| on the finest grid, then (if any) the "
-        "cases furthest above an "
-        "LP. Re-run one with the printed `solve` commands (closed form, then the LP with the "
+  worst << ",G_lp_exact,bracket_lo,bracket_hi,allowed,outside\n";
+  md << "\n## Worst cases\n\nPer solver: the instances furthest outside the bracket the verdict "
+        "judges them against (beyond > 0: the instance fails; `outside`/`outside_upper` in "
+        "worst.csv, with the bracket, allowance and distance), the largest |dG| on the finest "
+        "grid, then (if any) the cases furthest above an LP. Re-run one with the printed `solve` "
+        "commands (closed form, then the LP with the "
         "distribution's depths "
         "as extra points). `G exact LP` is the finest grid's LP solved in rational arithmetic "
         "(the arbiter, docs/lp-engine.md): where it differs from the grid's column, the double "
@@ -258,7 +270,7 @@ void write_worst_cases(std::ostream& md, std::ostream& worst, const VerifyReport
             << joined(inst.depths, " ") << "\",\"" << joined(inst.weights, " ") << "\","
             << full(c.closed_form);
       for (double g : c.lp) worst << "," << full(g);
-      worst << "," << full(c.lp_exact) << "\n";
+      worst << "," << full(c.lp_exact) << ",,,,\n";
     }
     std::string basis;
     for (const auto& b : r.target.lp_basis) basis += (basis.empty() ? "" : ",") + b;
@@ -272,7 +284,33 @@ void write_worst_cases(std::ostream& md, std::ostream& worst, const VerifyReport
        << full(inst.zf) << " --points " << joined(inst.depths, ",")
        << " --moments <E[b] of those points>\n```\n";
   };
+  // The judged brackets: the instances furthest beyond their allowance, failures first.
+  const auto write_outside = [&](const VerifySolverResult& r) {
+    if (r.worst_outside.empty()) return;
+    md << "\n### " << r.target.technique
+       << ": furthest outside the judged bracket\n\n| rank | instance | source | z_f | bound | "
+          "closed form | judged bracket | against | distance outside | allowed | beyond |\n"
+          "|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (size_t k = 0; k < r.worst_outside.size(); ++k) {
+      const VerifyJudgement& j = r.worst_outside[k];
+      const VerifyInstance& inst = instances[j.c.instance];
+      const char* against = j.read_box ? "read moments' box" : "LP";
+      md << "| " << k + 1 << " | " << j.c.instance << " | " << inst.source << " | " << full(inst.zf)
+         << " | " << (j.upper ? "G+" : "G") << " | " << full(j.closed_form) << " | [" << full(j.lo)
+         << ", " << full(j.hi) << "] | " << against << " | " << num(j.outside()) << " | "
+         << num(j.allowed) << " | "
+         << (j.beyond() > 0 ? "**" + num(j.beyond()) + "**" : num(j.beyond())) << " |\n";
+      worst << r.target.technique << "," << (j.upper ? "outside_upper" : "outside") << "," << k + 1
+            << ",\"" << inst.source << "\"," << full(inst.zf) << ",\"" << joined(j.c.moments, " ")
+            << "\",\"" << joined(inst.depths, " ") << "\",\"" << joined(inst.weights, " ") << "\","
+            << full(j.closed_form);
+      for (double g : j.c.lp) worst << "," << full(g);
+      worst << "," << full(j.c.lp_exact) << "," << full(j.lo) << "," << full(j.hi) << ","
+            << full(j.allowed) << "," << full(j.outside()) << "\n";
+    }
+  };
   for (const auto& r : results) {
+    write_outside(r);
     write_cases(r, r.worst, "largest_dG", "largest |dG| on the finest grid");
     write_cases(r, r.worst_above, "above_lp", "furthest above an LP witness");
   }

@@ -46,7 +46,7 @@ void solve_continuous(const VerifyTarget& target, const Basis& basis, int degree
         lp::solve_power_locally(problem, inst.depths, inst.weights, inst.zf, backend);
     if (target.rounding_box && local.solution.ok() && local.solution.proven) {
       const RoundedMomentBracket b =
-          six_moment_bracket(c.moments, inst.zf, local.solution.coefficients,
+          six_moment_bracket(c.moments, inst.zf, local.solution.coefficients, local.solution.delta,
                              local.solution.violation, local.mean, local.scale);
       if (b.inside) c.box_lower = b.lower, c.box_upper = b.upper, c.upper_floor = b.upper_at;
     }
@@ -310,7 +310,7 @@ void solve_upper_box(const VerifyInstance& inst, VerifyCase& c, lp::Backend& bac
       lp::solve_power_locally(problem, mirrored, inst.weights, -inst.zf, backend);
   if (!local.solution.ok() || !local.solution.proven) return;
   const RoundedMomentBracket m =
-      six_moment_bracket(mirrored_read, -inst.zf, local.solution.coefficients,
+      six_moment_bracket(mirrored_read, -inst.zf, local.solution.coefficients, local.solution.delta,
                          local.solution.violation, local.mean, local.scale);
   if (!m.inside) return;
   c.closed_upper = r.lower + r.at_zf;
@@ -330,28 +330,38 @@ void solve_upper_box(const VerifyInstance& inst, VerifyCase& c, lp::Backend& bac
 
 // The upper-bound comparison of solve_upper, reduced: within the tolerance and the instance's
 // rounding allowance, or (a node beyond reach) at least not below the LP's maximum.
-void reduce_upper(const std::vector<VerifyCase>& cases, double tolerance,
-                  VerifySolverResult& result) {
+void reduce_upper(const VerifyTarget& target, const std::vector<VerifyCase>& cases,
+                  double tolerance, VerifySolverResult& result,
+                  std::vector<VerifyJudgement>& judged) {
   for (const auto& c : cases) {
     if (!std::isfinite(c.closed_upper) || !std::isfinite(c.lp_upper)) continue;
     ++result.upper_compared;
-    const double allowed = tolerance + std::max(c.rounding, c.upper_rounding);
+    VerifyJudgement j{c, true};
+    j.closed_form = c.closed_upper;
+    j.allowed = tolerance + std::max(c.rounding, c.upper_rounding);
     if (std::isfinite(c.upper_floor)) {  // rounding-box rows: outside [upper_floor, lp_upper]
-      const double outside =
-          std::max({0.0, c.closed_upper - c.lp_upper, c.upper_floor - c.closed_upper});
-      result.upper_max_difference = std::max(result.upper_max_difference, outside);
-      result.upper_beyond += outside > allowed;
-      continue;
-    }
-    const double d = c.closed_upper - c.lp_upper;
-    if (c.upper_limited) {
+      j.read_box = true;
+      j.lo = c.upper_floor, j.hi = c.lp_upper;
+      result.upper_max_difference = std::max(result.upper_max_difference, j.outside());
+    } else if (c.upper_limited) {  // the LP's maximum may only be lower
       ++result.upper_limited;
-      result.upper_beyond += d < -allowed;
-      continue;
+      j.lo = c.lp_upper;
+    } else {
+      j.lo = j.hi = c.lp_upper;
+      result.upper_max_difference = std::max(result.upper_max_difference, j.outside());
     }
-    result.upper_max_difference = std::max(result.upper_max_difference, std::abs(d));
-    result.upper_beyond += std::abs(d) > allowed;
+    result.upper_beyond += j.outside() > j.allowed;
+    if (target.upper_judged) judged.push_back(std::move(j));
   }
+}
+
+// The judged comparisons furthest beyond their allowance (the failures first) into the result.
+void keep_worst_outside(std::vector<VerifyJudgement> judged, int worst_count,
+                        VerifySolverResult& result) {
+  std::stable_sort(judged.begin(), judged.end(),
+                   [](const auto& a, const auto& b) { return a.beyond() > b.beyond(); });
+  if (int(judged.size()) > worst_count) judged.resize(std::max(0, worst_count));
+  result.worst_outside = std::move(judged);
 }
 
 // The closed form on an instance's stored moments: NaN when it gives no number.
@@ -397,10 +407,17 @@ double above_witnesses(Technique& probe, const StoredMoments& stored_moments, do
   return above;
 }
 
+// Whether the verdict judges the row's G (VerifySolverResult::judged; exceedance rows are
+// reported only).
+bool judged_result(const VerifyTarget& target, bool box_rows) {
+  return target.exact || target.lower_bound || box_rows;
+}
+
 // The per-grid statistics, the judgement and the worst cases, reduced in case order.
 void reduce_cases(const VerifyTarget& target, const std::vector<VerifyCase>& cases,
                   const std::vector<int>& grids, bool continuous, bool box_rows, double tolerance,
-                  int worst_count, VerifySolverResult& result) {
+                  int worst_count, VerifySolverResult& result,
+                  std::vector<VerifyJudgement>& judged) {
   result.grids.resize(cases[0].lp.size());
   for (size_t k = 0; k < grids.size(); ++k) result.grids[k].grid = grids[k];  // 0: continuous
   std::vector<std::pair<double, size_t>> finest, excess;
@@ -435,22 +452,30 @@ void reduce_cases(const VerifyTarget& target, const std::vector<VerifyCase>& cas
       result.largest_excess =
           std::max({result.largest_excess, c.closed_form - c.lp.back(), c.above_witness});
     const double d = std::abs(c.closed_form - c.lp.back());
-    // The continuous LP's G lies in [upper - bracket, upper]: judged is the distance from there.
-    const double off = c.closed_form > c.lp.back() ? d : std::max(0.0, d - c.bracket);
+    VerifyJudgement j{c};
+    j.closed_form = c.closed_form;
     if (box_rows) {  // a lower bound of the box problem: judged from above only
-      result.beyond_tolerance += c.closed_form - c.lp.back() > kAboveLpSlack + target.alpha;
+      j.hi = c.lp.back();
+      j.allowed = kAboveLpSlack + target.alpha;
     } else if (target.rounding_box && continuous && std::isfinite(c.box_lower)) {
       // Problem 1 at the read moments (verify/rounding_box.h), to the closed form's own rounding.
-      const double outside =
-          std::max({0.0, c.box_lower - c.closed_form, c.closed_form - c.box_upper});
-      result.box_max_outside = std::max(result.box_max_outside, outside);
-      result.beyond_tolerance += outside > tolerance + c.rounding;
+      j.read_box = true;
+      j.lo = c.box_lower, j.hi = c.box_upper;
+      j.allowed = tolerance + c.rounding;
+      result.box_max_outside = std::max(result.box_max_outside, j.outside());
     } else {
-      // Read moments without a witness (singular: 1-3 atoms; or outside the moment cone) are
-      // judged against the exact moments' LP, as the other rows.
+      // The continuous LP's G lies in [upper - bracket, upper]: judged is the distance from
+      // there. Read moments without a witness (singular: 1-3 atoms; or outside the moment cone)
+      // are judged against the exact moments' LP, as the other rows.
       result.unwitnessed += target.rounding_box && continuous;
-      result.beyond_tolerance += off > tolerance + c.rounding;
+      j.lo = c.lp.back() - c.bracket, j.hi = c.lp.back();
+      j.allowed = tolerance + c.rounding;
     }
+    result.beyond_tolerance += j.outside() > j.allowed;
+    // A valid lower bound is judged from above only, by the slack (VerifySolverResult::passed).
+    if (target.lower_bound)
+      j.lo = -std::numeric_limits<double>::infinity(), j.allowed = kAboveLpSlack;
+    if (judged_result(target, box_rows)) judged.push_back(std::move(j));
     finest.push_back({box_rows ? c.closed_form - c.lp.back() : d, c.instance});
     if (box_rows) result.largest_excess = std::max(result.largest_excess, finest.back().first);
   }
@@ -571,9 +596,11 @@ VerifySolverResult verify_solver(const VerifyTarget& target, const TechniqueMake
     if (std::isfinite(cases[i].closed_form))
       cases[i].above_witness =
           above_witnesses(*probe, stored_moments, instances[i].zf, witnesses[i], box_rows);
-  reduce_cases(target, cases, grids, continuous, box_rows, tolerance, worst_count, result);
+  std::vector<VerifyJudgement> judged;
+  reduce_cases(target, cases, grids, continuous, box_rows, tolerance, worst_count, result, judged);
   if (!grids.empty()) arbitrate_worst(target, instances, *factories.back(), result);
-  if (target.upper) reduce_upper(cases, tolerance, result);
+  if (target.upper) reduce_upper(target, cases, tolerance, result, judged);
+  keep_worst_outside(std::move(judged), worst_count, result);
   return result;
 }
 

@@ -2,6 +2,7 @@
 // `momentbench verify` (docs/reference.md §6): every closed form against the LP with the matching
 // basis and interval, on seeded random depth distributions and on real kernels of a dataset, at
 // several LP grid sizes.
+#include <algorithm>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -118,6 +119,24 @@ struct VerifyCase {
   double lp_exact = std::numeric_limits<double>::quiet_NaN();
 };
 
+// One instance's judged comparison: the interval the verdict holds the closed form's G (or, for
+// Hamburger's upper bound, G + w_1) to, the allowance beyond it, and how far outside it lies. The
+// interval is the continuous LP's bracket [G - width, G] (the finest grid's G where there is no
+// continuous column), Problem 1 at the read moments (rounding-box rows), or only an upper end
+// (storage and lower-bound rows).
+struct VerifyJudgement {
+  VerifyCase c;
+  bool upper = false;     // G + w_1 against G+ (VerifyTarget::upper), else G
+  bool read_box = false;  // the bracket is Problem 1 at the read moments (verify/rounding_box.h)
+  double closed_form = 0;
+  double lo = -std::numeric_limits<double>::infinity();
+  double hi = std::numeric_limits<double>::infinity();
+  double allowed = 0;  // tolerance (or slack) plus the instance's allowance
+  double outside() const { return std::max({0.0, lo - closed_form, closed_form - hi}); }
+  // > 0: the instance fails the verdict.
+  double beyond() const { return outside() - allowed; }
+};
+
 struct VerifyGridStats {
   int grid = 0;
   size_t compared = 0, lp_failures = 0;
@@ -143,6 +162,9 @@ struct VerifySolverResult {
   double box_max_outside = 0;
   std::vector<VerifyCase> worst;        // by |dG| on the finest grid, largest first
   std::vector<VerifyCase> worst_above;  // above an LP witness, by how far (largest first)
+  // Judged G and G + w_1 by how far they lie beyond their allowance outside their bracket
+  // (VerifyJudgement::beyond, largest first): the failures head it.
+  std::vector<VerifyJudgement> worst_outside;
   // Storage rows judged against their box (target.storage_box with the continuous ground
   // truth): beyond_tolerance counts closed forms above the box's G by more than alpha + 1e-6.
   bool box_judged = false;
