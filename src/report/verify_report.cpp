@@ -239,8 +239,9 @@ void write_worst_cases(std::ostream& md, std::ostream& worst, const VerifyReport
   worst << "technique,kind,rank,source,zf,moments,depths,weights,G_closed_form";
   for (int g : ctx.grids) worst << ",G_lp_" << (g ? std::to_string(g) : "continuous");
   worst << ",G_lp_exact,bracket_lo,bracket_hi,allowed,outside\n";
-  md << "\n## Worst cases\n\nPer solver: the instances furthest outside the bracket the verdict "
-        "judges them against (beyond > 0: the instance fails; `outside`/`outside_upper` in "
+  md << "\n## Worst cases\n\nPer solver: the instances outside the bracket the verdict judges "
+        "them against, failures first (beyond > 0: beyond the allowance), then by distance "
+        "(`outside`/`outside_upper` in "
         "worst.csv, with the bracket, allowance and distance), the largest |dG| on the finest "
         "grid, then (if any) the cases furthest above an LP. Re-run one with the printed `solve` "
         "commands (closed form, then the LP with the "
@@ -284,7 +285,7 @@ void write_worst_cases(std::ostream& md, std::ostream& worst, const VerifyReport
        << full(inst.zf) << " --points " << joined(inst.depths, ",")
        << " --moments <E[b] of those points>\n```\n";
   };
-  // The judged brackets: the instances furthest beyond their allowance, failures first.
+  // The judged brackets: failures first, then the instances furthest outside (keep_worst_outside).
   const auto write_outside = [&](const VerifySolverResult& r) {
     if (r.worst_outside.empty()) return;
     md << "\n### " << r.target.technique

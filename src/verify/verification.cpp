@@ -355,11 +355,15 @@ void reduce_upper(const VerifyTarget& target, const std::vector<VerifyCase>& cas
   }
 }
 
-// The judged comparisons furthest beyond their allowance (the failures first) into the result.
+// The judged comparisons into the result: the failures first, furthest beyond their allowance
+// first, then the others by their distance outside the bracket.
 void keep_worst_outside(std::vector<VerifyJudgement> judged, int worst_count,
                         VerifySolverResult& result) {
+  const auto key = [](const VerifyJudgement& j) {
+    return std::pair{j.beyond() > 0, j.beyond() > 0 ? j.beyond() : j.outside()};
+  };
   std::stable_sort(judged.begin(), judged.end(),
-                   [](const auto& a, const auto& b) { return a.beyond() > b.beyond(); });
+                   [&](const auto& a, const auto& b) { return key(a) > key(b); });
   if (int(judged.size()) > worst_count) judged.resize(std::max(0, worst_count));
   result.worst_outside = std::move(judged);
 }

@@ -162,8 +162,8 @@ struct VerifySolverResult {
   double box_max_outside = 0;
   std::vector<VerifyCase> worst;        // by |dG| on the finest grid, largest first
   std::vector<VerifyCase> worst_above;  // above an LP witness, by how far (largest first)
-  // Judged G and G + w_1 by how far they lie beyond their allowance outside their bracket
-  // (VerifyJudgement::beyond, largest first): the failures head it.
+  // Judged G and G + w_1: the failures (VerifyJudgement::beyond > 0) first, largest first, then
+  // the others by their distance outside their bracket.
   std::vector<VerifyJudgement> worst_outside;
   // Storage rows judged against their box (target.storage_box with the continuous ground
   // truth): beyond_tolerance counts closed forms above the box's G by more than alpha + 1e-6.
