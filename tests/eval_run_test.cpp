@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "eval/eval_config.h"
+
 namespace mb {
 namespace {
 
@@ -45,6 +47,42 @@ TEST(EvalRun, RowsAreEachViewsErrorsAndTheirMerge) {
     EXPECT_EQ(rows.overall[t].stats.mean(), merged.mean());
   }
   EXPECT_GT(rows.overall[1].stats.mean(), 0.0);  // VSM leaks on the tiny dataset
+}
+
+}  // namespace
+}  // namespace mb
+
+namespace mb {
+namespace {
+
+// Defaults are written once, in the option records: settings made without a config hold what a
+// config of nothing but defaults reads, and the shadow stage's own BiasParams and GaussianKernel
+// defaults (what its tests use) agree with them.
+TEST(EvalRun, DefaultSettingsAreTheRecordsDefaults) {
+  const EvalSettings made;
+  const EvalSettings read = shadow_settings_from(Config(shadow_option_specs()), 1);
+  EXPECT_EQ(made.kernel.size, read.kernel.size);
+  EXPECT_EQ(made.kernel.sigma, read.kernel.sigma);
+  EXPECT_EQ(made.kernel.weights, read.kernel.weights);
+  EXPECT_EQ(made.bias.constant, read.bias.constant);
+  EXPECT_EQ(made.bias.slope, read.bias.slope);
+  EXPECT_EQ(made.bias.reference, read.bias.reference);
+  EXPECT_EQ(made.blend, read.blend);
+  EXPECT_EQ(made.light.angle_deg, read.light.angle_deg);
+  EXPECT_EQ(made.light.directions, read.light.directions);
+  EXPECT_EQ(made.soft.sat_search, read.soft.sat_search);
+  EXPECT_EQ(made.technique.lp.grid, read.technique.lp.grid);
+  const BiasParams shadow_stage;
+  EXPECT_EQ(shadow_stage.constant, read.bias.constant);
+  EXPECT_EQ(shadow_stage.slope, read.bias.slope);
+  EXPECT_EQ(shadow_stage.reference, read.bias.reference);
+  const GaussianKernel kernel;
+  EXPECT_EQ(kernel.size, read.kernel.size);
+  EXPECT_EQ(kernel.sigma, read.kernel.sigma);
+  // A record changed in a config reaches the settings.
+  Config config(shadow_option_specs());
+  config.set("kernel.sigma=1.5");
+  EXPECT_EQ(shadow_settings_from(config, 1).kernel.sigma, 1.5);
 }
 
 }  // namespace

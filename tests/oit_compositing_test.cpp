@@ -139,13 +139,13 @@ TEST(Oit, ReferenceCompositeIsTheBackToFrontBlend) {
 TEST(Oit, LpBoundsHoldAndMboitIsTheLpOnR) {
   std::mt19937_64 rng(44);
   OitParams sharp;
-  sharp.beta = 0;
-  sharp.lp.lp.grid = 4096;
+  sharp.technique.set("oit.beta", 0);
+  sharp.technique.lp.grid = 4096;
   OitParams upper = sharp;
-  upper.lp.lp_beta = 1;
+  upper.technique.lp_beta = 1;
   OitParams wide = sharp;
-  wide.lp.lp = lp::Discretization{-400, 401, 256, false};
-  wide.lp.lp.continuous = true;
+  wide.technique.lp = lp::Discretization{-400, 401, 256, false};
+  wide.technique.lp.continuous = true;
   int compared = 0;
   double worst_r = 0, worst_interval = 0;
   for (int n = 0; n < 100; ++n) {
@@ -176,10 +176,10 @@ TEST(Oit, LpBoundsHoldAndMboitIsTheLpOnR) {
 TEST(Oit, MboitPower6IsTheLpOnR) {
   std::mt19937_64 rng(47);
   OitParams sharp;
-  sharp.beta = 0;
+  sharp.technique.set("oit.beta", 0);
   OitParams wide = sharp;
-  wide.lp.lp = lp::Discretization{-20, 21, 256, false};
-  wide.lp.lp.continuous = true;
+  wide.technique.lp = lp::Discretization{-20, 21, 256, false};
+  wide.technique.lp.continuous = true;
   double worst = 0;
   int compared = 0;
   for (int n = 0; n < 30; ++n) {
@@ -204,15 +204,15 @@ TEST(Oit, MboitPower6IsTheLpOnR) {
 TEST(Oit, MboitTrigIsNeverBelowTheSharpBoundOnTheCircle) {
   std::mt19937_64 rng(46);
   OitParams mboit;
-  mboit.beta = 0;
+  mboit.technique.set("oit.beta", 0);
   const double s = 2 * std::numbers::pi - mboit.wrapping_zone, period = 2 * std::numbers::pi / s;
   int compared = 0, sharp = 0;
   double worst_gap = 0;
   for (int n_moments = 2; n_moments <= 3; ++n_moments) {
     const std::string basis = mboit_trig_lp_basis(n_moments, mboit.wrapping_zone);
     OitParams lower = mboit;
-    lower.lp.lp = lp::Discretization{0, period, 256, false};
-    lower.lp.lp.continuous = true;
+    lower.technique.lp = lp::Discretization{0, period, 256, false};
+    lower.technique.lp.continuous = true;
     for (int n = 0; n < 40; ++n) {
       const Pixel p = random_pixel(rng, 2 + n % 10);
       const std::vector<double> trig = run("mboit_trig" + std::to_string(n_moments), p, mboit),
@@ -273,7 +273,8 @@ TEST(Oit, ZeroWidthWarpAndEdgeOpacities) {
   p.alpha = {0.3, 0.0, 0.5};
   p.color = {{1, 1, 1}, {1, 1, 1}, {1, 1, 1}};
   OitParams sharp;
-  sharp.beta = 0;  // MBOIT's overestimation would count the fragments' own absorbance
+  sharp.technique.set("oit.beta",
+                      0);  // MBOIT's overestimation would count the fragments' own absorbance
   for (const char* name : {"exact", "mboit_power4", "lp:power4"}) {
     const std::vector<double> t = run(name, p, sharp);
     for (double v : t) EXPECT_NEAR(v, 1.0, 1e-9) << name;

@@ -210,7 +210,10 @@ TEST(OitVerify, MboitRowsPassAgainstTheLp) {
 // options: a renamed or misspelled key would show an option that does not exist.
 TEST(OitRun, EveryFamilyOptionOfARowIsADeclaredOption) {
   std::set<std::string> declared;
-  for (const auto& s : technique_option_specs()) declared.insert(s.name);
+  for (const auto& s :
+       technique_option_specs({TechniqueFamily::HardShadow, TechniqueFamily::SoftShadow,
+                               TechniqueFamily::Transmittance, TechniqueFamily::Scattering}))
+    declared.insert(s.name);
   for (const auto& r : soft_option_records()) declared.insert(r.spec.name);
   for (const auto& r : oit_run_options()) declared.insert(r.spec.name);
   for (const auto& s : oit_option_specs()) declared.insert(s.name);
@@ -225,16 +228,54 @@ TEST(OitRun, EveryFamilyOptionOfARowIsADeclaredOption) {
   EXPECT_GT(listed, 20u);
 }
 
+// A technique's own options (TechniqueRow::options) are declared by the command that runs its
+// family, without a line outside the technique's file: eval's for hard and soft shadows, oit's
+// (and a transparency sweep's) for transmittance, scatter's for scattering. A command accepts no
+// other family's own option.
+TEST(OitRun, EveryRowsOwnOptionsAreDeclaredByItsFamilysCommand) {
+  const auto names = [](const std::vector<OptionSpec>& specs) {
+    std::set<std::string> out;
+    for (const auto& s : specs) out.insert(s.name);
+    return out;
+  };
+  const std::set<std::string> eval = names(shadow_option_specs()), oit = names(oit_option_specs()),
+                              scatter = names(scatter_run_option_specs());
+  size_t checked = 0;
+  for (const TechniqueRow& row : technique_registry())
+    for (const TechniqueOption* o : row.options) {
+      const std::string& key = o->spec.name;
+      const bool shadow =
+          row.family == TechniqueFamily::HardShadow || row.family == TechniqueFamily::SoftShadow;
+      EXPECT_EQ(eval.count(key), shadow ? 1u : 0u) << row.name << " " << key;
+      EXPECT_EQ(oit.count(key), row.family == TechniqueFamily::Transmittance ? 1u : 0u)
+          << row.name << " " << key;
+      EXPECT_EQ(scatter.count(key), row.family == TechniqueFamily::Scattering ? 1u : 0u)
+          << row.name << " " << key;
+      ++checked;
+    }
+  EXPECT_GT(checked, 40u);
+  // Read from a config into the parameters the factories get.
+  std::vector<OptionSpec> specs = oit_option_specs();
+  for (const auto& spec : lp_option_specs()) specs.push_back(spec);
+  Config config(specs);
+  config.set("oit.beta=0.5");
+  EXPECT_EQ(oit_params_from(config).technique.number("oit.beta"), 0.5);
+  Config scattering(scatter_run_option_specs());
+  scattering.set("scatter.seed=7");
+  EXPECT_EQ(scatter_run_options_from(scattering).technique.integer("scatter.seed"), 7);
+}
+
 }  // namespace
 // OitParams' options come from their records: a default-made one holds the records' defaults, and
 // oit_params_from reads the keys a config declares (a sweep's lacks oit.depth_range) and lp.*.
 TEST(OitRun, OitParamsAreTheRecordsValues) {
   const OitParams defaults;
   const Config records(oit_option_specs());
-  EXPECT_EQ(defaults.beta, YAML::Load(records.value_text("oit.beta")).as<double>());
+  EXPECT_EQ(defaults.technique.number("oit.beta"),
+            YAML::Load(records.value_text("oit.beta")).as<double>());
   EXPECT_EQ(defaults.warp, warp_kind(records.string("oit.warp")));
   EXPECT_EQ(defaults.depth_range, depth_range_kind(records.string("oit.depth_range")));
-  EXPECT_EQ(defaults.lp.lp_backend, TechniqueParams().lp_backend);
+  EXPECT_EQ(defaults.technique.lp_backend, TechniqueParams().lp_backend);
   std::vector<OptionSpec> specs = lp_option_specs();
   for (const auto& s : oit_option_specs())
     if (s.name != "oit.depth_range") specs.push_back(s);
@@ -243,10 +284,10 @@ TEST(OitRun, OitParamsAreTheRecordsValues) {
   config.set("oit.warp=linear");
   config.set("lp.grid=64");
   const OitParams read = oit_params_from(config);
-  EXPECT_EQ(read.beta, 0.5);
+  EXPECT_EQ(read.technique.number("oit.beta"), 0.5);
   EXPECT_EQ(read.warp, WarpKind::Linear);
   EXPECT_EQ(read.depth_range, defaults.depth_range);
-  EXPECT_EQ(read.lp.lp.grid, 64);
+  EXPECT_EQ(read.technique.lp.grid, 64);
 }
 
 }  // namespace mb

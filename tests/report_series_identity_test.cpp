@@ -57,11 +57,27 @@ TEST(SeriesIdentity, AnAllowedOptionLabelsEachSeriesWithItsValue) {
   EXPECT_THROW(check_series_identity(two, identity({"sample"})), InputError);  // not measured
 }
 
+// An option is off its default where the run's config set it so: a sweep at `resolution` 0 stores
+// the dataset's map size as its identity, which is not a value the user chose.
 TEST(SeriesIdentity, OptionsOffTheirDefaultAreListed) {
   std::vector<SweepSeries> one{series("a.sqlite", "64")};
+  one[0].meta["config"] = "dataset: tiny\nresolution: 64\n";
   check_series_identity(one, identity());
   EXPECT_EQ(one[0].label, "4 functions");
   EXPECT_EQ(one[0].off_default, std::vector<std::string>{"resolution 64"});
+  one[0].meta["config"] = "dataset: tiny\nresolution: 0\n";
+  one[0].off_default.clear();
+  check_series_identity(one, identity());
+  EXPECT_TRUE(one[0].off_default.empty());
+}
+
+// Two sweeps, one at `resolution` 0 on a dataset of 64-texel maps and one at 64, measured the
+// same maps: their identities (the maps' size) agree.
+TEST(SeriesIdentity, TheDatasetsOwnResolutionIsTheSizeItGives) {
+  std::vector<SweepSeries> two{series("a.sqlite", "64"), series("b.sqlite", "64")};
+  two[0].meta["config"] = "resolution: 0\n";
+  two[1].meta["config"] = "resolution: 64\n";
+  EXPECT_NO_THROW(check_series_identity(two, identity()));
 }
 
 TEST(SeriesIdentity, NoBoundIsClaimedUnderAnAreaLight) {
@@ -100,13 +116,15 @@ TEST(SeriesIdentity, TheTargetCannotDiffer) {
 }
 
 TEST(SeriesIdentity, OptionsATargetDoesNotReadAreNotCompared) {
-  // A shadow sweep under its hard light reads no oit.* option nor light.directions.
+  // A shadow sweep reads no oit.* option nor light.directions (sweep_target_specs).
   std::vector<SweepSeries> two{series("a.sqlite", "64"), series("b.sqlite", "64")};
   two[1].meta["oit.beta"] = "0.5", two[1].meta["light.directions"] = "16";
   check_series_identity(two, identity());
-  // Under an area light (an older database) the directions sample it: compared.
-  two[0].meta["light.angle"] = two[1].meta["light.angle"] = "3";
+  // The light's angle is: a shadow sweep refuses an area light, and an older database swept under
+  // one measured another shadow.
+  two[0].meta["light.angle"] = "3";
   EXPECT_THROW(check_series_identity(two, identity()), InputError);
+  two[0].meta["light.angle"] = "0";
   // A transparency sweep renders no light view, but reads oit.*.
   for (auto& s : two) s.meta["target"] = "transparency";
   EXPECT_THROW(check_series_identity(two, identity()), InputError);

@@ -16,7 +16,8 @@ using testing_support::input_error_of;
 ScatterRunOptions small_run(std::vector<std::string> techniques) {
   ScatterRunOptions run;
   run.techniques = std::move(techniques);
-  run.reference_resolution = 96, run.max_distance = 50, run.seed = 1;
+  run.reference_resolution = 96, run.max_distance = 50;
+  run.light_resolution = 96, run.guard_band = 4, run.reference = "exact";
   return run;
 }
 

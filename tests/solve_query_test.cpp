@@ -208,3 +208,25 @@ TEST(SolveQuery, TheBracketLiesInTheUnitIntervalAndIsProvenOnlyWhereInformative)
 
 }  // namespace
 }  // namespace mb
+
+namespace mb {
+namespace {
+
+// A default-made SolveSettings holds its records' defaults (written there only): what a config of
+// nothing but defaults reads.
+TEST(SolveQuery, DefaultSettingsAreTheRecordsDefaults) {
+  const SolveSettings made;
+  const SolveSettings read = solve_settings_from(Config(solve_option_specs()));
+  EXPECT_EQ(made.basis, read.basis);
+  EXPECT_EQ(made.interval, read.interval);
+  EXPECT_EQ(made.grid, read.grid);
+  EXPECT_EQ(made.zf, read.zf);
+  EXPECT_EQ(made.backend, read.backend);
+  EXPECT_EQ(made.alpha, read.alpha);
+  EXPECT_EQ(made.discretization, read.discretization);
+  EXPECT_EQ(made.moment_tolerance, read.moment_tolerance);
+  EXPECT_EQ(made.grid, 1024);  // solve's record: finer than eval's lp.grid 256
+}
+
+}  // namespace
+}  // namespace mb

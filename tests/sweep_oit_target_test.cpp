@@ -55,7 +55,7 @@ struct Frames {
 
 OitParams lp_params() {
   OitParams p;
-  p.lp.lp.grid = 64;
+  p.technique.lp.grid = 64;
   return p;
 }
 

@@ -233,11 +233,12 @@ TEST(SoftTechniques, PcssOfAHalfPlaneIsNearerTheAreaLightThanTheHardShadow) {
 
 // Seed 001's CSM shadow for one occluder depth z at receiver depth d: 1 - saturate(2 f), f the
 // step's Fourier series to M terms, term k attenuated by exp(-alpha (k / M)^2).
-double csm_shadow(double z, double d, const SoftParams& p) {
+double csm_shadow(double z, double d, const TechniqueParams& p) {
+  const int terms = p.integer("soft.csm_terms");
   double f = 0.5;
-  for (int k = 1; k <= p.csm_terms; ++k) {
+  for (int k = 1; k <= terms; ++k) {
     const double ck = (2 * k - 1) * std::numbers::pi;
-    f += 2 * std::exp(-p.csm_absorption * k * k / double(p.csm_terms * p.csm_terms)) *
+    f += 2 * std::exp(-p.number("soft.csm_absorption") * k * k / double(terms * terms)) *
          std::sin(ck * (z - d)) / ck;
   }
   return 1 - std::clamp(2 * f, 0.0, 1.0);
@@ -269,7 +270,7 @@ TEST(SoftTechniques, UmbraUnderTheSlabAndLightFarFromIt) {
           const double expected =
               name == "pcss_csm"
                   ? csm_shadow(s.map.at(int(t % s.stack.width), int(t / s.stack.width)),
-                               s.fragments.zf[k] - BiasParams{}.constant, params)
+                               s.fragments.zf[k] - BiasParams{}.constant, TechniqueParams{})
                   : 1.0;
           EXPECT_GT(shadow[k], expected - 0.1) << name << " " << sat << " at x " << world.x();
           if (name == "pcss_csm") {
@@ -294,15 +295,16 @@ TEST(SoftTechniques, UmbraUnderTheSlabAndLightFarFromIt) {
 TEST(SoftTechniques, LpFinalStepIsAtLeastHamburgersBoundAndEqualOnTwoDepths) {
   SoftParams params;
   params.sat = "exact";
-  params.msm_alpha = 1e-9;
+  TechniqueParams technique;
+  technique.set("soft.msm_alpha", 1e-9);
   const GaussianKernel kernel = make_gaussian_kernel(9, 2.4);
   for (const bool tilted : {false, true}) {
     const TiltedSlab s = tilted ? tilted_slab(AreaLight{20, 16}, kernel)
                                 : tilted_slab_flat(AreaLight{20, 16}, kernel);
-    const SoftResult hamburger =
-        soft_shadow("msm_soft", s.map, s.fragments, s.soft, kernel, BiasParams{}, params, 2);
+    const SoftResult hamburger = soft_shadow("msm_soft", s.map, s.fragments, s.soft, kernel,
+                                             BiasParams{}, params, 2, technique);
     const SoftResult lp = soft_shadow("msm_soft:lp:power4", s.map, s.fragments, s.soft, kernel,
-                                      BiasParams{}, params, 2);
+                                      BiasParams{}, params, 2, technique);
     ASSERT_EQ(lp.failures, 0u);
     double below = 0, apart = 0;
     int penumbra = 0;
@@ -335,10 +337,11 @@ TEST(SoftTechniques, LpFinalStepNeverExceedsTheBoxFilterItBounds) {
   params.sat = "exact";
   params.min_filter = 9;
   params.max_filter = 9;
-  params.umbra_epsilon = 0;
+  TechniqueParams technique;
+  technique.set("soft.umbra_epsilon", 0);
   const BiasParams bias;
-  const SoftResult lp =
-      soft_shadow("msm_soft:lp:power4", s.map, s.fragments, s.soft, kernel, bias, params, 2);
+  const SoftResult lp = soft_shadow("msm_soft:lp:power4", s.map, s.fragments, s.soft, kernel, bias,
+                                    params, 2, technique);
   ASSERT_EQ(lp.failures, 0u);
   double worst = -1;
   int below = 0;
@@ -390,7 +393,7 @@ TEST(SoftTechniques, BlockerAuditBoundsHoldTheRegionsOwnMean) {
   SoftParams params;
   params.audit = 400;
   const auto rows = blocker_audit(s.map, s.fragments, s.soft, make_gaussian_kernel(9, 2.4),
-                                  BiasParams{}, params, 2);
+                                  BiasParams{}, params, TechniqueParams{}, 2);
   int two_depths = 0, outside = 0;
   for (const BlockerAuditRow& row : rows) {
     EXPECT_LE(row.lo, row.exact + 1e-7) << row.receiver;

@@ -195,7 +195,10 @@ void Basis::check_admissible(double lo, double hi) const {
   std::vector<double> z(samples), values(samples);
   for (int i = 0; i < samples; ++i) z[i] = lo + (hi - lo) * i / (samples - 1);
   z.back() = hi;
-  auto interval = "[" + round_trip(lo) + ", " + round_trip(hi) + "]";
+  // Appended piece by piece: GCC 12 warns (-Wstringop-overflow, a false positive) on the chain of
+  // temporaries "[" + ... would make here.
+  std::string interval = "[";
+  interval.append(round_trip(lo)).append(", ").append(round_trip(hi)).append("]");
   for (const auto& f : functions_) {
     f.evaluate(z, values);
     double peak = 0;

@@ -125,10 +125,17 @@ const AnalyticForm* analytic_form(const std::string& catalog_name) {
 
 void form_derivatives(const AnalyticForm& f, long double z, int order, long double* out) {
   switch (f.family) {
-    case Family::Power:
-      for (int k = 0; k <= order; ++k)
-        out[k] = k > f.n ? 0.0L : falling(f.n, k) * std::pow(z, f.n - k);
+    case Family::Power: {
+      // z^(n - k) by multiplication, not powl: the certificate's scan evaluates these at every
+      // cell (continuous/continuous.cpp), and powl of an exponent above 3 costs a microsecond.
+      // At most 5 roundings, well within the scan's allowance of 64 ulp a term.
+      const int top = std::min(order, f.n);
+      long double power = 1;  // z^(n - k) for k = top, top - 1, ..., 0
+      for (int i = top; i < f.n; ++i) power *= z;
+      for (int k = order; k > top; --k) out[k] = 0.0L;
+      for (int k = top; k >= 0; --k, power *= z) out[k] = falling(f.n, k) * power;
       return;
+    }
     case Family::Exp: {
       const long double e = std::exp(f.c * z);
       long double ck = 1;

@@ -27,7 +27,7 @@ struct BoundsSettings {
   std::string view;
   std::vector<int64_t> texel, sizes;
   std::vector<std::string> bases;
-  int samples = 401;
+  int samples = 0;  // its record holds the default
 };
 
 const std::vector<OptionRecord<BoundsSettings>>& bounds_options() {

@@ -53,10 +53,9 @@ int run_eval(const EvalOptions& options) {
   if (run.techniques.empty()) throw InputError("techniques: expected at least one technique");
   const auto techniques = with_oracle_row(run.techniques, settings.bias);
   // Construct every technique once before any work: unknown names fail here, with no output.
-  std::map<std::string, std::string> darkening_reason;
   for (const auto& name : techniques) {
     if (const TechniqueRow& row = shadow_row(name); row.check) row.check(name, settings.technique);
-    darkening_reason[name] = technique_darkening_reason(name, settings);
+    technique_darkening_reason(name, settings);
   }
   DatasetDesc dataset = load_dataset(data.dataset);
   const std::vector<Scene> scenes = build_dataset_scenes(dataset);
@@ -66,9 +65,7 @@ int run_eval(const EvalOptions& options) {
 
   auto views = prepare_views(scenes, dataset, data.resolution, settings, quiet);
   const std::string soft_text = describe_area_lights(views, settings.light);
-  if (!soft_text.empty())
-    for (auto& [name, reason] : darkening_reason)
-      reason = "the reference is an area light's shadow, which no technique bounds";
+  const auto darkening_reason = darkening_reasons(techniques, settings, views);
   for (const auto& name : techniques)
     if (shadow_row(name).solves_lp)
       check_lp_interval(views, settings.technique.lp.lo, settings.technique.lp.hi);
@@ -110,6 +107,7 @@ int run_eval(const EvalOptions& options) {
   context.compiler = meta.compiler, context.started = meta.started_utc, context.threads = threads;
   context.settings_text = describe_settings(settings) + soft_text;
   context.reference = settings.bias.reference;
+  context.area_light = !soft_text.empty();
   context.views = views.size();
   for (const auto& v : views) context.receivers += v.fragments.size();
   context.non_default = config.non_default();

@@ -45,22 +45,6 @@ struct OitOptions {
   CommonOptions common;
 };
 
-std::string describe(const OitParams& p) {
-  return "depth warp: " + std::string(p.warp == WarpKind::Linear ? "linear" : "logarithmic") +
-         (p.depth_range == DepthRangeKind::Fragments
-              ? " between each camera's nearest and farthest transparent fragment"
-              : " over the depth range of the bounding sphere of each scene's transparent "
-                "geometry (seed 003)") +
-         " (docs/transparency.md §2); MBOIT beta " + round_trip(p.beta) + ", moment bias " +
-         round_trip(p.double_bias.power[0]) +
-         " (double; float and 16-bit variants: the authors' code's biases); lp: grid " +
-         std::to_string(p.lp.lp.grid) + " on [" + round_trip(p.lp.lp.lo) + ", " +
-         round_trip(p.lp.lp.hi) +
-         "] of the warped depth and the pixel's fragment depths, "
-         "backend " +
-         p.lp.lp_backend + ", lp.beta " + round_trip(p.lp.lp_beta);
-}
-
 int run_oit(const OitOptions& options) {
   auto cmd = CommandRun::begin(oit_specs(), options.common);
   if (!cmd) return 0;
@@ -94,7 +78,7 @@ int run_oit(const OitOptions& options) {
   const RunMetadata& meta = cmd->metadata();
   context.dataset = dataset.name, context.version = meta.version, context.git_sha = meta.git_sha;
   context.compiler = meta.compiler, context.started = meta.started_utc, context.threads = threads;
-  context.settings_text = describe(params);
+  context.settings_text = describe_oit_settings(params);
   context.cameras = frames.size();
   context.fragments = rows.overall().front().stats.fragments;
   context.pixels = rows.overall().front().stats.pixels;

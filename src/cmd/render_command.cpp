@@ -20,7 +20,7 @@ namespace mb {
 namespace {
 
 struct RenderSettings {
-  bool previews = true;
+  bool previews = false;  // its record holds the default
 };
 
 const std::vector<OptionRecord<RenderSettings>>& render_options() {

@@ -17,8 +17,8 @@ namespace {
 
 struct ReportOptions {
   std::vector<std::string> results;
-  bool plot = true;
-  int bins = 60;
+  bool plot = false;
+  int bins = 0;
   std::vector<std::string> allow_different;
 };
 

@@ -8,6 +8,7 @@
 #include "cmd/commands.h"
 #include "report/scatter_report.h"
 #include "scatter/scatter_run.h"
+#include "techniques/registry.h"
 #include "util/error.h"
 #include "util/number_text.h"
 #include "util/output_dir.h"
@@ -23,7 +24,7 @@ std::vector<OptionSpec> scatter_specs() {
     if (spec.name == "dataset") spec.default_value = "scattering";
     specs.push_back(spec);
   }
-  for (auto& s : option_specs(scatter_run_options())) specs.push_back(s);
+  for (auto& s : scatter_run_option_specs()) specs.push_back(s);
   return specs;
 }
 
@@ -37,10 +38,7 @@ int run_scatter_command(const ScatterOptions& options) {
   auto cmd = CommandRun::begin(scatter_specs(), options.common);
   if (!cmd) return 0;
   const Config& config = cmd->config();
-  ScatterRunOptions run;
-  read_options(config, scatter_run_options(), run);
-  if (run.techniques.empty()) throw InputError("techniques: expected at least one technique");
-  for (const auto& name : run.techniques) make_scatter_technique(name, {});  // names fail here
+  const ScatterRunOptions run = scatter_run_options_from(config);
   const DatasetDesc dataset = load_dataset(config.string("dataset"));
   const std::vector<ScatterScene> scenes = scatter_scenes(dataset);
 
@@ -58,9 +56,12 @@ int run_scatter_command(const ScatterOptions& options) {
       overall[k].seconds += r.seconds[k];
     }
     ++context.frames;
+    context.epipole_lines.push_back(r.scene + "/" + r.view + "/" + r.camera + ": " +
+                                    std::to_string(r.epipole_pixels) + " of " +
+                                    std::to_string(size_t(r.width) * r.height));
     if (run.images)
       context.sheets.push_back(write_scatter_images(
-          r, run.techniques,
+          r, run.techniques, run.reference,
           (out.staging() / "images" / (r.scene + "_" + r.view + "_" + r.camera)).string(),
           run.error_scale));
   });
@@ -70,10 +71,9 @@ int run_scatter_command(const ScatterOptions& options) {
   context.dataset = dataset.name, context.version = meta.version, context.git_sha = meta.git_sha;
   context.compiler = meta.compiler, context.started = meta.started_utc;
   context.threads = cmd->threads();
-  context.settings_text = "light maps " + std::to_string(run.reference_resolution) +
-                          "², rays without a surface " + round_trip(run.max_distance) +
-                          " scene units, ray-marching seed " + std::to_string(run.seed) +
-                          ", irradiance E = 1 (docs/scattering.md §1)";
+  context.settings_text = describe_scatter_settings(run);
+  context.reference = run.reference;
+  context.epipole_degrees = run.epipole_degrees;
   context.pixels = overall.front().stats.pixels;
   context.non_default = config.non_default();
   context.error_scale = run.error_scale;

@@ -8,9 +8,10 @@ std::vector<ViewBlockerAudit> audit_blocker_searches(const std::vector<ViewData>
   if (settings.soft.audit == 0) return audits;
   for (const ViewData& view : views) {
     if (view.soft.angle_deg <= 0) continue;
-    audits.push_back({view.scene, view.view, view.soft.angle_deg,
-                      blocker_audit(view.map, view.fragments, view.soft, settings.kernel,
-                                    settings.bias, settings.soft, settings.threads)});
+    audits.push_back(
+        {view.scene, view.view, view.soft.angle_deg,
+         blocker_audit(view.map, view.fragments, view.soft, settings.kernel, settings.bias,
+                       settings.soft, settings.technique, settings.threads)});
   }
   return audits;
 }

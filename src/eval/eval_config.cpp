@@ -18,14 +18,15 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The protocol's keys as plain fields; shadow_settings_from turns them into the kernel and the
 // bias.
+// Filled from the records below (their defaults are written there only).
 struct ShadowOptions {
-  int kernel_size = 9;
-  double kernel_sigma = 2.4;
+  int kernel_size{};
+  double kernel_sigma{};
   std::string reference;
-  double bias_slope = 1, bias_constant = 1e-4;
+  double bias_slope{}, bias_constant{};
   std::string blend;
-  double light_angle = 0;
-  int light_directions = 64;
+  double light_angle{};
+  int light_directions{};
 };
 
 const std::vector<OptionRecord<ShadowOptions>>& kernel_options() {
@@ -85,6 +86,8 @@ const std::vector<OptionRecord<ShadowOptions>>& translucent_options() {
   return records;
 }
 
+// The light's extent: every shadow measurement reads it (a hard-shadow sweep, to refuse an area
+// light).
 const std::vector<OptionRecord<ShadowOptions>>& light_options() {
   static const std::vector<OptionRecord<ShadowOptions>> records{
       {{"light.angle", OptionType::Number, "0",
@@ -94,6 +97,13 @@ const std::vector<OptionRecord<ShadowOptions>>& light_options() {
         "shadow. The sun is 0.53. Below 90 (a cone of half-angle under 45 degrees).",
         0, 89.99},
        &ShadowOptions::light_angle},
+  };
+  return records;
+}
+
+// What only an area light reads (light.angle > 0): its sampling, beside the soft.* records.
+const std::vector<OptionRecord<ShadowOptions>>& area_light_options() {
+  static const std::vector<OptionRecord<ShadowOptions>> records{
       {{"light.directions", OptionType::Integer, "64",
         "Soft shadows: directions N averaged for the area light's shadow, each one rasterized "
         "layer stack. Powers of two stratify best (docs/soft-shadows.md §1); the error of N "
@@ -112,10 +122,27 @@ std::vector<OptionSpec> shadow_option_specs() {
   for (auto& s : option_specs(bias_options())) specs.push_back(s);
   for (auto& s : option_specs(translucent_options())) specs.push_back(s);
   for (auto& s : option_specs(light_options())) specs.push_back(s);
+  for (auto& s : option_specs(area_light_options())) specs.push_back(s);
   for (auto& s : option_specs(soft_option_records())) specs.push_back(s);
-  for (auto& s : technique_option_specs()) specs.push_back(s);
+  for (auto& s : technique_option_specs({TechniqueFamily::HardShadow, TechniqueFamily::SoftShadow}))
+    specs.push_back(s);
   for (auto& s : lp_option_specs()) specs.push_back(s);
   return specs;
+}
+
+std::vector<OptionSpec> hard_shadow_option_specs() {
+  std::vector<OptionSpec> specs = option_specs(kernel_options());
+  for (auto& s : option_specs(bias_options())) specs.push_back(s);
+  for (auto& s : option_specs(translucent_options())) specs.push_back(s);
+  for (auto& s : option_specs(light_options())) specs.push_back(s);
+  for (auto& s : technique_option_specs({TechniqueFamily::HardShadow})) specs.push_back(s);
+  for (auto& s : lp_option_specs()) specs.push_back(s);
+  return specs;
+}
+
+EvalSettings::EvalSettings() {
+  static const EvalSettings defaults = shadow_settings_from(Config(shadow_option_specs()), 1);
+  *this = defaults;
 }
 
 GaussianKernel kernel_from(const Config& config) {
@@ -125,13 +152,14 @@ GaussianKernel kernel_from(const Config& config) {
 }
 
 EvalSettings shadow_settings_from(const Config& config, int threads) {
-  EvalSettings s;
+  EvalSettings s{EvalSettings::Unset{}};
   s.kernel = kernel_from(config);
   ShadowOptions o;
   read_options(config, bias_options(), o);
   read_options(config, translucent_options(), o);
   s.blend = o.blend == "submission" ? BlendOrder::Submission : BlendOrder::Sorted;
   read_options(config, light_options(), o);
+  read_options(config, area_light_options(), o);
   s.light.angle_deg = o.light_angle;
   s.light.directions = o.light_directions;
   read_options(config, soft_option_records(), s.soft);

@@ -10,6 +10,9 @@
 namespace mb {
 
 std::vector<OptionSpec> shadow_option_specs();
+// The options a hard shadow's numbers depend on (of a hard-shadow sweep): shadow_option_specs()
+// without what only an area light and the soft techniques read (light.directions, soft.*).
+std::vector<OptionSpec> hard_shadow_option_specs();
 // The kernel.* keys alone (commands that need no technique parameters; the lp.* keys:
 // techniques/lp_options.h).
 GaussianKernel kernel_from(const Config& config);

@@ -77,8 +77,9 @@ std::vector<ExactPcss> exact_pcss(const std::vector<ViewData>& views,
     const ViewData& view = views[v];
     if (!(view.soft.angle_deg > 0)) continue;
     const auto start = Clock::now();
-    SoftResult soft = soft_shadow(exact_soft_row().name, view.map, view.fragments, view.soft,
-                                  settings.kernel, settings.bias, settings.soft, settings.threads);
+    SoftResult soft =
+        soft_shadow(exact_soft_row().name, view.map, view.fragments, view.soft, settings.kernel,
+                    settings.bias, settings.soft, settings.threads, settings.technique);
     out[v].result.shadow = std::move(soft.shadow);
     out[v].result.failures = soft.failures;
     out[v].seconds = std::chrono::duration<double>(Clock::now() - start).count();

@@ -12,11 +12,12 @@
 
 namespace mb {
 
+// Filled from eval_run_options(), where the defaults are written.
 struct EvalRunOptions {
   std::vector<std::string> techniques;
-  bool images = true;
+  bool images = false;
   bool camera_images = false;
-  double error_scale = 0.5;  // |reference - G| at the top of the error colour bar
+  double error_scale = 0;  // |reference - G| at the top of the error colour bar
 };
 
 const std::vector<OptionRecord<EvalRunOptions>>& eval_run_options();

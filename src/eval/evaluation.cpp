@@ -110,7 +110,9 @@ std::string describe_area_lights(const std::vector<ViewData>& views, const AreaL
         std::find(angles.begin(), angles.end(), v.soft.angle_deg) == angles.end())
       angles.push_back(v.soft.angle_deg);
   if (angles.empty()) return "";
-  std::string text = "; reference: the area light's shadow (docs/soft-shadows.md §1), lights of ";
+  std::string text =
+      "; views lit by an area light: their reference is that light's shadow, not PCF "
+      "(docs/soft-shadows.md §1), lights of ";
   for (size_t i = 0; i < angles.size(); ++i) text += (i ? ", " : "") + round_trip(angles[i]);
   return text + " degrees, " + std::to_string(light.directions) + " directions each; the " +
          role_name(TechniqueFamily::HardShadow, RowRole::Reference) + " row is the hard shadow";
@@ -133,8 +135,7 @@ void check_lp_interval(const std::vector<ViewData>& views, double lo, double hi)
 }
 
 const TechniqueRow& shadow_row(const std::string& name) {
-  if (const TechniqueRow* row = find_technique(name, TechniqueFamily::SoftShadow)) return *row;
-  return technique_row(name, TechniqueFamily::HardShadow);
+  return technique_row(name, {TechniqueFamily::HardShadow, TechniqueFamily::SoftShadow});
 }
 
 bool is_view_reference(const std::string& technique, double light_angle_deg) {
@@ -151,6 +152,18 @@ std::string technique_darkening_reason(const std::string& name, const EvalSettin
   const TechniqueRow& row = shadow_row(name);
   if (row.family != TechniqueFamily::HardShadow) return row.unproven_reason;
   return make_technique(name, settings.technique)->darkening_reason();
+}
+
+std::map<std::string, std::string> darkening_reasons(const std::vector<std::string>& techniques,
+                                                     const EvalSettings& settings,
+                                                     const std::vector<ViewData>& views) {
+  const bool area_light = !describe_area_lights(views, settings.light).empty();
+  std::map<std::string, std::string> reasons;
+  for (const auto& name : techniques)
+    reasons[name] = area_light
+                        ? "the reference is an area light's shadow, which no technique bounds"
+                        : technique_darkening_reason(name, settings);
+  return reasons;
 }
 
 TechniqueResult evaluate_technique(const ViewData& view, const std::string& technique_name,

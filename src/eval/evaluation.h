@@ -1,5 +1,6 @@
 #pragma once
 // Technique x view -> one shadow intensity per receiver fragment (docs/design.md §Data flow).
+#include <map>
 #include <string>
 #include <vector>
 
@@ -26,12 +27,17 @@ struct ViewData {
 };
 
 struct EvalSettings {
-  GaussianKernel kernel = make_gaussian_kernel(9, 2.4);
+  // The option records' defaults (eval/eval_config.h; written there only), as a library caller or
+  // a test gets them.
+  EvalSettings();
+  struct Unset {};
+  explicit EvalSettings(Unset) {}  // what shadow_settings_from fills
+  GaussianKernel kernel;
   BiasParams
       bias;  // delta_f and the reference: techniques see z_f - delta_f (docs/reference.md §3)
   TechniqueParams technique;
   // How translucent moment maps blend (translucent.blend; the reference is always exact).
-  BlendOrder blend = BlendOrder::Sorted;
+  BlendOrder blend{};
   // The light of every view that names none, unless the dataset lists light_angles (light.angle,
   // light.directions; docs/soft-shadows.md §1).
   AreaLight light;
@@ -60,7 +66,8 @@ std::vector<Scene> build_dataset_scenes(const DatasetDesc& dataset);
 std::vector<ViewData> prepare_views(const std::vector<Scene>& scenes, const DatasetDesc& dataset,
                                     int resolution, const EvalSettings& settings, bool quiet);
 
-// For reports: "; reference: the area light's shadow ..." naming the views' light angles and N, or
+// For reports: "; views lit by an area light: their reference is that light's shadow ..." naming
+// the views' light angles and N, or
 // "" when every view is lit by a hard light.
 std::string describe_area_lights(const std::vector<ViewData>& views, const AreaLight& light);
 
@@ -87,6 +94,12 @@ bool is_view_reference(const std::string& technique, double light_angle_deg);
 // a soft technique claims none (its row's reason).
 double technique_darkening_bound(const std::string& name, const EvalSettings& settings);
 std::string technique_darkening_reason(const std::string& name, const EvalSettings& settings);
+// Each technique's reason for the report's darkening notes: its own, or where the views are lit by
+// an area light (describe_area_lights) the reference's, the area light's shadow, which no
+// technique bounds (docs/soft-shadows.md §1).
+std::map<std::string, std::string> darkening_reasons(const std::vector<std::string>& techniques,
+                                                     const EvalSettings& settings,
+                                                     const std::vector<ViewData>& views);
 
 // Runs `technique_name` on every receiver of `view` with one technique instance per thread.
 TechniqueResult evaluate_technique(const ViewData& view, const std::string& technique_name,

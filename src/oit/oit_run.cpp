@@ -6,6 +6,7 @@
 
 #include "techniques/registry.h"
 #include "util/error.h"
+#include "util/number_text.h"
 #include "util/parallel_errors.h"
 #include "util/progress.h"
 
@@ -181,6 +182,23 @@ OitFrameResult evaluate_oit_frame(const DeepFrame& frame, const std::string& sce
   }
   bar.finish();
   return result;
+}
+
+std::string describe_oit_settings(const OitParams& p) {
+  return "depth warp: " + std::string(p.warp == WarpKind::Linear ? "linear" : "logarithmic") +
+         (p.depth_range == DepthRangeKind::Fragments
+              ? " between each camera's nearest and farthest transparent fragment"
+              : " over the depth range of the bounding sphere of each scene's transparent "
+                "geometry (seed 003)") +
+         " (docs/transparency.md §2); " +
+         technique_option_text({TechniqueFamily::Transmittance}, p.technique) +
+         ", MBOIT's moment bias " + round_trip(p.double_bias.power[0]) +
+         " (double; float and 16-bit variants: the authors' code's biases); lp: grid " +
+         std::to_string(p.technique.lp.grid) + " on [" + round_trip(p.technique.lp.lo) + ", " +
+         round_trip(p.technique.lp.hi) +
+         "] of the warped depth and the pixel's fragment depths, "
+         "backend " +
+         p.technique.lp_backend + ", lp.beta " + round_trip(p.technique.lp_beta);
 }
 
 }  // namespace mb

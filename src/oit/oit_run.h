@@ -15,11 +15,12 @@
 
 namespace mb {
 
+// Filled from oit_run_options(), where the defaults are written.
 struct OitRunOptions {
   std::vector<std::string> techniques;
-  bool images = true;
-  bool deep_frames = true;
-  double delta_e_scale = 10;
+  bool images = false;
+  bool deep_frames = false;
+  double delta_e_scale = 0;
 };
 
 // The command's own records; the techniques' (oit.*, lp.*) are techniques/oit/oit_options.h's.
@@ -78,5 +79,9 @@ OitFrameResult evaluate_oit_frame(const DeepFrame& frame, const std::string& sce
                                   const std::vector<std::string>& techniques,
                                   const OitParams& params, int threads, const LabConverter& lab,
                                   bool quiet);
+
+// The sentence a report states the run's settings in: the warp and its range, MBOIT's beta and
+// bias, and the lp: rows' grid, interval, backend and lp.beta.
+std::string describe_oit_settings(const OitParams& params);
 
 }  // namespace mb

@@ -53,17 +53,19 @@ void check_oit_verify_technique(const std::string& technique) {
 OitVerifyRow verify_mboit(const std::string& technique, int pixels, uint64_t seed) {
   check_oit_verify_technique(technique);
   OitParams closed, lp;
-  const OitVerifyRecipe recipe =
-      technique_row(technique, TechniqueFamily::Transmittance).oit_verify(closed);
+  const TechniqueRow& row_of = technique_row(technique, TechniqueFamily::Transmittance);
+  const OitVerifyRecipe recipe = row_of.oit_verify(closed);
   OitVerifyRow row;
   row.technique = technique;
   row.lp_basis = recipe.lp_basis;
   row.kind = recipe.kind;
   row.lo = recipe.lo, row.hi = recipe.hi;
   row.tolerance = recipe.tolerance;
-  closed.beta = 0;
-  lp.lp.lp = lp::Discretization{row.lo, row.hi, 256, false};
-  lp.lp.lp.continuous = true;
+  // The closed form at its sharp setting (beta 0: A-, docs/transparency.md §6).
+  for (const TechniqueOption* o : row_of.options)
+    if (o->zero_is_sharp) closed.technique.set(*o, 0);
+  lp.technique.lp = lp::Discretization{row.lo, row.hi, 256, false};
+  lp.technique.lp.continuous = true;
   auto mboit = make_oit_technique(technique, closed);
   auto reference = make_oit_technique(row.lp_basis, lp);
   SeededRandom rng(seed);

@@ -21,8 +21,20 @@ std::string darkening_text(double mean_dark, double max_dark, double bound) {
   return percent_text(mean_dark);
 }
 
-std::string protocol_text(Reference reference) {
+std::string protocol_text(Reference reference, bool area_light) {
+  // Under an area light the reference is the light's own shadow, which no technique bounds
+  // (docs/soft-shadows.md §1): the hard-shadow protocol's G <= PCF does not hold against it.
   std::string text =
+      area_light
+          ? std::string(
+                "Views lit by an area light are measured against that light's shadow S "
+                "(docs/soft-shadows.md §1), not PCF: errors there are mean |S - G|, no technique "
+                "proves a bound on S, and over-darkening (G above S) is a measurement, not a "
+                "fault. The hard-shadow protocol below holds for the views of a hard light and "
+                "for the '") +
+                role_name(TechniqueFamily::HardShadow, RowRole::Reference) + "' row. "
+          : std::string();
+  text +=
       "Errors are mean |PCF - G| over receiver fragments in percent. Every technique and the "
       "reference see the same "
       "per-fragment depth bias delta_f (docs/reference.md §3), so a valid lower bound satisfies G "

@@ -29,7 +29,7 @@ bool darkening_violates(double max_dark, double bound);
 // an exact technique exceeds its bound).
 std::string darkening_text(double mean_dark, double max_dark, double bound);
 // The paragraph that says what the error columns mean under this reference.
-std::string protocol_text(Reference reference);
+std::string protocol_text(Reference reference, bool area_light = false);
 // One Markdown note per technique that over-darkens (why) or exceeds its bound (a bug); "" if none.
 std::string darkening_notes(const std::vector<DarkeningRow>& rows);
 

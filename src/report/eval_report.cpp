@@ -205,7 +205,7 @@ EvalReport render_eval_report(const EvalReportContext& ctx, const std::vector<Ev
          << " receiver fragments (every light-facing fragment of "
          << "every layer, docs/reference.md §3)\n";
   for (const auto& line : ctx.non_default) report << "- option " << line << "\n";
-  report << "\n" << protocol_text(ctx.reference) << "\n\n";
+  report << "\n" << protocol_text(ctx.reference, ctx.area_light) << "\n\n";
   for (const auto& r : overall)
     if (technique_role(r.technique) == RowRole::BiasFloor &&
         ctx.reference == Reference::ReceiverPlane)

@@ -17,6 +17,7 @@ struct EvalReportContext {
   std::string dataset, version, git_sha, compiler, started, settings_text;
   int threads = 0;
   Reference reference = Reference::Biased;
+  bool area_light = false;  // some view is lit by an area light: its reference is that light's
   size_t views = 0, receivers = 0;
   std::vector<std::string> non_default;  // "key: value" of the options that differ
   bool images = false;

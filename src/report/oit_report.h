@@ -16,7 +16,7 @@ struct OitReportContext {
   size_t cameras = 0, fragments = 0, pixels = 0;
   std::vector<std::string> non_default;
   std::vector<std::string> sheets;  // contact sheets, relative to the report
-  double delta_e_scale = 10;
+  double delta_e_scale = 0;         // oit's option (oit_run_options)
 };
 
 struct OitReport {

@@ -23,6 +23,9 @@ struct ScatterReportContext {
   std::vector<std::string> non_default;
   std::vector<std::string> sheets;  // contact sheets, relative to the report
   double error_scale = 0;
+  std::string reference;  // scatter.reference
+  double epipole_degrees = 0;
+  std::vector<std::string> epipole_lines;  // per light view and camera: "<frame>: N of M"
 };
 
 struct ScatterReport {
@@ -38,9 +41,12 @@ ScatterReport render_scatter_report(const ScatterReportContext& context,
 // (|I - I_ref| / S_max in false colour up to `scale`, with its colour bar), and `<base>_sheet.png`:
 // the reference, then each technique, each column its final colour above its in-scattering above
 // its error. One exposure per light view and camera, taken from the reference, so that the
-// columns compare. Returns the sheet's file name.
+// columns compare. With the frame's rectified map, `<base>_rectified.png`: its normalised depths
+// in grey (u, the light rays' distance r, to the right; v, their azimuth, down; white where a
+// light ray meets no surface), seed 004 Figure 3 (right). Returns the sheet's file name.
 std::string write_scatter_images(const ScatterFrameResult& result,
                                  const std::vector<std::string>& techniques,
-                                 const std::string& base, double scale);
+                                 const std::string& reference, const std::string& base,
+                                 double scale);
 
 }  // namespace mb

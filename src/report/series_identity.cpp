@@ -6,6 +6,7 @@
 #include <set>
 
 #include "sweep/run_identity.h"
+#include "sweep/sweep_run.h"
 #include "util/error.h"
 
 namespace mb {
@@ -17,6 +18,14 @@ std::vector<std::string> measurement_keys(const std::vector<OptionSpec>& specs) 
   for (const auto& s : specs)
     if (s.effect == OptionEffect::Measures) keys.push_back(s.name);
   return keys;
+}
+
+// The options two series are compared on: those their target reads (sweep_target_specs), or
+// every one when their targets differ.
+std::vector<OptionSpec> compared_specs(const Meta& a, const Meta& b,
+                                       const std::vector<OptionSpec>& specs) {
+  const std::string target = measurement_value(a, "target", specs);
+  return target == measurement_value(b, "target", specs) ? sweep_target_specs(target) : specs;
 }
 
 std::string joined(const std::vector<std::string>& items, const std::string& separator) {
@@ -53,7 +62,8 @@ void check_series_identity(std::vector<SweepSeries>& series, const SeriesIdentit
   std::set<std::string> refused_keys, differing;
   for (size_t i = 1; i < series.size(); ++i) {
     std::vector<OptionDifference> kept;
-    for (auto& d : measurement_differences(series[i].meta, series[0].meta, specs))
+    for (auto& d : measurement_differences(series[i].meta, series[0].meta,
+                                           compared_specs(series[i].meta, series[0].meta, specs)))
       if (allowed.count(d.key))
         differing.insert(d.key);
       else
@@ -79,9 +89,9 @@ void check_series_identity(std::vector<SweepSeries>& series, const SeriesIdentit
       s.own_values.push_back(value);
       if (differing.count(key)) labelled.push_back(value);
     }
-    for (const auto& key : keys)
+    for (const auto& key : measurement_keys(compared_specs(s.meta, s.meta, specs)))
       if (key != "dataset" && !allowed.count(key) &&
-          measurement_value(s.meta, key, specs) != measurement_value({}, key, specs))
+          configured_value(s.meta, key, specs) != measurement_value({}, key, specs))
         s.off_default.push_back(key + " " + measurement_value(s.meta, key, specs));
     if (!labelled.empty()) s.label += " (" + joined(labelled, ", ") + ")";
   }

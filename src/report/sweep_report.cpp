@@ -385,6 +385,28 @@ const SweepSeries& main_series(const std::vector<SweepSeries>& series) {
   return *main;
 }
 
+namespace {
+
+// Whether every series was measured with the same values of the keys allowed to differ (report
+// --allow-different): then their references are one measurement, the main series'; otherwise
+// each series' references are its own, and every table of them names its series.
+bool measured_alike(const std::vector<SweepSeries>& series) {
+  return std::all_of(series.begin(), series.end(), [&](const SweepSeries& s) {
+    return s.own_values == series.front().own_values;
+  });
+}
+
+// The series whose references a report shows: the main one, or each when they were measured
+// differently.
+std::vector<const SweepSeries*> reference_series(const std::vector<SweepSeries>& series) {
+  if (measured_alike(series)) return {&main_series(series)};
+  std::vector<const SweepSeries*> out;
+  for (const auto& s : series) out.push_back(&s);
+  return out;
+}
+
+}  // namespace
+
 SweepReportTables sweep_report_tables(const std::vector<SweepSeries>& series, int bins) {
   SweepReportTables t;
   std::ostringstream candidates, histogram, summary, references;
@@ -427,10 +449,16 @@ SweepReportTables sweep_report_tables(const std::vector<SweepSeries>& series, in
     for (double m : kTieMargins) summary << "," << s.within(m);
     summary << "\n";
   }
-  references << "technique,mean_error,leak,over_darkening,max_over_darkening\n";
-  for (const auto& r : main_series(series).references)
-    references << '"' << r.name << "\"," << round_trip(r.mean) << "," << round_trip(r.leak) << ","
-               << round_trip(r.dark) << "," << round_trip(r.max_dark) << "\n";
+  // One measurement: its references as they are; several (--allow-different): each series' own,
+  // named by a first column.
+  const bool alike = measured_alike(series);
+  references << (alike ? "" : "series,")
+             << "technique,mean_error,leak,over_darkening,max_over_darkening\n";
+  for (const SweepSeries* s : reference_series(series))
+    for (const auto& r : s->references)
+      references << (alike ? "" : "\"" + s->label + "\",") << '"' << r.name << "\","
+                 << round_trip(r.mean) << "," << round_trip(r.leak) << "," << round_trip(r.dark)
+                 << "," << round_trip(r.max_dark) << "\n";
   t.candidates_csv = candidates.str();
   t.histogram_csv = histogram.str();
   t.series_csv = summary.str();
@@ -461,10 +489,12 @@ std::string summary_lines(const std::vector<SweepSeries>& series) {
   for (size_t i = 0; i < series.size(); ++i)
     s << (i ? "; " : "") << series[i].label << " " << percent_text(series[i].best()) << " % ("
       << series[i].ranked.front().name << ")";
-  for (const auto& r : main_series(series).references)
-    if (darkening_violates(r.max_dark, r.darkening_bound))
-      attention << (attention.tellp() > 0 ? "; " : "") << "**" << r.name
-                << " over-darkens above its proven bound**";
+  for (const SweepSeries* x : reference_series(series))
+    for (const auto& r : x->references)
+      if (darkening_violates(r.max_dark, r.darkening_bound))
+        attention << (attention.tellp() > 0 ? "; " : "") << "**" << r.name
+                  << (series.size() > 1 && !measured_alike(series) ? " (" + x->label + ")" : "")
+                  << " over-darkens above its proven bound**";
   if (failed) attention << (attention.tellp() > 0 ? "; " : "") << failed << " LPs failed";
   if (above)
     attention << (attention.tellp() > 0 ? "; " : "") << "**" << above
@@ -555,18 +585,23 @@ std::string sweep_report_markdown(const std::vector<SweepSeries>& series,
 
   const std::string columns =
       transparency ? "T too high % | T too low %" : "leak % | over-darkening %";
-  md << "## Reference techniques on the same dataset\n\n| technique | mean error % | " << columns
-     << " | rank among " << main.label << " |\n|---|---|---|---|---|\n";
-  std::vector<DarkeningRow> darkening;
-  for (const auto& r : main.references) {
-    md << "| " << r.name << " | " << percent_text(r.mean) << " | " << percent_text(r.leak) << " | "
-       << darkening_text(r.dark, r.max_dark, r.darkening_bound) << " | "
-       << (is_hard_reference(r.name) ? std::string("-")
-                                     : std::to_string(better_than(main, r.mean) + 1))
-       << " |\n";
-    darkening.push_back({r.name, r.dark, r.max_dark, r.darkening_bound, r.darkening_reason});
+  const std::vector<const SweepSeries*> shown = reference_series(series);
+  for (const SweepSeries* s : shown) {
+    md << "## Reference techniques on the same dataset"
+       << (shown.size() > 1 ? " as " + s->label + " measured them" : "") << "\n\n"
+       << "| technique | mean error % | " << columns << " | rank among " << s->label
+       << " |\n|---|---|---|---|---|\n";
+    std::vector<DarkeningRow> darkening;
+    for (const auto& r : s->references) {
+      md << "| " << r.name << " | " << percent_text(r.mean) << " | " << percent_text(r.leak)
+         << " | " << darkening_text(r.dark, r.max_dark, r.darkening_bound) << " | "
+         << (is_hard_reference(r.name) ? std::string("-")
+                                       : std::to_string(better_than(*s, r.mean) + 1))
+         << " |\n";
+      darkening.push_back({r.name, r.dark, r.max_dark, r.darkening_bound, r.darkening_reason});
+    }
+    md << "\n" << darkening_notes(darkening);
   }
-  md << "\n" << darkening_notes(darkening);
 
   const std::string header = "| rank | id | functions | mean error % | " + columns +
                              " | LPs solved | failed |\n|---|---|---|---|---|---|---|---|\n";

@@ -3,12 +3,14 @@
 // scattering technique on every light view and camera of a dataset against the exact
 // in-scattering. The command adds the outputs; this is reachable from tests.
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "scatter/scatter_stats.h"
 #include "scene/dataset.h"
 #include "scene/scene.h"
+#include "techniques/scatter/rectified_map.h"
 #include "techniques/scatter/scatter_technique.h"
 #include "util/option_record.h"
 
@@ -18,12 +20,27 @@ struct ScatterRunOptions {
   std::vector<std::string> techniques;
   int reference_resolution = 0;
   double max_distance = 0;
-  int64_t seed = 0;
-  bool images = true;
+  int light_resolution = 0;
+  double guard_band = 0;
+  double epipole_degrees = 0;
+  std::string reference;
+  double beta = 0;
+  bool images = false;
   double error_scale = 0;
+  TechniqueParams technique;  // the techniques' own options (their rows' records)
 };
 
 const std::vector<OptionRecord<ScatterRunOptions>>& scatter_run_options();
+// The scatter stage's records and the scattering rows' own options.
+std::vector<OptionSpec> scatter_run_option_specs();
+// ScatterRunOptions of a config declaring scatter_run_option_specs(); InputError for an empty or
+// unknown technique before any work.
+ScatterRunOptions scatter_run_options_from(const Config& config);
+// The report's settings sentence: the light maps, the sky rays' length and every technique
+// option's value.
+std::string describe_scatter_settings(const ScatterRunOptions& run);
+// What the scattering rows read of these options.
+ScatterParams scatter_params(const ScatterRunOptions& options);
 
 // A scene `scatter` can light: opaque, with cameras, and its medium (its own or the dataset's).
 struct ScatterScene {
@@ -41,9 +58,10 @@ std::vector<ScatterScene> scatter_scenes(const DatasetDesc& dataset);
 double scattering_factor(const MediumDesc& medium, const Eigen::Vector3d& to_light,
                          const Eigen::Vector3d& direction);
 
-// One light view and camera: per pixel the exact in-scattering I_ref, S_max and the surface's
-// attenuated radiance, and per technique its I, statistics and wall-clock time. Bit-identical for
-// any thread count (each pixel is answered on its own; sums run in pixel order).
+// One light view and camera: per pixel the reference's in-scattering I_ref (scatter.reference),
+// S_max and the surface's attenuated radiance, and per technique its I, statistics and wall-clock
+// time. Bit-identical for any thread count (each pixel is answered on its own; sums run in pixel
+// order).
 struct ScatterFrameResult {
   std::string scene, view, camera;
   int width = 0, height = 0;
@@ -52,10 +70,17 @@ struct ScatterFrameResult {
   std::vector<std::vector<double>> inscatter;  // per technique, per pixel
   std::vector<ScatterStats> stats;
   std::vector<double> seconds;
+  // Pixels whose view ray runs within scatter.epipole_degrees of the light's axis (towards or away
+  // from the light), where a rectified row degenerates: answered and measured like the others,
+  // and counted here so that the report says how many (docs/scattering.md §3.1).
+  size_t epipole_pixels = 0;
+  // The prefiltered rows' rectified map of this light view and camera (images only; else null).
+  std::shared_ptr<const RectifiedMap> rectified;
 };
 
-// Every light view (its layer 0 at scatter.reference_resolution) and camera of every scene, each
-// technique of `options`; `each` is called per light view and camera as soon as it is computed.
+// Every light view (its layer 0 at scatter.reference_resolution, and at scatter.light_resolution
+// for the prefiltered rows) and camera of every scene, each technique of `options`; `each` is
+// called per light view and camera as soon as it is computed.
 void run_scatter(const std::vector<ScatterScene>& scenes, const ScatterRunOptions& options,
                  int threads, bool quiet,
                  const std::function<void(const ScatterFrameResult&)>& each);

@@ -9,7 +9,7 @@
 namespace mb {
 
 struct DatasetOptions {
-  std::string dataset = "default";
+  std::string dataset;
   int resolution = 0;  // 0 keeps each view's own
   int threads = 0;     // 0 uses every core
 };

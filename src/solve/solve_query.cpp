@@ -509,6 +509,10 @@ const std::vector<OptionRecord<SolveSettings>>& solve_options() {
   return records;
 }
 
+SolveSettings::SolveSettings() {
+  read_defaults(solve_options(), *this);
+}
+
 std::vector<OptionSpec> solve_option_specs() {
   return option_specs(solve_options());
 }

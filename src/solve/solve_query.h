@@ -11,22 +11,24 @@
 
 namespace mb {
 
+// solve's settings; a default-made one holds its option records' defaults (written there only).
 struct SolveSettings {
-  std::vector<std::string> basis{"power4"};
-  std::vector<double> interval{0, 1};
-  int grid = 1024;
+  SolveSettings();
+  std::vector<std::string> basis;
+  std::vector<double> interval;
+  int grid;
   std::vector<double> moments, points;
   // A distribution instead of moments (docs/reference.md §2): its moments are computed from it,
   // for a power basis in its own local coordinates (continuous/local_power.h).
   std::vector<double> depths, weights;
-  double zf = 0.5;
-  std::string backend = "fast";
+  double zf;
+  std::string backend;
   std::string technique;  // a closed form instead of the LP
-  double alpha = -1;      // its moment bias (< 0: the technique's default)
+  double alpha;           // its moment bias (< 0: the technique's default)
   std::string input, output;
-  bool check = false, quantize = false;
-  std::string discretization = "grid";
-  double moment_tolerance = 4;  // ulps of each moment (docs/reference.md §2)
+  bool check, quantize;
+  std::string discretization;
+  double moment_tolerance;  // ulps of each moment (docs/reference.md §2)
 };
 
 // solve's option table, and the settings it declares read from a resolved config (an instance

@@ -121,31 +121,15 @@ std::string measurement_value(const Meta& meta, const std::string& key,
   return spec ? default_text(*spec) : "";
 }
 
-namespace {
-
-bool starts_with(const std::string& key, const char* prefix) {
-  return key.rfind(prefix, 0) == 0;
+std::string configured_value(const Meta& meta, const std::string& key,
+                             const std::vector<OptionSpec>& specs) {
+  if (const auto config = meta.find("config"); config != meta.end()) {
+    const Meta stored = value_map(config->second);
+    if (const auto it = stored.find(key); it != stored.end()) return it->second;
+  }
+  const OptionSpec* spec = find_spec(specs, key);
+  return spec ? default_text(*spec) : "";
 }
-
-// Whether `key` can change a number of two series of one target (docs/sweeps.md "Identity"): a
-// shadow sweep reads no oit.* option, and under a hard light (light.angle 0, the only light a
-// shadow sweep takes) no soft.* option nor light.directions; a transparency sweep renders no light
-// view. A key of another target differs in both series or in neither, so it is compared then.
-bool applies(const Meta& a, const Meta& b, const std::string& key,
-             const std::vector<OptionSpec>& specs) {
-  const std::string target = measurement_value(a, "target", specs);
-  if (target.empty() || target != measurement_value(b, "target", specs)) return true;
-  if (target == "transparency") return !starts_with(key, "light.") && !starts_with(key, "soft.");
-  if (starts_with(key, "oit.")) return false;
-  const auto angle = [&](const Meta& m) {
-    const std::string value = measurement_value(m, "light.angle", specs);
-    return value.empty() ? 0.0 : std::stod(value);
-  };
-  const bool hard = angle(a) == 0 && angle(b) == 0;
-  return !(hard && (starts_with(key, "soft.") || key == "light.directions"));
-}
-
-}  // namespace
 
 std::vector<OptionDifference> measurement_differences(const Meta& a, const Meta& b,
                                                       const std::vector<OptionSpec>& specs) {
@@ -156,8 +140,7 @@ std::vector<OptionDifference> measurement_differences(const Meta& a, const Meta&
   };
   compare("dataset");  // the dataset's name (a sweep stores it, whatever file named it)
   for (const auto& s : specs)
-    if (s.effect == OptionEffect::Measures && s.name != "dataset" && applies(a, b, s.name, specs))
-      compare(s.name);
+    if (s.effect == OptionEffect::Measures && s.name != "dataset") compare(s.name);
   // A database from before the measurement keys: its prose sentence holds the same settings
   // (with %g's rounding).
   if (!a.count("lp.grid") || !b.count("lp.grid")) {

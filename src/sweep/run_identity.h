@@ -45,8 +45,15 @@ Meta measurement_meta(const std::string& config_yaml, const std::vector<OptionSp
 // before the key was stored) its stored config's line; else the option's default in `specs`.
 std::string measurement_value(const Meta& meta, const std::string& key,
                               const std::vector<OptionSpec>& specs);
-// The measurement options of `specs` whose values differ between two databases, `dataset` first.
-// Databases from before the measurement keys also differ by their `settings` sentence.
+// What the run's config set `key` to (its stored config's line, else the default in `specs`),
+// before the sweep resolved it: a dataset's own `resolution` is stored as the maps' size, and
+// configured 0.
+std::string configured_value(const Meta& meta, const std::string& key,
+                             const std::vector<OptionSpec>& specs);
+// The measurement options of `specs` whose values differ between two databases, `dataset` first:
+// `specs` are the options the runs read (sweep_target_specs of their target, or every option when
+// their targets differ). Databases from before the measurement keys also differ by their
+// `settings` sentence.
 std::vector<OptionDifference> measurement_differences(const Meta& a, const Meta& b,
                                                       const std::vector<OptionSpec>& specs);
 // "key: a here, b there; ..." for an error message.

@@ -20,6 +20,7 @@
 #include "sweep/run_identity.h"
 #include "sweep/sweep_directory.h"
 #include "sweep/sweep_plan.h"
+#include "techniques/lp_options.h"
 #include "techniques/lp_technique.h"
 #include "techniques/oit/oit_options.h"
 #include "techniques/registry.h"
@@ -143,6 +144,43 @@ std::vector<OptionSpec> sweep_option_specs() {
   return specs;
 }
 
+std::vector<OptionSpec> sweep_target_specs(const std::string& target) {
+  std::vector<OptionSpec> specs = option_specs(candidate_options());
+  for (auto& s : option_specs(screen_options())) specs.push_back(s);
+  if (target == "transparency") {
+    for (auto& s : oit_option_specs()) specs.push_back(s);
+    for (auto& s : lp_option_specs()) specs.push_back(s);
+  } else {
+    for (auto& s : option_specs(dataset_option_records())) specs.push_back(s);
+    for (auto& s : hard_shadow_option_specs()) specs.push_back(s);
+  }
+  return specs;
+}
+
+namespace {
+
+// An option that changes a number of some target but is never read by this one (soft.* or oit.beta
+// in a shadow sweep, kernel.* in a transparency sweep) would be accepted and change nothing: a
+// value off its default is refused (docs/sweeps.md "Identity").
+void refuse_unread_options(const Config& config, const std::string& target) {
+  const std::vector<OptionSpec> read = sweep_target_specs(target);
+  for (const std::string& line : config.non_default()) {
+    const std::string key = line.substr(0, line.find(':'));
+    if (key == "dataset") continue;
+    const auto is_key = [&](const OptionSpec& spec) { return spec.name == key; };
+    const auto declared = std::find_if(config.specs().begin(), config.specs().end(), is_key);
+    if (declared == config.specs().end() || declared->effect == OptionEffect::None) continue;
+    if (std::none_of(read.begin(), read.end(), is_key))
+      throw InputError(key + ": " + line.substr(line.find(':') + 2) + "; a sweep with target " +
+                       target +
+                       " does not read it, so it would change nothing; expected its "
+                       "default " +
+                       declared->default_value);
+  }
+}
+
+}  // namespace
+
 SweepSettings sweep_settings_from(const Config& config, int threads) {
   SweepSettings s;
   s.eval = shadow_settings_from(config, threads);
@@ -165,6 +203,7 @@ SweepSettings sweep_settings_from(const Config& config, int threads) {
                      "an area light's (docs/soft-shadows.md), expected 0 (eval takes light.angle "
                      "> 0)");
   read_options(config, screen_options(), s.screen);
+  refuse_unread_options(config, s.target);
   s.oit = oit_params_from(config);
   s.references =
       s.target == "transparency" ? s.oit_references : with_oracle_row(s.references, s.eval.bias);
@@ -424,7 +463,7 @@ namespace {
 
 // The transparency target's settings sentence (the report's and a resume's "settings").
 std::string describe_transparency(const SweepSettings& s) {
-  const auto& lp = s.oit.lp;
+  const auto& lp = s.oit.technique;
   return "target transparency: lp:<candidate> with lp.beta " + round_trip(lp.lp_beta) +
          " on the warped depth (" +
          std::string(s.oit.warp == WarpKind::Linear ? "linear" : "logarithmic") +
@@ -434,8 +473,18 @@ std::string describe_transparency(const SweepSettings& s) {
          ", docs/transparency.md §2), grid " + std::to_string(lp.lp.grid) + " on [" +
          round_trip(lp.lp.lo) + ", " + round_trip(lp.lp.hi) +
          "] and the pixel's fragment depths, backend " + lp.lp_backend +
-         "; error: opacity-weighted |T_ref - T|; MBOIT references at beta " +
-         round_trip(s.oit.beta);
+         "; error: opacity-weighted |T_ref - T|; the references' own options: " +
+         technique_option_text({TechniqueFamily::Transmittance}, s.oit.technique);
+}
+
+// The shadow maps' sizes of `views`, as `resolution` is written: "64", or "48, 64" when the
+// dataset's views differ.
+std::string map_sizes(const std::vector<ViewData>& views) {
+  std::set<int> sizes;
+  for (const ViewData& v : views) sizes.insert(v.map.width);
+  std::string text;
+  for (int size : sizes) text += (text.empty() ? "" : ", ") + std::to_string(size);
+  return text;
 }
 
 // What the sweep measures, rendered before anything is written (bad input leaves no output).
@@ -488,18 +537,25 @@ void run_sweep(const SweepSettings& s, const SweepJob& job) {
   const DatasetDesc dataset = load_dataset(s.dataset);
   if (job.out.empty()) throw InputError("--out: a sweep needs an output directory");
   const PreparedTarget prepared = prepare_target(s, dataset, job.quiet);
+  // `resolution` 0 keeps the dataset's: the identity holds the maps' size it gave, so that a run
+  // at 0 and one naming the same size are one measurement (docs/sweeps.md "Identity").
+  const std::string meta_resolution =
+      s.target != "transparency" ? map_sizes(prepared.views) : std::string();
   // The output directory is the sweep's state: new unless resuming, then it must match.
   const std::string shard_text = std::to_string(job.shard) + "/" + std::to_string(job.shards);
   // The run's identity: every measurement option's value; the dataset by its name.
   std::map<std::string, std::string> meta = measurement_meta(s.config_yaml, s.specs);
   meta["dataset"] = dataset.name;
+  if (!meta_resolution.empty()) meta["resolution"] = meta_resolution;
   meta.insert({{"target", s.target},
                {"git_sha", collect_run_metadata(s.eval.threads, {}).git_sha},
                {"catalog_size", std::to_string(plan.catalog.size())},
                {"combination_size", std::to_string(plan.size)},
                {"planned", std::to_string(plan.ids.size())},
-               {"settings", s.target == "transparency" ? describe_transparency(s)
-                                                       : describe_settings(s.eval)}});
+               {"settings", s.target == "transparency"
+                                ? describe_transparency(s)
+                                : "shadow maps " + meta_resolution + " texels a side; " +
+                                      describe_settings(s.eval)}});
   ResultsStore store = open_sweep_directory(
       job.out, {config_hash(s.config_yaml, s.specs), shard_text, s.config_yaml, s.specs}, meta,
       job.resume, job.force);

@@ -18,16 +18,16 @@ namespace mb {
 struct ScreenSettings {
   double fraction = 0;  // screen.fraction: 0 = every candidate exactly
   double refine = 0;    // screen.refine: a second sample's share, 0 = none
-  int top = 20;         // screen.top, screen.sigmas, screen.margin: the confirmation rule
-  double sigmas = 3, margin = 0;
-  uint64_t seed = 1;  // screen.seed
+  int top = 0;          // screen.top, screen.sigmas, screen.margin: the confirmation rule
+  double sigmas = 0, margin = 0;
+  uint64_t seed = 0;  // screen.seed
   ScreenRule rule() const { return {top, sigmas, margin}; }
 };
 
 // The sweep's options as typed fields (sweep_specs declares them).
 struct SweepSettings {
   EvalSettings eval;
-  std::string target = "shadows";           // sweep_target.h: shadows or transparency
+  std::string target;                       // sweep_target.h: shadows or transparency
   std::vector<std::string> oit_references;  // the transparency target's reference rows
   // Their MBOIT overestimation (oit.beta), the warped depth of every technique (oit.warp) and the
   // candidates' LP (lp.*).
@@ -35,8 +35,8 @@ struct SweepSettings {
   std::string dataset;
   int resolution = 0;
   std::vector<std::string> catalog, candidates, references;
-  int combination_size = 4;
-  uint64_t sample = 0, sample_seed = 1;
+  int combination_size = 0;
+  uint64_t sample = 0, sample_seed = 0;
   ScreenSettings screen;
   std::string config_yaml;        // the effective config: the run's identity (run_identity.h)
   std::vector<OptionSpec> specs;  // every option of the sweep: which of them are its identity
@@ -44,6 +44,13 @@ struct SweepSettings {
 // The sweep's own options (after the dataset's and the shadow options), declared once: the
 // candidates' keys bound to SweepSettings, the screen's to ScreenSettings.
 std::vector<OptionSpec> sweep_option_specs();
+// The options a sweep of `target` reads (docs/sweeps.md "Identity"): its own, the screen's and
+// the measurement's of that target, for a shadow target the hard shadow's
+// (hard_shadow_option_specs: no soft.* nor light.directions, which only an area light reads, and
+// a shadow sweep refuses one), for a transparency target the oit.* and lp.* options (no light
+// view: neither `resolution` nor the kernel's keys). Two series of one target are compared on
+// these.
+std::vector<OptionSpec> sweep_target_specs(const std::string& target);
 SweepSettings sweep_settings_from(const Config& config, int threads);
 
 struct SweepJob {

@@ -65,6 +65,8 @@ std::vector<TechniqueRow> rows() {
            .summary = "Problem 1 as an LP for any basis, e.g. lp:power4, lp:trig4",
            .storage = "double",
            .bound = "the LP's certified tolerance (lp::kCertifiedError)",
+           .family_options = {"lp.grid", "lp.lo", "lp.hi", "lp.discretization", "lp.quantize",
+                              "lp.backend", "lp.moment_box", "lp.beta"},
            .solves_lp = true,
            .make = make_lp_technique,
            // The seed paper's two bases (seed 000 §3.2: 2.19 % and 1.93 %, the best).

@@ -18,16 +18,33 @@ std::vector<std::vector<TechniqueRow> (*)()>& registered() {
   return functions;
 }
 
-// The hard-shadow options every row reads, once per key, in row order.
-std::vector<const TechniqueOption*> hard_options() {
+// The own options the rows of `families` read, once per key, in row order.
+std::vector<const TechniqueOption*> row_options(std::initializer_list<TechniqueFamily> families) {
   std::vector<const TechniqueOption*> options;
-  for (const TechniqueRow* row : family_rows(TechniqueFamily::HardShadow))
-    for (const TechniqueOption* o : row->options)
+  for (const TechniqueRow& row : technique_registry()) {
+    if (std::find(families.begin(), families.end(), row.family) == families.end()) continue;
+    for (const TechniqueOption* o : row.options)
       if (std::find_if(options.begin(), options.end(), [&](const TechniqueOption* known) {
             return known->spec.name == o->spec.name;
           }) == options.end())
         options.push_back(o);
+  }
   return options;
+}
+
+std::vector<const TechniqueOption*> hard_options() {
+  return row_options({TechniqueFamily::HardShadow});
+}
+
+std::vector<const TechniqueOption*> all_options() {
+  return row_options({TechniqueFamily::HardShadow, TechniqueFamily::SoftShadow,
+                      TechniqueFamily::Transmittance, TechniqueFamily::Scattering});
+}
+
+bool declares(const Config& config, const std::string& key) {
+  const std::vector<OptionSpec>& specs = config.specs();
+  return std::any_of(specs.begin(), specs.end(),
+                     [&](const OptionSpec& s) { return s.name == key; });
 }
 
 void check_moment_bias(const std::string& key, double alpha) {
@@ -116,21 +133,33 @@ const std::string& role_name(TechniqueFamily family, RowRole role) {
 }
 
 const TechniqueRow& technique_row(const std::string& name, TechniqueFamily family) {
-  if (const TechniqueRow* row = find_technique(name, family)) return *row;
+  return technique_row(name, {family});
+}
+
+const TechniqueRow& technique_row(const std::string& name,
+                                  std::initializer_list<TechniqueFamily> families) {
+  for (TechniqueFamily family : families)
+    if (const TechniqueRow* row = find_technique(name, family)) return *row;
   const TechniqueRow* row = find_technique(name);
   std::vector<std::string> names;
-  for (const TechniqueRow* r : family_rows(family))
-    if (!r->prefix()) names.push_back(r->name);
+  std::string valid, titles;
+  for (TechniqueFamily family : families) {
+    for (const TechniqueRow* r : family_rows(family))
+      if (!r->prefix()) names.push_back(r->name);
+    valid += (valid.empty() ? "" : "; ") +
+             (families.size() > 1 ? family_title(family) + ": " : std::string()) +
+             names_of(family) +
+             (family == TechniqueFamily::HardShadow
+                  ? " (e.g. lp:power4, lp:trig4, lp:z;exp(-z);sin(pi z);z^3)"
+                  : "");
+    titles += (titles.empty() ? "" : " or ") + family_title(family);
+  }
   const std::string guess = closest_match(name, names);
-  throw InputError("unknown technique '" + name + "'" +
-                   (row ? " (a technique of " + family_title(row->family) + ", expected one of " +
-                              family_title(family) + ")"
-                        : "") +
-                   (guess.empty() ? "" : " (did you mean '" + guess + "'?)") +
-                   "; valid: " + names_of(family) +
-                   (family == TechniqueFamily::HardShadow
-                        ? " (e.g. lp:power4, lp:trig4, lp:z;exp(-z);sin(pi z);z^3)"
-                        : ""));
+  throw InputError(
+      "unknown technique '" + name + "'" +
+      (row ? " (a technique of " + family_title(row->family) + ", expected one of " + titles + ")"
+           : "") +
+      (guess.empty() ? "" : " (did you mean '" + guess + "'?)") + "; valid: " + valid);
 }
 
 std::string default_techniques(TechniqueFamily family) {
@@ -170,16 +199,27 @@ std::string verify_default_list() {
   return "[" + list + "]";
 }
 
-std::vector<OptionSpec> technique_option_specs() {
+std::vector<OptionSpec> technique_option_specs(std::initializer_list<TechniqueFamily> families) {
   std::vector<OptionSpec> specs;
-  for (const TechniqueOption* o : hard_options()) specs.push_back(o->spec);
+  for (const TechniqueOption* o : row_options(families)) specs.push_back(o->spec);
   return specs;
 }
 
+std::string technique_option_text(std::initializer_list<TechniqueFamily> families,
+                                  const TechniqueParams& params) {
+  std::string text;
+  for (const TechniqueOption* o : row_options(families))
+    text += (text.empty() ? "" : ", ") + o->spec.name + " " +
+            (o->spec.type == OptionType::Integer ? std::to_string(params.integer(*o))
+                                                 : round_trip(params.number(*o)));
+  return text;
+}
+
 void read_technique_options(const Config& config, TechniqueParams& params) {
-  for (const TechniqueOption* o : hard_options())
-    params.set(*o, o->spec.type == OptionType::Integer ? double(config.integer(o->spec.name))
-                                                       : config.number(o->spec.name));
+  for (const TechniqueOption* o : all_options())
+    if (declares(config, o->spec.name))
+      params.set(*o, o->spec.type == OptionType::Integer ? double(config.integer(o->spec.name))
+                                                         : config.number(o->spec.name));
 }
 
 void set_moment_bias(TechniqueParams& params, double alpha) {
@@ -191,8 +231,10 @@ TechniqueParams::TechniqueParams() {
   // Every record's default (written there only), parsed once.
   static const TechniqueParams defaults = [] {
     TechniqueParams p(Defaults{});
-    const Config config(technique_option_specs());
-    for (const TechniqueOption* o : hard_options()) {
+    std::vector<OptionSpec> specs;
+    for (const TechniqueOption* o : all_options()) specs.push_back(o->spec);
+    const Config config(specs);
+    for (const TechniqueOption* o : all_options()) {
       if (o->spec.type != OptionType::Number && o->spec.type != OptionType::Integer)
         throw std::logic_error(o->spec.name + ": a technique option is a number or an integer");
       p.values_[o->spec.name] = {o->spec.type, o->spec.type == OptionType::Integer
@@ -209,7 +251,7 @@ const TechniqueParams::Value& TechniqueParams::value(std::string_view key, Optio
   const auto it = values_.find(key);
   if (it == values_.end())
     throw std::logic_error("technique option '" + std::string(key) +
-                           "': no hard-shadow row declares it");
+                           "': no technique row declares it");
   if (it->second.type != type)
     throw std::logic_error("technique option '" + std::string(key) + "' is " +
                            (it->second.type == OptionType::Integer ? "an integer" : "a number"));
@@ -236,7 +278,7 @@ void TechniqueParams::set(std::string_view key, double v) {
   const auto it = values_.find(key);
   if (it == values_.end())
     throw std::logic_error("technique option '" + std::string(key) +
-                           "': no hard-shadow row declares it");
+                           "': no technique row declares it");
   if (it->second.type == OptionType::Integer && v != std::round(v))
     throw std::logic_error("technique option '" + std::string(key) + "' is an integer, got " +
                            round_trip(v));

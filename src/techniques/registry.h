@@ -6,6 +6,7 @@
 // references and targets, `verify`, `solve --technique/--alpha`, `momentbench options` and the
 // user guide's technique list all read this table, and test a row's properties, never its name.
 // Adding a technique of any family: its file (its code and its row) and its test.
+#include <initializer_list>
 #include <memory>
 #include <optional>
 #include <string>
@@ -29,9 +30,11 @@ enum class TechniqueFamily { HardShadow, SoftShadow, Transmittance, Scattering }
 // "hard shadows", "soft shadows", ... for lists and errors.
 std::string family_title(TechniqueFamily family);
 
-// A hard-shadow technique's option: its record (key, type Number or Integer, default, range, doc),
-// declared once in the technique's file and listed by the rows that read it. TechniqueParams holds
-// a value for every such record; the technique reads it back by the record (`p.number(kEsmC)`).
+// A technique's own option, of any family: its record (key, type Number or Integer, default, range,
+// doc), declared once in the technique's file and listed by the rows that read it. TechniqueParams
+// holds a value for every such record; the technique reads it back by the record
+// (`p.number(kEsmC)`). A family's shared options (soft.sat, oit.warp, scatter.max_distance) are the
+// family's own records instead, named by the rows in `family_options`.
 struct TechniqueOption {
   OptionSpec spec;
   // An MSM moment bias alpha: must lie in [0, 1); `solve --alpha` replaces every one of them.
@@ -105,7 +108,7 @@ struct TechniqueRow {
   // Families whose techniques claim a bound per row, not per instance (soft shadows,
   // transmittance): why the row proves none, "" when it proves 0 (or, solving the LP, the LP's).
   std::string unproven_reason;
-  std::vector<const TechniqueOption*> options;  // the hard-shadow options it reads
+  std::vector<const TechniqueOption*> options;  // its own options (TechniqueParams)
   std::vector<std::string> family_options;  // keys its family's own records declare (soft.*, oit.*)
   RowRole role = RowRole::Technique;
   bool default_run = false;     // in its command's default `techniques`
@@ -158,6 +161,10 @@ bool technique_solves_lp(std::string_view name);
 const std::string& role_name(TechniqueFamily family, RowRole role);
 // The row of `name` in `family`, or an InputError listing that family's names.
 const TechniqueRow& technique_row(const std::string& name, TechniqueFamily family);
+// The row of `name` in the first of `families` that has one, or an InputError listing each
+// family's names (eval runs hard and soft shadows alike).
+const TechniqueRow& technique_row(const std::string& name,
+                                  std::initializer_list<TechniqueFamily> families);
 // The names of a family's rows that `make` runs by default, as a YAML list ("[a, b]").
 std::string default_techniques(TechniqueFamily family);
 // Every SweepReference of a family's rows, in row order, with its name filled in.
@@ -167,10 +174,15 @@ std::vector<SweepReference> sweep_references(TechniqueFamily family);
 // `verify.techniques`.
 std::string sweep_reference_list(TechniqueFamily family);
 std::string verify_default_list();
-// Every hard-shadow technique's option, once per key (shared keys such as esm.c appear in several
-// rows), in row order.
-std::vector<OptionSpec> technique_option_specs();
-// Reads every technique option of `config` into `params`, validated (InputError naming the key).
+// The own options of the rows of `families` (the families a command runs), once per key (shared
+// keys such as esm.c appear in several rows), in row order.
+std::vector<OptionSpec> technique_option_specs(std::initializer_list<TechniqueFamily> families);
+// "key value, key value" of the own options of `families`' rows in `params`, for a report's
+// settings line ("oit.beta 0.25").
+std::string technique_option_text(std::initializer_list<TechniqueFamily> families,
+                                  const TechniqueParams& params);
+// Reads every technique option `config` declares into `params`, validated (InputError naming the
+// key); the others keep their records' defaults.
 void read_technique_options(const Config& config, TechniqueParams& params);
 // Sets every moment bias alpha of `params` (solve --alpha).
 void set_moment_bias(TechniqueParams& params, double alpha);

@@ -47,7 +47,9 @@ std::string emit(const YAML::Node& node) {
 YAML::Node number_list(const std::vector<std::string>& items, const OptionSpec& s,
                        const std::string& origin) {
   const bool integers = s.type == OptionType::IntegerList;
-  const std::string range = "[" + number_text(s.min) + ", " + number_text(s.max) + "]";
+  // Appended piece by piece: GCC 12 warns (-Warray-bounds, a false positive) on "[" + a temporary.
+  std::string range = "[";
+  range.append(number_text(s.min)).append(", ").append(number_text(s.max)).append("]");
   YAML::Node stored(YAML::NodeType::Sequence);
   for (size_t k = 0; k < items.size(); ++k) {
     const std::string where = origin + ": key '" + s.name + "': item " + std::to_string(k + 1) +

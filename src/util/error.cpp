@@ -6,10 +6,12 @@ namespace mb {
 
 std::string located(const std::string& file, int line, int column, const std::string& message) {
   if (file.empty()) return message;
+  // Appended piece by piece: GCC 12 warns (-Wstringop-overflow, a false positive) on ":" + a
+  // temporary here.
   std::string where = file;
-  if (line > 0) where += ":" + std::to_string(line);
-  if (line > 0 && column > 0) where += ":" + std::to_string(column);
-  return where + ": " + message;
+  if (line > 0) where.append(":").append(std::to_string(line));
+  if (line > 0 && column > 0) where.append(":").append(std::to_string(column));
+  return where.append(": ").append(message);
 }
 
 // Optimal string alignment distance: insertions, deletions, substitutions and transpositions of

@@ -69,4 +69,12 @@ void read_options(const Config& config, const std::vector<OptionRecord<S>>& reco
   for (const auto& r : records) read_option(config, r.spec.name, r.field, settings);
 }
 
+// Fills `settings` with its records' defaults, parsed from the records' text (the only place a
+// default is written): what a settings struct made without a config (a test, a library caller)
+// holds.
+template <class S>
+void read_defaults(const std::vector<OptionRecord<S>>& records, S& settings) {
+  read_options(Config(option_specs(records)), records, settings);
+}
+
 }  // namespace mb

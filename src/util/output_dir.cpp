@@ -45,7 +45,10 @@ StagedOutputDir::StagedOutputDir(fs::path target, bool force)
   if (fs::exists(target_) && !fs::is_directory(target_))
     throw InputError(target_.string() + ": exists and is not a directory; --out needs a directory");
   remove_dead_stagings(parent, target_.filename().string());
-  staging_ = parent / ("." + target_.filename().string() + ".staging-" + std::to_string(getpid()));
+  // Appended piece by piece: GCC 12 warns (-Warray-bounds, a false positive) on "." + a temporary.
+  std::string staging = ".";
+  staging.append(target_.filename().string()).append(".staging-").append(std::to_string(getpid()));
+  staging_ = parent / staging;
   fs::remove_all(staging_, ec);
   fs::create_directory(staging_, ec);
   if (ec)

@@ -94,4 +94,8 @@ const std::vector<OptionRecord<VerifySettings>>& verify_options() {
   return records;
 }
 
+VerifySettings::VerifySettings() {
+  read_defaults(verify_options(), *this);
+}
+
 }  // namespace mb

@@ -8,17 +8,19 @@
 
 namespace mb {
 
+// verify's settings; a default-made one holds its option records' defaults (written there only).
 struct VerifySettings {
+  VerifySettings();
   std::vector<std::string> techniques;
-  int random = 2000, fragments = 2000;
-  uint64_t seed = 2015;
+  int random, fragments;
+  uint64_t seed;
   std::vector<int64_t> grids;
   std::string discretization, moment_box;
-  double tolerance = 1e-6, esm_c = 10, evsm_c = 5;
-  int csm_terms = 3, worst = 5;
+  double tolerance, esm_c, evsm_c;
+  int csm_terms, worst;
   // Transparency rows (docs/transparency.md §6): MBOIT closed forms against the LP.
   std::vector<std::string> oit_techniques;
-  int oit_pixels = 20;
+  int oit_pixels;
 };
 
 const std::vector<OptionRecord<VerifySettings>>& verify_options();

@@ -1,6 +1,7 @@
 #include "verify/verify_run.h"
 
 #include "util/error.h"
+#include "util/number_text.h"
 #include "util/progress.h"
 
 namespace mb {
@@ -25,7 +26,22 @@ VerifyPlan make_verify_plan(const VerifySettings& v, const TechniqueParams& tech
   VerifyPlan plan;
   plan.settings = v;
   plan.params = verify_params(technique);
-  // verify's own values of these rows' options (verify_options.cpp: scales the LP can represent).
+  // verify's own values of these rows' options (verify_options.cpp: scales the LP can represent);
+  // a value given for the row's option itself would be replaced, so it is refused.
+  const TechniqueParams defaults;
+  const auto replace = [&](const char* key, double given, double default_value, double value,
+                           const char* by) {
+    if (given != default_value)
+      throw InputError(std::string(key) + ": " + round_trip(given) +
+                       "; verify judges this row at " + by + " (" + round_trip(value) +
+                       ", a scale the LP represents), expected its default " +
+                       round_trip(default_value) + " (set " + by + " instead)");
+  };
+  replace("esm.c", technique.number("esm.c"), defaults.number("esm.c"), v.esm_c, "verify.esm_c");
+  replace("evsm.c_positive", technique.number("evsm.c_positive"),
+          defaults.number("evsm.c_positive"), v.evsm_c, "verify.evsm_c");
+  replace("csm.terms", technique.integer("csm.terms"), defaults.integer("csm.terms"), v.csm_terms,
+          "verify.csm_terms");
   plan.params.set("esm.c", v.esm_c);
   plan.params.set("evsm.c_positive", v.evsm_c);
   plan.params.set("csm.terms", v.csm_terms);

@@ -128,7 +128,7 @@ BENCHMARK(BM_TranscendentalFloor);
 // lp:power4 per fragment, our engine (with its GLPK fallback) against GLPK alone, same pixels.
 void BM_Lp(benchmark::State& state, const char* backend) {
   OitParams params;
-  params.lp.lp_backend = backend;
+  params.technique.lp_backend = backend;
   reconstruct(state, "lp:power4", params, 256);
 }
 BENCHMARK_CAPTURE(BM_Lp, fast, "fast")->Unit(benchmark::kMillisecond);

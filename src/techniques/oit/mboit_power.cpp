@@ -95,7 +95,8 @@ template <int kMoments, int kVariant>
 std::unique_ptr<OitTechnique> make(const std::string& name, const OitParams& p) {
   const OitStorageVariant& v = kOitStorageVariants[kVariant];
   return std::make_unique<MbOitPower>(name, kMoments, v.storage,
-                                      (p.*v.biases).power[kMoments / 2 - 2], p.beta);
+                                      (p.*v.biases).power[kMoments / 2 - 2],
+                                      p.technique.number(kMboitBeta));
 }
 
 // verify in double: Hamburger's bound is invariant under the affine map t = 2u - 1, so the LP takes

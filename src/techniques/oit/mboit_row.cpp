@@ -4,6 +4,13 @@
 
 namespace mb {
 
+const TechniqueOption kMboitBeta{
+    .spec = {"oit.beta", OptionType::Number, "0.25",
+             "MBOIT's overestimation: A = A- + beta (A+ - A-) from the canonical representation "
+             "(0.25 is the value of the authors' code; 0 gives their lower bound of absorbance).",
+             0, 1},
+    .zero_is_sharp = true};
+
 TechniqueRow mboit_row(const std::string& prefix, const std::string& kind, int moments, int variant,
                        int rank_base, decltype(TechniqueRow::make_oit) make,
                        decltype(TechniqueRow::oit_verify) verify) {
@@ -20,7 +27,8 @@ TechniqueRow mboit_row(const std::string& prefix, const std::string& kind, int m
           "none: beta > 0 overestimates the absorbance (oit.beta), and the bias alpha "
           "moves the moments (docs/transparency.md §3)",
       .unproven_reason = "MBOIT: beta > 0 and the normalisation Gamma (docs/transparency.md §3)",
-      .family_options = {"oit.beta", "oit.warp", "oit.depth_range"},
+      .options = {&kMboitBeta},
+      .family_options = {"oit.warp", "oit.depth_range"},
       .default_run = variant == 0,
       .make_oit = make,
       .oit_verify = verify};

@@ -7,6 +7,10 @@
 
 namespace mb {
 
+// MBOIT's overestimation beta: A = A- + beta (A+ - A-) (docs/transparency.md §3; oit.beta), an
+// option of every MBOIT row.
+extern const TechniqueOption kMboitBeta;
+
 // `prefix` + moments + the variant's suffix (the technique's own file names the prefix) for storage
 // variant `variant` of kOitStorageVariants, its moments described as `kind` moments ("power"),
 // ranked `rank_base` + moments + the variant's rank.

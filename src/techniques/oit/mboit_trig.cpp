@@ -76,7 +76,7 @@ template <int kMoments, int kVariant>
 std::unique_ptr<OitTechnique> make(const std::string& name, const OitParams& p) {
   const OitStorageVariant& v = kOitStorageVariants[kVariant];
   return std::make_unique<MbOitTrig>(name, kMoments, v.storage, (p.*v.biases).trig[kMoments - 2],
-                                     p.beta, p.wrapping_zone);
+                                     p.technique.number(kMboitBeta), p.wrapping_zone);
 }
 
 // verify in double: the canonical reconstruction is never below the LP's sharp bound on the circle

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "techniques/lp_options.h"
+#include "techniques/registry.h"
 #include "util/option_record.h"
 
 namespace mb {
@@ -14,17 +15,11 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 // The records' fields, turned into OitParams' typed ones.
 struct OitOptions {
-  double beta;
   std::string warp, depth_range;
 };
 
 const std::vector<OptionRecord<OitOptions>>& oit_records() {
   static const std::vector<OptionRecord<OitOptions>> records{
-      {{"oit.beta", OptionType::Number, "0.25",
-        "MBOIT's overestimation: A = A- + beta (A+ - A-) from the canonical representation "
-        "(0.25 is the value of the authors' code; 0 gives their lower bound of absorbance).",
-        0, 1},
-       &OitOptions::beta},
       {{"oit.warp",
         OptionType::String,
         "logarithmic",
@@ -61,7 +56,6 @@ void read_oit_options(const Config& config, OitParams& params) {
   OitOptions o{};
   for (const auto& r : oit_records())
     read_option(declares(config, r.spec.name) ? config : defaults, r.spec.name, r.field, o);
-  params.beta = o.beta;
   params.warp = warp_kind(o.warp);
   params.depth_range = depth_range_kind(o.depth_range);
 }
@@ -69,14 +63,16 @@ void read_oit_options(const Config& config, OitParams& params) {
 }  // namespace
 
 std::vector<OptionSpec> oit_option_specs() {
-  return option_specs(oit_records());
+  std::vector<OptionSpec> specs = option_specs(oit_records());
+  for (auto& s : technique_option_specs({TechniqueFamily::Transmittance})) specs.push_back(s);
+  return specs;
 }
 
 OitParams::OitParams() {
   // beta, warp and depth_range from their records' defaults (written there only), parsed once.
   static const OitParams defaults = [] {
     OitParams p(Defaults{});
-    read_oit_options(Config(oit_option_specs()), p);
+    read_oit_options(Config(option_specs(oit_records())), p);
     return p;
   }();
   *this = defaults;
@@ -85,7 +81,8 @@ OitParams::OitParams() {
 OitParams oit_params_from(const Config& config) {
   OitParams params;
   read_oit_options(config, params);
-  read_lp_params(config, params.lp);
+  read_technique_options(config, params.technique);
+  read_lp_params(config, params.technique);
   return params;
 }
 

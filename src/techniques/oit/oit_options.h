@@ -1,5 +1,5 @@
 #pragma once
-// The transmittance family's own options (oit.beta, oit.warp, oit.depth_range): their records,
+// The transmittance family's shared options (oit.warp, oit.depth_range): their records,
 // the only place their defaults are written (a default-made OitParams holds them), and OitParams
 // from a resolved config, for the oit command and a sweep's transparency target alike.
 #include <vector>

@@ -61,9 +61,8 @@ std::unique_ptr<OitTechnique> make_oit_technique(const std::string& name, const 
     return row->make_oit(name, p);
   std::string valid;
   for (const TechniqueRow* r : family_rows(TechniqueFamily::Transmittance))
-    if (!r->prefix() && r->default_run) valid += r->name + ", ";
-  throw InputError("oit technique '" + name + "': expected one of " + valid +
-                   "their _float and _16bit variants, or lp:<basis>");
+    valid += (valid.empty() ? "" : ", ") + r->display_name();
+  throw InputError("oit technique '" + name + "': expected one of " + valid);
 }
 
 }  // namespace mb

@@ -24,13 +24,12 @@ struct OitBiases {
   double power[3], trig[3];
 };
 
-// A transmittance technique's parameters. beta, warp and depth_range are the oit.* options, whose
-// records (techniques/oit/oit_options.h) give a default-made OitParams their defaults; the rest are
-// the techniques' constants.
+// A transmittance technique's parameters. warp and depth_range are the family's oit.* options,
+// whose records (techniques/oit/oit_options.h) give a default-made OitParams their defaults; a
+// technique's own options (MBOIT's oit.beta, techniques/oit/mboit_row.h) are in `technique`; the
+// rest are the techniques' constants.
 struct OitParams {
   OitParams();
-  // MBOIT's overestimation beta: A = A- + beta (A+ - A-) (docs/transparency.md §3; oit.beta).
-  double beta;
   // Moment bias of the MBOIT closed forms in double (docs/transparency.md §3, "Constants").
   // Moment biases (docs/transparency.md §3, "Constants"): double as the shadow closed forms; float
   // and 16-bit the values of the authors' code as its public ports carry them.
@@ -44,9 +43,10 @@ struct OitParams {
   WarpKind warp;
   // The range it maps onto [0, 1] (docs/transparency.md §2; oit.depth_range).
   DepthRangeKind depth_range;
-  // lp:<basis>: the LP's grid, backend and lp.beta (0: the sharp bound e^{-A-}); its interval is
-  // that of the warped depth, [0, 1], unless a caller widens it (the closed forms' R).
-  TechniqueParams lp;
+  // Each technique's own options; for lp:<basis> the LP's grid, backend and lp.beta (0: the sharp
+  // bound e^{-A-}), its interval that of the warped depth, [0, 1], unless a caller widens it (the
+  // closed forms' R).
+  TechniqueParams technique;
 
  private:
   struct Defaults {};

@@ -11,6 +11,12 @@
 
 namespace mb {
 
+const TechniqueOption kRaymarchSeed{
+    {"scatter.seed", OptionType::Integer, "1",
+     "raymarch: seed of the per-pixel jitter (docs/scattering.md §3): the answers are a function "
+     "of it and the pixel only, whatever the thread count.",
+     0, 2147483647}};
+
 namespace {
 
 constexpr int kMaxSamples = 1 << 20;
@@ -39,7 +45,9 @@ int samples_of(const std::string& name) {
 class RayMarch : public ScatterTechnique {
  public:
   RayMarch(const std::string& name, const ScatterParams& params)
-      : ScatterTechnique(name), samples_(samples_of(name)), seed_(params.seed) {}
+      : ScatterTechnique(name),
+        samples_(samples_of(name)),
+        seed_(uint64_t(params.technique.integer(kRaymarchSeed))) {}
   double lit_length(const ScatterRay& ray) const override {
     const LightDepthMap& map = *setup_.light;
     const double sigma = setup_.extinction, step = ray.length / samples_;
@@ -71,7 +79,7 @@ std::vector<TechniqueRow> rows() {
            .storage = "shadow map (layer 0)",
            .bound = "none: a sample estimate, too bright or too dark",
            .unproven_reason = "a sample estimate: its error has either sign",
-           .family_options = {"scatter.seed"},
+           .options = {&kRaymarchSeed},
            .default_run = true,
            .example = "raymarch:32",
            .make_scatter = [](const std::string& name,

@@ -16,6 +16,7 @@
 #include "raster/layer_stack.h"
 #include "scene/light_view.h"
 #include "scene/scene.h"
+#include "techniques/technique.h"
 #include "util/eigen.h"
 
 namespace mb {
@@ -53,6 +54,9 @@ struct ScatterSetup {
   const CameraDesc* camera_desc = nullptr;
   Eigen::Vector3d camera = Eigen::Vector3d::Zero();  // the camera's position p
   double extinction = 0;                             // sigma_t of the scene's medium
+  // Layer 0 of the same light view at scatter.light_resolution, which the prefiltered techniques
+  // resample into their rectified map (docs/scattering.md §3.1).
+  const LightDepthMap* rectify_light = nullptr;
 };
 
 // One pixel's view ray: from the camera p along the unit direction w to the first surface at
@@ -63,9 +67,18 @@ struct ScatterRay {
   uint64_t pixel = 0;  // the pixel's index in its image, for seeded per-pixel randomness
 };
 
-// Options the scattering rows read (the scatter stage fills them from scatter.* keys).
+// What the scattering rows are made with: each technique's own options (their records in the
+// technique's file, e.g. raymarch's scatter.seed), read from the config by the scatter stage, and
+// the family's scatter.* records (scatter/scatter_run.cpp, which hold their defaults).
 struct ScatterParams {
-  uint64_t seed = 0;  // scatter.seed (its record holds the default): the jitter of sampling rows
+  TechniqueParams technique;
+  // The rectified map of the prefiltered rows (docs/scattering.md §3.1): its texels along r and
+  // rows along phi (scatter.light_resolution), and the depth texels left free at either end of a
+  // row's range of inclinations (scatter.guard_band).
+  int light_resolution = 0;
+  double guard_band = 0;
+  // scatter.beta: the blend G + beta (G+ - G) of the moment rows' bounds on the shadowed fraction.
+  double beta = 0;
 };
 
 class ScatterTechnique {
@@ -76,6 +89,9 @@ class ScatterTechnique {
   virtual void prepare(const ScatterSetup& setup) { setup_ = setup; }
   // L of one ray; const and safe to call from several threads after `prepare`.
   virtual double lit_length(const ScatterRay& ray) const = 0;
+  // Rays answered by a fall-back because the technique's own answer failed (an LP without a
+  // certified answer), since it was made.
+  virtual size_t failures() const { return 0; }
 
  protected:
   explicit ScatterTechnique(std::string name) : name_(std::move(name)) {}

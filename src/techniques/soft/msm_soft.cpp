@@ -20,9 +20,34 @@
 
 namespace mb {
 
+const TechniqueOption kMsmSoftBlockerEpsilon{
+    {"soft.blocker_epsilon", OptionType::Number, "0.01",
+     "msm_soft: eps_z1, the weight of the receiver's own depth in the blocker average "
+     "(seed 004 §3.3).",
+     1e-12, 1}};
+const TechniqueOption kMsmSoftUmbraEpsilon{
+    {"soft.umbra_epsilon", OptionType::Number, "0.01",
+     "msm_soft: eps_u; a search region whose blockers weigh above 1 - eps_u is umbra "
+     "(seed 004 §3.4).",
+     0, 1}};
+const TechniqueOption kMsmSoftAlpha{
+    {"soft.msm_alpha", OptionType::Number, "5e-6",
+     "msm_soft: the moment bias alpha of Hamburger 4MSM (seed 004's value for fixed-point "
+     "moments).",
+     0, 1}};
+
 namespace {
 
 constexpr const char* kLpPrefix = "msm_soft:lp:";
+
+// msm_soft's own constants (seed 004 §3.3-3.4), from its option records.
+struct MsmSoftConstants {
+  explicit MsmSoftConstants(const TechniqueParams& p)
+      : alpha(p.number(kMsmSoftAlpha)),
+        blocker_epsilon(p.number(kMsmSoftBlockerEpsilon)),
+        umbra_epsilon(p.number(kMsmSoftUmbraEpsilon)) {}
+  double alpha, blocker_epsilon, umbra_epsilon;
+};
 
 std::unique_ptr<SummedAreaTable> power4_table(const ShadowMap& map, const SoftParams& p) {
   return soft_summed_area_table(
@@ -37,11 +62,12 @@ struct MsmBlocker {
   double zs = 0;
 };
 
-MsmBlocker msm_blocker(const SoftContext& c, const SummedAreaTable& sat, const Receiver& r) {
+MsmBlocker msm_blocker(const SoftContext& c, const MsmSoftConstants& k, const SummedAreaTable& sat,
+                       const Receiver& r) {
   const double star[4] = {0.5, 0.5, 0.5, 0.5};
   double b[4];
   search_mean(sat, r, c.params.sat_search, b);
-  bias_moments(b, 4, c.params.msm_alpha, star);
+  bias_moments(b, 4, k.alpha, star);
   MsmBlocker out;
   out.zs = c.search_depth(r);
   const MsmBound<double> canonical = hamburger4(b, out.zs);
@@ -49,26 +75,27 @@ MsmBlocker msm_blocker(const SoftContext& c, const SummedAreaTable& sat, const R
   for (int i = 1; i < canonical.node_count; ++i)
     if (canonical.nodes[i] < out.zs)
       out.weight += canonical.weights[i], sum += canonical.weights[i] * canonical.nodes[i];
-  const double eps = c.params.blocker_epsilon;
+  const double eps = k.blocker_epsilon;
   out.depth = (eps * out.zs + sum) / (eps + out.weight);
   return out;
 }
 
 class MsmSoft : public SoftTechnique {
  public:
-  explicit MsmSoft(const SoftSetup& s) : sat_(power4_table(s.map, s.params)) {}
+  explicit MsmSoft(const SoftSetup& s) : k_(s.technique), sat_(power4_table(s.map, s.params)) {}
   double shadow(const SoftContext& c, const Receiver& r, SoftScratch&) const override {
-    const MsmBlocker blocker = msm_blocker(c, *sat_, r);
-    if (blocker.weight > 1 - c.params.umbra_epsilon) return 1;
+    const MsmBlocker blocker = msm_blocker(c, k_, *sat_, r);
+    if (blocker.weight > 1 - k_.umbra_epsilon) return 1;
     const double w = c.box_width(c.penumbra(r, blocker.depth));
     const double star[4] = {0.5, 0.5, 0.5, 0.5};
     double b[4];
     filter_mean(*sat_, r, w, b);
-    bias_moments(b, 4, c.params.msm_alpha, star);
+    bias_moments(b, 4, k_.alpha, star);
     return std::clamp(hamburger4(b, c.test_depth(r, w / 2)).lower, 0.0, 1.0);
   }
 
  protected:
+  MsmSoftConstants k_;
   std::unique_ptr<SummedAreaTable> sat_;
 };
 
@@ -124,8 +151,8 @@ class MsmSoftLp : public MsmSoft {
     scratch.lp = std::make_unique<LpFragmentSolver>(factory_->basis(), *factory_, technique_);
   }
   double shadow(const SoftContext& c, const Receiver& r, SoftScratch& step) const override {
-    const MsmBlocker blocker = msm_blocker(c, *sat_, r);
-    if (blocker.weight > 1 - c.params.umbra_epsilon) return 1;
+    const MsmBlocker blocker = msm_blocker(c, k_, *sat_, r);
+    if (blocker.weight > 1 - k_.umbra_epsilon) return 1;
     const double w = c.box_width(c.penumbra(r, blocker.depth)), z = c.test_depth(r, w / 2);
     box_distribution(c.map, r.cx(), r.cy(), w, step.depths, step.weights);
     // F_Z(z) = 0: no distribution with these moments needs mass in front of z (the LP's exact
@@ -145,12 +172,16 @@ class MsmSoftLp : public MsmSoft {
 };
 
 std::vector<TechniqueRow> rows() {
-  const std::vector<std::string> options{
-      "soft.sat_search", "soft.blocker_epsilon", "soft.umbra_epsilon",
-      "soft.msm_alpha",  "soft.min_filter",      "soft.max_filter",
-      "soft.sat"};
+  const std::vector<const TechniqueOption*> own{&kMsmSoftBlockerEpsilon, &kMsmSoftUmbraEpsilon,
+                                                &kMsmSoftAlpha};
+  const std::vector<std::string> options{"soft.sat_search", "soft.min_filter", "soft.max_filter",
+                                         "soft.sat"};
   std::vector<std::string> audited = options;
   audited.push_back("soft.audit");
+  // The final step's LP: on the grid (lp.discretization grid) with lp.backend; the sharp bound
+  // (lp.beta 0, lp.moment_box none), which its check requires.
+  std::vector<std::string> lp_options = options;
+  for (const char* key : {"lp.grid", "lp.lo", "lp.hi", "lp.backend"}) lp_options.push_back(key);
   return {
       {.name = "msm_soft",
        .family = TechniqueFamily::SoftShadow,
@@ -160,6 +191,7 @@ std::vector<TechniqueRow> rows() {
        .storage = "summed-area table (soft.sat)",
        .bound = "none: the penumbra is estimated (docs/soft-shadows.md §2)",
        .unproven_reason = kSoftUnproven,
+       .options = own,
        .family_options = audited,
        .audits_blocker = true,
        .make_soft = [](const std::string&, const SoftSetup& s) -> std::unique_ptr<SoftTechnique> {
@@ -173,7 +205,8 @@ std::vector<TechniqueRow> rows() {
        .storage = "summed-area table (soft.sat)",
        .bound = "none: the penumbra is estimated (docs/soft-shadows.md §2)",
        .unproven_reason = kSoftUnproven,
-       .family_options = options,
+       .options = own,
+       .family_options = lp_options,
        .solves_lp = true,
        .make_soft = [](const std::string& name, const SoftSetup& s)
            -> std::unique_ptr<SoftTechnique> { return std::make_unique<MsmSoftLp>(name, s); },
@@ -188,10 +221,10 @@ const TechniqueRegistration kRegistered(rows);
 std::vector<BlockerAuditRow> blocker_audit(const ShadowMap& map, const Fragments& fragments,
                                            const SoftReceivers& soft, const GaussianKernel& kernel,
                                            const BiasParams& bias, const SoftParams& params,
-                                           int threads) {
+                                           const TechniqueParams& technique, int threads) {
   std::vector<BlockerAuditRow> rows;
   if (params.audit == 0 || fragments.size() == 0) return rows;
-  const TechniqueParams technique;
+  const MsmSoftConstants constants(technique);
   const SoftContext context = make_soft_context({map, soft, kernel, bias, params, technique});
   const auto sat = power4_table(map, params);
   lp::Discretization grid;
@@ -214,7 +247,7 @@ std::vector<BlockerAuditRow> blocker_audit(const ShadowMap& map, const Fragments
       errors.capture([&] {
         if (!backend) return;
         const Receiver r = receiver_of(fragments, soft, picked[p]);
-        const MsmBlocker seed = msm_blocker(context, *sat, r);
+        const MsmBlocker seed = msm_blocker(context, constants, *sat, r);
         // The search region as its texels: their depths join the grid, its moments are theirs.
         const int side = params.sat_search, x0 = r.x - side / 2, y0 = r.y - side / 2;
         std::vector<double> depths;

@@ -8,12 +8,24 @@
 
 namespace mb {
 
+const TechniqueOption kPcssBlockerTaps{
+    {"soft.blocker_taps", OptionType::Integer, "5",
+     "pcss: point taps a side spread over the blocker search (seed 001: 4x4 or 5x5 suffice).", 1,
+     255}};
+const TechniqueOption kPcssFilterTaps{
+    {"soft.filter_taps", OptionType::Integer, "9",
+     "pcss: PCF taps a side spread over the penumbra's filter (seed 001 shows 5x5, 9x9, 17x17).", 1,
+     255}};
+
 namespace {
 
 class PcssSampled : public SoftTechnique {
  public:
+  explicit PcssSampled(const SoftSetup& s)
+      : blocker_taps_(s.technique.integer(kPcssBlockerTaps)),
+        filter_taps_(s.technique.integer(kPcssFilterTaps)) {}
   double shadow(const SoftContext& c, const Receiver& r, SoftScratch&) const override {
-    const int nb = c.params.blocker_taps, nf = c.params.filter_taps;
+    const int nb = blocker_taps_, nf = filter_taps_;
     const double span = c.pcss_search(r) - 1;
     const double zs = c.search_depth(r);
     double sum = 0, count = 0;
@@ -38,22 +50,26 @@ class PcssSampled : public SoftTechnique {
       }
     return std::min(shadow / (nf * nf), 1.0);
   }
+
+ private:
+  int blocker_taps_, filter_taps_;
 };
 
 std::vector<TechniqueRow> rows() {
-  return {{.name = "pcss",
-           .family = TechniqueFamily::SoftShadow,
-           .rank = 10,
-           .summary = "PCSS as sampled in practice: point taps over the blocker search and the "
-                      "filter (seed 001)",
-           .storage = "depth",
-           .bound = "none: the penumbra is estimated (docs/soft-shadows.md §2)",
-           .unproven_reason = kSoftUnproven,
-           .family_options = {"soft.pcss_search", "soft.blocker_taps", "soft.filter_taps",
-                              "soft.min_filter", "soft.max_filter"},
-           .make_soft = [](const std::string&, const SoftSetup&) -> std::unique_ptr<SoftTechnique> {
-             return std::make_unique<PcssSampled>();
-           }}};
+  return {
+      {.name = "pcss",
+       .family = TechniqueFamily::SoftShadow,
+       .rank = 10,
+       .summary = "PCSS as sampled in practice: point taps over the blocker search and the "
+                  "filter (seed 001)",
+       .storage = "depth",
+       .bound = "none: the penumbra is estimated (docs/soft-shadows.md §2)",
+       .unproven_reason = kSoftUnproven,
+       .options = {&kPcssBlockerTaps, &kPcssFilterTaps},
+       .family_options = {"soft.pcss_search", "soft.min_filter", "soft.max_filter"},
+       .make_soft = [](const std::string&, const SoftSetup& s) -> std::unique_ptr<SoftTechnique> {
+         return std::make_unique<PcssSampled>(s);
+       }}};
 }
 
 const TechniqueRegistration kRegistered(rows);

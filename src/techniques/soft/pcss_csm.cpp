@@ -11,6 +11,17 @@
 
 namespace mb {
 
+const TechniqueOption kPcssCsmTerms{
+    {"soft.csm_terms", OptionType::Integer, "8",
+     "pcss_csm: Fourier terms M of the shadow test (seed 001: M = 8); the table holds 4M + 1 "
+     "channels (the blocker search needs z cos and z sin too).",
+     1, 32}};
+const TechniqueOption kPcssCsmAbsorption{
+    {"soft.csm_absorption", OptionType::Number, "1",
+     "pcss_csm: alpha of the ringing attenuation exp(-alpha (k / M)^2) of term k (seed 001's "
+     "AbsorptionFactor; it names no value); 0: none.",
+     0, 100}};
+
 namespace {
 
 // CSM's channels per term k = 1..M, c_k = (2k - 1) pi: cos(c_k z), sin(c_k z), z cos(c_k z),
@@ -35,12 +46,11 @@ std::vector<double> far_channels(int terms) {
 // attenuated by exp(-alpha (k / M)^2) against ringing, on filtered channels `m` (unscaled):
 // f = 1/2 + 2 sum_k a_k / c_k (cos(c_k d) E[sin(c_k z)] - sin(c_k d) E[cos(c_k z)]). `offset`
 // 2 reads E[z cos], E[z sin] instead, giving E[z f] without its 1/2 E[z] term.
-double csm_series(const SoftContext& c, const double* m, double d, int offset) {
-  const int terms = c.params.csm_terms;
+double csm_series(int terms, double absorption, const double* m, double d, int offset) {
   double sum = 0;
   for (int k = 0; k < terms; ++k) {
     const double ck = (2 * k + 1) * std::numbers::pi;
-    const double a = std::exp(-c.params.csm_absorption * double(k + 1) * (k + 1) / (terms * terms));
+    const double a = std::exp(-absorption * double(k + 1) * (k + 1) / (terms * terms));
     sum +=
         a / ck * (std::cos(ck * d) * m[4 * k + offset + 1] - std::sin(ck * d) * m[4 * k + offset]);
   }
@@ -50,28 +60,35 @@ double csm_series(const SoftContext& c, const double* m, double d, int offset) {
 class PcssCsm : public SoftTechnique {
  public:
   explicit PcssCsm(const SoftSetup& s)
-      : sat_(soft_summed_area_table(
-            s.map, s.params, 4 * s.params.csm_terms + 1,
-            [terms = s.params.csm_terms](double z, double* v) { csm_channels(terms, z, v); },
-            far_channels(s.params.csm_terms))) {}
+      : terms_(s.technique.integer(kPcssCsmTerms)),
+        absorption_(s.technique.number(kPcssCsmAbsorption)),
+        sat_(soft_summed_area_table(
+            s.map, s.params, 4 * terms_ + 1,
+            [terms = terms_](double z, double* v) { csm_channels(terms, z, v); },
+            far_channels(terms_))) {}
   double shadow(const SoftContext& c, const Receiver& r, SoftScratch&) const override {
-    const int n = 4 * c.params.csm_terms + 1;
+    const int n = 4 * terms_ + 1;
     std::vector<double> m(n);
     search_mean(*sat_, r, c.params.sat_search, m.data());
     for (double& v : m) v = 2 * v - 1;
     const double zs = c.search_depth(r), mu = m[n - 1];
-    const double shadowed = 0.5 - csm_series(c, m.data(), zs, 0);       // E[1 - f]
-    const double weighted = 0.5 * mu - csm_series(c, m.data(), zs, 2);  // E[z (1 - f)]
+    const double shadowed = 0.5 - series(m.data(), zs, 0);       // E[1 - f]
+    const double weighted = 0.5 * mu - series(m.data(), zs, 2);  // E[z (1 - f)]
     if (shadowed < 1e-6) return 0;
     const double blocker = std::clamp(weighted / shadowed, 0.0, zs);
     const double w = c.box_width(c.penumbra(r, blocker));
     filter_mean(*sat_, r, w, m.data());
     for (double& v : m) v = 2 * v - 1;
-    const double f = 0.5 + csm_series(c, m.data(), c.test_depth(r, w / 2), 0);
+    const double f = 0.5 + series(m.data(), c.test_depth(r, w / 2), 0);
     return 1 - std::clamp(2 * f, 0.0, 1.0);
   }
 
  private:
+  double series(const double* m, double d, int offset) const {
+    return csm_series(terms_, absorption_, m, d, offset);
+  }
+  int terms_;
+  double absorption_;
   std::unique_ptr<SummedAreaTable> sat_;
 };
 
@@ -84,8 +101,8 @@ std::vector<TechniqueRow> rows() {
        .storage = "summed-area table (soft.sat)",
        .bound = "none: the penumbra is estimated (docs/soft-shadows.md §2)",
        .unproven_reason = kSoftUnproven,
-       .family_options = {"soft.sat_search", "soft.csm_terms", "soft.csm_absorption",
-                          "soft.min_filter", "soft.max_filter", "soft.sat"},
+       .options = {&kPcssCsmTerms, &kPcssCsmAbsorption},
+       .family_options = {"soft.sat_search", "soft.min_filter", "soft.max_filter", "soft.sat"},
        .make_soft = [](const std::string&, const SoftSetup& s) -> std::unique_ptr<SoftTechnique> {
          return std::make_unique<PcssCsm>(s);
        }}};

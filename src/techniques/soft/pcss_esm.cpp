@@ -9,17 +9,24 @@
 
 namespace mb {
 
+const TechniqueOption kPcssEsmC{
+    {"soft.esm_c", OptionType::Number, "30",
+     "pcss_esm: c in exp(c (z - 1)), stored in the summed-area table (seed 001 tunes 10 to 30; "
+     "seed 002's 80 underflows a fixed-point table's 2^-22 beyond depth differences of 0.19).",
+     0.1, 200}};
+
 namespace {
 
 class PcssEsm : public SoftTechnique {
  public:
   explicit PcssEsm(const SoftSetup& s)
-      : sat_(soft_summed_area_table(
+      : c_(s.technique.number(kPcssEsmC)),
+        sat_(soft_summed_area_table(
             s.map, s.params, 2,
-            [c = s.params.esm_c](double z, double* v) { v[0] = std::exp(c * (z - 1)), v[1] = z; },
+            [c = c_](double z, double* v) { v[0] = std::exp(c * (z - 1)), v[1] = z; },
             {1.0, 1.0})) {}
   double shadow(const SoftContext& c, const Receiver& r, SoftScratch&) const override {
-    const double k = c.params.esm_c;
+    const double k = c_;
     const auto lit = [&](const double* b, double d) {
       return std::min(b[0] * std::exp(k * (1 - d)), 1.0);
     };
@@ -34,6 +41,7 @@ class PcssEsm : public SoftTechnique {
   }
 
  private:
+  double c_;
   std::unique_ptr<SummedAreaTable> sat_;
 };
 
@@ -47,8 +55,8 @@ std::vector<TechniqueRow> rows() {
        .storage = "summed-area table (soft.sat)",
        .bound = "none: the penumbra is estimated (docs/soft-shadows.md §2)",
        .unproven_reason = kSoftUnproven,
-       .family_options = {"soft.sat_search", "soft.esm_c", "soft.min_filter", "soft.max_filter",
-                          "soft.sat"},
+       .options = {&kPcssEsmC},
+       .family_options = {"soft.sat_search", "soft.min_filter", "soft.max_filter", "soft.sat"},
        .make_soft = [](const std::string&, const SoftSetup& s) -> std::unique_ptr<SoftTechnique> {
          return std::make_unique<PcssEsm>(s);
        }}};

@@ -2,7 +2,7 @@
 
 namespace mb {
 
-// The soft techniques' options, each with the seed it comes from (docs/soft-shadows.md §2).
+// The soft family's shared options, each with the seed it comes from (docs/soft-shadows.md §2).
 const std::vector<OptionRecord<SoftParams>>& soft_option_records() {
   static const std::vector<OptionRecord<SoftParams>> records{
       {{"soft.pcss_search", OptionType::Integer, "15",
@@ -16,14 +16,6 @@ const std::vector<OptionRecord<SoftParams>>& soft_option_records() {
         "uses 27x27).",
         1, 255},
        &SoftParams::sat_search},
-      {{"soft.blocker_taps", OptionType::Integer, "5",
-        "pcss: point taps a side spread over the blocker search (seed 001: 4x4 or 5x5 suffice).", 1,
-        255},
-       &SoftParams::blocker_taps},
-      {{"soft.filter_taps", OptionType::Integer, "9",
-        "pcss: PCF taps a side spread over the penumbra's filter (seed 001 shows 5x5, 9x9, 17x17).",
-        1, 255},
-       &SoftParams::filter_taps},
       {{"soft.min_filter", OptionType::Number, "0",
         "Soft shadows: the narrowest penumbra box in texels (seed 001 clamps for antialiasing); "
         "0, none: every technique filters with the protocol's kernel besides (docs/soft-shadows.md "
@@ -36,21 +28,6 @@ const std::vector<OptionRecord<SoftParams>>& soft_option_records() {
         "rounding error 2.5e-7 below what msm_soft's alpha of 5e-6 absorbs.",
         1, 4093},
        &SoftParams::max_filter},
-      {{"soft.blocker_epsilon", OptionType::Number, "0.01",
-        "msm_soft: eps_z1, the weight of the receiver's own depth in the blocker average "
-        "(seed 004 §3.3).",
-        1e-12, 1},
-       &SoftParams::blocker_epsilon},
-      {{"soft.umbra_epsilon", OptionType::Number, "0.01",
-        "msm_soft: eps_u; a search region whose blockers weigh above 1 - eps_u is umbra "
-        "(seed 004 §3.4).",
-        0, 1},
-       &SoftParams::umbra_epsilon},
-      {{"soft.msm_alpha", OptionType::Number, "5e-6",
-        "msm_soft: the moment bias alpha of Hamburger 4MSM (seed 004's value for fixed-point "
-        "moments).",
-        0, 1},
-       &SoftParams::msm_alpha},
       {{"soft.sat",
         OptionType::String,
         "fixed32",
@@ -60,21 +37,6 @@ const std::vector<OptionRecord<SoftParams>>& soft_option_records() {
         std::numeric_limits<double>::infinity(),
         {"fixed32", "exact"}},
        &SoftParams::sat},
-      {{"soft.esm_c", OptionType::Number, "30",
-        "pcss_esm: c in exp(c (z - 1)), stored in the summed-area table (seed 001 tunes 10 to 30; "
-        "seed 002's 80 underflows a fixed-point table's 2^-22 beyond depth differences of 0.19).",
-        0.1, 200},
-       &SoftParams::esm_c},
-      {{"soft.csm_terms", OptionType::Integer, "8",
-        "pcss_csm: Fourier terms M of the shadow test (seed 001: M = 8); the table holds 4M + 1 "
-        "channels (the blocker search needs z cos and z sin too).",
-        1, 32},
-       &SoftParams::csm_terms},
-      {{"soft.csm_absorption", OptionType::Number, "1",
-        "pcss_csm: alpha of the ringing attenuation exp(-alpha (k / M)^2) of term k (seed 001's "
-        "AbsorptionFactor; it names no value); 0: none.",
-        0, 100},
-       &SoftParams::csm_absorption},
       {{"soft.audit", OptionType::Integer, "500",
         "msm_soft: receivers per view whose blocker estimate is set beside its sharp bounds "
         "(docs/soft-shadows.md §3; blocker_audit.csv); 0: none.",

@@ -23,23 +23,18 @@
 
 namespace mb {
 
-// The seeds' constants; each option record states its source and holds the default.
+// The soft family's shared options: the search regions, the filter's limits and the summed-area
+// table's format that every technique's context and table read, and eval's blocker audit. Each
+// option record states its source and holds the default. A technique's own constants (msm_soft's
+// alpha, pcss_csm's terms, ...) are its own option records in its file (TechniqueParams).
 struct SoftParams {
   SoftParams();
-  int pcss_search;         // texels a side of PCSS's blocker search (seed 004 §3.6)
-  int sat_search;          // ... of the SAT techniques' (seed 004 §3.6)
-  int blocker_taps;        // pcss: point taps a side in the blocker search (seed 001)
-  int filter_taps;         // pcss: PCF taps a side (seed 001's 9x9)
-  double min_filter;       // texels: the narrowest penumbra box; the kernel filters besides
-  int max_filter;          // texels: the widest filter; N = (max_filter + 2)^2 at least
-  double blocker_epsilon;  // msm_soft: eps_z1 (seed 004 §3.3)
-  double umbra_epsilon;    // msm_soft: eps_u, the umbra skip (seed 004 §3.4)
-  double msm_alpha;        // msm_soft: moment bias (seed 004's alpha)
-  std::string sat;         // fixed32 (seed 004 §3.2) or exact
-  double esm_c;            // pcss_esm: the exponent's scale (seed 001 tunes 10 to 30)
-  int csm_terms;           // pcss_csm: Fourier terms M (seed 001: M = 8)
-  double csm_absorption;   // pcss_csm: alpha of the ringing attenuation exp(-alpha (k/M)^2)
-  int audit;               // receivers per view whose blocker search is audited (§3)
+  int pcss_search;    // texels a side of PCSS's blocker search (seed 004 §3.6)
+  int sat_search;     // ... of the SAT techniques' (seed 004 §3.6)
+  double min_filter;  // texels: the narrowest penumbra box; the kernel filters besides
+  int max_filter;     // texels: the widest filter; N = (max_filter + 2)^2 at least
+  std::string sat;    // fixed32 (seed 004 §3.2) or exact
+  int audit;          // receivers per view whose blocker search is audited (§3)
 };
 
 const std::vector<OptionRecord<SoftParams>>& soft_option_records();
@@ -55,7 +50,7 @@ struct SoftSetup {
   const GaussianKernel& kernel;
   const BiasParams& bias;
   const SoftParams& params;
-  const TechniqueParams& technique;  // lp.* for techniques that solve Problem 1
+  const TechniqueParams& technique;  // each technique's own options, lp.* for the LP's
 };
 
 struct Receiver {
@@ -154,8 +149,8 @@ bool blocker_from_lit_share(double mu, double p, double zs, double* blocker);
 // One shadow per receiver of `fragments` for the soft technique `name` (its registry row), on the
 // view's shadow map, lit by the light `soft` describes; every receiver on its own, so any thread
 // count gives these bits. InputError when the light has no extent (soft.angle_deg = 0) or `name`
-// is no soft technique. LP final steps solve on `technique`'s lp.lo, lp.hi, lp.grid with its
-// lp.backend.
+// is no soft technique. `technique` holds the technique's own options; LP final steps solve on
+// its lp.lo, lp.hi, lp.grid with its lp.backend.
 struct SoftResult {
   std::vector<double> shadow;
   size_t failures = 0;  // receivers whose answer was not a number (left at 0)
@@ -184,6 +179,6 @@ struct BlockerAuditRow {
 std::vector<BlockerAuditRow> blocker_audit(const ShadowMap& map, const Fragments& fragments,
                                            const SoftReceivers& soft, const GaussianKernel& kernel,
                                            const BiasParams& bias, const SoftParams& params,
-                                           int threads);
+                                           const TechniqueParams& technique, int threads);
 
 }  // namespace mb

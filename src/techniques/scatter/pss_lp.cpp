@@ -1,0 +1,110 @@
+// pss_lp:<basis> (docs/scattering.md §3.2): Problem 1 on the row-prefiltered moments of any basis.
+// The prefix sums of a rectified row are the moments of a distribution of depths — the row's texels
+// up to the ray's end, weighted by transmittance (docs/scattering.md §3.2) — so the shadowed
+// fraction of the ray is that distribution's CDF at the ray's depth, and the LP bounds it sharply
+// for any basis: beta 0 (scatter.beta) the sharp lower bound, never too dark against pss_exact; 1
+// the sharp upper bound; between them the blend. The LP is the project's one fragment solver
+// (techniques/lp_fragment_solver.h), through the lp:<basis> technique, with the ray's own
+// distribution as the kernel's: its depths join the grid, so the program is feasible by
+// construction and the answer is Problem 1 for exactly the moments a prefix sum holds.
+#include <atomic>
+#include <map>
+#include <mutex>
+#include <vector>
+
+#include "techniques/lp_technique.h"
+#include "techniques/registry.h"
+#include "techniques/scatter/prefiltered_scatter.h"
+#include "util/error.h"
+
+namespace mb {
+
+namespace {
+
+constexpr std::string_view kPrefix = "pss_lp:";
+
+std::string lp_name_of(const std::string& name) {
+  return "lp:" + name.substr(kPrefix.size());
+}
+
+class PssLp : public PrefilteredScatter {
+ public:
+  PssLp(const std::string& name, const ScatterParams& params)
+      : PrefilteredScatter(name, params), lp_name_(lp_name_of(name)), instance_(next_instance()) {
+    technique_.lp_beta = params.beta;
+    make_lp_technique(lp_name_, technique_);  // a bad basis fails here, before any work
+  }
+  size_t failures() const override { return failures_; }
+
+ protected:
+  void prefilter(const RectifiedMap&) override {}
+  double shadowed_fraction(const RectifiedRay& ray) const override {
+    Scratch& scratch = this->scratch();
+    ray_distribution(map(), ray, scratch.depths, scratch.weights);
+    double total = 0;
+    for (double w : scratch.weights) total += w;
+    for (double& w : scratch.weights) w /= total;
+    FragmentInput in;
+    in.kernel_depths = scratch.depths, in.kernel_weights = scratch.weights, in.zf = ray.depth;
+    const size_t before = scratch.lp->failures();
+    const double g = scratch.lp->shadow(in);
+    if (scratch.lp->failures() == before) return g;
+    // No certified answer: counted, and answered as lit, as closed forms answer a NaN.
+    std::lock_guard<std::mutex> lock(mutex_);
+    ++failures_;
+    return 0;
+  }
+
+ private:
+  // An LP technique is not thread-safe, and its GLPK objects must be freed by the thread that
+  // made them: each thread keeps its own per technique instance, made on first use and freed when
+  // the thread ends. Each answers from scratch, so which thread answers a ray changes no bit.
+  struct Scratch {
+    std::unique_ptr<Technique> lp;
+    std::vector<double> depths, weights;
+  };
+  static uint64_t next_instance() {
+    static std::atomic<uint64_t> count{0};
+    return ++count;
+  }
+  Scratch& scratch() const {
+    thread_local std::map<uint64_t, Scratch> per_instance;
+    Scratch& s = per_instance[instance_];
+    if (!s.lp) s.lp = make_lp_technique(lp_name_, technique_);
+    return s;
+  }
+
+  std::string lp_name_;
+  uint64_t instance_;
+  TechniqueParams technique_;
+  mutable std::mutex mutex_;
+  mutable size_t failures_ = 0;
+};
+
+std::vector<TechniqueRow> rows() {
+  return {
+      {.name = std::string(kPrefix),
+       .family = TechniqueFamily::Scattering,
+       .rank = 60,
+       .summary = "Problem 1 on the rectified row's prefix-summed moments of any basis, through "
+                  "the LP fragment solver; scatter.beta blends its sharp bounds on the "
+                  "shadowed fraction (docs/scattering.md §3.2)",
+       .storage = "rectified map, prefix sums in double",
+       .bound = "at scatter.beta 0 never too dark against pss_exact (the LP's certified "
+                "tolerance)",
+       .unproven_reason = "scatter.beta > 0 blends towards the upper bound, and pss_exact "
+                          "itself is not the exact reference",
+       .family_options = {"scatter.light_resolution", "scatter.guard_band", "scatter.beta",
+                          "lp.grid", "lp.backend"},
+       .default_run = true,
+       .example = "pss_lp:power4",
+       .solves_lp = true,
+       .make_scatter = [](const std::string& name, const ScatterParams& params)
+           -> std::unique_ptr<ScatterTechnique> { return std::make_unique<PssLp>(name, params); }}};
+}
+
+const TechniqueRegistration kRegistered(rows);
+
+}  // namespace
+
+}  // namespace mb
