@@ -9,6 +9,7 @@
 #include "eval/evaluation.h"
 #include "oit/oit_verification.h"
 #include "report/oit_report.h"
+#include "report/scatter_verify_report.h"
 #include "report/verify_report.h"
 #include "scene/dataset.h"
 #include "util/error.h"
@@ -72,6 +73,16 @@ int run_verify(const CommonOptions& options) {
                    "%g in T, %zu LP failures)\n",
                    r.technique.c_str(), r.beyond, r.fragments, r.tolerance, r.lp_failures);
     }
+  bool scatter_passed = true;
+  for (const auto& r : run.scatter)
+    if (!r.passed()) {
+      scatter_passed = false;
+      std::fprintf(stderr,
+                   "momentbench: verify: %s at scatter.beta %g disagrees with %s (%zu of %zu "
+                   "rays beyond %g, %zu LP failures)\n",
+                   r.technique.c_str(), r.beta, r.lp_technique.c_str(), r.beyond, r.compared,
+                   r.tolerance, r.lp_failures);
+    }
 
   const RunMetadata& meta = cmd->metadata();
   VerifyReportContext context;
@@ -83,8 +94,13 @@ int run_verify(const CommonOptions& options) {
   context.grids = plan.grids;
   if (plan.continuous) context.grids.push_back(0);
   const VerifyReport report = render_verify_report(context, run.results, run.instances);
-  write_file_atomically(out / "verify.md", report.markdown + oit_verify_section(oit_rows));
+  const std::string scatter_section =
+      scatter_verify_section(run.scatter, run.scatter_dataset, v.scatter_resolution);
+  write_file_atomically(out / "verify.md",
+                        report.markdown + oit_verify_section(oit_rows) + scatter_section);
   if (!oit_rows.empty()) write_file_atomically(out / "verify_oit.csv", oit_verify_csv(oit_rows));
+  if (!run.scatter.empty())
+    write_file_atomically(out / "verify_scatter.csv", scatter_verify_csv(run.scatter));
   write_file_atomically(out / "verify.csv", report.csv);
   write_file_atomically(out / "worst.csv", report.worst_csv);
   cmd->finish();
@@ -93,7 +109,8 @@ int run_verify(const CommonOptions& options) {
   std::fputs(text.substr(0, text.find("\n## Worst")).c_str(), stdout);
   std::fputs("\n", stdout);
   std::fputs(oit_verify_section(oit_rows).c_str(), stdout);
-  return print_verdicts(run, report.all_passed) && oit_passed ? 0 : 5;
+  std::fputs(scatter_section.c_str(), stdout);
+  return print_verdicts(run, report.all_passed) && oit_passed && scatter_passed ? 0 : 5;
 }
 
 }  // namespace

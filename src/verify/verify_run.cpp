@@ -52,6 +52,7 @@ VerifyPlan make_verify_plan(const VerifySettings& v, const TechniqueParams& tech
   }
   plan.grids = ascending_grids(v.grids);
   plan.continuous = v.discretization == "continuous";
+  for (const auto& name : v.scatter_techniques) check_scatter_verify_technique(name);
   // A pass over no instances would prove nothing.
   if (v.random == 0 && v.fragments == 0)
     throw InputError(
@@ -79,6 +80,20 @@ VerifyRun run_verification(const VerifyPlan& plan, const DatasetOptions& data,
                                         v.tolerance, v.worst, settings.threads));
     bar.advance(1);
     bar.finish();
+  }
+  if (!v.scatter_techniques.empty()) {
+    const DatasetDesc dataset = load_dataset(v.scatter_dataset);
+    run.scatter_dataset = dataset.name;
+    const auto frames = scatter_verify_frames(dataset, v.scatter_resolution, v.scatter_rays, v.seed,
+                                              settings.threads);
+    for (const auto& name : v.scatter_techniques) {
+      ProgressBar bar("verify " + name, 2, quiet);
+      for (const double beta : {0.0, 1.0}) {
+        run.scatter.push_back(verify_scatter_row(name, beta, frames->frames, v.scatter_resolution));
+        bar.advance(1);
+      }
+      bar.finish();
+    }
   }
   return run;
 }

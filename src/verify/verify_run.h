@@ -7,6 +7,7 @@
 
 #include "eval/evaluation.h"
 #include "scene/dataset_options.h"
+#include "verify/scatter_verification.h"
 #include "verify/verification.h"
 #include "verify/verify_options.h"
 
@@ -28,6 +29,9 @@ struct VerifyRun {
   size_t random_count = 0;
   std::string dataset_name = "none";        // when no dataset kernels were sampled
   std::vector<VerifySolverResult> results;  // one per target, in order
+  // verify.scatter_techniques at scatter.beta 0 and 1, in order (docs/scattering.md §6).
+  std::vector<ScatterVerifyRow> scatter;
+  std::string scatter_dataset;
 };
 
 VerifyRun run_verification(const VerifyPlan& plan, const DatasetOptions& data,
