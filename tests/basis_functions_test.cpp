@@ -133,18 +133,16 @@ TEST(Basis, NamedSetsExpandToTheirFunctionsInOrder) {
   // Sets and single functions mix, in the order given.
   EXPECT_EQ(Basis::parse({"exp(-z)", "power2", "z^2*exp(-z)"}).names(),
             (Names{"exp(-z)", "z", "z^2", "z^2*exp(-z)"}));
-  // CSM's channels: cos and sin of (2k - 1) pi z, k = 1..M, for M = 1..7 only. They are written
-  // with muparser's `_pi`, which GCC builds of muparser define as 3.141592653589
-  // (muParserTemplateMagic.h), 2.5e-13 relative below pi: hence 1e-11, not the 1e-14 of the
-  // catalog. (std::numbers::pi would move csm's published numbers by 1e-13: changed together with
-  // the next regeneration of results/.)
+  // CSM's channels: cos and sin of (2k - 1) pi z, k = 1..M, for M = 1..7 only, written with the
+  // parser's `pi` (std::numbers::pi, not muparser's `_pi`, which GCC builds of muparser define as
+  // 3.141592653589, 2.5e-13 relative below pi).
   for (int m = 1; m <= 7; ++m) {
     const Basis csm = Basis::parse({"csm" + std::to_string(m)});
     ASSERT_EQ(csm.size(), size_t(2 * m));
     for (int k = 1; k <= m; ++k)
       for (double z : {0.1, 0.45, 0.9}) {
-        EXPECT_NEAR(csm[2 * k - 2](z), std::cos((2 * k - 1) * kPi * z), 1e-11) << m << " " << k;
-        EXPECT_NEAR(csm[2 * k - 1](z), std::sin((2 * k - 1) * kPi * z), 1e-11) << m << " " << k;
+        EXPECT_NEAR(csm[2 * k - 2](z), std::cos((2 * k - 1) * kPi * z), 1e-13) << m << " " << k;
+        EXPECT_NEAR(csm[2 * k - 1](z), std::sin((2 * k - 1) * kPi * z), 1e-13) << m << " " << k;
       }
   }
   for (const char* not_a_set : {"csm0", "csm8", "csm", "power5", "trig3", "Power4", "z"})

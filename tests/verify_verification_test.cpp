@@ -326,3 +326,127 @@ TEST(VerifyCsm, ExceedingTheSharpBoundIsCountedNotJudged) {
 
 }  // namespace
 }  // namespace mb
+
+#include "moments/hamburger.h"
+#include "moments/storage.h"
+
+namespace mb {
+namespace {
+
+// Six moments in double, alpha = 0, with one sign of the forward substitution flipped
+// (moments/hamburger.h): a broken closed form that verify must fail.
+class FlippedSixMoments : public Technique {
+ public:
+  FlippedSixMoments() : Technique("hamburger6", Basis::parse({"power6"}), double_storage()) {}
+  double shadow(const FragmentInput& in) override {
+    return hamburger6_sign_flipped(in.moments.data(), in.zf).lower;
+  }
+};
+
+// Six moments are judged over their double rounding box (verify/rounding_box.h): Problem 1 at the
+// moments the closed form read, bracketed by the exact moments' certificate and a 50-digit witness,
+// and its upper bound G + w_1 through the mirrored problem. The closed form (seed 004 §2.5's
+// stable steps) passes both, with every upper bound inside its bracket to 1e-9 on these instances;
+// the same steps with one sign flipped fail, and the report's all_passed (verify's exit status 5)
+// says so.
+TEST(VerifyRoundingBox, SixMomentsPassAndAFlippedSignFails) {
+  const TechniqueParams params = verify_params(TechniqueParams{});
+  const auto instances = random_verify_instances(60, 59);
+  const VerifyTarget target = verify_targets({"hamburger6"}, params).front();
+  ASSERT_TRUE(target.rounding_box);
+  ASSERT_TRUE(target.upper_judged);
+  const VerifySolverResult good = verify_solver(
+      target, [&] { return make_technique("hamburger6", params); }, instances, {64}, true, 1e-6, 3,
+      2);
+  EXPECT_TRUE(good.passed()) << good.beyond_tolerance << " beyond, " << good.above_lp << " above, "
+                             << good.upper_beyond << " upper beyond";
+  EXPECT_EQ(good.undefined, 0u);
+  // 1-3 atoms (18 of the 60) make the read moments singular: no witness; judged against the LP.
+  EXPECT_LE(good.unwitnessed, 20u);
+  EXPECT_GE(good.upper_compared, 36u);
+  EXPECT_LT(good.upper_max_difference, 1e-9);
+  EXPECT_LT(good.box_max_outside, 1e-9);
+  const VerifySolverResult flipped = verify_solver(
+      target, [] { return std::make_unique<FlippedSixMoments>(); }, instances, {64}, true, 1e-6, 3,
+      2);
+  EXPECT_FALSE(flipped.passed());
+  EXPECT_GT(flipped.beyond_tolerance, 10u);
+  EXPECT_GT(flipped.box_max_outside, 1e-2);
+  VerifyReportContext context;
+  context.grids = {64, 0};
+  const std::vector<VerifySolverResult> alone{good}, both{good, flipped};
+  EXPECT_TRUE(render_verify_report(context, alone, instances).all_passed);
+  EXPECT_FALSE(render_verify_report(context, both, instances).all_passed);
+}
+
+// A real receiver (dataset default, city/noon texel (112,248) layer 0, z_f - delta_f) whose
+// canonical distribution through z_f puts 8.6e-11 at z = -0.102, ~107 deviations below the
+// kernel: the continuous LP reaches that far only through its certificate's tail term
+// delta (1 + u^6), which the rounding-box bracket must subtract too. Without it the bracket's
+// lower end (3.8e-6 too high) lay above its witness's G and failed the correct closed form.
+// G at the read moments, in 80 digits (mpmath, canonical representation): 0.00824784990732454.
+TEST(VerifyRoundingBox, AFarCanonicalNodeStaysInsideTheBracket) {
+  VerifyInstance inst;
+  inst.source = "dataset:city/noon texel (112,248) layer 0";
+  inst.depths = {0.5979967295906832, 0.5979967295906832, 0.5979967295906832, 0.5979967295906832,
+                 0.5979967295906832, 0.5979967295906832, 0.5979967295906832, 0.5979967295906832,
+                 0.5272393274443239, 0.5962553423710669, 0.5962553423710669, 0.5962553423710669,
+                 0.5962553423710669, 0.5962553423710669, 0.5962553423710669, 0.5962553423710669,
+                 0.5962553423710669, 0.5403844190314654, 0.5945139551514507, 0.5945139551514507,
+                 0.5945139551514507, 0.5945139551514507, 0.5945139551514507, 0.5945139551514507,
+                 0.5945139551514507, 0.5945139551514507, 0.5535295106186068, 0.5927725679318343,
+                 0.5927725679318343, 0.5927725679318343, 0.5927725679318343, 0.5927725679318343,
+                 0.5927725679318343, 0.5927725679318343, 0.5927725679318343, 0.5666746022057483,
+                 0.591031180712218,  0.591031180712218,  0.591031180712218,  0.591031180712218,
+                 0.591031180712218,  0.591031180712218,  0.591031180712218,  0.591031180712218,
+                 0.5798196937928898, 0.5892897934926018, 0.5892897934926018, 0.5892897934926018,
+                 0.5892897934926018, 0.5892897934926018, 0.5892897934926018, 0.5892897934926018,
+                 0.5892897934926018, 0.5892897934926018, 0.5875484062729855, 0.5875484062729855,
+                 0.5875484062729855, 0.5875484062729855, 0.5875484062729855, 0.5875484062729855,
+                 0.5875484062729855, 0.5875484062729855, 0.5875484062729855, 0.5858070190533692,
+                 0.5858070190533692, 0.5858070190533692, 0.5858070190533692, 0.5858070190533692,
+                 0.5858070190533692, 0.5858070190533692, 0.5858070190533692, 0.5858070190533692,
+                 0.5840656318337529, 0.5840656318337529, 0.5840656318337529, 0.5840656318337529,
+                 0.5840656318337529, 0.5840656318337529, 0.5840656318337529, 0.5840656318337529,
+                 0.5840656318337529};
+  inst.weights = {
+      0.001939912183883385, 0.00356185542147045,  0.005497587571645411, 0.007132958172557576,
+      0.007779807499583761, 0.007132958172557576, 0.005497587571645411, 0.00356185542147045,
+      0.001939912183883385, 0.00356185542147045,  0.006539890902721959, 0.010094071401662423,
+      0.01309676074469845,  0.014284435012370986, 0.01309676074469845,  0.010094071401662423,
+      0.006539890902721959, 0.00356185542147045,  0.005497587571645411, 0.010094071401662423,
+      0.015579813024014143, 0.02021434914647476,  0.022047478939941804, 0.02021434914647476,
+      0.015579813024014143, 0.010094071401662423, 0.005497587571645411, 0.007132958172557576,
+      0.01309676074469845,  0.02021434914647476,  0.02622752344882145,  0.02860595543762851,
+      0.02622752344882145,  0.02021434914647476,  0.01309676074469845,  0.007132958172557576,
+      0.007779807499583761, 0.014284435012370986, 0.022047478939941804, 0.02860595543762851,
+      0.03120007453606371,  0.02860595543762851,  0.022047478939941804, 0.014284435012370986,
+      0.007779807499583761, 0.007132958172557576, 0.01309676074469845,  0.02021434914647476,
+      0.02622752344882145,  0.02860595543762851,  0.02622752344882145,  0.02021434914647476,
+      0.01309676074469845,  0.007132958172557576, 0.005497587571645411, 0.010094071401662423,
+      0.015579813024014143, 0.02021434914647476,  0.022047478939941804, 0.02021434914647476,
+      0.015579813024014143, 0.010094071401662423, 0.005497587571645411, 0.00356185542147045,
+      0.006539890902721959, 0.010094071401662423, 0.01309676074469845,  0.014284435012370986,
+      0.01309676074469845,  0.010094071401662423, 0.006539890902721959, 0.00356185542147045,
+      0.001939912183883385, 0.00356185542147045,  0.005497587571645411, 0.007132958172557576,
+      0.007779807499583761, 0.007132958172557576, 0.005497587571645411, 0.00356185542147045,
+      0.001939912183883385};
+  inst.zf = 0.5839656318337529;
+  const TechniqueParams params = verify_params(TechniqueParams{});
+  const VerifyTarget target = verify_targets({"hamburger6"}, params).front();
+  const std::vector<VerifyInstance> instances{inst};
+  const VerifySolverResult r = verify_solver(
+      target, [&] { return make_technique("hamburger6", params); }, instances, {64}, true, 1e-6, 1,
+      1);
+  ASSERT_EQ(r.worst_outside.size(), 1u);
+  const VerifyJudgement& j = r.worst_outside.front();
+  EXPECT_TRUE(j.read_box);
+  EXPECT_LE(j.lo, j.hi);
+  EXPECT_LE(j.lo, 0.00824784990732454);
+  EXPECT_GE(j.hi, 0.00824784990732454 - 1e-12);
+  EXPECT_NEAR(j.closed_form, 0.00824784990732454, 1e-11);
+  EXPECT_TRUE(r.passed()) << j.outside() << " outside [" << j.lo << ", " << j.hi << "]";
+}
+
+}  // namespace
+}  // namespace mb

@@ -90,7 +90,7 @@ const std::vector<std::string>& catalog_names() {
 std::vector<std::string> csm_channels(int terms) {
   std::vector<std::string> functions;
   for (int k = 1; k <= terms; ++k) {
-    const std::string c = std::to_string(2 * k - 1) + "*_pi*z";
+    const std::string c = std::to_string(2 * k - 1) + "*pi*z";
     functions.push_back("cos(" + c + ")");
     functions.push_back("sin(" + c + ")");
   }

@@ -14,7 +14,7 @@ struct AnalyticForm;  // basis/basis_derivatives.h
 class BasisFunction {
  public:
   // A catalog name ("z^2", "exp(-4z)", "sin(2 pi z)"; spaces and '*' are ignored when matching)
-  // or an expression in z ("z^2*exp(-z)", "sin(2*_pi*z)"; `pi` is defined).
+  // or an expression in z ("z^2*exp(-z)", "sin(2*pi*z)"; `pi` is defined as std::numbers::pi).
   static BasisFunction parse(const std::string& name_or_expression);
   const std::string& name() const { return name_; }
   void evaluate(std::span<const double> z, std::span<double> out) const;

@@ -8,6 +8,7 @@
 #include "eval/eval_config.h"
 #include "eval/evaluation.h"
 #include "report/oit_report.h"
+#include "report/scatter_verify_report.h"
 #include "report/verify_report.h"
 #include "scene/dataset.h"
 #include "util/error.h"
@@ -50,8 +51,13 @@ int run_verify(const CommonOptions& options) {
   context.grids = plan.grids;
   if (plan.continuous) context.grids.push_back(0);
   const VerifyReport report = render_verify_report(context, run.results, run.instances);
-  write_file_atomically(out / "verify.md", report.markdown + oit_verify_section(run.oit));
+  const std::string scatter_section =
+      scatter_verify_section(run.scatter, run.scatter_dataset, v.scatter_resolution);
+  write_file_atomically(out / "verify.md",
+                        report.markdown + oit_verify_section(run.oit) + scatter_section);
   if (!run.oit.empty()) write_file_atomically(out / "verify_oit.csv", oit_verify_csv(run.oit));
+  if (!run.scatter.empty())
+    write_file_atomically(out / "verify_scatter.csv", scatter_verify_csv(run.scatter));
   write_file_atomically(out / "verify.csv", report.csv);
   write_file_atomically(out / "worst.csv", report.worst_csv);
   cmd->finish();
@@ -60,6 +66,7 @@ int run_verify(const CommonOptions& options) {
   std::fputs(text.substr(0, text.find("\n## Worst")).c_str(), stdout);
   std::fputs("\n", stdout);
   std::fputs(oit_verify_section(run.oit).c_str(), stdout);
+  std::fputs(scatter_section.c_str(), stdout);
   bool passed = true;
   for (const auto& line : verify_verdicts(run, report.all_passed, passed))
     std::fprintf(stderr, "momentbench: verify: %s\n", line.c_str());

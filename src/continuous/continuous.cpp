@@ -358,6 +358,7 @@ ContinuousSolution ContinuousSolver::solve(Problem& problem, Backend& backend,
     const DualCertificate found =
         certify_dual(factory_.basis(), out.coefficients, problem.zf, points, domain_, settings_);
     const long double delta = found.delta;
+    out.delta = delta;
     out.cells = found.cells;
     out.proven = found.proven;
     out.violation = double(found.violation);

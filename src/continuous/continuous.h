@@ -40,8 +40,12 @@ struct ContinuousSolution {
   Solution finite;       // the last finite LP's answer (its support indexes the extended problem)
   double upper = 0;      // its optimum: a distribution on I with the given moments
   double lower = 0;      // E[phi] - violation (proven when `proven`)
-  double violation = 0;  // the bound of max over I of phi - step (>= 0)
-  bool proven = false;   // the basis has closed-form derivatives and every cell was bounded
+  double violation = 0;  // the bound of max over I of phi - delta (1 + z^n) - step (>= 0)
+  // Infinite tails (DualCertificate::delta): the certified function is phi - delta (1 + z^n), n =
+  // the domain's even degree, so a lower bound from phi on other moments m subtracts
+  // delta (1 + m_n) as well; 0 where no tail needed it.
+  long double delta = 0;
+  bool proven = false;  // the basis has closed-form derivatives and every cell was bounded
   int rounds = 0, points_added = 0;
   bool stalled = false;  // a later round's finite LP failed: the bracket is the last round's
   long cells = 0;        // cells bounded in the last certificate pass

@@ -51,6 +51,8 @@ LocalPowerSolution solve_power_locally(const LocalPowerProblem& problem,
   extra.push_back(inner_hi);
   factory.add_points(p, extra);
   LocalPowerSolution out;
+  out.mean = mean;
+  out.scale = scale;
   ContinuousSolver solver(factory, settings);
   solver.set_interval(inner_lo, inner_hi);
   solver.set_tails(u_lo, u_hi, problem.degree % 2 == 0 ? problem.degree : 0,

@@ -34,6 +34,7 @@ struct LocalPowerSolution {
   std::vector<double> support, weights;  // the finite optimum's distribution, in z
   // phi as a polynomial in z: sum_k coefficients[k] z^k (k = 0..n), in long double.
   std::vector<long double> coefficients;
+  double mean = 0, scale = 1;  // the local coordinate u = (z - mean) / scale
 };
 
 LocalPowerSolution solve_power_locally(const LocalPowerProblem& problem,

@@ -29,7 +29,13 @@ void hamburger4_lower_batch(const double* b, const double* zf, double* lower, si
 // code contracting other products); NaN where they are not finite.
 void hamburger4_blend_batch(const double* b, const double* zf, size_t count, double beta,
                             double* out);
-// b = (b1, .., b6), already biased (double).
+// b = (b1, .., b6), already biased (double). Seed 004 §2.5's stable steps (docs/reference.md §4,
+// "Six moments, stably"): Cholesky of the 4x4 Hankel matrix, the cubic's roots in closed form
+// plus one Newton step, the bounds through a Newton polynomial; the determinate distribution of
+// fewer atoms where the Hankel matrix is singular.
 MsmBound<double> hamburger6(const double* b, double zf);
+// The same with one sign of the forward substitution flipped: a broken closed form, for the test
+// that shows `verify` failing it (tests/verify_verification_test.cpp).
+MsmBound<double> hamburger6_sign_flipped(const double* b, double zf);
 
 }  // namespace mb

@@ -73,7 +73,7 @@ void finding_too_dark(std::ostringstream& md, const std::vector<SweepSeries>& se
 }  // namespace
 
 std::string scattering_protocol_text() {
-  return "Target scattering (docs/scattering.md §6). Errors are `scatter`'s mean_error: "
+  return "Target scattering (docs/scattering.md §7). Errors are `scatter`'s mean_error: "
          "Σ|I - I_ref| / Σ S_max over every pixel of every light view and camera, in percent, "
          "I_ref the in-scattering of pss_exact (the rectified row's own visibility, so that an "
          "error is the moments' loss alone), I a candidate's pss_lp:<candidate> at beta 0 (Problem "

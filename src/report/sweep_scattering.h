@@ -1,5 +1,5 @@
 #pragma once
-// The sweep report of target scattering (docs/scattering.md §6): what its errors mean, where power
+// The sweep report of target scattering (docs/scattering.md §7): what its errors mean, where power
 // moments rank among the candidates (seed 004 §2.5 uses them), the prefiltered rows against the
 // sharp bounds of the candidates, and the measured darkening of the lower bound (never beyond the
 // LP's certified error).

@@ -63,6 +63,16 @@ std::string summary_lines(std::span<const VerifySolverResult> results,
       noted += (noted.empty() ? "" : ", ") + r.target.technique;
   }
   std::string attention = failed.empty() ? "" : "**" + failed + " fail**";
+  // The failing row's instance furthest beyond its allowance, so that the summary names it.
+  for (const auto& r : results)
+    if (r.judged() && !r.passed() && r.decides_exit() && !r.worst_outside.empty() &&
+        r.worst_outside.front().beyond() > 0) {
+      const VerifyJudgement& j = r.worst_outside.front();
+      attention += " (" + r.target.technique + " furthest: instance " +
+                   std::to_string(j.c.instance) + ", " + instances[j.c.instance].source + ", " +
+                   (j.upper ? "G+ " : "G ") + num(j.closed_form) + " outside [" + num(j.lo) + ", " +
+                   num(j.hi) + "] by " + num(j.outside()) + ", allowed " + num(j.allowed) + ")";
+    }
   if (!noted.empty())
     attention += (attention.empty() ? "" : "; ") + noted +
                  " exceed their storage box (quantization noise, reported: seed 000 §4.3)";
@@ -78,6 +88,7 @@ std::string summary_lines(std::span<const VerifySolverResult> results,
 
 void write_pass_rule(std::ostream& md, const VerifyReportContext& ctx, bool continuous);
 void write_storage_rule(std::ostream& md, std::span<const VerifySolverResult> results);
+void write_rounding_box_rule(std::ostream& md, std::span<const VerifySolverResult> results);
 
 // What was run and how it is judged.
 void write_header(std::ostream& md, const VerifyReportContext& ctx,
@@ -105,6 +116,7 @@ void write_header(std::ostream& md, const VerifyReportContext& ctx,
              : "");
   write_pass_rule(md, ctx, continuous);
   write_storage_rule(md, results);
+  write_rounding_box_rule(md, results);
 }
 
 // When a closed form passes: within the tolerance plus its rounding allowance, never above a
@@ -140,6 +152,21 @@ void write_storage_rule(std::ostream& md, std::span<const VerifySolverResult> re
                    "Seed 000 §4.3 reports quantization noise at these alphas, so exceeding is "
                    "reported, not failed, unless verify.moment_box = strict.\n"
              : "");
+}
+
+// How six moments are judged: over their double rounding box (verify/rounding_box.h).
+void write_rounding_box_rule(std::ostream& md, std::span<const VerifySolverResult> results) {
+  for (const auto& r : results)
+    if (r.target.rounding_box && !r.grids.empty() && r.grids.back().grid == 0)
+      md << "- " << r.target.technique
+         << ": over the double rounding box of its moments. Problem 1 at the moments the "
+            "closed form read (not the kernel's own: for narrow kernels rounding six moments "
+            "moves G by up to ~0.02) lies between the exact moments' certificate applied to them "
+            "and a 50-digit witness distribution with exactly those moments; judged is the "
+            "closed form's distance outside that bracket (largest: "
+         << num(r.box_max_outside) << "). " << r.unwitnessed
+         << " instances whose read moments have no witness (singular, or outside the moment "
+            "cone) are judged against the exact moments' LP as above.\n";
 }
 
 // One row per solver in verify.md and one per solver and grid in verify.csv; true when every
@@ -189,8 +216,10 @@ void write_upper_bounds(std::ostream& md, std::span<const VerifySolverResult> re
         "with the canonical nodes added (docs/reference.md §2). Where a node lies beyond ten "
         "interval widths the LP's maximum may only be lower, and only that is judged. Both in the "
         "kernel's "
-        "local coordinates (verification.cpp, solve_upper). Six moments are reported, not judged: "
-        "their closed form loses digits on near-singular Hankel matrices.\n\n"
+        "local coordinates (verification.cpp, solve_upper). Six moments: G + w_1 on the moments "
+        "the closed form read, judged against G+ there, bracketed by the mirrored problem's "
+        "certificate and 50-digit witnesses (verify/rounding_box.h; max abs dG+ is the distance "
+        "outside that bracket).\n\n"
         "| technique | compared | node beyond reach | max abs dG+ | beyond tol. | verdict |\n"
         "|---|---|---|---|---|---|\n";
   for (const auto& r : results)
@@ -209,10 +238,13 @@ void write_worst_cases(std::ostream& md, std::ostream& worst, const VerifyReport
                        std::span<const VerifyInstance> instances, bool continuous) {
   worst << "technique,kind,rank,source,zf,moments,depths,weights,G_closed_form";
   for (int g : ctx.grids) worst << ",G_lp_" << (g ? std::to_string(g) : "continuous");
-  worst << ",G_lp_exact\n";
-  md << "\n## Worst cases\n\nPer solver: the largest |dG| on the finest grid, then (if any) the "
-        "cases furthest above an "
-        "LP. Re-run one with the printed `solve` commands (closed form, then the LP with the "
+  worst << ",G_lp_exact,bracket_lo,bracket_hi,allowed,outside\n";
+  md << "\n## Worst cases\n\nPer solver: the instances outside the bracket the verdict judges "
+        "them against, failures first (beyond > 0: beyond the allowance), then by distance "
+        "(`outside`/`outside_upper` in "
+        "worst.csv, with the bracket, allowance and distance), the largest |dG| on the finest "
+        "grid, then (if any) the cases furthest above an LP. Re-run one with the printed `solve` "
+        "commands (closed form, then the LP with the "
         "distribution's depths "
         "as extra points). `G exact LP` is the finest grid's LP solved in rational arithmetic "
         "(the arbiter, docs/lp-engine.md): where it differs from the grid's column, the double "
@@ -239,7 +271,7 @@ void write_worst_cases(std::ostream& md, std::ostream& worst, const VerifyReport
             << joined(inst.depths, " ") << "\",\"" << joined(inst.weights, " ") << "\","
             << full(c.closed_form);
       for (double g : c.lp) worst << "," << full(g);
-      worst << "," << full(c.lp_exact) << "\n";
+      worst << "," << full(c.lp_exact) << ",,,,\n";
     }
     std::string basis;
     for (const auto& b : r.target.lp_basis) basis += (basis.empty() ? "" : ",") + b;
@@ -253,7 +285,33 @@ void write_worst_cases(std::ostream& md, std::ostream& worst, const VerifyReport
        << full(inst.zf) << " --points " << joined(inst.depths, ",")
        << " --moments <E[b] of those points>\n```\n";
   };
+  // The judged brackets: failures first, then the instances furthest outside (keep_worst_outside).
+  const auto write_outside = [&](const VerifySolverResult& r) {
+    if (r.worst_outside.empty()) return;
+    md << "\n### " << r.target.technique
+       << ": furthest outside the judged bracket\n\n| rank | instance | source | z_f | bound | "
+          "closed form | judged bracket | against | distance outside | allowed | beyond |\n"
+          "|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (size_t k = 0; k < r.worst_outside.size(); ++k) {
+      const VerifyJudgement& j = r.worst_outside[k];
+      const VerifyInstance& inst = instances[j.c.instance];
+      const char* against = j.read_box ? "read moments' box" : "LP";
+      md << "| " << k + 1 << " | " << j.c.instance << " | " << inst.source << " | " << full(inst.zf)
+         << " | " << (j.upper ? "G+" : "G") << " | " << full(j.closed_form) << " | [" << full(j.lo)
+         << ", " << full(j.hi) << "] | " << against << " | " << num(j.outside()) << " | "
+         << num(j.allowed) << " | "
+         << (j.beyond() > 0 ? "**" + num(j.beyond()) + "**" : num(j.beyond())) << " |\n";
+      worst << r.target.technique << "," << (j.upper ? "outside_upper" : "outside") << "," << k + 1
+            << ",\"" << inst.source << "\"," << full(inst.zf) << ",\"" << joined(j.c.moments, " ")
+            << "\",\"" << joined(inst.depths, " ") << "\",\"" << joined(inst.weights, " ") << "\","
+            << full(j.closed_form);
+      for (double g : j.c.lp) worst << "," << full(g);
+      worst << "," << full(j.c.lp_exact) << "," << full(j.lo) << "," << full(j.hi) << ","
+            << full(j.allowed) << "," << full(j.outside()) << "\n";
+    }
+  };
   for (const auto& r : results) {
+    write_outside(r);
     write_cases(r, r.worst, "largest_dG", "largest |dG| on the finest grid");
     write_cases(r, r.worst_above, "above_lp", "furthest above an LP witness");
   }

@@ -37,7 +37,7 @@ std::vector<OptionSpec> scatter_run_option_specs();
 // ScatterRunOptions of a config declaring scatter_run_option_specs(); InputError for an empty or
 // unknown technique before any work.
 ScatterRunOptions scatter_run_options_from(const Config& config);
-// What a scattering sweep reads of them (sweep target scattering, docs/scattering.md §6): every
+// What a scattering sweep reads of them (sweep target scattering, docs/scattering.md §7): every
 // measurement option but the techniques, the reference (pss_exact) and the images; and its
 // ScatterRunOptions (no techniques, reference pss_exact, no images).
 std::vector<OptionSpec> scatter_sweep_option_specs();

@@ -13,7 +13,7 @@ namespace mb {
 
 namespace {
 
-// The rectified row's own visibility (docs/scattering.md §6): the row of role ExactReference.
+// The rectified row's own visibility (docs/scattering.md §7): the row of role ExactReference.
 const std::string& reference_name() {
   return role_name(TechniqueFamily::Scattering, RowRole::ExactReference);
 }

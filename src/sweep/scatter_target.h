@@ -1,5 +1,5 @@
 #pragma once
-// The scattering sweep target (docs/scattering.md §6): a candidate is `pss_lp:<its functions>` at
+// The scattering sweep target (docs/scattering.md §7): a candidate is `pss_lp:<its functions>` at
 // beta 0, Problem 1's sharp lower bound on each view ray's shadowed fraction from the rectified
 // row's prefix-summed moments of the candidate's basis, and its error is scatter's mean_error
 // against `pss_exact` (the row's own visibility, so that the error is the moments' loss alone),

@@ -80,7 +80,7 @@ const std::vector<OptionRecord<SweepSettings>>& candidate_options() {
         "transmittance (opacity-weighted, docs/transparency.md §7; `resolution` and the "
         "kernel's keys do not apply); scattering, pss_lp:<candidate> at beta 0 per view ray of "
         "a scattering dataset's light views and cameras against pss_exact (docs/scattering.md "
-        "§6; scatter.* apply, `resolution` and the kernel's keys do not).",
+        "§7; scatter.* apply, `resolution` and the kernel's keys do not).",
         -kInfinity,
         kInfinity,
         {"shadows", "transparency", "scattering"}},

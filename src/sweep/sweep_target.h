@@ -4,7 +4,7 @@
 // a transparency dataset's camera frames, the LP's sharp absorbance bound per fragment against the
 // exact transmittance (docs/transparency.md §7). `scattering`: a scattering dataset's light views
 // and cameras, pss_lp:<candidate> at beta 0 per view ray against pss_exact (docs/scattering.md
-// §6). The orchestration (sweep_run.cpp) sees only this interface, so resume, shards, screening
+// §7). The orchestration (sweep_run.cpp) sees only this interface, so resume, shards, screening
 // and the results store are the same for all.
 #include <cstdint>
 #include <limits>

@@ -20,6 +20,7 @@
 #include "util/error.h"
 #include "util/number_text.h"
 #include "util/parallel_errors.h"
+#include "verify/rounding_box.h"
 
 namespace mb {
 
@@ -43,6 +44,12 @@ void solve_continuous(const VerifyTarget& target, const Basis& basis, int degree
                                         target.on_r ? kInf : target.hi, lp::kContinuousSeedGrid};
     lp::LocalPowerSolution local =
         lp::solve_power_locally(problem, inst.depths, inst.weights, inst.zf, backend);
+    if (target.rounding_box && local.solution.ok() && local.solution.proven) {
+      const RoundedMomentBracket b =
+          six_moment_bracket(c.moments, inst.zf, local.solution.coefficients, local.solution.delta,
+                             local.solution.violation, local.mean, local.scale);
+      if (b.inside) c.box_lower = b.lower, c.box_upper = b.upper, c.upper_floor = b.upper_at;
+    }
     s = std::move(local.solution);
     witness.points = std::move(local.support);
     witness.weights = std::move(local.weights);
@@ -143,7 +150,8 @@ std::vector<VerifyTarget> verify_targets(const std::vector<std::string>& techniq
     t.upper = t.exact && t.on_r &&
               (t.lp_basis == std::vector<std::string>{"power4"} ||
                t.lp_basis == std::vector<std::string>{"power6"});
-    t.upper_judged = t.upper && t.lp_basis == std::vector<std::string>{"power4"};
+    t.rounding_box = t.upper && t.lp_basis == std::vector<std::string>{"power6"};
+    t.upper_judged = t.upper;
     out.push_back(std::move(t));
   }
   return out;
@@ -283,22 +291,81 @@ void solve_upper(const VerifyTarget& target, const VerifyInstance& inst, VerifyC
   if (s.call == lp::CallStatus::Ok && s.status == lp::ProblemStatus::Optimal) c.lp_upper = 1 - s.G;
 }
 
+// The upper bound of six moments over their rounding box: G+ at the moments the closed form read,
+// b~, is 1 - G of the mirrored problem (z -> -z: the mass behind z_f is the mass in front of -z_f,
+// docs/reference.md §7), so the mirrored instance's continuous LP and witness bracket it as
+// six_moment_bracket brackets G; the non-mirrored witness's mass at or below z_f bounds it from
+// below as well. Compared is the closed form's G + w_1 on b~ itself.
+void solve_upper_box(const VerifyInstance& inst, VerifyCase& c, lp::Backend& backend) {
+  if (!std::isfinite(c.upper_floor)) return;  // the read moments have no witness
+  const double* read = c.moments.data();
+  const MsmBound<double> r = hamburger6(read, inst.zf);
+  if (!std::isfinite(r.lower + r.at_zf)) return;
+  std::vector<double> mirrored(inst.depths.size()), mirrored_read(6);
+  for (size_t a = 0; a < mirrored.size(); ++a) mirrored[a] = -inst.depths[a];
+  for (int k = 0; k < 6; ++k) mirrored_read[k] = k % 2 == 0 ? -read[k] : read[k];
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const lp::LocalPowerProblem problem{6, -kInf, kInf, lp::kContinuousSeedGrid};
+  const lp::LocalPowerSolution local =
+      lp::solve_power_locally(problem, mirrored, inst.weights, -inst.zf, backend);
+  if (!local.solution.ok() || !local.solution.proven) return;
+  const RoundedMomentBracket m =
+      six_moment_bracket(mirrored_read, -inst.zf, local.solution.coefficients, local.solution.delta,
+                         local.solution.violation, local.mean, local.scale);
+  if (!m.inside) return;
+  c.closed_upper = r.lower + r.at_zf;
+  c.lp_upper = 1 - m.lower;
+  // The closed form's own rounding moves G+ as the mirrored problem's certificate says (as
+  // solve_continuous's allowance for G).
+  long double rounding = 0;
+  for (size_t j = 1; j < local.coefficients.size(); ++j) {
+    long double scale = 0;
+    for (size_t a = 0; a < mirrored.size(); ++a)
+      scale += inst.weights[a] * std::pow(std::abs((long double)mirrored[a]), (long double)j);
+    rounding += std::abs(local.coefficients[j]) * scale;
+  }
+  c.upper_rounding = std::min(kMaxRoundingAllowance, double(rounding * std::ldexp(1.0L, -49)));
+  c.upper_floor = std::max(c.upper_floor, 1 - m.upper);
+}
+
 // The upper-bound comparison of solve_upper, reduced: within the tolerance and the instance's
 // rounding allowance, or (a node beyond reach) at least not below the LP's maximum.
-void reduce_upper(const std::vector<VerifyCase>& cases, double tolerance,
-                  VerifySolverResult& result) {
+void reduce_upper(const VerifyTarget& target, const std::vector<VerifyCase>& cases,
+                  double tolerance, VerifySolverResult& result,
+                  std::vector<VerifyJudgement>& judged) {
   for (const auto& c : cases) {
     if (!std::isfinite(c.closed_upper) || !std::isfinite(c.lp_upper)) continue;
     ++result.upper_compared;
-    const double d = c.closed_upper - c.lp_upper, allowed = tolerance + c.rounding;
-    if (c.upper_limited) {
+    VerifyJudgement j{c, true};
+    j.closed_form = c.closed_upper;
+    j.allowed = tolerance + std::max(c.rounding, c.upper_rounding);
+    if (std::isfinite(c.upper_floor)) {  // rounding-box rows: outside [upper_floor, lp_upper]
+      j.read_box = true;
+      j.lo = c.upper_floor, j.hi = c.lp_upper;
+      result.upper_max_difference = std::max(result.upper_max_difference, j.outside());
+    } else if (c.upper_limited) {  // the LP's maximum may only be lower
       ++result.upper_limited;
-      result.upper_beyond += d < -allowed;
-      continue;
+      j.lo = c.lp_upper;
+    } else {
+      j.lo = j.hi = c.lp_upper;
+      result.upper_max_difference = std::max(result.upper_max_difference, j.outside());
     }
-    result.upper_max_difference = std::max(result.upper_max_difference, std::abs(d));
-    result.upper_beyond += std::abs(d) > allowed;
+    result.upper_beyond += j.outside() > j.allowed;
+    if (target.upper_judged) judged.push_back(std::move(j));
   }
+}
+
+// The judged comparisons into the result: the failures first, furthest beyond their allowance
+// first, then the others by their distance outside the bracket.
+void keep_worst_outside(std::vector<VerifyJudgement> judged, int worst_count,
+                        VerifySolverResult& result) {
+  const auto key = [](const VerifyJudgement& j) {
+    return std::pair{j.beyond() > 0, j.beyond() > 0 ? j.beyond() : j.outside()};
+  };
+  std::stable_sort(judged.begin(), judged.end(),
+                   [&](const auto& a, const auto& b) { return key(a) > key(b); });
+  if (int(judged.size()) > worst_count) judged.resize(std::max(0, worst_count));
+  result.worst_outside = std::move(judged);
 }
 
 // The closed form on an instance's stored moments: NaN when it gives no number.
@@ -344,10 +411,17 @@ double above_witnesses(Technique& probe, const StoredMoments& stored_moments, do
   return above;
 }
 
+// Whether the verdict judges the row's G (VerifySolverResult::judged; exceedance rows are
+// reported only).
+bool judged_result(const VerifyTarget& target, bool box_rows) {
+  return target.exact || target.lower_bound || box_rows;
+}
+
 // The per-grid statistics, the judgement and the worst cases, reduced in case order.
 void reduce_cases(const VerifyTarget& target, const std::vector<VerifyCase>& cases,
                   const std::vector<int>& grids, bool continuous, bool box_rows, double tolerance,
-                  int worst_count, VerifySolverResult& result) {
+                  int worst_count, VerifySolverResult& result,
+                  std::vector<VerifyJudgement>& judged) {
   result.grids.resize(cases[0].lp.size());
   for (size_t k = 0; k < grids.size(); ++k) result.grids[k].grid = grids[k];  // 0: continuous
   std::vector<std::pair<double, size_t>> finest, excess;
@@ -382,12 +456,30 @@ void reduce_cases(const VerifyTarget& target, const std::vector<VerifyCase>& cas
       result.largest_excess =
           std::max({result.largest_excess, c.closed_form - c.lp.back(), c.above_witness});
     const double d = std::abs(c.closed_form - c.lp.back());
-    // The continuous LP's G lies in [upper - bracket, upper]: judged is the distance from there.
-    const double off = c.closed_form > c.lp.back() ? d : std::max(0.0, d - c.bracket);
-    if (box_rows)  // a lower bound of the box problem: judged from above only
-      result.beyond_tolerance += c.closed_form - c.lp.back() > kAboveLpSlack + target.alpha;
-    else
-      result.beyond_tolerance += off > tolerance + c.rounding;
+    VerifyJudgement j{c};
+    j.closed_form = c.closed_form;
+    if (box_rows) {  // a lower bound of the box problem: judged from above only
+      j.hi = c.lp.back();
+      j.allowed = kAboveLpSlack + target.alpha;
+    } else if (target.rounding_box && continuous && std::isfinite(c.box_lower)) {
+      // Problem 1 at the read moments (verify/rounding_box.h), to the closed form's own rounding.
+      j.read_box = true;
+      j.lo = c.box_lower, j.hi = c.box_upper;
+      j.allowed = tolerance + c.rounding;
+      result.box_max_outside = std::max(result.box_max_outside, j.outside());
+    } else {
+      // The continuous LP's G lies in [upper - bracket, upper]: judged is the distance from
+      // there. Read moments without a witness (singular: 1-3 atoms; or outside the moment cone)
+      // are judged against the exact moments' LP, as the other rows.
+      result.unwitnessed += target.rounding_box && continuous;
+      j.lo = c.lp.back() - c.bracket, j.hi = c.lp.back();
+      j.allowed = tolerance + c.rounding;
+    }
+    result.beyond_tolerance += j.outside() > j.allowed;
+    // A valid lower bound is judged from above only, by the slack (VerifySolverResult::passed).
+    if (target.lower_bound)
+      j.lo = -std::numeric_limits<double>::infinity(), j.allowed = kAboveLpSlack;
+    if (judged_result(target, box_rows)) judged.push_back(std::move(j));
     finest.push_back({box_rows ? c.closed_form - c.lp.back() : d, c.instance});
     if (box_rows) result.largest_excess = std::max(result.largest_excess, finest.back().first);
   }
@@ -494,7 +586,12 @@ VerifySolverResult verify_solver(const VerifyTarget& target, const TechniqueMake
         else if (continuous)
           solve_continuous(target, lp_basis, degree, seed_factory, instances[i], *fast, cases[i],
                            witnesses[i].back());
-        if (target.upper) solve_upper(target, instances[i], cases[i], *fast, *glpk);
+        // Six moments' upper bound needs the continuous LP's certificates (solve_upper_box).
+        if (target.rounding_box) {
+          if (continuous) solve_upper_box(instances[i], cases[i], *fast);
+        } else if (target.upper) {
+          solve_upper(target, instances[i], cases[i], *fast, *glpk);
+        }
       });
   }
   errors.rethrow();
@@ -503,9 +600,11 @@ VerifySolverResult verify_solver(const VerifyTarget& target, const TechniqueMake
     if (std::isfinite(cases[i].closed_form))
       cases[i].above_witness =
           above_witnesses(*probe, stored_moments, instances[i].zf, witnesses[i], box_rows);
-  reduce_cases(target, cases, grids, continuous, box_rows, tolerance, worst_count, result);
+  std::vector<VerifyJudgement> judged;
+  reduce_cases(target, cases, grids, continuous, box_rows, tolerance, worst_count, result, judged);
   if (!grids.empty()) arbitrate_worst(target, instances, *factories.back(), result);
-  if (target.upper) reduce_upper(cases, tolerance, result);
+  if (target.upper) reduce_upper(target, cases, tolerance, result, judged);
+  keep_worst_outside(std::move(judged), worst_count, result);
   return result;
 }
 

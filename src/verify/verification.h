@@ -2,6 +2,7 @@
 // `momentbench verify` (docs/reference.md §6): every closed form against the LP with the matching
 // basis and interval, on seeded random depth distributions and on real kernels of a dataset, at
 // several LP grid sizes.
+#include <algorithm>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -48,10 +49,12 @@ struct VerifyTarget {
   // Hamburger's rows (power4, power6 on R): also the upper bound G + w_1 of the canonical
   // distribution through z_f (seed 004's beta = 1) against the LP's maximum (docs/reference.md §2).
   bool upper = false;
-  // Whether the upper comparison decides the verdict: four moments (agreement to ~1e-10 on real
-  // kernels); six moments' closed form loses digits on near-singular Hankel matrices even in local
-  // coordinates (up to ~1e-5 on the default dataset's kernels, FINDINGS §7b), so it is reported.
+  // Whether the upper comparison decides the verdict (both rows).
   bool upper_judged = false;
+  // Six power moments on R: judged over their double rounding box (verify/rounding_box.h), i.e.
+  // against Problem 1 at the moments the closed form read, bracketed by the exact moments'
+  // certificate and a 50-digit witness; the upper bound likewise, through the mirrored problem.
+  bool rounding_box = false;
 };
 
 // The §6 table for the given technique names (InputError for names without an LP counterpart).
@@ -103,9 +106,35 @@ struct VerifyCase {
   double closed_upper = std::numeric_limits<double>::quiet_NaN();
   double lp_upper = std::numeric_limits<double>::quiet_NaN();
   bool upper_limited = false;
+  // target.rounding_box: Problem 1 at the read moments lies in [box_lower, box_upper]; NaN where
+  // the read moments have no witness (outside the moment cone: nothing to judge). The upper bound
+  // G+ at the read moments lies in [upper_floor, lp_upper] (lp_upper then is the mirrored
+  // certificate's bound, not a grid LP's maximum).
+  double box_lower = std::numeric_limits<double>::quiet_NaN();
+  double box_upper = std::numeric_limits<double>::quiet_NaN();
+  double upper_floor = std::numeric_limits<double>::quiet_NaN();
+  double upper_rounding = 0;  // as `rounding`, from the mirrored problem's certificate
   // The worst cases only: the finest grid's LP solved by the exact arbiter (lp/exact_backend.h)
   // with the distribution's exact image as right-hand side; NaN elsewhere, or where it failed.
   double lp_exact = std::numeric_limits<double>::quiet_NaN();
+};
+
+// One instance's judged comparison: the interval the verdict holds the closed form's G (or, for
+// Hamburger's upper bound, G + w_1) to, the allowance beyond it, and how far outside it lies. The
+// interval is the continuous LP's bracket [G - width, G] (the finest grid's G where there is no
+// continuous column), Problem 1 at the read moments (rounding-box rows), or only an upper end
+// (storage and lower-bound rows).
+struct VerifyJudgement {
+  VerifyCase c;
+  bool upper = false;     // G + w_1 against G+ (VerifyTarget::upper), else G
+  bool read_box = false;  // the bracket is Problem 1 at the read moments (verify/rounding_box.h)
+  double closed_form = 0;
+  double lo = -std::numeric_limits<double>::infinity();
+  double hi = std::numeric_limits<double>::infinity();
+  double allowed = 0;  // tolerance (or slack) plus the instance's allowance
+  double outside() const { return std::max({0.0, lo - closed_form, closed_form - hi}); }
+  // > 0: the instance fails the verdict.
+  double beyond() const { return outside() - allowed; }
 };
 
 struct VerifyGridStats {
@@ -127,8 +156,15 @@ struct VerifySolverResult {
   // Instances whose bracket is wider than 1e-6 (the exchange stalled on an LP it could not
   // certify): judged only from above there, against the bracket's lower end from below.
   size_t unresolved = 0;
+  // target.rounding_box: instances whose read moments have no witness (judged against the exact
+  // moments' LP instead) and the largest distance of a closed form outside its bracket.
+  size_t unwitnessed = 0;
+  double box_max_outside = 0;
   std::vector<VerifyCase> worst;        // by |dG| on the finest grid, largest first
   std::vector<VerifyCase> worst_above;  // above an LP witness, by how far (largest first)
+  // Judged G and G + w_1: the failures (VerifyJudgement::beyond > 0) first, largest first, then
+  // the others by their distance outside their bracket.
+  std::vector<VerifyJudgement> worst_outside;
   // Storage rows judged against their box (target.storage_box with the continuous ground
   // truth): beyond_tolerance counts closed forms above the box's G by more than alpha + 1e-6.
   bool box_judged = false;

@@ -2,16 +2,22 @@
 
 #include "oit/oit_verification.h"
 #include "techniques/registry.h"
+#include "verify/scatter_verification.h"
 
 namespace mb {
 
 namespace {
 
-// Every transmittance row with a verify recipe, as a YAML list.
-std::string oit_verify_default() {
+// Names as a YAML list.
+std::string yaml_list(const std::vector<std::string>& names) {
   std::string list;
-  for (const std::string& name : oit_verify_names()) list += (list.empty() ? "" : ", ") + name;
+  for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
   return "[" + list + "]";
+}
+
+// Every transmittance row with a verify recipe.
+std::string oit_verify_default() {
+  return yaml_list(oit_verify_names());
 }
 
 }  // namespace
@@ -30,6 +36,26 @@ const std::vector<OptionRecord<VerifySettings>>& verify_options() {
       {{"verify.oit_pixels", OptionType::Integer, "20",
         "Seeded random pixels (2-13 fragments) per MBOIT row.", 1, 1e6},
        &VerifySettings::oit_pixels},
+      {selects_runs({"verify.scatter_techniques", OptionType::StringList,
+                     yaml_list(scatter_verify_names()),
+                     "Prefiltered scattering rows whose bounds (scatter.beta 0 and 1) are checked "
+                     "against pss_lp on the same row-prefiltered moments (docs/scattering.md "
+                     "§6); [] for none."}),
+       &VerifySettings::scatter_techniques},
+      {{"verify.scatter_dataset", OptionType::String, "scattering_tiny",
+        "Dataset (name or file) whose light views and cameras give the scattering rows' "
+        "rectified maps: the small house, seconds to render."},
+       &VerifySettings::scatter_dataset},
+      {{"verify.scatter_rays", OptionType::Integer, "200",
+        "Seeded random view rays per light view and camera for the scattering rows: 200 on "
+        "scattering_tiny's one camera keep the LPs to seconds.",
+        1, 1e6},
+       &VerifySettings::scatter_rays},
+      {{"verify.scatter_resolution", OptionType::Integer, "256",
+        "Texels a row (and rows) of the scattering rows' rectified maps, guard band 1/16 of it "
+        "as scatter.guard_band's default: the LP's cost grows with a row's texels.",
+        8, 8192},
+       &VerifySettings::scatter_resolution},
       {{"verify.random", OptionType::Integer, "2000",
         "Seeded random distributions (1-8 atoms, mixtures).", 0, 1e8},
        &VerifySettings::random},

@@ -21,6 +21,10 @@ struct VerifySettings {
   // Transparency rows (docs/transparency.md §6): MBOIT closed forms against the LP.
   std::vector<std::string> oit_techniques;
   int oit_pixels;
+  // Scattering rows (docs/scattering.md §6): pss_msm4, pss_msm6 against pss_lp.
+  std::vector<std::string> scatter_techniques;
+  std::string scatter_dataset;
+  int scatter_rays, scatter_resolution;
 };
 
 const std::vector<OptionRecord<VerifySettings>>& verify_options();

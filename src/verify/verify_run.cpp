@@ -83,6 +83,7 @@ VerifyPlan make_verify_plan(const VerifySettings& v, const TechniqueParams& tech
   for (const auto& name : v.oit_techniques) check_oit_verify_technique(name);
   plan.grids = ascending_grids(v.grids);
   plan.continuous = v.discretization == "continuous";
+  for (const auto& name : v.scatter_techniques) check_scatter_verify_technique(name);
   // A pass over no instances would prove nothing.
   if (v.random == 0 && v.fragments == 0)
     throw InputError(
@@ -113,6 +114,20 @@ VerifyRun run_verification(const VerifyPlan& plan, const DatasetOptions& data,
   }
   for (const auto& name : v.oit_techniques)
     run.oit.push_back(verify_mboit(name, v.oit_pixels, v.seed));
+  if (!v.scatter_techniques.empty()) {
+    const DatasetDesc dataset = load_dataset(v.scatter_dataset);
+    run.scatter_dataset = dataset.name;
+    const auto frames = scatter_verify_frames(dataset, v.scatter_resolution, v.scatter_rays, v.seed,
+                                              settings.threads);
+    for (const auto& name : v.scatter_techniques) {
+      ProgressBar bar("verify " + name, 2, quiet);
+      for (const double beta : {0.0, 1.0}) {
+        run.scatter.push_back(verify_scatter_row(name, beta, frames->frames, v.scatter_resolution));
+        bar.advance(1);
+      }
+      bar.finish();
+    }
+  }
   return run;
 }
 
@@ -137,6 +152,15 @@ std::vector<std::string> verify_verdicts(const VerifyRun& run, bool all_passed, 
       lines.push_back(r.technique + " disagrees with the LP (" + std::to_string(r.beyond) + " of " +
                       std::to_string(r.fragments) + " fragments beyond " +
                       format_number(r.tolerance, "%g") + " in T, " + std::to_string(r.lp_failures) +
+                      " LP failures)");
+    }
+  for (const auto& r : run.scatter)
+    if (!r.passed()) {
+      passed = false;
+      lines.push_back(r.technique + " at scatter.beta " + format_number(r.beta, "%g") +
+                      " disagrees with " + r.lp_technique + " (" + std::to_string(r.beyond) +
+                      " of " + std::to_string(r.compared) + " rays beyond " +
+                      format_number(r.tolerance, "%g") + ", " + std::to_string(r.lp_failures) +
                       " LP failures)");
     }
   return lines;

@@ -8,6 +8,7 @@
 #include "eval/evaluation.h"
 #include "oit/oit_verification.h"
 #include "scene/dataset_options.h"
+#include "verify/scatter_verification.h"
 #include "verify/verification.h"
 #include "verify/verify_options.h"
 
@@ -31,6 +32,9 @@ struct VerifyRun {
   std::string dataset_name = "none";        // when no dataset kernels were sampled
   std::vector<VerifySolverResult> results;  // one per target, in order
   std::vector<OitVerifyRow> oit;            // one per verify.oit_techniques, in order
+  // verify.scatter_techniques at scatter.beta 0 and 1, in order (docs/scattering.md §6).
+  std::vector<ScatterVerifyRow> scatter;
+  std::string scatter_dataset;
 };
 
 VerifyRun run_verification(const VerifyPlan& plan, const DatasetOptions& data,

@@ -6,12 +6,22 @@
 // ray's row up to its end, at its depth.
 #include <algorithm>
 #include <memory>
+#include <optional>
 #include <stdexcept>
+#include <string>
 
 #include "techniques/scatter/rectified_map.h"
 #include "techniques/scatter/scatter_technique.h"
 
 namespace mb {
+
+// How `verify` checks a prefiltered row against pss_lp on the same row-prefiltered moments
+// (docs/scattering.md §6; verify/scatter_verification.h).
+struct ScatterVerifyRecipe {
+  std::string lp_technique;  // the pss_lp: row it is compared with, at the same scatter.beta
+  double lo = 0, hi = 1;     // the LP's interval of normalised depth: holds Hamburger's nodes
+  double tolerance = 0;      // in the shadowed fraction
+};
 
 class PrefilteredScatter : public ScatterTechnique {
  public:
@@ -30,6 +40,13 @@ class PrefilteredScatter : public ScatterTechnique {
     return all * (1 - std::clamp(shadowed, 0.0, 1.0));
   }
   const RectifiedMap& map() const { return *map_; }
+  // Its verify recipe; none: verify does not check the row.
+  virtual std::optional<ScatterVerifyRecipe> verify_recipe() const { return std::nullopt; }
+  // The shadowed fraction the technique reconstructs for a view ray, before lit_length clamps it:
+  // what verify judges against pss_lp's (verify/scatter_verification.h); thread-safe.
+  double shadowed(const ScatterRay& ray) const {
+    return shadowed_fraction(map_->locate(ray.direction, ray.length));
+  }
 
  protected:
   PrefilteredScatter(std::string name, const ScatterParams& params)

@@ -31,8 +31,11 @@ std::string lp_name_of(const std::string& name) {
 class PssLp : public PrefilteredScatter {
  public:
   PssLp(const std::string& name, const ScatterParams& params)
-      : PrefilteredScatter(name, params), lp_name_(lp_name_of(name)), instance_(next_instance()) {
-    technique_.lp_beta = params.beta;
+      : PrefilteredScatter(name, params),
+        lp_name_(lp_name_of(name)),
+        instance_(next_instance()),
+        technique_(params.technique) {
+    technique_.lp_beta = params.beta;         // scatter.beta is the one beta of the family
     make_lp_technique(lp_name_, technique_);  // a bad basis fails here, before any work
     std::lock_guard<std::mutex> lock(live_mutex());
     live().insert(instance_);
@@ -99,7 +102,7 @@ class PssLp : public PrefilteredScatter {
 
   std::string lp_name_;
   uint64_t instance_;
-  TechniqueParams technique_;
+  TechniqueParams technique_;  // the LP's settings (lp.*) with lp.beta = scatter.beta
   mutable std::mutex mutex_;
   mutable size_t failures_ = 0;
 };

@@ -49,6 +49,15 @@ class PssMsm4 : public PrefilteredScatter {
         alpha_(alpha),
         beta_(params.beta) {}
   size_t failures() const override { return failures_; }
+  // verify (docs/scattering.md §6): in double, Hamburger's bounds on R equal the continuous LP's
+  // on an interval holding the canonical nodes; MBOIT's four power moments are judged on the same
+  // interval (techniques/oit/mboit_power.cpp), wide because near-singular moments put a node far
+  // out. The 16-bit row's moments are rounded: no LP on them is sharp.
+  std::optional<ScatterVerifyRecipe> verify_recipe() const override {
+    if (storage_.kind != StorageKind::Double) return std::nullopt;
+    return ScatterVerifyRecipe{
+        .lp_technique = "pss_lp:power4", .lo = -400, .hi = 401, .tolerance = 1e-6};
+  }
 
  protected:
   void prefilter(const RectifiedMap& map) override {

@@ -37,6 +37,12 @@ class PssMsm6 : public PrefilteredScatter {
         alpha_(params.technique.number(kPssMsm6Alpha)),
         beta_(params.beta) {}
   size_t failures() const override { return failures_; }
+  // verify (docs/scattering.md §6): as pss_msm4, on MBOIT's interval for six power moments
+  // (techniques/oit/mboit_power.cpp), whose sixth powers keep their digits there.
+  std::optional<ScatterVerifyRecipe> verify_recipe() const override {
+    return ScatterVerifyRecipe{
+        .lp_technique = "pss_lp:power6", .lo = -20, .hi = 21, .tolerance = 1e-5};
+  }
 
  protected:
   void prefilter(const RectifiedMap& map) override {

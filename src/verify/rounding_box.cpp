@@ -1,0 +1,93 @@
+#include "verify/rounding_box.h"
+
+#include <algorithm>
+#include <boost/multiprecision/cpp_bin_float.hpp>
+
+#include "moments/canonical.h"
+
+namespace mb {
+
+namespace {
+using HP = boost::multiprecision::cpp_bin_float_50;
+}  // namespace
+
+RoundedMomentBracket six_moment_bracket(std::span<const double> read, double zf,
+                                        std::span<const long double> coefficients,
+                                        long double delta, double violation, double mean,
+                                        double scale) {
+  RoundedMomentBracket out;
+  // The read moments in local coordinates, exactly (to 50 digits): l_k = E[((z - mean) / s)^k].
+  HP m[7] = {1, read[0], read[1], read[2], read[3], read[4], read[5]};
+  HP local[7];
+  const HP c = mean, s = scale;
+  for (int k = 0; k <= 6; ++k) {
+    HP sum = 0, binomial = 1;
+    for (int j = 0; j <= k; ++j) {
+      sum += binomial * pow(-c, k - j) * m[j];
+      binomial = binomial * (k - j) / (j + 1);
+    }
+    local[k] = sum / pow(s, k);
+  }
+  HP lower = 0;
+  for (size_t k = 0; k < coefficients.size() && k <= 6; ++k)
+    lower += HP(coefficients[k]) * local[k];
+  // Without the tail term the bound is phi's alone, which a far tail may lift above the step: a
+  // canonical node at u ~ -107 with weight 8.6e-11 made it 3.8e-6 too high on one real kernel.
+  out.lower = double(lower - HP(delta) * (1 + local[6]) - violation);
+  // The witness: LDL^T of the local Hankel matrix, which must be positive definite.
+  const HP uf = (HP(zf) - c) / s;
+  HP h[4][4], l[4][4] = {}, d[4];
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) h[i][j] = local[i + j];
+  for (int j = 0; j < 4; ++j) {
+    d[j] = h[j][j];
+    for (int k = 0; k < j; ++k) d[j] -= l[j][k] * l[j][k] * d[k];
+    if (!(d[j] > 0)) return out;
+    l[j][j] = 1;
+    for (int i = j + 1; i < 4; ++i) {
+      HP v = h[i][j];
+      for (int k = 0; k < j; ++k) v -= l[i][k] * l[j][k] * d[k];
+      l[i][j] = v / d[j];
+    }
+  }
+  // H q = (1, u_f, u_f^2, u_f^3): the polynomial whose roots are the other nodes.
+  HP q[4] = {1, uf, uf * uf, uf * uf * uf};
+  for (int i = 0; i < 4; ++i)
+    for (int k = 0; k < i; ++k) q[i] -= l[i][k] * q[k];
+  for (int i = 0; i < 4; ++i) q[i] /= d[i];
+  for (int i = 3; i >= 0; --i)
+    for (int k = i + 1; k < 4; ++k) q[i] -= l[k][i] * q[k];
+  double guess[3];
+  if (cubic_roots(double(q[3]), double(q[2]), double(q[1]), double(q[0]), guess) != 3) return out;
+  HP nodes[4] = {uf, guess[0], guess[1], guess[2]};
+  for (int i = 1; i < 4; ++i)
+    for (int step = 0; step < 40; ++step) {
+      const HP& x = nodes[i];
+      const HP f = ((q[3] * x + q[2]) * x + q[1]) * x + q[0];
+      const HP df = (3 * q[3] * x + 2 * q[2]) * x + q[1];
+      if (df == 0) return out;
+      nodes[i] = x - f / df;
+    }
+  HP weights[4];
+  for (int i = 0; i < 4; ++i) {
+    for (int k = 0; k < i; ++k)
+      if (nodes[i] == nodes[k]) return out;
+    weights[i] = node_weight(local, nodes, 4, i);
+    if (weights[i] < 0) return out;
+  }
+  // A witness only if it reproduces all seven moments (to 1e-30 of their size).
+  for (int k = 0; k <= 6; ++k) {
+    HP moment = 0;
+    for (int i = 0; i < 4; ++i) moment += weights[i] * pow(nodes[i], k);
+    if (abs(moment - local[k]) > HP("1e-30") * std::max(HP(1), abs(local[k]))) return out;
+  }
+  HP below = 0;
+  for (int i = 1; i < 4; ++i)
+    if (nodes[i] < uf) below += weights[i];
+  out.inside = true;
+  out.upper = double(below);
+  out.upper_at = double(below + weights[0]);
+  return out;
+}
+
+}  // namespace mb
