@@ -97,7 +97,8 @@ std::unique_ptr<Technique> make(const std::string& name, const P& p) {
 }
 
 std::vector<TechniqueRow> rows() {
-  const VerifyRecipe on_r{.lp_basis = fixed_lp_basis<kPower4>, .lo = -4, .hi = 5, .on_r = true};
+  const VerifyRecipe on_r{
+      .lp_basis = fixed_lp_basis<kPower4>, .lo = -4, .hi = 5, .on_r = true, .hamburger_moments = 4};
   return {
       {.name = "hamburger4",
        .rank = 130,
@@ -150,11 +151,15 @@ std::vector<TechniqueRow> rows() {
        .summary = "six power moments on R, double",
        .storage = "double",
        .bound = "not proven: rounding six moments to double (docs/reference.md §4; measured "
-                "up to 0.23 at alpha 1e-10)",
+                "up to 0.13 at alpha 1e-10, FINDINGS §7d)",
        .options = {&kHamburger6Alpha, &kHamburgerBeta},
        .default_run = true,
        .make = make<PowerSolver::Hamburger6, double_storage, &kHamburger6Alpha>,
-       .verify = VerifyRecipe{.lp_basis = fixed_lp_basis<kPower6>, .lo = -2, .hi = 3, .on_r = true},
+       .verify = VerifyRecipe{.lp_basis = fixed_lp_basis<kPower6>,
+                              .lo = -2,
+                              .hi = 3,
+                              .on_r = true,
+                              .hamburger_moments = 6},
        .verify_place = 6,
        .sweep_references = {
            {.expectation = "six moments: better than every four-function candidate (seed 004)",

@@ -59,6 +59,9 @@ struct VerifyRecipe {
   double lo = 0, hi = 1;
   bool on_r = false;              // Problem 1 on all of R (Hamburger, VSM)
   bool cantelli_support = false;  // VSM: Cantelli's two extremal points join the LP's points
+  // Hamburger's reconstruction from this many power moments on R (4 or 6; 0: none): verify also
+  // judges its upper bound G + w_1 against the LP's, six moments over their rounding box.
+  int hamburger_moments = 0;
   const TechniqueOption* alpha = nullptr;  // storage rows: their moment bias
   // The row's own option that verify sets to its verify.* value `verify_key` (a scale the LP can
   // represent; verify refuses a value given for the row's option itself).

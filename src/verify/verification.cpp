@@ -147,10 +147,9 @@ std::vector<VerifyTarget> verify_targets(const std::vector<std::string>& techniq
     t.on_r = r.on_r;
     t.cantelli_support = r.cantelli_support;
     t.alpha = r.alpha ? params.number(*r.alpha) : 0;
-    t.upper = t.exact && t.on_r &&
-              (t.lp_basis == std::vector<std::string>{"power4"} ||
-               t.lp_basis == std::vector<std::string>{"power6"});
-    t.rounding_box = t.upper && t.lp_basis == std::vector<std::string>{"power6"};
+    t.hamburger_moments = r.hamburger_moments;
+    t.upper = t.exact && t.on_r && t.hamburger_moments > 0;
+    t.rounding_box = t.upper && t.hamburger_moments == 6;
     t.upper_judged = t.upper;
     out.push_back(std::move(t));
   }
@@ -257,7 +256,7 @@ double solve_grid(const VerifyTarget& target, const VerifyInstance& inst,
 // moments' doing and not what this compares. The LP's grid spans the kernel's atoms +- 4 spreads.
 void solve_upper(const VerifyTarget& target, const VerifyInstance& inst, VerifyCase& c,
                  lp::Backend& fast, lp::Backend& glpk) {
-  const int m = target.lp_basis.front() == "power6" ? 6 : 4;
+  const int m = target.hamburger_moments;
   double mean = 0, spread = 0;
   for (size_t a = 0; a < inst.depths.size(); ++a) mean += inst.weights[a] * inst.depths[a];
   for (double z : inst.depths) spread = std::max(spread, std::abs(z - mean));

@@ -49,6 +49,7 @@ struct VerifyTarget {
   // Hamburger's rows (power4, power6 on R): also the upper bound G + w_1 of the canonical
   // distribution through z_f (seed 004's beta = 1) against the LP's maximum (docs/reference.md §2).
   bool upper = false;
+  int hamburger_moments = 0;  // VerifyRecipe::hamburger_moments
   // Whether the upper comparison decides the verdict (both rows).
   bool upper_judged = false;
   // Six power moments on R: judged over their double rounding box (verify/rounding_box.h), i.e.
