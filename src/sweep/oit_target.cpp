@@ -105,22 +105,9 @@ class OitTarget : public SweepTarget {
     ScreenSample sample;
     sample.fraction = fraction;
     for (size_t v = 0; v < frames_.size(); ++v) {
-      const DeepFrame& frame = frames_[v].frame;
-      const uint64_t width = uint64_t(frame.width);
-      const uint64_t blocks = (width + kScreenUnitColumns - 1) / kScreenUnitColumns;
-      auto unit_of = [&](uint32_t p) {
-        return p / width * blocks + p % width / kScreenUnitColumns;
-      };
       sample.weight += plans_[v].weight;
-      ScreenUnits units;
-      units.items = plans_[v].lp_pixels;  // ascending pixel order is unit order
-      units.lps = plans_[v].lp_fragments;
-      for (size_t i = 0; i < units.items.size(); ++i)
-        if (i == 0 || unit_of(units.items[i]) != unit_of(units.items[i - 1])) {
-          units.begin.push_back(i);
-          units.key.push_back(unit_of(units.items[i]));
-        }
-      units.begin.push_back(units.items.size());
+      ScreenUnits units =
+          image_row_units(plans_[v].lp_pixels, frames_[v].frame.width, plans_[v].lp_fragments);
       for (size_t r = 0; r < units.units(); ++r)
         units.pilot.push_back(
             unit_error(v, units.items, units.begin[r], units.begin[r + 1], &pilot[v]));

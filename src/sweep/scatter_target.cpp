@@ -96,20 +96,7 @@ class ScatterTarget : public SweepTarget {
     sample.fraction = fraction;
     sample.weight = weight_;
     for (size_t v = 0; v < frames_.size(); ++v) {
-      const uint64_t width = uint64_t(frames_[v].width);
-      const uint64_t blocks = (width + kScreenUnitColumns - 1) / kScreenUnitColumns;
-      const auto unit_of = [&](uint32_t p) {
-        return p / width * blocks + p % width / kScreenUnitColumns;
-      };
-      ScreenUnits units;
-      units.items = pixels_[v];
-      units.lps = pixels_[v].size();
-      for (size_t i = 0; i < units.items.size(); ++i)
-        if (i == 0 || unit_of(units.items[i]) != unit_of(units.items[i - 1])) {
-          units.begin.push_back(i);
-          units.key.push_back(unit_of(units.items[i]));
-        }
-      units.begin.push_back(units.items.size());
+      ScreenUnits units = image_row_units(pixels_[v], frames_[v].width, pixels_[v].size());
       for (size_t r = 0; r < units.units(); ++r)
         units.pilot.push_back(
             unit_error(v, units.items, units.begin[r], units.begin[r + 1], &pilot[v]));

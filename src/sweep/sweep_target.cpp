@@ -77,4 +77,20 @@ std::unique_ptr<SweepTarget> make_shadow_target(const std::vector<ViewData>& vie
   return std::make_unique<ShadowTarget>(views, settings);
 }
 
+ScreenUnits image_row_units(const std::vector<uint32_t>& pixels, int width, uint64_t lps) {
+  const uint64_t w = uint64_t(width);
+  const uint64_t blocks = (w + kScreenUnitColumns - 1) / kScreenUnitColumns;
+  const auto unit_of = [&](uint32_t p) { return p / w * blocks + p % w / kScreenUnitColumns; };
+  ScreenUnits units;
+  units.items = pixels;  // ascending pixel order is unit order
+  units.lps = lps;
+  for (size_t i = 0; i < units.items.size(); ++i)
+    if (i == 0 || unit_of(units.items[i]) != unit_of(units.items[i - 1])) {
+      units.begin.push_back(i);
+      units.key.push_back(unit_of(units.items[i]));
+    }
+  units.begin.push_back(units.items.size());
+  return units;
+}
+
 }  // namespace mb

@@ -56,6 +56,11 @@ class SweepTarget {
   virtual std::string candidate_darkening_reason() const { return ""; }
 };
 
+// The screening units of one camera image (transparency and scattering): segments of
+// kScreenUnitColumns pixels of one row, over `pixels` (ascending, the image `width` wide); `lps`
+// the stratum's LPs. The pilot errors are left for the caller (ScreenUnits::pilot).
+ScreenUnits image_row_units(const std::vector<uint32_t>& pixels, int width, uint64_t lps);
+
 // Shadows: keeps references to `views` and `settings`.
 std::unique_ptr<SweepTarget> make_shadow_target(const std::vector<ViewData>& views,
                                                 const EvalSettings& settings);
