@@ -59,16 +59,14 @@ int run_report(const CLI::App& command, const CommonOptions& common, const Repor
   write_file_atomically(out / "references.csv", tables.references_csv);
   write_file_atomically(out / "histogram.csv", tables.histogram_csv);
   std::string plot_note;
-  const bool transparency = main_series(series).transparency();
+  const SweepErrorAxis axis = sweep_error_axis(main_series(series));
   if (o.plot)
     plot_note = run_plot_script(
         "plot_histogram.py",
         {"--histogram", (out.staging() / "histogram.csv").string(), "--series",
          (out.staging() / "series.csv").string(), "--references",
          (out.staging() / "references.csv").string(), "--candidates",
-         (out.staging() / "candidates.csv").string(), "--error",
-         transparency ? "mean |T_ref - T|" : "mean |PCF - G|", "--over",
-         transparency ? "transparent fragments, opacity-weighted" : "receiver fragments"},
+         (out.staging() / "candidates.csv").string(), "--error", axis.error, "--over", axis.over},
         (out.staging() / "histogram").string(), "candidate histogram", common.quiet);
   const std::string text = sweep_report_markdown(series, plot_note);
   write_file_atomically(out / "report.md", text);

@@ -422,6 +422,14 @@ std::string summary_lines(const std::vector<SweepSeries>& series) {
 
 }  // namespace
 
+SweepErrorAxis sweep_error_axis(const SweepSeries& series) {
+  const std::string target = series.target();
+  if (target == "transparency")
+    return {"mean |T_ref - T|", "transparent fragments, opacity-weighted"};
+  if (target == "scattering") return {"Σ|I - I_ref| / Σ S_max", "view rays"};
+  return {"mean |PCF - G|", "receiver fragments"};
+}
+
 std::string sweep_report_markdown(const std::vector<SweepSeries>& series,
                                   const std::string& histogram_note) {
   const SweepSeries& main = main_series(series);

@@ -15,6 +15,12 @@ struct SweepReportTables {
 };
 // Candidates' mean errors binned on one common range for all series (the seed paper's Figure 4).
 SweepReportTables sweep_report_tables(const std::vector<SweepSeries>& series, int bins);
+// What the histogram's axis measures, by the series' target: the error and what it is averaged
+// over.
+struct SweepErrorAxis {
+  std::string error, over;
+};
+SweepErrorAxis sweep_error_axis(const SweepSeries& series);
 // The Markdown report; `histogram_note` is what the plot step produced (an image link or why not).
 std::string sweep_report_markdown(const std::vector<SweepSeries>& series,
                                   const std::string& histogram_note);
