@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numeric>
+#include <random>
 
 #include "eval/evaluation.h"
 #include "eval/warm_runs.h"
@@ -215,6 +216,87 @@ TEST(Screening, ScreenedTopKIsTheExactTopK) {
       if (!std::binary_search(tied.begin(), tied.end(), c)) {
         EXPECT_GE(exact[c], kth - 1e-4) << "top " << top << ": left out " << plan.name(plan.ids[c]);
       }
+  }
+}
+
+// Full scale (docs/sweeps.md, "Full scale"): two shards keep the unit errors only of the
+// candidates near their own K-th best; of the others, those the sweep's K-th best proves out of
+// reach are truly out of reach (est_c - est_r' - sigmas SE(c - r') > margin, checked directly),
+// and with the rest screened again the confirmation is the one of every unit error kept. Synthetic
+// candidates on a hand-made sample: 3 views of 60 units, 12 sampled in each, errors that follow
+// the pilot's with a per-candidate level and noise.
+TEST(Screening, ShardsScreenOutOnlyWhatIsProvenOutOfReach) {
+  std::mt19937_64 random(5);
+  std::uniform_real_distribution<double> unit(0, 1);
+  ScreenSample sample;
+  sample.weight = 5000;
+  for (int v = 0; v < 3; ++v) {
+    ScreenStratum s;
+    s.runs = 60;
+    for (size_t i = 0; i <= 12; ++i) s.run_begin.push_back(i);
+    for (int i = 0; i < 12; ++i) s.pilot.push_back(2 + 3 * unit(random));
+    s.pilot_total = 60 * 3.5;
+    sample.strata.push_back(s);
+  }
+  const size_t count = 400;
+  std::vector<std::vector<double>> runs(count);
+  std::vector<double> mean(count);
+  for (size_t c = 0; c < count; ++c) {
+    const double level = 0.2 * unit(random), noise = 0.05 + 0.3 * unit(random);
+    for (const auto& s : sample.strata)
+      for (double p : s.pilot) runs[c].push_back(p * (1 + level) + noise * (unit(random) - 0.5));
+    mean[c] = estimate_mean_error(sample, runs[c]).mean;
+  }
+  ScreenRule rule;
+  rule.top = 10;
+  rule.margin = -1e-5;
+  const auto kth_of = [&](const std::vector<size_t>& ids) {  // ids ascending
+    std::vector<size_t> order = ids;
+    std::stable_sort(order.begin(), order.end(),
+                     [&](size_t a, size_t b) { return mean[a] < mean[b]; });
+    return std::pair(order[size_t(rule.top) - 1],
+                     std::vector<size_t>(order.begin(), order.begin() + rule.top));
+  };
+  std::vector<size_t> all(count);
+  std::iota(all.begin(), all.end(), size_t(0));
+  const std::vector<size_t> expected = candidates_to_confirm(sample, runs, rule);
+  const size_t rp = kth_of(all).first;
+  for (double keep_sigmas : {0.0, 3.0, 6.0}) {
+    std::vector<bool> kept(count, true);
+    size_t proven = 0, again = 0;
+    for (size_t shard = 0; shard < 2; ++shard) {
+      std::vector<size_t> mine;
+      for (size_t c = shard; c < count; c += 2) mine.push_back(c);
+      const auto [r, best] = kth_of(mine);
+      for (size_t c : mine) {
+        const bool is_best = std::find(best.begin(), best.end(), c) != best.end();
+        if (keeps_unit_errors(sample, runs[c], mean[c], runs[r], mean[r], is_best, rule,
+                              keep_sigmas))
+          continue;
+        const double lower = reach_lower_bound(sample, runs[c], mean[c], runs[r], rule);
+        if (!proven_out_of_reach(sample, lower, runs[r], runs[rp], mean[rp], rule)) {
+          ++again;  // the merge screens it again: its unit errors are back
+          continue;
+        }
+        ++proven;
+        kept[c] = false;
+        EXPECT_GT(
+            mean[c] - mean[rp] - rule.sigmas * paired_standard_error(sample, runs[c], runs[rp]),
+            rule.margin)
+            << "candidate " << c << " proven out of reach but in reach";
+      }
+    }
+    EXPECT_GT(proven, count / 2) << "keep_sigmas " << keep_sigmas;
+    if (keep_sigmas == 0) {
+      EXPECT_GT(again, 0u) << "no candidate needed screening again";
+    }
+    std::vector<size_t> ids;
+    std::vector<std::vector<double>> left;
+    for (size_t c = 0; c < count; ++c)
+      if (kept[c]) ids.push_back(c), left.push_back(runs[c]);
+    std::vector<size_t> confirmed;
+    for (size_t i : candidates_to_confirm(sample, left, rule)) confirmed.push_back(ids[i]);
+    EXPECT_EQ(confirmed, expected) << "keep_sigmas " << keep_sigmas;
   }
 }
 

@@ -1,6 +1,8 @@
 // `momentbench sweep`: every candidate basis of a catalog by its mean L1 error against PCF, with
 // the LP (issue 5). Results go to <out>/results.sqlite one committed candidate at a time, so a
 // killed sweep resumes with --resume, losing and repeating nothing.
+#include <cstdio>
+#include <filesystem>
 #include <tuple>
 
 #include "cmd/command_common.h"
@@ -29,17 +31,31 @@ struct SweepOptions {
   const CLI::App* command = nullptr;  // for apply_flags
 };
 
+// `sweep --resume -o DIR` without --config resumes DIR's sweep with DIR's own config.yaml (the
+// one --config would read back); --set may still change what measures nothing, e.g. threads.
+CommonOptions with_own_config(const SweepOptions& options) {
+  CommonOptions common = options.common;
+  const auto own = std::filesystem::path(common.out) / "config.yaml";
+  if (options.resume && common.config_file.empty() && !common.out.empty() &&
+      std::filesystem::is_regular_file(own)) {
+    common.config_file = own.string();
+    if (!common.quiet) std::fprintf(stderr, "sweep: resuming with %s\n", own.c_str());
+  }
+  return common;
+}
+
 int run_sweep_command(const SweepOptions& options) {
+  const CommonOptions common = with_own_config(options);
   auto cmd = CommandRun::begin(
-      sweep_specs(), options.common, *options.command,
+      sweep_specs(), common, *options.command,
       {{"--screen", "screen.fraction", [&] { return YAML::Node(options.screen); }}});
   if (!cmd) return 0;
   SweepJob job;
   std::tie(job.shard, job.shards) = parse_shard(options.shard);
-  job.out = options.common.out;
+  job.out = common.out;
   job.resume = options.resume;
-  job.force = options.common.force;
-  job.quiet = options.common.quiet;
+  job.force = common.force;
+  job.quiet = common.quiet;
   job.arguments = process_arguments();
   // The sweep stages and commits its own output directory (a killed sweep resumes).
   SweepSettings settings = sweep_settings_from(cmd->config(), cmd->threads());
@@ -56,7 +72,8 @@ void register_sweep_command(CLI::App& app, std::function<int()>& action) {
       "sweep", "Evaluate every candidate basis of a catalog with the LP (resumable)");
   add_common_options(*command, options->common);
   command->add_flag("--resume", options->resume,
-                    "Continue the sweep in --out (same config required)");
+                    "Continue the sweep in --out, with its config.yaml unless --config is given "
+                    "(a different config is refused)");
   command->add_option("--shard", options->shard, "Run shard K of N (K/N): every N-th candidate");
   command->add_option("--screen", options->screen,
                       "= --set screen.fraction=F: screen, then confirm the best");

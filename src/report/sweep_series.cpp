@@ -53,7 +53,7 @@ std::vector<SweepSeries> load_sweep_series(const std::vector<std::string>& datab
     // Screened candidates without an exact row join as estimates.
     std::set<uint64_t> exact;
     for (const auto& r : s.ranked) exact.insert(r.id);
-    const std::vector<EstimateRow> estimates = store.estimates(0);  // by id, then stage
+    const std::vector<EstimateRow> estimates = store.estimates(0, false);  // by id, then stage
     for (size_t i = 0; i < estimates.size(); ++i) {
       const EstimateRow& e = estimates[i];
       // The most precise estimate of each: its last stage.

@@ -215,4 +215,25 @@ std::vector<size_t> candidates_to_confirm(const ScreenSample& sample,
   return confirm;
 }
 
+bool keeps_unit_errors(const ScreenSample& sample, const std::vector<double>& c, double mean_c,
+                       const std::vector<double>& r, double mean_r, bool best,
+                       const ScreenRule& rule, double keep_sigmas) {
+  return best || mean_c - mean_r - keep_sigmas * paired_standard_error(sample, c, r) <= rule.margin;
+}
+
+double reach_lower_bound(const ScreenSample& sample, const std::vector<double>& c, double mean_c,
+                         const std::vector<double>& r, const ScreenRule& rule) {
+  return mean_c - rule.sigmas * paired_standard_error(sample, c, r);
+}
+
+bool proven_out_of_reach(const ScreenSample& sample, double reach_lower,
+                         const std::vector<double>& r, const std::vector<double>& rp,
+                         double mean_rp, const ScreenRule& rule) {
+  // The standard errors are sums of a few thousand terms: their rounding is far below 1e-12 of
+  // a mean error (a fraction of at most 1), so a proof closer than that is not taken.
+  constexpr double kRounding = 1e-12;
+  return reach_lower - mean_rp - rule.sigmas * paired_standard_error(sample, r, rp) >
+         rule.margin + kRounding;
+}
+
 }  // namespace mb

@@ -123,4 +123,32 @@ std::vector<size_t> candidates_to_confirm(const ScreenSample& sample,
                                           const std::vector<std::vector<double>>& run_errors,
                                           const ScreenRule& rule);
 
+// Screening at full scale (docs/sweeps.md, "Full scale"). A candidate's unit errors are what the
+// confirmation pairs it by, and they are most of a sweep's database (16 KB a candidate on the
+// default dataset). A shard that has screened its candidates keeps them only for those that may
+// reach the sweep's best; for every other candidate c it keeps
+//   reach_lower(c) = est_c - sigmas * SE(c - r),
+// r its own K-th best estimate. The standard error is a seminorm of the unit errors (the root of a
+// sum of squares of a linear map of them), so SE(c - r') <= SE(c - r) + SE(r - r') for the
+// sweep's K-th best r', and
+//   est_c - est_r' - sigmas * SE(c - r') >= reach_lower(c) - est_r' - sigmas * SE(r - r'):
+// when the right side exceeds the margin, c is out of reach of the whole sweep, proven from r's
+// and r''s unit errors alone (both among their shards' best K, which keep theirs).
+
+// Whether candidate c keeps its unit errors: among the best K (`best`), or within `keep_sigmas`
+// paired standard errors of the K-th best r (by the rule's margin). keep_sigmas >= rule.sigmas
+// keeps every candidate in reach of r; a larger value leaves room for the sweep's r' to differ
+// from the shard's, so that the proof above holds for nearly all the others.
+bool keeps_unit_errors(const ScreenSample& sample, const std::vector<double>& c, double mean_c,
+                       const std::vector<double>& r, double mean_r, bool best,
+                       const ScreenRule& rule, double keep_sigmas);
+// est_c - sigmas * SE(c - r): what a screened-out candidate keeps.
+double reach_lower_bound(const ScreenSample& sample, const std::vector<double>& c, double mean_c,
+                         const std::vector<double>& r, const ScreenRule& rule);
+// Whether a candidate screened out against r (`reach_lower`) is proven out of reach of r' (mean
+// `mean_rp`, unit errors `rp`), by the inequality above with a margin of rounding.
+bool proven_out_of_reach(const ScreenSample& sample, double reach_lower,
+                         const std::vector<double>& r, const std::vector<double>& rp,
+                         double mean_rp, const ScreenRule& rule);
+
 }  // namespace mb

@@ -30,13 +30,14 @@ const char* kSchema =
     "TEXT, seconds REAL);"
     "CREATE TABLE estimates (id INTEGER NOT NULL, stage INTEGER NOT NULL, name TEXT NOT NULL,"
     " mean REAL, se REAL, solved INTEGER, failed INTEGER, run_errors BLOB, seconds REAL,"
-    " PRIMARY KEY (id, stage));";
+    " reach_lower REAL, reach_against INTEGER, PRIMARY KEY (id, stage));";
 
 // Raised whenever the tables change (2: max_dark, darkening_bound, darkening_reason, the reference
 // and per-fragment bias of docs/reference.md §3; 3: estimates, of a screened sweep; 4: an
-// estimate's run_errors are per screening unit of one texel row, screen/screening.h): an older
-// database is refused, not misread.
-constexpr const char* kSchemaVersion = "4";
+// estimate's run_errors are per screening unit of one texel row, screen/screening.h; 5: an
+// estimate screened out by its shard keeps reach_lower and reach_against instead of its run
+// errors): an older database is refused, not misread.
+constexpr const char* kSchemaVersion = "5";
 
 struct Statement {
   sqlite3_stmt* s = nullptr;
@@ -216,7 +217,8 @@ std::set<uint64_t> ResultsStore::estimate_ids(int stage) const {
 }
 
 void ResultsStore::put_estimate(const EstimateRow& row) {
-  Statement st(db_, "INSERT INTO estimates VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)", path_);
+  Statement st(db_, "INSERT OR REPLACE INTO estimates VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+               path_);
   sqlite3_bind_int64(st.s, 1, int64_t(row.id));
   sqlite3_bind_int64(st.s, 2, row.stage);
   sqlite3_bind_text(st.s, 3, row.name.c_str(), -1, SQLITE_TRANSIENT);
@@ -224,17 +226,45 @@ void ResultsStore::put_estimate(const EstimateRow& row) {
   sqlite3_bind_double(st.s, 5, row.se);
   sqlite3_bind_int64(st.s, 6, int64_t(row.solved));
   sqlite3_bind_int64(st.s, 7, int64_t(row.failed));
-  sqlite3_bind_blob(st.s, 8, row.run_errors.data(), int(row.run_errors.size() * sizeof(double)),
-                    SQLITE_TRANSIENT);
+  if (row.screened_out)
+    sqlite3_bind_null(st.s, 8);
+  else
+    sqlite3_bind_blob(st.s, 8, row.run_errors.data(), int(row.run_errors.size() * sizeof(double)),
+                      SQLITE_TRANSIENT);
   sqlite3_bind_double(st.s, 9, row.seconds);
+  if (row.screened_out) {
+    sqlite3_bind_double(st.s, 10, row.reach_lower);
+    sqlite3_bind_int64(st.s, 11, int64_t(row.reach_against));
+  } else {
+    sqlite3_bind_null(st.s, 10);
+    sqlite3_bind_null(st.s, 11);
+  }
   if (sqlite3_step(st.s) != SQLITE_DONE)
     throw InputError(path_ + ": cannot store the estimate of '" + row.name +
                      "': " + sqlite3_errmsg(db_));
 }
 
-std::vector<EstimateRow> ResultsStore::estimates(int stage) const {
+namespace {
+
+// The run_errors blob of column `c` (empty when NULL).
+std::vector<double> blob_doubles(sqlite3_stmt* s, int c, const std::string& path, uint64_t id) {
+  const auto* bytes = static_cast<const char*>(sqlite3_column_blob(s, c));
+  const size_t size = size_t(sqlite3_column_bytes(s, c));
+  if (size % sizeof(double))
+    throw InputError(path + ": the estimate of candidate " + std::to_string(id) +
+                     " has a damaged run_errors blob");
+  std::vector<double> out(size / sizeof(double));
+  if (size) std::memcpy(out.data(), bytes, size);
+  return out;
+}
+
+}  // namespace
+
+std::vector<EstimateRow> ResultsStore::estimates(int stage, bool run_errors) const {
   Statement st(db_,
-               std::string("SELECT * FROM estimates") +
+               std::string("SELECT id, stage, name, mean, se, solved, failed, ") +
+                   (run_errors ? "run_errors" : "NULL") +
+                   ", seconds, reach_lower, reach_against FROM estimates" +
                    (stage ? " WHERE stage = " + std::to_string(stage) : std::string()) +
                    " ORDER BY id, stage",
                path_);
@@ -248,17 +278,47 @@ std::vector<EstimateRow> ResultsStore::estimates(int stage) const {
     r.se = sqlite3_column_double(st.s, 4);
     r.solved = uint64_t(sqlite3_column_int64(st.s, 5));
     r.failed = uint64_t(sqlite3_column_int64(st.s, 6));
-    const auto* bytes = static_cast<const char*>(sqlite3_column_blob(st.s, 7));
-    const size_t size = size_t(sqlite3_column_bytes(st.s, 7));
-    if (size % sizeof(double))
-      throw InputError(path_ + ": the estimate of candidate " + std::to_string(r.id) +
-                       " has a damaged run_errors blob");
-    r.run_errors.resize(size / sizeof(double));
-    if (size) std::memcpy(r.run_errors.data(), bytes, size);
+    r.run_errors = blob_doubles(st.s, 7, path_, r.id);
     r.seconds = sqlite3_column_double(st.s, 8);
+    r.screened_out = sqlite3_column_type(st.s, 10) != SQLITE_NULL;
+    if (r.screened_out) {
+      r.reach_lower = sqlite3_column_double(st.s, 9);
+      r.reach_against = uint64_t(sqlite3_column_int64(st.s, 10));
+    }
     out.push_back(std::move(r));
   }
   return out;
+}
+
+std::vector<double> ResultsStore::run_errors(uint64_t id, int stage) const {
+  Statement st(db_, "SELECT run_errors FROM estimates WHERE id = ? AND stage = ?", path_);
+  sqlite3_bind_int64(st.s, 1, int64_t(id));
+  sqlite3_bind_int64(st.s, 2, stage);
+  if (sqlite3_step(st.s) != SQLITE_ROW)
+    throw InputError(path_ + ": no stage " + std::to_string(stage) + " estimate of candidate " +
+                     std::to_string(id));
+  return blob_doubles(st.s, 0, path_, id);
+}
+
+void ResultsStore::screen_out(int stage, const std::vector<EstimateRow>& rows) {
+  if (rows.empty()) return;
+  batch([&] {
+    Statement st(db_,
+                 "UPDATE estimates SET run_errors = NULL, reach_lower = ?, reach_against = ? "
+                 "WHERE id = ? AND stage = ?",
+                 path_);
+    for (const EstimateRow& r : rows) {
+      sqlite3_reset(st.s);
+      sqlite3_bind_double(st.s, 1, r.reach_lower);
+      sqlite3_bind_int64(st.s, 2, int64_t(r.reach_against));
+      sqlite3_bind_int64(st.s, 3, int64_t(r.id));
+      sqlite3_bind_int64(st.s, 4, stage);
+      if (sqlite3_step(st.s) != SQLITE_DONE)
+        throw InputError(path_ + ": cannot screen out candidate " + std::to_string(r.id) + ": " +
+                         sqlite3_errmsg(db_));
+    }
+  });
+  exec("VACUUM");
 }
 
 std::string results_database_path(const std::string& given) {

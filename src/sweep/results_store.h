@@ -42,6 +42,12 @@ struct EstimateRow {
   uint64_t solved = 0, failed = 0;  // LPs of the sample: optimal; infeasible or unstable
   std::vector<double> run_errors;   // stored as their bytes: the confirmation reads the same bits
   double seconds = 0;
+  // Screened out by its shard (docs/sweeps.md, "Full scale"): its run errors were dropped, and
+  // what proves it out of reach of the sweep's best is kept instead: reach_lower = mean - sigmas
+  // x SE(this - against), `against` its shard's K-th best estimate (screen/screening.h).
+  bool screened_out = false;
+  double reach_lower = 0;
+  uint64_t reach_against = 0;
 };
 
 class ResultsStore {
@@ -61,8 +67,15 @@ class ResultsStore {
   std::vector<ResultRow> references() const;  // by name
   // Screening (sweep --screen): one committed row per screened candidate.
   std::set<uint64_t> estimate_ids(int stage) const;
-  void put_estimate(const EstimateRow& row);
-  std::vector<EstimateRow> estimates(int stage) const;  // by id; stage 0: every stage
+  void put_estimate(const EstimateRow& row);  // replaces the row of its id and stage
+  // By id; stage 0: every stage. Without `run_errors`, the rows' run_errors stay empty: a report
+  // of 66 045 screened candidates reads a few MB, not the unit errors.
+  std::vector<EstimateRow> estimates(int stage, bool run_errors = true) const;
+  // One candidate's run errors at `stage` (empty when screened out).
+  std::vector<double> run_errors(uint64_t id, int stage) const;
+  // Drops the run errors of `rows` (their id, reach_lower and reach_against) at `stage`, in one
+  // transaction, and gives the space back (VACUUM).
+  void screen_out(int stage, const std::vector<EstimateRow>& rows);
   // Runs `puts` (any of the put_ calls) as one transaction: one commit, not one per row (merge's
   // 66 045 rows: one fsync instead of 66 045). Nothing of it is stored if it throws.
   template <class Puts>

@@ -19,6 +19,7 @@
 #include "sweep/results_store.h"
 #include "sweep/run_identity.h"
 #include "sweep/scatter_target.h"
+#include "sweep/screen_reach.h"
 #include "sweep/sweep_directory.h"
 #include "sweep/sweep_plan.h"
 #include "techniques/lp_options.h"
@@ -138,6 +139,16 @@ const std::vector<OptionRecord<ScreenSettings>>& screen_options() {
       {selects_runs({"screen.seed", OptionType::Integer, "1",
                      "Screening: seed of the sampled units.", 0, 1e18}),
        &ScreenSettings::seed},
+      // Changes no number and no choice: a candidate screened out that the merge cannot prove
+      // out of reach is screened again there (screen/screening.h).
+      {measures_nothing(
+           {"screen.keep_sigmas", OptionType::Number, "6",
+            "Screening: once a shard has screened its candidates, it keeps the unit errors only of "
+            "those within this many paired standard errors of its K-th best estimate, and of the "
+            "others what proves them out of reach (docs/sweeps.md, \"Full scale\"); smaller keeps "
+            "a smaller database and may make the merge screen some candidates again.",
+            0, 100}),
+       &ScreenSettings::keep_sigmas},
   };
   return records;
 }
@@ -304,7 +315,9 @@ class SweepRun {
   void screen_stage(int stage, const ScreenSample& sample, const std::vector<uint64_t>& ids);
   EstimateRow estimate(int stage, uint64_t id, const ScreenSample& sample) const;
   std::vector<uint64_t> reaching(int stage, const ScreenSample& sample,
-                                 const std::vector<uint64_t>& ids) const;
+                                 const std::vector<uint64_t>& ids);
+  void screen_out(const ScreenSample& sample);
+  void screen_again_unproven(const ScreenSample& sample);
 
   const SweepSettings& s_;
   const SweepJob& job_;
@@ -418,25 +431,57 @@ void SweepRun::screen_stage(int stage, const ScreenSample& sample,
   });
 }
 
+// Full scale (docs/sweeps.md, "Full scale"): once this database holds its candidates' first
+// estimates, only those that may reach the best K keep their unit errors.
+void SweepRun::screen_out(const ScreenSample& sample) {
+  const auto [out, of] =
+      screen_out_unreachable(store_, sample, s_.screen.rule(), s_.screen.keep_sigmas);
+  if (out > 0)
+    log("sweep: stage 1: %zu of %zu estimates keep no unit errors (beyond %g standard errors of "
+        "the %d-th best)\n",
+        out, of, s_.screen.keep_sigmas, s_.screen.top);
+}
+
+// Candidates screened out by their shard that this sweep's K-th best does not prove out of reach
+// are screened again, keeping their unit errors: the confirmation then pairs every one it needs.
+void SweepRun::screen_again_unproven(const ScreenSample& sample) {
+  for (std::vector<uint64_t> ids;
+       !(ids = unproven_screened_out(store_, sample, s_.screen.rule())).empty();) {
+    log("sweep: stage 1: %zu candidates screened out by their shard are screened again (not "
+        "proven out of reach of the %d-th best)\n",
+        ids.size(), s_.screen.top);
+    for_each_candidate(ids, "screen again", job_.quiet, [&](uint64_t id) {
+      const EstimateRow row = estimate(1, id, sample);
+      store_.put_estimate(row);
+      return row.solved + row.failed;
+    });
+  }
+}
+
 // The candidates of `ids` that reach the best (screen/screening.h), from their estimates at
-// `stage`.
+// `stage`; at stage 1 a candidate screened out by its shard counts as proven out of reach once
+// screen_again_unproven has screened again those it could not prove.
 std::vector<uint64_t> SweepRun::reaching(int stage, const ScreenSample& sample,
-                                         const std::vector<uint64_t>& ids) const {
-  std::map<uint64_t, std::vector<double>> by_id;
-  for (auto& e : store_.estimates(stage)) by_id[e.id] = std::move(e.run_errors);
+                                         const std::vector<uint64_t>& ids) {
+  if (stage == 1) screen_again_unproven(sample);
+  std::map<uint64_t, EstimateRow> by_id;
+  for (auto& e : store_.estimates(stage)) by_id[e.id] = std::move(e);
+  std::vector<uint64_t> kept;
   std::vector<std::vector<double>> run_errors;
   for (uint64_t id : ids) {
-    auto& errors = by_id.at(id);
-    if (errors.size() != sample.sampled_runs())
+    EstimateRow& row = by_id.at(id);
+    if (row.screened_out) continue;
+    if (row.run_errors.size() != sample.sampled_runs())
       throw InputError("candidate " + std::to_string(id) + ": its stage " + std::to_string(stage) +
-                       " estimate has " + std::to_string(errors.size()) +
+                       " estimate has " + std::to_string(row.run_errors.size()) +
                        " unit errors, this sample " + std::to_string(sample.sampled_runs()) +
                        ": the database was screened on other views");
-    run_errors.push_back(std::move(errors));
+    kept.push_back(id);
+    run_errors.push_back(std::move(row.run_errors));
   }
   std::vector<uint64_t> out;
   for (size_t c : candidates_to_confirm(sample, run_errors, s_.screen.rule()))
-    out.push_back(ids[c]);
+    out.push_back(kept[c]);
   log("sweep: stage %d: %zu of %zu candidates in reach of the %d-th best estimate (margin %g, %g "
       "standard errors)\n",
       stage, out.size(), ids.size(), s_.screen.top, s_.screen.margin, s_.screen.sigmas);
@@ -461,6 +506,7 @@ void SweepRun::screen_and_confirm(const std::vector<uint64_t>& mine) {
 
   const ScreenSample first = sample_of(1, pilot_shadow);
   screen_stage(1, first, mine);
+  screen_out(first);
   // The confirmation compares every planned candidate: it waits for all shards.
   if (job_.shards > 1 || store_.estimate_ids(1).size() < plan_.ids.size()) {
     log("sweep: screened %zu of %zu planned candidates; the confirmation runs when all are "

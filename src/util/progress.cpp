@@ -6,8 +6,12 @@
 
 namespace mb {
 
-ProgressBar::ProgressBar(std::string label, uint64_t total, bool quiet)
-    : label_(std::move(label)), total_(total), enabled_(!quiet && isatty(STDERR_FILENO)) {
+ProgressBar::ProgressBar(std::string label, uint64_t total, bool quiet, ProgressLog log)
+    : label_(std::move(label)),
+      total_(total),
+      enabled_(!quiet),
+      terminal_(isatty(STDERR_FILENO)),
+      log_(log) {
   start_ = last_draw_ = std::chrono::steady_clock::now();
 }
 
@@ -31,9 +35,13 @@ void ProgressBar::advance(uint64_t amount) {
   uint64_t done = done_.fetch_add(amount) + amount;
   if (!enabled_) return;
   auto now = std::chrono::steady_clock::now();
-  // Nothing for the first second: short work stays silent.
-  if (now - start_ < std::chrono::seconds(1) || now - last_draw_ < std::chrono::milliseconds(200))
+  if (terminal_) {
+    // Nothing for the first second: short work stays silent.
+    if (now - start_ < std::chrono::seconds(1) || now - last_draw_ < std::chrono::milliseconds(200))
+      return;
+  } else if (now - last_draw_ < (drawn_ ? log_.every : log_.first)) {
     return;
+  }
   std::unique_lock lock(draw_mutex_, std::try_to_lock);
   if (!lock.owns_lock()) return;
   last_draw_ = now;
@@ -49,10 +57,17 @@ void ProgressBar::draw(uint64_t done, bool final) {
   double rate = elapsed > 0 ? done / elapsed : 0;
   std::string eta = final ? "done in " + format_duration(elapsed)
                           : "ETA " + format_duration(rate > 0 ? (total_ - done) / rate : 0);
-  std::fprintf(stderr, "\r%s [%s] %llu/%llu (%.3g/min) %s%s%s   ", label_.c_str(), bar.c_str(),
-               (unsigned long long)done, (unsigned long long)total_, rate * 60, eta.c_str(),
-               note_.empty() ? "" : ", ", note_.c_str());
-  if (final) std::fputc('\n', stderr);
+  if (terminal_) {
+    std::fprintf(stderr, "\r%s [%s] %llu/%llu (%.3g/min) %s%s%s   ", label_.c_str(), bar.c_str(),
+                 (unsigned long long)done, (unsigned long long)total_, rate * 60, eta.c_str(),
+                 note_.empty() ? "" : ", ", note_.c_str());
+    if (final) std::fputc('\n', stderr);
+  } else {  // one line each time, stamped with the elapsed time
+    std::fprintf(stderr, "%s: %llu/%llu after %s (%.3g/min) %s%s%s\n", label_.c_str(),
+                 (unsigned long long)done, (unsigned long long)total_,
+                 format_duration(elapsed).c_str(), rate * 60, eta.c_str(),
+                 note_.empty() ? "" : ", ", note_.c_str());
+  }
   std::fflush(stderr);
   drawn_ = true;
 }

@@ -1,6 +1,8 @@
 #pragma once
 // A progress bar with rate and ETA on stderr. No Debian package offers one (issue 3). Silent when
-// stderr is not a terminal, when quiet, or for work that finishes within a second.
+// quiet, or for work that finishes within a second. When stderr is not a terminal (a Slurm or
+// nohup log) it writes a whole line now and then instead of redrawing: a run of hours shows its
+// progress in the log (docs/sweeps.md, "Full scale").
 #include <atomic>
 #include <chrono>
 #include <cstdint>
@@ -9,9 +11,15 @@
 
 namespace mb {
 
+// When a progress line goes to a log: the first after `first`, then one every `every` (at most 5
+// minutes apart, so a log never goes silent for longer).
+struct ProgressLog {
+  std::chrono::seconds first{60}, every{300};
+};
+
 class ProgressBar {
  public:
-  ProgressBar(std::string label, uint64_t total, bool quiet);
+  ProgressBar(std::string label, uint64_t total, bool quiet, ProgressLog log = {});
   ~ProgressBar();
   // Thread-safe; redraws at most a few times a second.
   void advance(uint64_t amount = 1);
@@ -23,7 +31,8 @@ class ProgressBar {
   void draw(uint64_t done, bool final);
   std::string label_;
   uint64_t total_;
-  bool enabled_;
+  bool enabled_, terminal_;
+  ProgressLog log_;
   std::atomic<uint64_t> done_{0};
   std::chrono::steady_clock::time_point start_, last_draw_;
   std::mutex draw_mutex_;

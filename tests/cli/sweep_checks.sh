@@ -6,7 +6,9 @@
 #   killloop kill -9 at 20 random instants (from the first milliseconds on), then --resume: the
 #            same results every time
 #   screen   --screen (two stages): shards screened, merged and confirmed by --resume give the one
-#            run's rows; a kill mid-screen resumes to the same; the report marks estimates apart
+#            run's rows, also when the shards kept few unit errors (screen.keep_sigmas=0) and
+#            --resume finds the directory's own config; a kill mid-screen resumes to the same; the
+#            report marks estimates apart
 #   series   sweeps of 2 and 4 functions in one report (the seed paper's Figure 3); sweeps measured
 #            against another reference refused; CSV numbers at full precision
 #   transparency  target transparency on tests/data/oit_tiny.yaml: the same rows for 1 and 2
@@ -136,6 +138,21 @@ screen)
   "$mb" sweep -q "${screen[@]}" --resume -o "$work/smerged"
   results "$work/smerged"
   same "$work/screened" "$work/smerged"
+  # Full scale (docs/sweeps.md): a shard keeps unit errors only near its own best. With
+  # screen.keep_sigmas=0 the shards drop most; the merge keeps out those the sweep's best proves out
+  # of reach, screens the others again, and confirms the same rows. `sweep --resume -o DIR`
+  # without --config resumes with DIR's config.yaml.
+  for k in 1 2; do "$mb" sweep -q "${screen[@]}" --set screen.keep_sigmas=0 --shard $k/2 -o "$work/k$k"; done
+  dropped() {
+    /usr/bin/python3 -c "import sqlite3,sys; print(sqlite3.connect(sys.argv[1]).execute('select count(*) from estimates where run_errors is null').fetchone()[0])" "$1/results.sqlite"
+  }
+  [ "$(dropped "$work/k1")" -gt 5 ] || { echo "sweep_checks: shard 1 kept every unit error"; exit 1; }
+  "$mb" merge "$work/k1" "$work/k2" -o "$work/kmerged" >/dev/null
+  "$mb" sweep --resume -o "$work/kmerged" 2>"$work/kerr"
+  grep -q "resuming with $work/kmerged/config.yaml" "$work/kerr"
+  [ "$(dropped "$work/kmerged")" -gt 0 ] || { echo "sweep_checks: the merge proved nothing out of reach"; exit 1; }
+  results "$work/kmerged"
+  same "$work/screened" "$work/kmerged"
   # Killed while screening, resumed: the same rows.
   "$mb" sweep -q "${screen[@]}" --set threads=1 -o "$work/skilled" 2>/dev/null &
   pid=$!

@@ -1,0 +1,27 @@
+#pragma once
+// Screening at full scale (docs/sweeps.md, "Full scale"): which screened candidates of a results
+// database keep their unit errors, and which of those screened out a sweep cannot prove out of
+// reach of its best (screen/screening.h, keeps_unit_errors and proven_out_of_reach).
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "screen/screening.h"
+#include "sweep/results_store.h"
+
+namespace mb {
+
+// Drops the unit errors of every first-stage estimate in `store` that `rule` with `keep_sigmas`
+// does not keep against the database's own K-th best estimate, keeping reach_lower and
+// reach_against instead. Returns (screened out now, estimates).
+std::pair<size_t, size_t> screen_out_unreachable(ResultsStore& store, const ScreenSample& sample,
+                                                 const ScreenRule& rule, double keep_sigmas);
+
+// The first-stage estimates to screen again, ascending: those among the best K that were
+// screened out (the K-th best's unit errors are every proof's); when none is, every screened-out
+// candidate that the K-th best estimate does not prove out of reach. Empty: every screened-out
+// candidate is proven out of reach.
+std::vector<uint64_t> unproven_screened_out(const ResultsStore& store, const ScreenSample& sample,
+                                            const ScreenRule& rule);
+
+}  // namespace mb
