@@ -21,7 +21,7 @@ struct ScreenSettings {
   double refine = 0;    // screen.refine: a second sample's share, 0 = none
   int top = 0;          // screen.top, screen.sigmas, screen.margin: the confirmation rule
   double sigmas = 0, margin = 0;
-  uint64_t seed = 0;  // screen.seed
+  uint64_t seed = 0;       // screen.seed
   double keep_sigmas = 0;  // screen.keep_sigmas: which unit errors a shard keeps
   ScreenRule rule() const { return {top, sigmas, margin}; }
 };
