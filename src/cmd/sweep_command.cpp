@@ -8,6 +8,7 @@
 #include "cmd/command_common.h"
 #include "cmd/commands.h"
 #include "eval/eval_config.h"
+#include "sweep/results_store.h"
 #include "sweep/sweep_plan.h"
 #include "sweep/sweep_run.h"
 #include "util/run_metadata.h"
@@ -32,7 +33,8 @@ struct SweepOptions {
 };
 
 // `sweep --resume -o DIR` without --config resumes DIR's sweep with DIR's own config.yaml (the
-// one --config would read back); --set may still change what measures nothing, e.g. threads.
+// one --config would read back); --set may still change what measures nothing, e.g. threads
+// (docs/sweeps.md, "Full scale").
 CommonOptions with_own_config(const SweepOptions& options) {
   CommonOptions common = options.common;
   const auto own = std::filesystem::path(common.out) / "config.yaml";
@@ -44,6 +46,16 @@ CommonOptions with_own_config(const SweepOptions& options) {
   return common;
 }
 
+// The shard to run: --shard, or on a resume without it the one DIR's database was started as
+// (`sweep --resume -o DIR` continues whatever DIR holds).
+std::string shard_of(const SweepOptions& options) {
+  const auto db = std::filesystem::path(options.common.out) / "results.sqlite";
+  if (options.command->get_option("--shard")->count() > 0 || !options.resume ||
+      !std::filesystem::is_regular_file(db))
+    return options.shard;
+  return ResultsStore::open(db.string()).meta()["shard"];
+}
+
 int run_sweep_command(const SweepOptions& options) {
   const CommonOptions common = with_own_config(options);
   auto cmd = CommandRun::begin(
@@ -51,7 +63,7 @@ int run_sweep_command(const SweepOptions& options) {
       {{"--screen", "screen.fraction", [&] { return YAML::Node(options.screen); }}});
   if (!cmd) return 0;
   SweepJob job;
-  std::tie(job.shard, job.shards) = parse_shard(options.shard);
+  std::tie(job.shard, job.shards) = parse_shard(shard_of(options));
   job.out = common.out;
   job.resume = options.resume;
   job.force = common.force;
@@ -74,7 +86,8 @@ void register_sweep_command(CLI::App& app, std::function<int()>& action) {
   command->add_flag("--resume", options->resume,
                     "Continue the sweep in --out, with its config.yaml unless --config is given "
                     "(a different config is refused)");
-  command->add_option("--shard", options->shard, "Run shard K of N (K/N): every N-th candidate");
+  command->add_option("--shard", options->shard,
+                      "Run shard K of N (K/N): every N-th candidate (--resume: the directory's)");
   command->add_option("--screen", options->screen,
                       "= --set screen.fraction=F: screen, then confirm the best");
   options->command = command;

@@ -141,8 +141,18 @@ screen)
   # Full scale (docs/sweeps.md): a shard keeps unit errors only near its own best. With
   # screen.keep_sigmas=0 the shards drop most; the merge keeps out those the sweep's best proves out
   # of reach, screens the others again, and confirms the same rows. `sweep --resume -o DIR`
-  # without --config resumes with DIR's config.yaml.
-  for k in 1 2; do "$mb" sweep -q "${screen[@]}" --set screen.keep_sigmas=0 --shard $k/2 -o "$work/k$k"; done
+  # without --config nor --shard resumes with DIR's config.yaml and shard (shard 1 killed first).
+  "$mb" sweep -q "${screen[@]}" --set screen.keep_sigmas=0 --set threads=1 --shard 1/2 -o "$work/k1" 2>/dev/null &
+  pid=$!
+  for _ in $(seq 1 600); do
+    n=$(/usr/bin/python3 -c "import sqlite3,sys; print(sqlite3.connect(sys.argv[1]).execute('select count(*) from estimates').fetchone()[0])" "$work/k1/results.sqlite" 2>/dev/null || echo 0)
+    [ "$n" -ge 3 ] && break
+    sleep 0.05
+  done
+  kill -9 $pid
+  wait $pid 2>/dev/null || true
+  "$mb" sweep -q --resume -o "$work/k1"
+  "$mb" sweep -q "${screen[@]}" --set screen.keep_sigmas=0 --shard 2/2 -o "$work/k2"
   dropped() {
     /usr/bin/python3 -c "import sqlite3,sys; print(sqlite3.connect(sys.argv[1]).execute('select count(*) from estimates where run_errors is null').fetchone()[0])" "$1/results.sqlite"
   }
