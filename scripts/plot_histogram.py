@@ -39,8 +39,18 @@ def draw(ax, rows, series, references):
             ax.stairs(counts, edges, color=colour, linewidth=1.2, fill=False, label=label)
             ax.stairs(counts, edges, color=colour, alpha=0.15, fill=True)
         else:
-            ax.bar(lo, counts, width=[h - l for l, h in zip(lo, hi)], align="edge", color="#7f9fbf",
-                   edgecolor="#4f6f8f", linewidth=0.4, label=label)
+            width = [h - l for l, h in zip(lo, hi)]
+            # A screened series: its exact means (dark, at the bottom of each bar) told apart from
+            # its estimates (light, stacked on top).
+            exact = [int(r.get("exact") or 0) for r in mine]
+            estimated = sum(counts) - sum(exact)
+            if estimated:
+                label = f"{s['series']}: {estimated} screened estimates"
+            ax.bar(lo, [c - e for c, e in zip(counts, exact)], bottom=exact, width=width,
+                   align="edge", color="#7f9fbf", edgecolor="#4f6f8f", linewidth=0.4, label=label)
+            if estimated and sum(exact):
+                ax.bar(lo, exact, width=width, align="edge", color="#1f3f5f", edgecolor="#1f3f5f",
+                       linewidth=0.4, label=f"{sum(exact)} exact means")
             colour = "#2f4f6f"
         ax.axvline(100 * float(s["best"]), color=colour, linestyle="-", linewidth=1.2)
         ax.axvline(100 * float(s["median"]), color=colour, linestyle=":", linewidth=1.2)

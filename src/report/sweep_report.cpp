@@ -347,17 +347,23 @@ SweepReportTables sweep_report_tables(const std::vector<SweepSeries>& series, in
     }
   }
   hi = std::max(hi, lo + 1e-12);
-  histogram << "series,error_lo,error_hi,candidates\n";
+  // `exact`: how many of a bin's candidates are exact means, not screened estimates (the plot
+  // draws them apart).
+  histogram << "series,error_lo,error_hi,candidates,exact\n";
   summary << "series,size,database,evaluated,combinations,best,median,worst,best_candidate";
   for (double m : kTieMargins) summary << ",within_" << round_trip(100 * m) << "pct";
   summary << "\n";
   for (const auto& s : series) {
-    std::vector<uint64_t> counts(bins, 0);
-    for (const auto& r : s.ranked)
-      counts[std::min(bins - 1, int((r.mean - lo) / (hi - lo) * bins))]++;
+    std::vector<uint64_t> counts(bins, 0), exact(bins, 0);
+    for (const auto& r : s.ranked) {
+      const int b = std::min(bins - 1, int((r.mean - lo) / (hi - lo) * bins));
+      counts[b]++;
+      exact[b] += r.estimated ? 0 : 1;
+    }
     for (int b = 0; b < bins; ++b)
       histogram << '"' << s.label << "\"," << round_trip(lo + (hi - lo) * b / bins) << ","
-                << round_trip(lo + (hi - lo) * (b + 1) / bins) << "," << counts[b] << "\n";
+                << round_trip(lo + (hi - lo) * (b + 1) / bins) << "," << counts[b] << ","
+                << exact[b] << "\n";
     summary << '"' << s.label << "\"," << s.size << ",\"" << s.database << "\"," << s.ranked.size()
             << "," << planned_total(s) << "," << round_trip(s.best()) << ","
             << round_trip(s.median()) << "," << round_trip(s.ranked.back().mean) << ",\""
