@@ -21,16 +21,17 @@ std::vector<size_t> by_estimate(const std::vector<EstimateRow>& rows) {
 
 }  // namespace
 
-std::pair<size_t, size_t> screen_out_unreachable(ResultsStore& store, const ScreenSample& sample,
-                                                 const ScreenRule& rule, double keep_sigmas) {
-  std::vector<EstimateRow> rows = store.estimates(1, false);
+std::pair<size_t, size_t> screen_out_unreachable(ResultsStore& store, int stage,
+                                                 const ScreenSample& sample, const ScreenRule& rule,
+                                                 double keep_sigmas) {
+  std::vector<EstimateRow> rows = store.estimates(stage, false);
   if (rule.top <= 0 || rows.size() <= size_t(rule.top)) return {0, rows.size()};
   const std::vector<size_t> order = by_estimate(rows);
   const EstimateRow& r = rows[order[size_t(rule.top) - 1]];
   // A K-th best without unit errors (a merged database whose shards disagree on ties): nothing is
   // screened out until it is screened again (unproven_screened_out).
   if (r.screened_out) return {0, rows.size()};
-  const std::vector<double> r_errors = store.run_errors(r.id, 1);
+  const std::vector<double> r_errors = store.run_errors(r.id, stage);
   std::vector<bool> best(rows.size(), false);
   for (int k = 0; k < rule.top; ++k) best[order[size_t(k)]] = true;
   std::vector<EstimateRow> out;
@@ -38,7 +39,7 @@ std::pair<size_t, size_t> screen_out_unreachable(ResultsStore& store, const Scre
     EstimateRow& c = rows[i];
     if (c.screened_out) continue;
     // One candidate's unit errors at a time: a shard's 33 000 of them are 500 MB.
-    const std::vector<double> errors = store.run_errors(c.id, 1);
+    const std::vector<double> errors = store.run_errors(c.id, stage);
     if (keeps_unit_errors(sample, errors, c.mean, r_errors, r.mean, best[i], rule, keep_sigmas))
       continue;
     c.screened_out = true;
@@ -46,13 +47,13 @@ std::pair<size_t, size_t> screen_out_unreachable(ResultsStore& store, const Scre
     c.reach_against = r.id;
     out.push_back(std::move(c));
   }
-  store.screen_out(1, out);
+  store.screen_out(stage, out);
   return {out.size(), rows.size()};
 }
 
-std::vector<uint64_t> unproven_screened_out(const ResultsStore& store, const ScreenSample& sample,
-                                            const ScreenRule& rule) {
-  const std::vector<EstimateRow> rows = store.estimates(1, false);
+std::vector<uint64_t> unproven_screened_out(const ResultsStore& store, int stage,
+                                            const ScreenSample& sample, const ScreenRule& rule) {
+  const std::vector<EstimateRow> rows = store.estimates(stage, false);
   std::vector<uint64_t> out;
   if (rule.top <= 0 || rows.size() <= size_t(rule.top)) {
     for (const auto& c : rows)  // every candidate is confirmed: each needs its unit errors
@@ -67,7 +68,7 @@ std::vector<uint64_t> unproven_screened_out(const ResultsStore& store, const Scr
     return out;
   }
   const EstimateRow& rp = rows[order[size_t(rule.top) - 1]];
-  const std::vector<double> rp_errors = store.run_errors(rp.id, 1);
+  const std::vector<double> rp_errors = store.run_errors(rp.id, stage);
   std::map<uint64_t, std::vector<double>> against;  // each shard's K-th best
   for (size_t k = size_t(rule.top); k < order.size(); ++k) {
     const EstimateRow& c = rows[order[k]];
@@ -76,7 +77,7 @@ std::vector<uint64_t> unproven_screened_out(const ResultsStore& store, const Scr
     if (it == against.end()) {
       std::vector<double> errors;
       try {
-        errors = store.run_errors(c.reach_against, 1);
+        errors = store.run_errors(c.reach_against, stage);
       } catch (const InputError&) {  // not in this database (a partial merge): no proof
       }
       it = against.emplace(c.reach_against, std::move(errors)).first;

@@ -1,6 +1,7 @@
 #pragma once
 // Screening at full scale (docs/sweeps.md, "Full scale"): which screened candidates of a results
-// database keep their unit errors, and which of those screened out a sweep cannot prove out of
+// database keep their unit errors at a stage (the first, in shards; the refining one, in the
+// merged directory), and which of those screened out a sweep cannot prove out of
 // reach of its best (screen/screening.h, keeps_unit_errors and proven_out_of_reach).
 #include <cstdint>
 #include <utility>
@@ -11,17 +12,18 @@
 
 namespace mb {
 
-// Drops the unit errors of every first-stage estimate in `store` that `rule` with `keep_sigmas`
+// Drops the unit errors of every estimate at `stage` in `store` that `rule` with `keep_sigmas`
 // does not keep against the database's own K-th best estimate, keeping reach_lower and
 // reach_against instead. Returns (screened out now, estimates).
-std::pair<size_t, size_t> screen_out_unreachable(ResultsStore& store, const ScreenSample& sample,
-                                                 const ScreenRule& rule, double keep_sigmas);
+std::pair<size_t, size_t> screen_out_unreachable(ResultsStore& store, int stage,
+                                                 const ScreenSample& sample, const ScreenRule& rule,
+                                                 double keep_sigmas);
 
-// The first-stage estimates to screen again, ascending: those among the best K that were
+// The estimates at `stage` to screen again, ascending: those among the best K that were
 // screened out (the K-th best's unit errors are every proof's); when none is, every screened-out
 // candidate that the K-th best estimate does not prove out of reach. Empty: every screened-out
 // candidate is proven out of reach.
-std::vector<uint64_t> unproven_screened_out(const ResultsStore& store, const ScreenSample& sample,
-                                            const ScreenRule& rule);
+std::vector<uint64_t> unproven_screened_out(const ResultsStore& store, int stage,
+                                            const ScreenSample& sample, const ScreenRule& rule);
 
 }  // namespace mb

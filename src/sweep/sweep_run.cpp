@@ -317,8 +317,8 @@ class SweepRun {
   EstimateRow estimate(int stage, uint64_t id, const ScreenSample& sample) const;
   std::vector<uint64_t> reaching(int stage, const ScreenSample& sample,
                                  const std::vector<uint64_t>& ids);
-  void screen_out(const ScreenSample& sample);
-  void screen_again_unproven(const ScreenSample& sample);
+  void screen_out(int stage, const ScreenSample& sample);
+  void screen_again_unproven(int stage, const ScreenSample& sample);
 
   const SweepSettings& s_;
   const SweepJob& job_;
@@ -432,27 +432,27 @@ void SweepRun::screen_stage(int stage, const ScreenSample& sample,
   });
 }
 
-// Full scale (docs/sweeps.md, "Full scale"): once this database holds its candidates' first
-// estimates, only those that may reach the best K keep their unit errors.
-void SweepRun::screen_out(const ScreenSample& sample) {
+// Full scale (docs/sweeps.md, "Full scale"): once this database holds its candidates' estimates at
+// `stage`, only those that may reach the best K keep their unit errors.
+void SweepRun::screen_out(int stage, const ScreenSample& sample) {
   const auto [out, of] =
-      screen_out_unreachable(store_, sample, s_.screen.rule(), s_.screen.keep_sigmas);
+      screen_out_unreachable(store_, stage, sample, s_.screen.rule(), s_.screen.keep_sigmas);
   if (out > 0)
-    log("sweep: stage 1: %zu of %zu estimates keep no unit errors (beyond %g standard errors of "
+    log("sweep: stage %d: %zu of %zu estimates keep no unit errors (beyond %g standard errors of "
         "the %d-th best)\n",
-        out, of, s_.screen.keep_sigmas, s_.screen.top);
+        stage, out, of, s_.screen.keep_sigmas, s_.screen.top);
 }
 
-// Candidates screened out by their shard that this sweep's K-th best does not prove out of reach
-// are screened again, keeping their unit errors: the confirmation then pairs every one it needs.
-void SweepRun::screen_again_unproven(const ScreenSample& sample) {
+// Candidates screened out (by their shard) that this sweep's K-th best does not prove out of
+// reach are screened again, keeping their unit errors: the confirmation pairs every one it needs.
+void SweepRun::screen_again_unproven(int stage, const ScreenSample& sample) {
   for (std::vector<uint64_t> ids;
-       !(ids = unproven_screened_out(store_, sample, s_.screen.rule())).empty();) {
-    log("sweep: stage 1: %zu candidates screened out by their shard are screened again (not "
-        "proven out of reach of the %d-th best)\n",
-        ids.size(), s_.screen.top);
+       !(ids = unproven_screened_out(store_, stage, sample, s_.screen.rule())).empty();) {
+    log("sweep: stage %d: %zu screened-out candidates are screened again (not proven out of "
+        "reach of the %d-th best)\n",
+        stage, ids.size(), s_.screen.top);
     for_each_candidate(ids, "screen again", job_.quiet, [&](uint64_t id) {
-      const EstimateRow row = estimate(1, id, sample);
+      const EstimateRow row = estimate(stage, id, sample);
       store_.put_estimate(row);
       return row.solved + row.failed;
     });
@@ -460,11 +460,11 @@ void SweepRun::screen_again_unproven(const ScreenSample& sample) {
 }
 
 // The candidates of `ids` that reach the best (screen/screening.h), from their estimates at
-// `stage`; at stage 1 a candidate screened out by its shard counts as proven out of reach once
-// screen_again_unproven has screened again those it could not prove.
+// `stage`; a candidate screened out counts as proven out of reach once screen_again_unproven has
+// screened again those it could not prove.
 std::vector<uint64_t> SweepRun::reaching(int stage, const ScreenSample& sample,
                                          const std::vector<uint64_t>& ids) {
-  if (stage == 1) screen_again_unproven(sample);
+  screen_again_unproven(stage, sample);
   std::map<uint64_t, EstimateRow> by_id;
   for (auto& e : store_.estimates(stage)) by_id[e.id] = std::move(e);
   std::vector<uint64_t> kept;
@@ -507,7 +507,7 @@ void SweepRun::screen_and_confirm(const std::vector<uint64_t>& mine) {
 
   const ScreenSample first = sample_of(1, pilot_shadow);
   screen_stage(1, first, mine);
-  screen_out(first);
+  screen_out(1, first);
   // The confirmation compares every planned candidate: it waits for all shards.
   if (job_.shards > 1 || store_.estimate_ids(1).size() < plan_.ids.size()) {
     log("sweep: screened %zu of %zu planned candidates; the confirmation runs when all are "
@@ -521,6 +521,7 @@ void SweepRun::screen_and_confirm(const std::vector<uint64_t>& mine) {
     // and its smaller standard errors leave fewer in reach.
     const ScreenSample refine = sample_of(2, pilot_shadow);
     screen_stage(2, refine, ids);
+    screen_out(2, refine);
     ids = reaching(2, refine, ids);
   }
   evaluate_exactly(not_done(ids, store_.candidate_ids()), "confirm");
