@@ -15,7 +15,8 @@ import matplotlib.ticker  # noqa: E402
 # References drawn as lines; the others stay in the report's table (too many labels overlap).
 SHOWN_REFERENCES = ("vsm", "esm", "hamburger4", "hausdorff4", "hamburger6", "tmsm", "lp:power4",
                     "lp:trig4", "oracle", "wboit", "mboit_power4", "mboit_power6", "mboit_power8",
-                    "mboit_trig2", "mboit_trig3", "mboit_trig4", "lp:power6")
+                    "mboit_trig2", "mboit_trig3", "mboit_trig4", "lp:power6", "pss_msm4", "pss_msm6",
+                    "pss_csm")
 # What a candidate's mean error is of, and over what (--error, --over: a transparency sweep's
 # differ from a shadow sweep's).
 ERROR = {"of": "mean |PCF - G|", "over": "receiver fragments"}
