@@ -32,6 +32,34 @@ same() {
 count() {
   /usr/bin/python3 -c "import sqlite3,sys; print(sqlite3.connect(sys.argv[1]).execute('select count(*) from candidates').fetchone()[0])" "$1/results.sqlite" 2>/dev/null || echo 0
 }
+# A sweep target's common checks: sweep NAME... (COUNT candidates) gives the same rows with 2 and 1
+# threads and after kill -9 mid-way and --resume; screened, its estimates and exact rows apart.
+target_checks() {
+  local name=$1 planned=$2
+  shift 2
+  "$mb" sweep -q "$@" --set threads=2 -o "$work/${name}2"
+  results "$work/${name}2"
+  "$mb" sweep -q "$@" --set threads=1 -o "$work/${name}1"
+  results "$work/${name}1"
+  same "$work/${name}2" "$work/${name}1"
+  "$mb" sweep -q "$@" --set threads=1 -o "$work/${name}k" 2>/dev/null &
+  local pid=$!
+  for _ in $(seq 1 600); do
+    [ "$(count "$work/${name}k")" -ge 2 ] && break
+    sleep 0.02
+  done
+  kill -9 $pid
+  wait $pid 2>/dev/null || true
+  local n
+  n=$(count "$work/${name}k")
+  [ "$n" -lt "$planned" ] || { echo "sweep_checks: the kill did not land mid-way ($n)"; exit 1; }
+  "$mb" sweep -q "$@" --resume -o "$work/${name}k"
+  results "$work/${name}k"
+  same "$work/${name}2" "$work/${name}k"
+  "$mb" sweep -q "$@" --screen 0.3 --set screen.top=2 -o "$work/${name}s"
+  results "$work/${name}s"
+  grep -q "(estimate) |" "$work/${name}s.report/report.md"
+}
 # The run the threads, resume, shards and series checks compare with (killloop, screen and
 # transparency sweep their own configs).
 if [ "$check" = threads ] || [ "$check" = resume ] || [ "$check" = shards ] || [ "$check" = series ]; then
@@ -210,29 +238,7 @@ PY
   ;;
 transparency)
   oit=(--set target=transparency --set dataset="$tiny_oit" --set lp.grid=64 --set sample=10 --set sample_seed=3 --set "oit_references=[exact, wboit, mboit_power4]")
-  "$mb" sweep -q "${oit[@]}" --set threads=2 -o "$work/oit2"
-  results "$work/oit2"
-  "$mb" sweep -q "${oit[@]}" --set threads=1 -o "$work/oit1"
-  results "$work/oit1"
-  same "$work/oit2" "$work/oit1"
-  # Killed mid-way, resumed: the same rows.
-  "$mb" sweep -q "${oit[@]}" --set threads=1 -o "$work/oitk" 2>/dev/null &
-  pid=$!
-  for _ in $(seq 1 600); do
-    [ "$(count "$work/oitk")" -ge 2 ] && break
-    sleep 0.02
-  done
-  kill -9 $pid
-  wait $pid 2>/dev/null || true
-  n=$(count "$work/oitk")
-  [ "$n" -lt 10 ] || { echo "sweep_checks: the kill did not land mid-way ($n)"; exit 1; }
-  "$mb" sweep -q "${oit[@]}" --resume -o "$work/oitk"
-  results "$work/oitk"
-  same "$work/oit2" "$work/oitk"
-  # Screened: estimates and exact rows apart.
-  "$mb" sweep -q "${oit[@]}" --screen 0.3 --set screen.top=2 -o "$work/oits"
-  results "$work/oits"
-  grep -q "(estimate) |" "$work/oits.report/report.md"
+  target_checks oit 10 "${oit[@]}"
   # MBOIT's basis marked; its sharp bound as `oit` measures lp:power4 (one LP per fragment there
   # too; single-fragment pixels, exact in both, are solved by oit and skipped by the sweep).
   "$mb" sweep -q --set target=transparency --set dataset="$tiny_oit" --set lp.grid=64 --set "oit_references=[mboit_power4]" \
@@ -251,29 +257,7 @@ PY
   ;;
 scattering)
   sc=(--set target=scattering --set dataset=scattering_tiny --set combination_size=2 --set sample=8 --set sample_seed=3 --set "scatter_references=[pss_msm4]")
-  "$mb" sweep -q "${sc[@]}" --set threads=2 -o "$work/sc2"
-  results "$work/sc2"
-  "$mb" sweep -q "${sc[@]}" --set threads=1 -o "$work/sc1"
-  results "$work/sc1"
-  same "$work/sc2" "$work/sc1"
-  # Killed mid-way, resumed: the same rows.
-  "$mb" sweep -q "${sc[@]}" --set threads=1 -o "$work/sck" 2>/dev/null &
-  pid=$!
-  for _ in $(seq 1 600); do
-    [ "$(count "$work/sck")" -ge 2 ] && break
-    sleep 0.02
-  done
-  kill -9 $pid
-  wait $pid 2>/dev/null || true
-  n=$(count "$work/sck")
-  [ "$n" -lt 8 ] || { echo "sweep_checks: the kill did not land mid-way ($n)"; exit 1; }
-  "$mb" sweep -q "${sc[@]}" --resume -o "$work/sck"
-  results "$work/sck"
-  same "$work/sc2" "$work/sck"
-  # Screened: estimates and exact rows apart.
-  "$mb" sweep -q "${sc[@]}" --screen 0.3 --set screen.top=2 -o "$work/scs"
-  results "$work/scs"
-  grep -q "(estimate) |" "$work/scs.report/report.md"
+  target_checks sc 8 "${sc[@]}"
   # The power moments' candidate as `scatter` measures pss_lp:power4 at beta 0 against pss_exact.
   "$mb" sweep -q --set target=scattering --set dataset=scattering_tiny --set "scatter_references=[]" \
       --set "candidates=[z; z^2; z^3; z^4, z; exp(z); exp(-z); log(1+z)]" -o "$work/scm"
