@@ -6,11 +6,12 @@
 # where its database stops; <dataset>-4-confirm merges the four shards first, then confirms the
 # best with the merged directory's own config), its stderr into RUNROOT/NAME.log, and when it finishes appends a line
 # to RUNROOT/runs.tsv: name, command, start and end (UTC), wall seconds, peak resident KB, database
-# bytes, exit status. Extra arguments (e.g. --set threads=1) go to the sweep.
+# bytes, exit status. Extra arguments (e.g. --set threads=1) go to the sweep. MOMENTBENCH_REPO
+# names the checkout whose configs/ it reads (default: this script's).
 set -euo pipefail
 mb=$1 root=$2 name=$3
 shift 3
-repo=$(cd "$(dirname "$0")/.." && pwd)
+repo=${MOMENTBENCH_REPO:-$(cd "$(dirname "$0")/.." && pwd)}
 cfg=$repo/configs/sweeps
 case $name in
   default-2-exact) args=(--config "$cfg/full.yaml" --set combination_size=2) ;;
