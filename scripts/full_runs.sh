@@ -40,7 +40,7 @@ case $name in
   default-4-confirm | translucent-4-confirm | transparency-4-confirm)
     shards=("$root/${name%-confirm}-screened-"[1-4]of4)
     if [ ! -e "$root/$name/results.sqlite" ]; then
-      "$mb" merge "${shards[@]}" -o "$root/$name" >>"$root/$name.log"
+      "$mb" merge "${shards[@]}" -o "$root/$name" >>"$root/$name.log" 2>&1
     fi
     args=() ;;
   *) echo "full_runs.sh: unknown run '$name'" >&2; exit 2 ;;
@@ -56,7 +56,8 @@ status=$?
 set -e
 t1=$(date +%s)
 bytes=$(stat -c %s "$out/results.sqlite" 2>/dev/null || echo 0)
-printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$name" "${command[*]#"$mb "}" "$start" \
+shown="${command[*]}"
+printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$name" "momentbench ${shown#"$mb "}" "$start" \
   "$(date -u +%FT%TZ)" "$((t1 - t0))" "$(tail -1 "$root/$name.rss")" "$bytes" "$status" \
   >>"$root/runs.tsv"
 exit $status

@@ -56,6 +56,18 @@ TEST(Progress, ALogGetsNothingBeforeTheFirstInterval) {
   EXPECT_EQ(log, "");
 }
 
+// A log never goes silent for 5 minutes while work advances (issue 60), and `every` is obeyed.
+TEST(Progress, ALogLineComesWithinFiveMinutes) {
+  EXPECT_LE(ProgressLog{}.every + std::chrono::seconds(60), std::chrono::minutes(5));
+  EXPECT_LE(ProgressLog{}.first, ProgressLog{}.every);
+  const std::string log = stderr_of([] {
+    ProgressBar bar("screen", 3, false, {std::chrono::seconds(0), std::chrono::hours(1)});
+    for (int i = 0; i < 3; ++i) bar.advance();
+  });
+  EXPECT_NE(log.find("screen: 1/3 after "), std::string::npos) << log;
+  EXPECT_EQ(std::count(log.begin(), log.end(), '\n'), 2) << log;  // the first line and the end
+}
+
 TEST(Progress, QuietWritesNothing) {
   const std::string log = stderr_of([] {
     ProgressBar bar("screen", 3, true, {std::chrono::seconds(0), std::chrono::seconds(0)});

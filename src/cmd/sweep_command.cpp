@@ -11,6 +11,7 @@
 #include "sweep/results_store.h"
 #include "sweep/sweep_plan.h"
 #include "sweep/sweep_run.h"
+#include "util/error.h"
 #include "util/run_metadata.h"
 
 namespace mb {
@@ -37,12 +38,17 @@ struct SweepOptions {
 // (docs/sweeps.md, "Full scale").
 CommonOptions with_own_config(const SweepOptions& options) {
   CommonOptions common = options.common;
+  if (!options.resume || !common.config_file.empty() || common.out.empty()) return common;
   const auto own = std::filesystem::path(common.out) / "config.yaml";
-  if (options.resume && common.config_file.empty() && !common.out.empty() &&
-      std::filesystem::is_regular_file(own)) {
-    common.config_file = own.string();
-    if (!common.quiet) std::fprintf(stderr, "sweep: resuming with %s\n", own.c_str());
+  if (!std::filesystem::is_regular_file(own)) {
+    if (!common.sets.empty()) return common;  // a sweep of the defaults and --set, new or resumed
+    // Nothing to resume and nothing asked for: a mistyped directory would start a default sweep.
+    throw InputError(own.string() +
+                     ": not found; `sweep --resume -o DIR` without --config resumes the sweep "
+                     "DIR holds with its config.yaml (give --config or --set to start one there)");
   }
+  common.config_file = own.string();
+  if (!common.quiet) std::fprintf(stderr, "sweep: resuming with %s\n", own.c_str());
   return common;
 }
 

@@ -133,7 +133,8 @@ std::vector<size_t> candidates_to_confirm(const ScreenSample& sample,
 // sweep's K-th best r', and
 //   est_c - est_r' - sigmas * SE(c - r') >= reach_lower(c) - est_r' - sigmas * SE(r - r'):
 // when the right side exceeds the margin, c is out of reach of the whole sweep, proven from r's
-// and r''s unit errors alone (both among their shards' best K, which keep theirs).
+// and r''s unit errors alone (r is its shard's K-th best and r' the sweep's, and no K-th best
+// that a screened-out candidate names ever drops its own; sweep/screen_reach.h).
 
 // Whether candidate c keeps its unit errors: among the best K (`best`), or within `keep_sigmas`
 // paired standard errors of the K-th best r (by the rule's margin). keep_sigmas >= rule.sigmas

@@ -301,24 +301,31 @@ std::vector<double> ResultsStore::run_errors(uint64_t id, int stage) const {
 }
 
 void ResultsStore::screen_out(int stage, const std::vector<EstimateRow>& rows) {
-  if (rows.empty()) return;
-  batch([&] {
-    Statement st(db_,
-                 "UPDATE estimates SET run_errors = NULL, reach_lower = ?, reach_against = ? "
-                 "WHERE id = ? AND stage = ?",
-                 path_);
-    for (const EstimateRow& r : rows) {
-      sqlite3_reset(st.s);
-      sqlite3_bind_double(st.s, 1, r.reach_lower);
-      sqlite3_bind_int64(st.s, 2, int64_t(r.reach_against));
-      sqlite3_bind_int64(st.s, 3, int64_t(r.id));
-      sqlite3_bind_int64(st.s, 4, stage);
-      if (sqlite3_step(st.s) != SQLITE_DONE)
-        throw InputError(path_ + ": cannot screen out candidate " + std::to_string(r.id) + ": " +
-                         sqlite3_errmsg(db_));
-    }
-  });
-  exec("VACUUM");
+  if (!rows.empty())
+    batch([&] {
+      Statement st(db_,
+                   "UPDATE estimates SET run_errors = NULL, reach_lower = ?, reach_against = ? "
+                   "WHERE id = ? AND stage = ?",
+                   path_);
+      for (const EstimateRow& r : rows) {
+        sqlite3_reset(st.s);
+        sqlite3_bind_double(st.s, 1, r.reach_lower);
+        sqlite3_bind_int64(st.s, 2, int64_t(r.reach_against));
+        sqlite3_bind_int64(st.s, 3, int64_t(r.id));
+        sqlite3_bind_int64(st.s, 4, stage);
+        if (sqlite3_step(st.s) != SQLITE_DONE)
+          throw InputError(path_ + ": cannot screen out candidate " + std::to_string(r.id) + ": " +
+                           sqlite3_errmsg(db_));
+      }
+    });
+  // The dropped unit errors' pages go back to the file system, also when a kill came between the
+  // commit above and the end of an earlier VACUUM (which is atomic).
+  int64_t free = 0;
+  {  // finalized before VACUUM, which refuses to run beside an open statement
+    Statement pages(db_, "PRAGMA freelist_count", path_);
+    if (sqlite3_step(pages.s) == SQLITE_ROW) free = sqlite3_column_int64(pages.s, 0);
+  }
+  if (free > 0) exec("VACUUM");
 }
 
 std::string results_database_path(const std::string& given) {

@@ -74,7 +74,7 @@ class ResultsStore {
   // One candidate's run errors at `stage` (empty when screened out).
   std::vector<double> run_errors(uint64_t id, int stage) const;
   // Drops the run errors of `rows` (their id, reach_lower and reach_against) at `stage`, in one
-  // transaction, and gives the space back (VACUUM).
+  // transaction, and gives any free space back (VACUUM).
   void screen_out(int stage, const std::vector<EstimateRow>& rows);
   // Runs `puts` (any of the put_ calls) as one transaction: one commit, not one per row (merge's
   // 66 045 rows: one fsync instead of 66 045). Nothing of it is stored if it throws.

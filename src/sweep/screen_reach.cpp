@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 #include <numeric>
+#include <set>
 
 #include "util/error.h"
 
@@ -19,12 +20,23 @@ std::vector<size_t> by_estimate(const std::vector<EstimateRow>& rows) {
   return order;
 }
 
+// The estimates at `stage` of `ids` (ascending): the candidates the confirmation compares.
+std::vector<EstimateRow> estimates_of(const ResultsStore& store, int stage,
+                                      const std::vector<uint64_t>& ids) {
+  std::vector<EstimateRow> rows = store.estimates(stage, false);
+  std::erase_if(rows, [&](const EstimateRow& r) {
+    return !std::binary_search(ids.begin(), ids.end(), r.id);
+  });
+  return rows;
+}
+
 }  // namespace
 
 std::pair<size_t, size_t> screen_out_unreachable(ResultsStore& store, int stage,
+                                                 const std::vector<uint64_t>& ids,
                                                  const ScreenSample& sample, const ScreenRule& rule,
                                                  double keep_sigmas) {
-  std::vector<EstimateRow> rows = store.estimates(stage, false);
+  std::vector<EstimateRow> rows = estimates_of(store, stage, ids);
   if (rule.top <= 0 || rows.size() <= size_t(rule.top)) return {0, rows.size()};
   const std::vector<size_t> order = by_estimate(rows);
   const EstimateRow& r = rows[order[size_t(rule.top) - 1]];
@@ -34,13 +46,21 @@ std::pair<size_t, size_t> screen_out_unreachable(ResultsStore& store, int stage,
   const std::vector<double> r_errors = store.run_errors(r.id, stage);
   std::vector<bool> best(rows.size(), false);
   for (int k = 0; k < rule.top; ++k) best[order[size_t(k)]] = true;
+  // Every K-th best that a screened-out candidate was proven against keeps its unit errors: they
+  // are that proof's (a merged database's own K-th best differs from its shards').
+  std::set<uint64_t> anchors;
+  for (const auto& c : rows)
+    if (c.screened_out) anchors.insert(c.reach_against);
   std::vector<EstimateRow> out;
   for (size_t i = 0; i < rows.size(); ++i) {
     EstimateRow& c = rows[i];
-    if (c.screened_out) continue;
+    if (c.screened_out || anchors.count(c.id)) continue;
     // One candidate's unit errors at a time: a shard's 33 000 of them are 500 MB.
     const std::vector<double> errors = store.run_errors(c.id, stage);
-    if (keeps_unit_errors(sample, errors, c.mean, r_errors, r.mean, best[i], rule, keep_sigmas))
+    // Never fewer than the rule's own sigmas: what is dropped is then out of reach of this K-th
+    // best by the confirmation's own test, bit for bit (screen/screening.h).
+    if (keeps_unit_errors(sample, errors, c.mean, r_errors, r.mean, best[i], rule,
+                          std::max(keep_sigmas, rule.sigmas)))
       continue;
     c.screened_out = true;
     c.reach_lower = reach_lower_bound(sample, errors, c.mean, r_errors, rule);
@@ -52,8 +72,9 @@ std::pair<size_t, size_t> screen_out_unreachable(ResultsStore& store, int stage,
 }
 
 std::vector<uint64_t> unproven_screened_out(const ResultsStore& store, int stage,
+                                            const std::vector<uint64_t>& ids,
                                             const ScreenSample& sample, const ScreenRule& rule) {
-  const std::vector<EstimateRow> rows = store.estimates(stage, false);
+  const std::vector<EstimateRow> rows = estimates_of(store, stage, ids);
   std::vector<uint64_t> out;
   if (rule.top <= 0 || rows.size() <= size_t(rule.top)) {
     for (const auto& c : rows)  // every candidate is confirmed: each needs its unit errors

@@ -12,18 +12,21 @@
 
 namespace mb {
 
-// Drops the unit errors of every estimate at `stage` in `store` that `rule` with `keep_sigmas`
-// does not keep against the database's own K-th best estimate, keeping reach_lower and
-// reach_against instead. Returns (screened out now, estimates).
+// Drops the unit errors of every estimate of `ids` (ascending) at `stage` in `store` that `rule`
+// with `keep_sigmas` does not keep against their own K-th best estimate, keeping reach_lower and
+// reach_against instead; never those of a K-th best another estimate was proven against. Returns
+// (screened out now, estimates).
 std::pair<size_t, size_t> screen_out_unreachable(ResultsStore& store, int stage,
+                                                 const std::vector<uint64_t>& ids,
                                                  const ScreenSample& sample, const ScreenRule& rule,
                                                  double keep_sigmas);
 
-// The estimates at `stage` to screen again, ascending: those among the best K that were
-// screened out (the K-th best's unit errors are every proof's); when none is, every screened-out
-// candidate that the K-th best estimate does not prove out of reach. Empty: every screened-out
-// candidate is proven out of reach.
+// The estimates of `ids` (ascending) at `stage` to screen again, ascending: those among the best K
+// that were screened out (the K-th best's unit errors are every proof's); when none is, every
+// screened-out candidate that the K-th best estimate does not prove out of reach. Empty: every
+// screened-out candidate is proven out of reach.
 std::vector<uint64_t> unproven_screened_out(const ResultsStore& store, int stage,
+                                            const std::vector<uint64_t>& ids,
                                             const ScreenSample& sample, const ScreenRule& rule);
 
 }  // namespace mb

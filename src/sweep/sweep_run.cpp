@@ -144,10 +144,11 @@ const std::vector<OptionRecord<ScreenSettings>>& screen_options() {
       // out of reach is screened again there (screen/screening.h).
       {measures_nothing(
            {"screen.keep_sigmas", OptionType::Number, "6",
-            "Screening: once a shard has screened its candidates, it keeps the unit errors only of "
-            "those within this many paired standard errors of its K-th best estimate, and of the "
-            "others what proves them out of reach (docs/sweeps.md, \"Full scale\"); smaller keeps "
-            "a smaller database and may make the merge screen some candidates again.",
+            "Screening: once a shard (or the whole sweep, or its refining stage) has screened its "
+            "candidates, it keeps the unit errors only of those within this many paired standard "
+            "errors of its K-th best estimate (never fewer than screen.sigmas), and of the others "
+            "what proves them out of reach (docs/sweeps.md, \"Full scale\"); smaller keeps a "
+            "smaller database and may make the merge screen some candidates again.",
             0, 100}),
        &ScreenSettings::keep_sigmas},
   };
@@ -317,8 +318,9 @@ class SweepRun {
   EstimateRow estimate(int stage, uint64_t id, const ScreenSample& sample) const;
   std::vector<uint64_t> reaching(int stage, const ScreenSample& sample,
                                  const std::vector<uint64_t>& ids);
-  void screen_out(int stage, const ScreenSample& sample);
-  void screen_again_unproven(int stage, const ScreenSample& sample);
+  void screen_out(int stage, const ScreenSample& sample, const std::vector<uint64_t>& ids);
+  void screen_again_unproven(int stage, const ScreenSample& sample,
+                             const std::vector<uint64_t>& ids);
 
   const SweepSettings& s_;
   const SweepJob& job_;
@@ -434,9 +436,9 @@ void SweepRun::screen_stage(int stage, const ScreenSample& sample,
 
 // Full scale (docs/sweeps.md, "Full scale"): once this database holds its candidates' estimates at
 // `stage`, only those that may reach the best K keep their unit errors.
-void SweepRun::screen_out(int stage, const ScreenSample& sample) {
+void SweepRun::screen_out(int stage, const ScreenSample& sample, const std::vector<uint64_t>& ids) {
   const auto [out, of] =
-      screen_out_unreachable(store_, stage, sample, s_.screen.rule(), s_.screen.keep_sigmas);
+      screen_out_unreachable(store_, stage, ids, sample, s_.screen.rule(), s_.screen.keep_sigmas);
   if (out > 0)
     log("sweep: stage %d: %zu of %zu estimates keep no unit errors (beyond %g standard errors of "
         "the %d-th best)\n",
@@ -445,9 +447,10 @@ void SweepRun::screen_out(int stage, const ScreenSample& sample) {
 
 // Candidates screened out (by their shard) that this sweep's K-th best does not prove out of
 // reach are screened again, keeping their unit errors: the confirmation pairs every one it needs.
-void SweepRun::screen_again_unproven(int stage, const ScreenSample& sample) {
+void SweepRun::screen_again_unproven(int stage, const ScreenSample& sample,
+                                     const std::vector<uint64_t>& of) {
   for (std::vector<uint64_t> ids;
-       !(ids = unproven_screened_out(store_, stage, sample, s_.screen.rule())).empty();) {
+       !(ids = unproven_screened_out(store_, stage, of, sample, s_.screen.rule())).empty();) {
     log("sweep: stage %d: %zu screened-out candidates are screened again (not proven out of "
         "reach of the %d-th best)\n",
         stage, ids.size(), s_.screen.top);
@@ -464,7 +467,8 @@ void SweepRun::screen_again_unproven(int stage, const ScreenSample& sample) {
 // screened again those it could not prove.
 std::vector<uint64_t> SweepRun::reaching(int stage, const ScreenSample& sample,
                                          const std::vector<uint64_t>& ids) {
-  screen_again_unproven(stage, sample);
+  screen_again_unproven(stage, sample, ids);
+  screen_out(stage, sample, ids);  // against this sweep's own K-th best
   std::map<uint64_t, EstimateRow> by_id;
   for (auto& e : store_.estimates(stage)) by_id[e.id] = std::move(e);
   std::vector<uint64_t> kept;
@@ -507,9 +511,9 @@ void SweepRun::screen_and_confirm(const std::vector<uint64_t>& mine) {
 
   const ScreenSample first = sample_of(1, pilot_shadow);
   screen_stage(1, first, mine);
-  screen_out(1, first);
   // The confirmation compares every planned candidate: it waits for all shards.
   if (job_.shards > 1 || store_.estimate_ids(1).size() < plan_.ids.size()) {
+    screen_out(1, first, mine);
     log("sweep: screened %zu of %zu planned candidates; the confirmation runs when all are "
         "screened: merge the shards, then `sweep --resume` in the merged directory\n",
         store_.estimate_ids(1).size(), plan_.ids.size());
@@ -521,7 +525,6 @@ void SweepRun::screen_and_confirm(const std::vector<uint64_t>& mine) {
     // and its smaller standard errors leave fewer in reach.
     const ScreenSample refine = sample_of(2, pilot_shadow);
     screen_stage(2, refine, ids);
-    screen_out(2, refine);
     ids = reaching(2, refine, ids);
   }
   evaluate_exactly(not_done(ids, store_.candidate_ids()), "confirm");

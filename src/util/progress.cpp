@@ -12,7 +12,8 @@ ProgressBar::ProgressBar(std::string label, uint64_t total, bool quiet, Progress
       enabled_(!quiet),
       terminal_(isatty(STDERR_FILENO)),
       log_(log) {
-  start_ = last_draw_ = std::chrono::steady_clock::now();
+  start_ = std::chrono::steady_clock::now();
+  last_draw_ = start_.time_since_epoch().count();
 }
 
 ProgressBar::~ProgressBar() {
@@ -34,17 +35,17 @@ std::string format_duration(double seconds) {
 void ProgressBar::advance(uint64_t amount) {
   uint64_t done = done_.fetch_add(amount) + amount;
   if (!enabled_) return;
-  auto now = std::chrono::steady_clock::now();
-  if (terminal_) {
-    // Nothing for the first second: short work stays silent.
-    if (now - start_ < std::chrono::seconds(1) || now - last_draw_ < std::chrono::milliseconds(200))
-      return;
-  } else if (now - last_draw_ < (drawn_ ? log_.every : log_.first)) {
-    return;
-  }
+  const auto now = std::chrono::steady_clock::now();
+  const auto due = [&] {
+    const std::chrono::steady_clock::duration since(now.time_since_epoch().count() - last_draw_);
+    if (terminal_)  // nothing for the first second: short work stays silent
+      return now - start_ >= std::chrono::seconds(1) && since >= std::chrono::milliseconds(200);
+    return since >= (drawn_ ? log_.every : log_.first);
+  };
+  if (!due()) return;
   std::unique_lock lock(draw_mutex_, std::try_to_lock);
-  if (!lock.owns_lock()) return;
-  last_draw_ = now;
+  if (!lock.owns_lock() || !due()) return;  // another thread may have drawn meanwhile
+  last_draw_ = now.time_since_epoch().count();
   draw(done, false);
 }
 

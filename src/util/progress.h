@@ -11,10 +11,11 @@
 
 namespace mb {
 
-// When a progress line goes to a log: the first after `first`, then one every `every` (at most 5
-// minutes apart, so a log never goes silent for longer).
+// When a progress line goes to a log: the first after `first`, then one every `every`. Lines come
+// as work advances, so `every` stays a minute under the 5 minutes a log may go silent: one more
+// unit of work (a sweep's candidate) fits in between.
 struct ProgressLog {
-  std::chrono::seconds first{60}, every{300};
+  std::chrono::seconds first{60}, every{240};
 };
 
 class ProgressBar {
@@ -34,9 +35,12 @@ class ProgressBar {
   bool enabled_, terminal_;
   ProgressLog log_;
   std::atomic<uint64_t> done_{0};
-  std::chrono::steady_clock::time_point start_, last_draw_;
+  std::chrono::steady_clock::time_point start_;
+  // Read by every thread that advances, written under draw_mutex_.
+  std::atomic<std::chrono::steady_clock::rep> last_draw_{0};
+  std::atomic<bool> drawn_{false};
   std::mutex draw_mutex_;
-  bool drawn_ = false, finished_ = false;
+  bool finished_ = false;
   std::string note_;
 };
 

@@ -190,7 +190,15 @@ screen)
   grep -q "resuming with $work/kmerged/config.yaml" "$work/kerr"
   [ "$(dropped "$work/kmerged")" -gt 0 ] || { echo "sweep_checks: the merge proved nothing out of reach"; exit 1; }
   results "$work/kmerged"
-  same "$work/screened" "$work/kmerged"
+  # Against a sweep that keeps every unit error.
+  "$mb" sweep -q "${screen[@]}" --set screen.keep_sigmas=100 -o "$work/keepall"
+  [ "$(dropped "$work/keepall")" -eq 0 ] || { echo "sweep_checks: keep_sigmas=100 dropped unit errors"; exit 1; }
+  results "$work/keepall"
+  same "$work/keepall" "$work/kmerged"
+  same "$work/keepall" "$work/screened"
+  # Nothing to resume and no --config: refused, naming the file, and nothing created.
+  if "$mb" sweep -q --resume -o "$work/nothere" 2>"$work/err"; then exit 1; fi
+  grep -q "nothere/config.yaml: not found" "$work/err" && [ ! -e "$work/nothere" ]
   # Killed while screening, resumed: the same rows.
   "$mb" sweep -q "${screen[@]}" --set threads=1 -o "$work/skilled" 2>/dev/null &
   pid=$!
