@@ -3,6 +3,7 @@
 // list give the same bits, for any thread count), and that loop against cold per-fragment solves.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <set>
 #include <string>
@@ -53,6 +54,13 @@ TEST(Candidates, PlanSamplesShardsAndRejectsBadCatalogs) {
   SweepPlan power = make_sweep_plan({}, 4, {"z^4; z; z^3; z^2"}, 0, 0);
   ASSERT_EQ(power.ids.size(), 1u);
   EXPECT_EQ(power.name(power.ids[0]), "z; z^2; z^3; z^4");
+  // Explicit candidates join a sample: power moments ranked among sampled candidates.
+  ASSERT_FALSE(std::binary_search(sample.ids.begin(), sample.ids.end(), power.ids[0]));
+  SweepPlan joined = make_sweep_plan({}, 4, {"z; z^2; z^3; z^4"}, 100, 7);
+  EXPECT_EQ(joined.ids.size(), 101u);
+  EXPECT_TRUE(std::binary_search(joined.ids.begin(), joined.ids.end(), power.ids[0]));
+  EXPECT_TRUE(
+      std::includes(joined.ids.begin(), joined.ids.end(), sample.ids.begin(), sample.ids.end()));
   std::string m = testing_support::input_error_of([] {
     make_sweep_plan({"z", "z^2", "z^3"}, 4, {}, 0, 0);
   });

@@ -9,6 +9,7 @@
 
 #include "scene/procedural.h"
 #include "techniques/lp_fragment_solver.h"
+#include "test_support.h"
 
 namespace mb {
 namespace {
@@ -100,6 +101,31 @@ TEST(LpFragmentSolver, BetaBlendsBetweenTheBoundsAndWarmStartsAgree) {
     EXPECT_NEAR(answer(half, factory, f), g + 0.5 * (g_plus - g), 1e-12);
     EXPECT_NEAR(answer(lower, factory, f, &warm), g, 1e-9);
   }
+}
+
+// lp.beta's maximum is solved on the grid only: the continuous interval and the moment box refuse
+// a beta above 0 instead of answering the lower bound as if it were the blend.
+TEST(LpFragmentSolver, BetaNeedsTheGrid) {
+  const Basis basis = Basis::parse({"power4"});
+  TechniqueParams p;
+  p.lp = lp::Discretization{-1, 2, 129, false};
+  p.lp.continuous = true;
+  p.lp_beta = 0.5;
+  const lp::ProblemFactory continuous(basis, p.lp);
+  std::string m = testing_support::input_error_of([&] { LpFragmentSolver{basis, continuous, p}; });
+  EXPECT_NE(m.find("lp.beta: 0.5"), std::string::npos) << m;
+  EXPECT_NE(m.find("lp.discretization = continuous (here: continuous)"), std::string::npos) << m;
+  p.lp.continuous = false;
+  p.lp_moment_box = "double";
+  const lp::ProblemFactory grid(basis, p.lp);
+  m = testing_support::input_error_of([&] { LpFragmentSolver{basis, grid, p}; });
+  EXPECT_NE(m.find("lp.moment_box (here: double)"), std::string::npos) << m;
+  // At beta 0 both answer the sharp lower bound, as before.
+  p.lp_beta = 0;
+  EXPECT_EQ(testing_support::input_error_of([&] { LpFragmentSolver{basis, grid, p}; }), "");
+  p.lp_moment_box = "none";
+  p.lp.continuous = true;
+  EXPECT_EQ(testing_support::input_error_of([&] { LpFragmentSolver{basis, continuous, p}; }), "");
 }
 
 }  // namespace

@@ -43,37 +43,37 @@ SweepPlan make_sweep_plan(const std::vector<std::string>& catalog, int size,
                      " functions cannot be drawn from a catalog of " +
                      std::to_string(plan.catalog.size()));
   const uint64_t total = plan.total();
-  if (!explicit_candidates.empty()) {
-    for (const auto& text : explicit_candidates) {
-      std::vector<int> indices;
-      size_t start = 0;
-      for (size_t i = 0; i <= text.size(); ++i)
-        if (i == text.size() || text[i] == ';') {
-          std::string item = text.substr(start, i - start);
-          start = i + 1;
-          item.erase(0, item.find_first_not_of(' '));
-          item.erase(item.find_last_not_of(' ') + 1);
-          if (item.empty()) continue;
-          std::string canonical = BasisFunction::parse(item).name();
-          auto it = std::find(plan.catalog.begin(), plan.catalog.end(), canonical);
-          if (it == plan.catalog.end())
-            throw InputError("candidates: '" + item + "' in '" + text + "' is not in the catalog");
-          indices.push_back(int(it - plan.catalog.begin()));
-        }
-      std::sort(indices.begin(), indices.end());
-      if (int(indices.size()) != size ||
-          std::adjacent_find(indices.begin(), indices.end()) != indices.end())
-        throw InputError("candidates: '" + text + "' must name " + std::to_string(size) +
-                         " distinct functions");
-      plan.ids.push_back(combination_rank(indices, int(plan.catalog.size())));
-    }
-  } else if (sample > total) {
+  for (const auto& text : explicit_candidates) {
+    std::vector<int> indices;
+    size_t start = 0;
+    for (size_t i = 0; i <= text.size(); ++i)
+      if (i == text.size() || text[i] == ';') {
+        std::string item = text.substr(start, i - start);
+        start = i + 1;
+        item.erase(0, item.find_first_not_of(' '));
+        item.erase(item.find_last_not_of(' ') + 1);
+        if (item.empty()) continue;
+        std::string canonical = BasisFunction::parse(item).name();
+        auto it = std::find(plan.catalog.begin(), plan.catalog.end(), canonical);
+        if (it == plan.catalog.end())
+          throw InputError("candidates: '" + item + "' in '" + text + "' is not in the catalog");
+        indices.push_back(int(it - plan.catalog.begin()));
+      }
+    std::sort(indices.begin(), indices.end());
+    if (int(indices.size()) != size ||
+        std::adjacent_find(indices.begin(), indices.end()) != indices.end())
+      throw InputError("candidates: '" + text + "' must name " + std::to_string(size) +
+                       " distinct functions");
+    plan.ids.push_back(combination_rank(indices, int(plan.catalog.size())));
+  }
+  if (sample > total) {
     throw InputError(
         "sample: " + std::to_string(sample) + " candidates asked for, but there are only " +
         std::to_string(total) + " combinations of " + std::to_string(size) + " from " +
         std::to_string(plan.catalog.size()) + " functions (sample: 0 evaluates them all)");
   } else if (sample > 0 && sample < total) {
-    // Floyd's algorithm: `sample` distinct ranks, deterministic for a seed.
+    // Floyd's algorithm: `sample` distinct ranks, deterministic for a seed. Explicit candidates
+    // join the sample (e.g. the power moments a report places among sampled ones).
     SeededRandom random(seed);
     std::set<uint64_t> chosen;
     for (uint64_t j = total - sample; j < total; ++j) {
@@ -81,8 +81,9 @@ SweepPlan make_sweep_plan(const std::vector<std::string>& catalog, int size,
       if (t > j) t = j;
       if (!chosen.insert(t).second) chosen.insert(j);
     }
-    plan.ids.assign(chosen.begin(), chosen.end());
-  } else {
+    plan.ids.insert(plan.ids.end(), chosen.begin(), chosen.end());
+  } else if (sample == total || explicit_candidates.empty()) {
+    plan.ids.clear();
     for (uint64_t id = 0; id < total; ++id) plan.ids.push_back(id);
   }
   std::sort(plan.ids.begin(), plan.ids.end());

@@ -17,8 +17,8 @@ struct SweepPlan {
 };
 
 // `explicit_candidates`: each "f1; f2; ..." (functions of the catalog). `sample` > 0 draws that
-// many distinct candidates with `seed`. InputError on a catalog smaller than `size`, unknown or
-// repeated functions.
+// many distinct candidates with `seed`, and the explicit ones join them; neither: all. InputError
+// on a catalog smaller than `size`, unknown or repeated functions.
 SweepPlan make_sweep_plan(const std::vector<std::string>& catalog, int size,
                           const std::vector<std::string>& explicit_candidates, uint64_t sample,
                           uint64_t seed);

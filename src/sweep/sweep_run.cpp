@@ -66,10 +66,14 @@ const std::vector<OptionRecord<SweepSettings>>& candidate_options() {
            {"combination_size", OptionType::Integer, "4", "Functions per candidate.", 1, 7}),
        &SweepSettings::combination_size},
       {selects_runs({"candidates", OptionType::StringList, "[]",
-                     "Explicit candidates, each 'f1; f2; ...'; empty = all (or a sample)."}),
+                     "Explicit candidates, each 'f1; f2; ...'; empty = all (or a sample). With "
+                     "`sample`, they join the sample."}),
        &SweepSettings::candidates},
-      {selects_runs({"sample", OptionType::Integer, "0",
-                     "Evaluate a seeded random sample of this many; 0 = all.", 0, 1e12}),
+      {selects_runs(
+           {"sample", OptionType::Integer, "0",
+            "Evaluate a seeded random sample of this many (and the explicit `candidates`); 0 "
+            "= all, or only the explicit ones.",
+            0, 1e12}),
        &SweepSettings::sample},
       {selects_runs({"sample_seed", OptionType::Integer, "1", "Seed of the sample.", 0, 1e18}),
        &SweepSettings::sample_seed},

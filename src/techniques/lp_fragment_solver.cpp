@@ -5,6 +5,7 @@
 #include "continuous/discretized.h"
 #include "continuous/moment_box.h"
 #include "util/error.h"
+#include "util/number_text.h"
 
 namespace mb {
 
@@ -32,14 +33,32 @@ std::optional<LpMomentBox> lp_moment_box(const std::string& setting, const Basis
   return LpMomentBox{storage, storage_tolerance(storage, basis)};
 }
 
+namespace {
+
+// lp.beta blends towards the LP's maximum G+, which is solved on the grid only (docs/reference.md
+// §2, "The maximum"): the exchange method and the moment box answer the minimum alone, and a beta
+// they would ignore must not pass as measured. read_lp_params refuses it in a config; this refuses
+// it from every other caller (pss_lp sets its lp.beta from scatter.beta).
+double checked_beta(const TechniqueParams& p, const lp::ProblemFactory& factory) {
+  if (p.lp_beta > 0 && (factory.discretization().continuous || p.lp_moment_box != "none"))
+    throw InputError("lp.beta: " + round_trip(p.lp_beta) +
+                     " blends towards the LP's maximum, which is solved on the grid only; "
+                     "expected lp.beta = 0 with lp.discretization = continuous (here: " +
+                     (factory.discretization().continuous ? "continuous" : "grid") +
+                     ") or lp.moment_box (here: " + p.lp_moment_box + ")");
+  return p.lp_beta;
+}
+
+}  // namespace
+
 LpFragmentSolver::LpFragmentSolver(const Basis& basis, const lp::ProblemFactory& factory,
                                    const TechniqueParams& p)
     : basis_(basis),
       factory_(factory),
       box_(lp_moment_box(p.lp_moment_box, basis)),
-      beta_(p.lp_beta),
+      beta_(checked_beta(p, factory)),
       backend_(lp::make_backend(p.lp_backend)),
-      upper_backend_(p.lp_beta > 0 ? lp::make_backend(p.lp_backend) : nullptr) {}
+      upper_backend_(beta_ > 0 ? lp::make_backend(p.lp_backend) : nullptr) {}
 
 const lp::Solution& LpFragmentSolver::solve(lp::Problem& problem, std::span<const double> depths,
                                             std::span<const double> weights, double zf,

@@ -41,6 +41,8 @@ std::optional<LpMomentBox> lp_moment_box(const std::string& setting, const Basis
 class LpFragmentSolver {
  public:
   // `basis` and `factory` outlive the solver; `params` gives lp.backend, lp.moment_box, lp.beta.
+  // InputError for lp.beta > 0 with the continuous interval or a moment box: the maximum it
+  // blends towards is solved on the grid only.
   LpFragmentSolver(const Basis& basis, const lp::ProblemFactory& factory,
                    const TechniqueParams& params);
   // Whether solve reads `problem` (the moment box needs only the distribution).

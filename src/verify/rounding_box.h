@@ -18,6 +18,9 @@
 #include <span>
 #include <vector>
 
+#include "lp/solution.h"
+#include "verify/verification.h"
+
 namespace mb {
 
 struct RoundedMomentBracket {
@@ -34,5 +37,12 @@ RoundedMomentBracket six_moment_bracket(std::span<const double> read, double zf,
                                         std::span<const long double> coefficients,
                                         long double delta, double violation, double mean,
                                         double scale);
+
+// VerifyTarget::rounding_box rows: the closed form's G + w_1 on the moments it read (b~) into
+// `c.closed_upper`, and the bracket [upper_floor, lp_upper] of G+ at b~ from the mirrored
+// problem's certificate and witness, with its rounding allowance `c.upper_rounding`. Needs
+// `c.upper_floor` from the continuous LP's witness (solve_continuous); leaves `c` as it is where
+// b~ has no witness or the mirrored LP is not proven.
+void solve_upper_box(const VerifyInstance& inst, VerifyCase& c, lp::Backend& backend);
 
 }  // namespace mb

@@ -24,9 +24,6 @@
 
 namespace mb {
 
-// The largest rounding allowance an instance gets (see solve_continuous).
-constexpr double kMaxRoundingAllowance = 1e-2;
-
 namespace {
 struct Witness {
   std::vector<double> points, weights;
@@ -288,43 +285,6 @@ void solve_upper(const VerifyTarget& target, const VerifyInstance& inst, VerifyC
   lp::Solution s = fast.solve(problem);
   if (s.status != lp::ProblemStatus::Optimal) s = glpk.solve(problem);
   if (s.call == lp::CallStatus::Ok && s.status == lp::ProblemStatus::Optimal) c.lp_upper = 1 - s.G;
-}
-
-// The upper bound of six moments over their rounding box: G+ at the moments the closed form read,
-// b~, is 1 - G of the mirrored problem (z -> -z: the mass behind z_f is the mass in front of -z_f,
-// docs/reference.md §7), so the mirrored instance's continuous LP and witness bracket it as
-// six_moment_bracket brackets G; the non-mirrored witness's mass at or below z_f bounds it from
-// below as well. Compared is the closed form's G + w_1 on b~ itself.
-void solve_upper_box(const VerifyInstance& inst, VerifyCase& c, lp::Backend& backend) {
-  if (!std::isfinite(c.upper_floor)) return;  // the read moments have no witness
-  const double* read = c.moments.data();
-  const MsmBound<double> r = hamburger6(read, inst.zf);
-  if (!std::isfinite(r.lower + r.at_zf)) return;
-  std::vector<double> mirrored(inst.depths.size()), mirrored_read(6);
-  for (size_t a = 0; a < mirrored.size(); ++a) mirrored[a] = -inst.depths[a];
-  for (int k = 0; k < 6; ++k) mirrored_read[k] = k % 2 == 0 ? -read[k] : read[k];
-  constexpr double kInf = std::numeric_limits<double>::infinity();
-  const lp::LocalPowerProblem problem{6, -kInf, kInf, lp::kContinuousSeedGrid};
-  const lp::LocalPowerSolution local =
-      lp::solve_power_locally(problem, mirrored, inst.weights, -inst.zf, backend);
-  if (!local.solution.ok() || !local.solution.proven) return;
-  const RoundedMomentBracket m =
-      six_moment_bracket(mirrored_read, -inst.zf, local.solution.coefficients, local.solution.delta,
-                         local.solution.violation, local.mean, local.scale);
-  if (!m.inside) return;
-  c.closed_upper = r.lower + r.at_zf;
-  c.lp_upper = 1 - m.lower;
-  // The closed form's own rounding moves G+ as the mirrored problem's certificate says (as
-  // solve_continuous's allowance for G).
-  long double rounding = 0;
-  for (size_t j = 1; j < local.coefficients.size(); ++j) {
-    long double scale = 0;
-    for (size_t a = 0; a < mirrored.size(); ++a)
-      scale += inst.weights[a] * std::pow(std::abs((long double)mirrored[a]), (long double)j);
-    rounding += std::abs(local.coefficients[j]) * scale;
-  }
-  c.upper_rounding = std::min(kMaxRoundingAllowance, double(rounding * std::ldexp(1.0L, -49)));
-  c.upper_floor = std::max(c.upper_floor, 1 - m.upper);
 }
 
 // The upper-bound comparison of solve_upper, reduced: within the tolerance and the instance's

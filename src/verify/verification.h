@@ -83,6 +83,8 @@ std::vector<VerifyInstance> dataset_verify_instances(const std::vector<ViewData>
 // How far a closed form may sit above an LP witness before it counts as impossible: the closed
 // forms at alpha = 0 lose digits on near-singular moments. Reports print this constant.
 constexpr double kAboveLpSlack = 1e-6;
+// The largest rounding allowance an instance gets (see solve_continuous in verification.cpp).
+constexpr double kMaxRoundingAllowance = 1e-2;
 // A continuous bracket wider than this leaves an instance unresolved (the exchange stalled).
 constexpr double kUnresolvedBracket = 1e-6;
 
