@@ -57,10 +57,7 @@ std::pair<size_t, size_t> screen_out_unreachable(ResultsStore& store, int stage,
     if (c.screened_out || anchors.count(c.id)) continue;
     // One candidate's unit errors at a time: a shard's 33 000 of them are 500 MB.
     const std::vector<double> errors = store.run_errors(c.id, stage);
-    // Never fewer than the rule's own sigmas: what is dropped is then out of reach of this K-th
-    // best by the confirmation's own test, bit for bit (screen/screening.h).
-    if (keeps_unit_errors(sample, errors, c.mean, r_errors, r.mean, best[i], rule,
-                          std::max(keep_sigmas, rule.sigmas)))
+    if (keeps_unit_errors(sample, errors, c.mean, r_errors, r.mean, best[i], rule, keep_sigmas))
       continue;
     c.screened_out = true;
     c.reach_lower = reach_lower_bound(sample, errors, c.mean, r_errors, rule);

@@ -14,8 +14,10 @@ namespace mb {
 
 // Drops the unit errors of every estimate of `ids` (ascending) at `stage` in `store` that `rule`
 // with `keep_sigmas` does not keep against their own K-th best estimate, keeping reach_lower and
-// reach_against instead; never those of a K-th best another estimate was proven against. Returns
-// (screened out now, estimates).
+// reach_against instead; never those of a K-th best another estimate was proven against. With
+// keep_sigmas >= rule.sigmas what is dropped is out of reach of this K-th best by the
+// confirmation's own test, bit for bit; below it, only what a later proof
+// (unproven_screened_out) screens again. Returns (screened out now, estimates).
 std::pair<size_t, size_t> screen_out_unreachable(ResultsStore& store, int stage,
                                                  const std::vector<uint64_t>& ids,
                                                  const ScreenSample& sample, const ScreenRule& rule,

@@ -145,14 +145,16 @@ const std::vector<OptionRecord<ScreenSettings>>& screen_options() {
                      "Screening: seed of the sampled units.", 0, 1e18}),
        &ScreenSettings::seed},
       // Changes no number and no choice: a candidate screened out that the merge cannot prove
-      // out of reach is screened again there (screen/screening.h).
+      // out of reach is screened again there (screen/screening.h). 0: a shard keeps its best K's
+      // unit errors alone (16 KB a candidate on the default dataset), and the merge screens the
+      // near-best again, far cheaper than refining or confirming them.
       {measures_nothing(
-           {"screen.keep_sigmas", OptionType::Number, "6",
-            "Screening: once a shard (or the whole sweep, or its refining stage) has screened its "
-            "candidates, it keeps the unit errors only of those within this many paired standard "
-            "errors of its K-th best estimate (never fewer than screen.sigmas), and of the others "
-            "what proves them out of reach (docs/sweeps.md, \"Full scale\"); smaller keeps a "
-            "smaller database and may make the merge screen some candidates again.",
+           {"screen.keep_sigmas", OptionType::Number, "0",
+            "Screening: a shard that has screened its candidates keeps the unit errors only of "
+            "its best K and of those within this many paired standard errors of its K-th best "
+            "estimate, and of the others what proves them out of reach; the merge screens again "
+            "any it cannot prove (docs/sweeps.md, \"Full scale\"). Larger keeps a larger "
+            "database and screens fewer again. The confirmation keeps at least screen.sigmas.",
             0, 100}),
        &ScreenSettings::keep_sigmas},
   };
@@ -322,7 +324,8 @@ class SweepRun {
   EstimateRow estimate(int stage, uint64_t id, const ScreenSample& sample) const;
   std::vector<uint64_t> reaching(int stage, const ScreenSample& sample,
                                  const std::vector<uint64_t>& ids);
-  void screen_out(int stage, const ScreenSample& sample, const std::vector<uint64_t>& ids);
+  void screen_out(int stage, const ScreenSample& sample, const std::vector<uint64_t>& ids,
+                  double keep_sigmas);
   void screen_again_unproven(int stage, const ScreenSample& sample,
                              const std::vector<uint64_t>& ids);
 
@@ -439,14 +442,15 @@ void SweepRun::screen_stage(int stage, const ScreenSample& sample,
 }
 
 // Full scale (docs/sweeps.md, "Full scale"): once this database holds its candidates' estimates at
-// `stage`, only those that may reach the best K keep their unit errors.
-void SweepRun::screen_out(int stage, const ScreenSample& sample, const std::vector<uint64_t>& ids) {
+// `stage`, only those within `keep_sigmas` of the best K keep their unit errors.
+void SweepRun::screen_out(int stage, const ScreenSample& sample, const std::vector<uint64_t>& ids,
+                          double keep_sigmas) {
   const auto [out, of] =
-      screen_out_unreachable(store_, stage, ids, sample, s_.screen.rule(), s_.screen.keep_sigmas);
+      screen_out_unreachable(store_, stage, ids, sample, s_.screen.rule(), keep_sigmas);
   if (out > 0)
     log("sweep: stage %d: %zu of %zu estimates keep no unit errors (beyond %g standard errors of "
         "the %d-th best)\n",
-        stage, out, of, s_.screen.keep_sigmas, s_.screen.top);
+        stage, out, of, keep_sigmas, s_.screen.top);
 }
 
 // Candidates screened out (by their shard) that this sweep's K-th best does not prove out of
@@ -472,7 +476,9 @@ void SweepRun::screen_again_unproven(int stage, const ScreenSample& sample,
 std::vector<uint64_t> SweepRun::reaching(int stage, const ScreenSample& sample,
                                          const std::vector<uint64_t>& ids) {
   screen_again_unproven(stage, sample, ids);
-  screen_out(stage, sample, ids);  // against this sweep's own K-th best
+  // Against this sweep's own K-th best, and never closer than the confirmation's own sigmas: what
+  // is dropped now is out of reach by its test (screen/screening.h).
+  screen_out(stage, sample, ids, std::max(s_.screen.keep_sigmas, s_.screen.sigmas));
   std::map<uint64_t, EstimateRow> by_id;
   for (auto& e : store_.estimates(stage)) by_id[e.id] = std::move(e);
   std::vector<uint64_t> kept;
@@ -517,7 +523,9 @@ void SweepRun::screen_and_confirm(const std::vector<uint64_t>& mine) {
   screen_stage(1, first, mine);
   // The confirmation compares every planned candidate: it waits for all shards.
   if (job_.shards > 1 || store_.estimate_ids(1).size() < plan_.ids.size()) {
-    screen_out(1, first, mine);
+    // A shard keeps its best K's unit errors (and those within screen.keep_sigmas): the merge
+    // proves the others out of reach or screens them again.
+    screen_out(1, first, mine, s_.screen.keep_sigmas);
     log("sweep: screened %zu of %zu planned candidates; the confirmation runs when all are "
         "screened: merge the shards, then `sweep --resume` in the merged directory\n",
         store_.estimate_ids(1).size(), plan_.ids.size());
