@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "raster/render_view.h"
+#include "report/scatter_report.h"
 #include "scene/light_view.h"
 #include "test_support.h"
 
@@ -60,6 +61,33 @@ TEST(ScatterRun, SameAnswersForAnyThreadCountAndTheReferenceRowIsExact) {
     shadowed += one[0].reference[p] < 0.99 * one[0].s_max[p];
   }
   EXPECT_GT(shadowed, 0u);
+}
+
+// docs/scattering.md §3.2: a ray whose LP fails is answered lit and counted; the count reaches the
+// frame's result, the rows (per frame and `all`) and report.md, the same for any thread count.
+TEST(ScatterRun, RaysWhoseLpFailedAreCountedInTheRowsAndTheReport) {
+  const ScatterRunOptions run = small_run({"pss_exact", "pss_lp:power6"});
+  const auto one = run_tiny(run, 1), two = run_tiny(run, 2);
+  ASSERT_EQ(one.size(), 1u);
+  ASSERT_EQ(one[0].failures.size(), 2u);
+  EXPECT_EQ(one[0].failures[0], 0u);  // pss_exact solves nothing that can fail
+  const size_t failed = one[0].failures[1];
+  EXPECT_GT(failed, 0u);  // scattering_tiny has rays where power6's LP is not certified
+  EXPECT_LT(failed, one[0].stats[1].pixels / 10);
+  EXPECT_EQ(two[0].failures, one[0].failures);
+  ScatterRows rows(run.techniques);
+  rows.add(one[0]);
+  EXPECT_EQ(rows.overall()[1].failures, failed);
+  EXPECT_EQ(rows.per_frame()[1].failures, failed);
+  ScatterReportContext context;
+  context.reference = "exact";
+  const ScatterReport report = render_scatter_report(context, rows.overall(), rows.per_frame());
+  const std::string row = "| pss_lp:power6 | all | all | all | " + std::to_string(failed) + " | " +
+                          std::to_string(one[0].stats[1].pixels) + " | ";
+  EXPECT_NE(report.markdown.find(row), std::string::npos) << report.markdown;
+  // errors.csv keeps its columns (the count is report.md's).
+  EXPECT_EQ(report.errors_csv.substr(0, report.errors_csv.find('\n')),
+            "technique,scene,view,camera,mean_error,too_bright,too_dark,max_error,time_s");
 }
 
 TEST(ScatterRun, RefusesDatasetsItCannotMeasure) {

@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "moments/hamburger.h"
+#include "report/scatter_verify_report.h"
 #include "techniques/scatter/prefiltered_scatter.h"
 #include "util/error.h"
 #include "verify/scatter_verification.h"
@@ -80,6 +81,22 @@ TEST(VerifyScatter, OnlyTheRowsWithARecipe) {
   EXPECT_EQ(scatter_verify_names(), (std::vector<std::string>{"pss_msm4", "pss_msm6"}));
   EXPECT_THROW(check_scatter_verify_technique("pss_csm"), InputError);
   EXPECT_THROW(check_scatter_verify_technique("pss_msm4_16bit"), InputError);
+}
+
+// The section's text says what passed() does: LP failures are counted and not compared, so a row
+// with some passes while its compared rays lie within the tolerance (docs/scattering.md §6).
+TEST(VerifyScatter, TheReportSaysLpFailuresDoNotFailARow) {
+  ScatterVerifyRow row;
+  row.technique = "pss_msm6", row.lp_technique = "pss_lp:power6", row.kind = "equal";
+  row.rays = 10, row.lp_failures = 3, row.compared = 7, row.beyond = 0, row.tolerance = 1e-5;
+  ASSERT_TRUE(row.passed());
+  const std::string md = scatter_verify_section({row}, "scattering_tiny", kResolution);
+  EXPECT_NE(md.find("| pass |"), std::string::npos) << md;
+  EXPECT_EQ(md.find("LP failure, fails"), std::string::npos) << md;
+  EXPECT_NE(md.find("counted and not compared"), std::string::npos) << md;
+  row.compared = 0, row.lp_failures = 10;
+  EXPECT_FALSE(row.passed());  // no ray compared: the text's other cause of exit 5
+  EXPECT_NE(md.find("no ray compared at all"), std::string::npos) << md;
 }
 
 }  // namespace

@@ -38,6 +38,15 @@ std::string csv_row(const ScatterRow& r) {
   return row.str();
 }
 
+std::string failure_row(const ScatterRow& r) {
+  const size_t rays = r.stats.pixels;
+  std::ostringstream row;
+  row << "| " << r.technique << " | " << r.scene << " | " << r.view << " | " << r.camera << " | "
+      << r.failures << " | " << rays << " | "
+      << format_number(rays > 0 ? double(r.failures) / double(rays) : 0.0, "%.3e") << " |";
+  return row.str();
+}
+
 constexpr const char* kHeader =
     "| technique | scene | view | camera | mean error | too bright | too dark | max error | "
     "time s |\n|---|---|---|---|---|---|---|---|---|\n";
@@ -85,6 +94,13 @@ ScatterReport render_scatter_report(const ScatterReportContext& ctx,
      << table.str() << "\n## Per light view and camera\n\n"
      << kHeader;
   for (const auto& r : per_frame) md << table_row(r) << "\n";
+  md << "\n## Rays a technique could not answer\n\nA ray whose own answer failed (an LP without a "
+        "certified answer, a closed form without a canonical distribution) is answered as lit, "
+        "I = S_max, and counted here; its error is in the tables above (docs/scattering.md "
+        "§3.2). *share*: failed rays / rays.\n\n| technique | scene | view | camera | failed "
+        "rays | rays | share |\n|---|---|---|---|---|---|---|\n";
+  for (const auto* rows : {&overall, &per_frame})
+    for (const auto& r : *rows) md << failure_row(r) << "\n";
   if (!ctx.sheets.empty()) {
     md << "\n## Images\n\nEach sheet shows the reference, then every technique: its final colour "
           "(the surface's radiance attenuated by the medium plus the in-scattering), the "

@@ -21,8 +21,9 @@ std::string scatter_verify_section(const std::vector<ScatterVerifyRow>& rows,
      << dataset << " dataset, rectified maps of " << resolution
      << " texels a row, each ray ending at its pixel's surface or at a seeded point in front of "
         "it. *undefined*: the closed form had no canonical distribution (a singular Hankel "
-        "matrix: a row of one depth) and answered by its fall-back, not compared. A difference "
-        "beyond the tolerance, or an LP failure, fails verify (exit 5).\n\n"
+        "matrix: a row of one depth) and answered by its fall-back, not compared. *LP failures*: "
+        "rays whose LP gave no certified answer, counted and not compared. A compared ray beyond "
+        "the tolerance, or no ray compared at all, fails verify (exit 5).\n\n"
         "| technique | beta | LP | LP interval | check | rays | undefined | largest dF | "
         "tolerance | beyond | LP failures | worst | verdict |\n"
         "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";

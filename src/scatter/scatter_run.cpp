@@ -284,7 +284,9 @@ void run_scatter(const std::vector<ScatterScene>& scenes, const ScatterRunOption
         for (auto& technique : techniques) {
           const auto start = std::chrono::steady_clock::now();
           technique->prepare(setup);
+          const size_t failed_before = technique->failures();
           std::vector<double> inscatter = frame_inscatter(*technique, frame, threads);
+          r.failures.push_back(technique->failures() - failed_before);
           ScatterStats stats;
           for (size_t p = 0; p < inscatter.size(); ++p)
             stats.add(inscatter[p], r.reference[p], r.s_max[p]);
@@ -306,10 +308,11 @@ ScatterRows::ScatterRows(const std::vector<std::string>& techniques) : frames_(t
 
 void ScatterRows::add(const ScatterFrameResult& r) {
   for (size_t k = 0; k < overall_.size(); ++k) {
-    frames_[k].push_back(
-        {overall_[k].technique, r.scene, r.view, r.camera, r.stats[k], r.seconds[k]});
+    frames_[k].push_back({overall_[k].technique, r.scene, r.view, r.camera, r.stats[k],
+                          r.seconds[k], r.failures[k]});
     overall_[k].stats.merge(r.stats[k]);
     overall_[k].seconds += r.seconds[k];
+    overall_[k].failures += r.failures[k];
   }
   epipole_lines_.push_back(r.scene + "/" + r.view + "/" + r.camera + ": " +
                            std::to_string(r.epipole_pixels) + " of " +

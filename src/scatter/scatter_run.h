@@ -76,6 +76,9 @@ struct ScatterFrameResult {
   std::vector<std::vector<double>> inscatter;  // per technique, per pixel
   std::vector<ScatterStats> stats;
   std::vector<double> seconds;
+  // Per technique, the rays its own answer failed on (an LP without a certified answer, a closed
+  // form without a canonical distribution), answered lit and counted (docs/scattering.md §3.2).
+  std::vector<size_t> failures;
   // Pixels whose view ray runs within scatter.epipole_degrees of the light's axis (towards or away
   // from the light), where a rectified row degenerates: answered and measured like the others,
   // and counted here so that the report says how many (docs/scattering.md §3.1).
@@ -89,6 +92,7 @@ struct ScatterRow {
   std::string technique, scene, view, camera;  // "all" in the overall rows
   ScatterStats stats;
   double seconds = 0;
+  size_t failures = 0;  // rays answered lit because the technique's answer failed (of stats.pixels)
 };
 
 // The rows of `scatter`'s tables, gathered one light view and camera at a time (run_scatter hands

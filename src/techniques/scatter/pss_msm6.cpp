@@ -21,7 +21,7 @@ const TechniqueOption kPssMsm6Alpha{
              "Moment bias of pss_msm6 (docs/scattering.md §3.2). 1e-8: six power moments "
              "rounded to double leave a narrow distribution's moment set by more than smaller "
              "biases pull them back (hamburger6.alpha's finding, docs/reference.md §4); seed "
-             "004 §2.5 uses 4e-3 for its 10-bit storage, which the report also shows.",
+             "004 §2.5 uses 4e-3 for its 10-bit storage; results/FINDINGS.md §12 measures both.",
              0, 1},
     .moment_bias = true};
 
