@@ -77,6 +77,17 @@ class PssMsm4 : public PrefilteredScatter {
     double b[4];
     const double star[4] = {0.5, 0.5, 0.5, 0.5};
     sums_->mean(ray, b);
+    // Every texel of the row segment holds the normalised depth 0 or 1 (values are clamped to
+    // [0, 1], 1 where no surface lies over the ray, docs/scattering.md §3.1): equal moments, since
+    // E z = E z^2 holds on [0, 1] only for mass at 0 and 1 alone, and they determine the
+    // distribution: mass 1 - b1 at 0, b1 at 1. Seed 000's b* = (δ0 + δ1) / 2 keeps such moments
+    // on the moment space's boundary for any alpha (a singular Hankel matrix), so their bounds,
+    // which are exact, are answered here (results/FINDINGS.md §12).
+    if (b[0] == b[1] && b[1] == b[2] && b[2] == b[3]) {
+      const double below = ray.depth > 0 ? 1 - b[0] : 0;
+      const double at = ray.depth <= 0 ? 1 - b[0] : ray.depth >= 1 ? b[0] : 0;
+      return below + beta_ * at;
+    }
     bias_moments(b, 4, alpha_, star);
     const MsmBound<double> r = hamburger4(b, ray.depth);
     const double g = r.lower + beta_ * r.at_zf;
