@@ -13,6 +13,7 @@
 #include "eval/evaluation.h"
 #include "eval/warm_runs.h"
 #include "screen/screening.h"
+#include "screen_synthetic_sample.h"
 #include "sweep/candidate_evaluation.h"
 #include "sweep/sweep_plan.h"
 
@@ -228,16 +229,7 @@ TEST(Screening, ScreenedTopKIsTheExactTopK) {
 TEST(Screening, ShardsScreenOutOnlyWhatIsProvenOutOfReach) {
   std::mt19937_64 random(5);
   std::uniform_real_distribution<double> unit(0, 1);
-  ScreenSample sample;
-  sample.weight = 5000;
-  for (int v = 0; v < 3; ++v) {
-    ScreenStratum s;
-    s.runs = 60;
-    for (size_t i = 0; i <= 12; ++i) s.run_begin.push_back(i);
-    for (int i = 0; i < 12; ++i) s.pilot.push_back(2 + 3 * unit(random));
-    s.pilot_total = 60 * 3.5;
-    sample.strata.push_back(s);
-  }
+  const ScreenSample sample = testing_support::synthetic_screen_sample(random);
   const size_t count = 400;
   std::vector<std::vector<double>> runs(count);
   std::vector<double> mean(count);

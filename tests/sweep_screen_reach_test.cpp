@@ -12,26 +12,11 @@
 #include <random>
 #include <set>
 
+#include "screen_synthetic_sample.h"
 #include "sweep/screen_reach.h"
 
 namespace mb {
 namespace {
-
-// 3 views of 60 units, 12 sampled each, a pilot of 2-5 per unit.
-ScreenSample synthetic_sample(std::mt19937_64& random) {
-  std::uniform_real_distribution<double> unit(0, 1);
-  ScreenSample sample;
-  sample.weight = 5000;
-  for (int v = 0; v < 3; ++v) {
-    ScreenStratum s;
-    s.runs = 60;
-    for (size_t i = 0; i <= 12; ++i) s.run_begin.push_back(i);
-    for (int i = 0; i < 12; ++i) s.pilot.push_back(2 + 3 * unit(random));
-    s.pilot_total = 60 * 3.5;
-    sample.strata.push_back(s);
-  }
-  return sample;
-}
 
 TEST(ScreenReach, ShardsDropMergeScreensAgainOnlyWhatItCannotProve) {
   const auto path = std::filesystem::temp_directory_path() /
@@ -40,7 +25,7 @@ TEST(ScreenReach, ShardsDropMergeScreensAgainOnlyWhatItCannotProve) {
   std::filesystem::remove(path);
   std::mt19937_64 random(11);
   std::uniform_real_distribution<double> unit(0, 1);
-  const ScreenSample sample = synthetic_sample(random);
+  const ScreenSample sample = testing_support::synthetic_screen_sample(random);
   const size_t count = 400;
   std::vector<EstimateRow> rows(count);
   std::vector<std::vector<double>> runs(count);

@@ -32,6 +32,17 @@ same() {
 count() {
   /usr/bin/python3 -c "import sqlite3,sys; print(sqlite3.connect(sys.argv[1]).execute('select count(*) from candidates').fetchone()[0])" "$1/results.sqlite" 2>/dev/null || echo 0
 }
+# kill -9 the sweep PID once its directory DIR holds N screened estimates.
+kill_after_estimates() {
+  local pid=$1 dir=$2 n
+  for _ in $(seq 1 600); do
+    n=$(/usr/bin/python3 -c "import sqlite3,sys; print(sqlite3.connect(sys.argv[1]).execute('select count(*) from estimates').fetchone()[0])" "$dir/results.sqlite" 2>/dev/null || echo 0)
+    [ "$n" -ge "$3" ] && break
+    sleep 0.05
+  done
+  kill -9 "$pid"
+  wait "$pid" 2>/dev/null || true
+}
 # A sweep target's common checks: sweep NAME... (COUNT candidates) gives the same rows with 2 and 1
 # threads and after kill -9 mid-way and --resume; screened, its estimates and exact rows apart.
 target_checks() {
@@ -171,14 +182,7 @@ screen)
   # of reach, screens the others again, and confirms the same rows. `sweep --resume -o DIR`
   # without --config nor --shard resumes with DIR's config.yaml and shard (shard 1 killed first).
   "$mb" sweep -q "${screen[@]}" --set screen.keep_sigmas=0 --set threads=1 --shard 1/2 -o "$work/k1" 2>/dev/null &
-  pid=$!
-  for _ in $(seq 1 600); do
-    n=$(/usr/bin/python3 -c "import sqlite3,sys; print(sqlite3.connect(sys.argv[1]).execute('select count(*) from estimates').fetchone()[0])" "$work/k1/results.sqlite" 2>/dev/null || echo 0)
-    [ "$n" -ge 3 ] && break
-    sleep 0.05
-  done
-  kill -9 $pid
-  wait $pid 2>/dev/null || true
+  kill_after_estimates $! "$work/k1" 3
   "$mb" sweep -q --resume -o "$work/k1"
   "$mb" sweep -q "${screen[@]}" --set screen.keep_sigmas=0 --shard 2/2 -o "$work/k2"
   dropped() {
@@ -201,14 +205,7 @@ screen)
   grep -q "nothere/config.yaml: not found" "$work/err" && [ ! -e "$work/nothere" ]
   # Killed while screening, resumed: the same rows.
   "$mb" sweep -q "${screen[@]}" --set threads=1 -o "$work/skilled" 2>/dev/null &
-  pid=$!
-  for _ in $(seq 1 600); do
-    n=$(/usr/bin/python3 -c "import sqlite3,sys; print(sqlite3.connect(sys.argv[1]).execute('select count(*) from estimates').fetchone()[0])" "$work/skilled/results.sqlite" 2>/dev/null || echo 0)
-    [ "$n" -ge 5 ] && break
-    sleep 0.05
-  done
-  kill -9 $pid
-  wait $pid 2>/dev/null || true
+  kill_after_estimates $! "$work/skilled" 5
   "$mb" sweep -q "${screen[@]}" --resume -o "$work/skilled"
   results "$work/skilled"
   same "$work/screened" "$work/skilled"
