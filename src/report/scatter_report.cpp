@@ -108,7 +108,9 @@ ScatterReport render_scatter_report(const ScatterReportContext& ctx,
        << round_trip(ctx.error_scale)
        << "). One exposure per sheet, from the reference. Single images are beside the "
           "sheets, and each light view and camera's rectified map (`*_rectified.png`: normalised "
-          "depth in grey, the light rays' distance r to the right, their azimuth down).\n\n";
+          "depth in grey, the light rays' distance r to the right, their azimuth down). The "
+          "radiances in float: `*_<technique>_inscatter.exr` (I), `*_reference_inscatter.exr` "
+          "(I_ref) and `*_smax.exr` (S_max, the in-scattering of the ray without shadows).\n\n";
     for (const auto& sheet : ctx.sheets) md << "![" << sheet << "](images/" << sheet << ")\n\n";
   }
   csv << "technique,scene,view,camera,mean_error,too_bright,too_dark,max_error,time_s\n";
@@ -172,6 +174,13 @@ std::string write_scatter_images(const ScatterFrameResult& result,
   const std::vector<float> ref_inscatter = inscatter_image(result.reference);
   write_image(base + "_reference_final.png", w, h, 3, ref_final);
   write_image(base + "_reference_inscatter.png", w, h, 3, ref_inscatter);
+  // The radiances themselves, for comparisons the PNGs' exposure and 8 bits would blur (e.g. two
+  // scenes that differ in one object, docs/scattering.md §4).
+  const auto radiance = [](const std::vector<double>& v) {
+    return std::vector<float>(v.begin(), v.end());
+  };
+  write_image(base + "_reference_inscatter.exr", w, h, 1, radiance(result.reference));
+  write_image(base + "_smax.exr", w, h, 1, radiance(result.s_max));
   paste(ref_final, 0, 0), paste(ref_inscatter, 0, 1);
   caption("reference (" + reference + ")", 0);
   if (result.rectified) {
@@ -190,6 +199,7 @@ std::string write_scatter_images(const ScatterFrameResult& result,
     const std::vector<float> err = error_image(result.inscatter[k]);
     write_image(stem + "_final.png", w, h, 3, fin);
     write_image(stem + "_inscatter.png", w, h, 3, ins);
+    write_image(stem + "_inscatter.exr", w, h, 1, radiance(result.inscatter[k]));
     write_with_colour_bar(stem + "_error.png", err, w, h, bar);
     paste(fin, k + 1, 0), paste(ins, k + 1, 1), paste(err, k + 1, 2);
     caption(techniques[k] + "  " + format_number(result.stats[k].mean_error(), "%.2e"), k + 1);
