@@ -120,7 +120,8 @@ const std::vector<OptionRecord<ScatterRunOptions>>& scatter_run_options() {
         "The moment rows' blend G + beta (G+ - G) of the sharp lower and upper bounds on a "
         "ray's shadowed fraction (pss_msm4, pss_msm6, pss_lp; docs/scattering.md §3.2): 0 the "
         "lower bound (never too dark), 1 the upper (never too bright). 0.5: seed 004 §2.4's "
-        "choice, the least worst-case error.",
+        "choice, the least worst-case error; on the scattering dataset also the least mean "
+        "error of every moment row (results/FINDINGS.md §12; 0.25 on the house alone).",
         0, 1},
        &ScatterRunOptions::beta},
       {measures_nothing({"images", OptionType::Boolean, "true",
