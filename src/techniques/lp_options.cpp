@@ -73,7 +73,7 @@ const std::vector<OptionRecord<LpOptions>>& lp_records() {
 
 lp::Discretization lp_discretization_from(const Config& config) {
   LpOptions o{};
-  read_options(config, lp_records(), o);
+  read_declared_options(config, lp_records(), o);
   lp::Discretization d;
   d.grid = o.lp_grid;
   d.lo = o.lp_lo;
@@ -86,7 +86,7 @@ lp::Discretization lp_discretization_from(const Config& config) {
 
 std::string lp_backend_from(const Config& config) {
   LpOptions o{};
-  read_options(config, lp_records(), o);
+  read_declared_options(config, lp_records(), o);
   return o.lp_backend;
 }
 
@@ -96,7 +96,7 @@ std::vector<OptionSpec> lp_option_specs() {
 
 void read_lp_params(const Config& config, TechniqueParams& t) {
   LpOptions o{};
-  read_options(config, lp_records(), o);
+  read_declared_options(config, lp_records(), o);
   t.lp = lp_discretization_from(config);
   t.lp_backend = o.lp_backend;
   t.lp_moment_box = o.lp_moment_box;
