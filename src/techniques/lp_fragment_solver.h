@@ -4,9 +4,9 @@
 // on all of [lp.lo, lp.hi] by the exchange method (lp.discretization continuous), or over the box
 // of moments a storage format's rounding leaves (lp.moment_box); with lp.beta the blend
 // G + beta (G+ - G) towards the LP's maximum (on the grid or the continuous interval, not with
-// a moment box). eval's views and the sweep's shadow target
-// (eval/lp_view_solver.h), lp:<basis> of every family (techniques/lp_technique.h, hence oit and
-// the sweep's transparency target) and msm_soft:lp:<basis> all answer through it.
+// a moment box). eval's views and the sweep's shadow target (eval/lp_view_solver.h), lp:<basis>
+// of every family (techniques/lp_technique.h, hence oit and the sweep's transparency target) and
+// msm_soft:lp:<basis> all answer through it.
 #include <memory>
 #include <optional>
 #include <span>
