@@ -317,6 +317,70 @@ TEST(BasisDerivatives, BoundsHoldOnEveryIntervalAndAreInfiniteAtPoles) {
   EXPECT_EQ(double(BasisFunction::parse("z^3").derivative_bound(1, 0.2L, 0.5L)), 3 * 0.25);
 }
 
+// BasisFunction::reflected, v -> f(-v) (docs/reference.md §2, "The maximum"): its values are f's
+// at -v, its derivatives (-1)^k f^(k)(-v) (central differences of the order before, so a sign
+// error shows), its bounds hold on intervals away from zero where f's own on [a, b] would not,
+// and reflecting twice gives f back.
+TEST(Basis, ReflectedFunctionsAreFAtMinusZWithTheirDerivativesAndBounds) {
+  for (const std::string& name : catalog_names()) {
+    const BasisFunction f = BasisFunction::parse(name);
+    const BasisFunction g = BasisFunction::reflected(f);
+    EXPECT_EQ(g.name(), "reflected(" + f.name() + ")");
+    ASSERT_TRUE(g.has_derivatives()) << name;
+    const std::vector<double> v = {-0.81, -0.37, -0.05};
+    std::vector<double> values(v.size());
+    g.evaluate(v, values);
+    for (size_t i = 0; i < v.size(); ++i) {
+      EXPECT_EQ(g(v[i]), f(-v[i])) << name;
+      EXPECT_EQ(values[i], f(-v[i])) << name;
+      long double d[kMaxDerivativeOrder + 1], original[kMaxDerivativeOrder + 1],
+          plus[kMaxDerivativeOrder + 1], minus[kMaxDerivativeOrder + 1];
+      const long double h = 1e-6L;
+      g.derivatives(v[i], 8, d);
+      f.derivatives(-(long double)v[i], 8, original);
+      g.derivatives(v[i] + h, 8, plus);
+      g.derivatives(v[i] - h, 8, minus);
+      for (int k = 0; k <= 8; ++k)
+        EXPECT_EQ(double(d[k]), double(k % 2 ? -original[k] : original[k])) << name << " " << k;
+      for (int k = 1; k <= 8; ++k) {
+        const long double difference = (plus[k - 1] - minus[k - 1]) / (2 * h);
+        EXPECT_NEAR(double(d[k]), double(difference), 1e-5 * std::max(1.0L, std::abs(d[k])))
+            << name << " order " << k << " at " << v[i];
+      }
+    }
+    // On [-0.6, -0.2] (f's [0.2, 0.6] reflected): the bound is f's there, and holds.
+    for (int order : {0, 1, 4, 8}) {
+      const long double bound = g.derivative_bound(order, -0.6L, -0.2L);
+      EXPECT_EQ(double(bound), double(f.derivative_bound(order, 0.2L, 0.6L))) << name;
+      for (int i = 0; i <= 400; ++i) {
+        long double d[kMaxDerivativeOrder + 1];
+        g.derivatives(-0.6L + 0.4L * i / 400, order, d);
+        EXPECT_LE(std::abs(d[order]), bound * (1 + 1e-15L)) << name << " order " << order;
+      }
+    }
+    const BasisFunction twice = BasisFunction::reflected(g);
+    EXPECT_EQ(twice.name(), f.name());
+    EXPECT_EQ(twice(0.3), f(0.3)) << name;
+  }
+  // exp(4z) reflected on [-0.6, -0.2]: |g^(k)| reaches 4^k e^2.4 at -0.6, far above f's own bound
+  // on [-0.6, -0.2], 4^k e^-0.8: the bound must come from [0.2, 0.6].
+  const BasisFunction g = BasisFunction::reflected(BasisFunction::parse("exp(4z)"));
+  EXPECT_GE(double(g.derivative_bound(3, -0.6L, -0.2L)), 64 * std::exp(2.4) * (1 - 1e-12));
+  // An expression: evaluated at -v, no derivatives; a basis reflects function by function.
+  const BasisFunction e = BasisFunction::parse("z^2*exp(-z) + sin(pi*z)");
+  const BasisFunction r = BasisFunction::reflected(e);
+  EXPECT_FALSE(r.has_derivatives());
+  EXPECT_EQ(r.name(), "reflected(z^2*exp(-z) + sin(pi*z))");
+  for (double v : {-0.7, -0.1, 0.4}) {
+    EXPECT_EQ(r(v), e(-v));
+    EXPECT_NEAR(r(v), v * v * std::exp(v) - std::sin(kPi * v), 1e-15);
+  }
+  const Basis basis = Basis::parse({"power4"}).reflected();
+  EXPECT_EQ(basis.names(), (std::vector<std::string>{"reflected(z)", "reflected(z^2)",
+                                                     "reflected(z^3)", "reflected(z^4)"}));
+  EXPECT_EQ(basis[2](0.5), -0.125);
+}
+
 TEST(Basis, CatalogHas37DistinctIndependentFunctions) {
   EXPECT_EQ(catalog_names().size(), 37u);
   for (const auto& name : catalog_names()) EXPECT_EQ(BasisFunction::parse(name).name(), name);

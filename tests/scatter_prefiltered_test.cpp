@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "scatter/scatter_run.h"
+#include "techniques/lp_options.h"
 #include "test_support.h"
 
 namespace mb {
@@ -108,6 +109,58 @@ TEST(ScatterPrefiltered, RefusesAnUnknownResampling) {
   good.set("scatter.resample=filtered");
   EXPECT_EQ(scatter_params(scatter_run_options_from(good)).resample, Resample::Filtered);
   EXPECT_EQ(scatter_params(defaults({"pss_exact"})).resample, Resample::Point);
+}
+
+// pss_lp's lp.* keys (its row's family options: lp.grid, lp.discretization, lp.backend) reach its
+// LP from scatter's config and from a scattering sweep's (which declares every lp.* key itself);
+// scatter declares no other lp.* key (scatter.beta is the family's one beta).
+TEST(ScatterPrefiltered, PssLpReadsItsLpKeys) {
+  Config config(scatter_run_option_specs());
+  config.set("techniques=[pss_lp:power4]");
+  config.set("lp.grid=64");
+  config.set("lp.discretization=continuous");
+  const ScatterRunOptions run = scatter_run_options_from(config);
+  EXPECT_EQ(run.technique.lp.grid, 64);
+  EXPECT_TRUE(run.technique.lp.continuous);
+  EXPECT_EQ(run.technique.lp.lo, 0);  // undeclared keys keep their defaults
+  EXPECT_EQ(run.technique.lp.hi, 1);
+  EXPECT_NE(testing_support::input_error_of([&] { config.set("lp.hi=2"); }), "");
+  EXPECT_FALSE(
+      scatter_run_options_from(Config(scatter_run_option_specs())).technique.lp.continuous);
+  std::vector<OptionSpec> sweep_specs = scatter_sweep_option_specs();
+  for (const auto& s : sweep_specs) EXPECT_NE(s.name.rfind("lp.", 0), 0u) << s.name;
+  for (auto& s : lp_option_specs()) sweep_specs.push_back(s);
+  Config sweep(sweep_specs);
+  sweep.set("lp.grid=96");
+  sweep.set("lp.discretization=continuous");
+  const ScatterRunOptions swept = scatter_sweep_options_from(sweep);
+  EXPECT_EQ(swept.technique.lp.grid, 96);
+  EXPECT_TRUE(swept.technique.lp.continuous);
+}
+
+// pss_lp on the continuous interval at scatter.beta 0.5 (its maximum by reflection): the blend of
+// its answers at 0 and 1, ray by ray, so its in-scattering lies between theirs.
+TEST(ScatterPrefiltered, ContinuousLpBlendsItsBoundsAtAnyBeta) {
+  const auto scenes = tiny();
+  std::vector<std::vector<double>> inscatter;
+  for (double beta : {0.0, 0.5, 1.0}) {
+    ScatterRunOptions run = defaults({"pss_lp:power4"});
+    run.technique.lp.continuous = true;
+    run.beta = beta;
+    const auto frames = run_on(scenes, run, 2);
+    ASSERT_EQ(frames.size(), 1u);
+    ASSERT_EQ(frames[0].inscatter.size(), 1u);
+    inscatter.push_back(frames[0].inscatter[0]);
+  }
+  size_t between = 0, apart = 0;
+  for (size_t p = 0; p < inscatter[0].size(); ++p) {
+    const double lo = std::min(inscatter[0][p], inscatter[2][p]),
+                 hi = std::max(inscatter[0][p], inscatter[2][p]);
+    between += inscatter[1][p] >= lo - 1e-12 * hi && inscatter[1][p] <= hi + 1e-12 * hi;
+    apart += hi - lo > 1e-6 * hi;
+  }
+  EXPECT_EQ(between, inscatter[0].size());
+  EXPECT_GT(apart, inscatter[0].size() / 10);  // the bounds differ on many rays
 }
 
 }  // namespace

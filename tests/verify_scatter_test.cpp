@@ -1,6 +1,7 @@
 // verify's scattering rows (docs/scattering.md §6) on scattering_tiny: pss_msm4's and pss_msm6's
-// bounds at scatter.beta 0 and 1 agree with pss_lp's on the same row-prefiltered moments, and a
-// six-moment closed form with one sign flipped fails.
+// bounds at scatter.beta 0 and 1 agree with pss_lp's on the same row-prefiltered moments (the
+// continuous LP's minimum and maximum), and a six-moment closed form with one sign flipped, or
+// with an upper bound too high, fails.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -22,12 +23,16 @@ const ScatterVerifyFrames& tiny() {
   return *frames;
 }
 
-// pss_msm6 with hamburger6_sign_flipped (moments/hamburger.h) in place of hamburger6: one sign of
-// the forward substitution flipped.
-class FlippedPssMsm6 : public PrefilteredScatter {
+// pss_msm6 broken on purpose: with hamburger6_sign_flipped (moments/hamburger.h) in place of
+// hamburger6 (one sign of the forward substitution flipped), or with its upper bound's weight at
+// z_f scaled by `w_scale` (G + beta w_scale w_1).
+class BrokenPssMsm6 : public PrefilteredScatter {
  public:
-  explicit FlippedPssMsm6(const ScatterParams& params)
-      : PrefilteredScatter("pss_msm6", params), beta_(params.beta) {}
+  BrokenPssMsm6(const ScatterParams& params, bool flipped, double w_scale)
+      : PrefilteredScatter("pss_msm6", params),
+        beta_(params.beta),
+        flipped_(flipped),
+        w_scale_(w_scale) {}
 
  protected:
   void prefilter(const RectifiedMap& map) override {
@@ -39,14 +44,23 @@ class FlippedPssMsm6 : public PrefilteredScatter {
   double shadowed_fraction(const RectifiedRay& ray) const override {
     double b[6];
     sums_->mean(ray, b);
-    const MsmBound<double> r = hamburger6_sign_flipped(b, ray.depth);
-    return r.lower + beta_ * r.at_zf;
+    const MsmBound<double> r =
+        flipped_ ? hamburger6_sign_flipped(b, ray.depth) : hamburger6(b, ray.depth);
+    return r.lower + beta_ * w_scale_ * r.at_zf;
   }
 
  private:
   double beta_;
+  bool flipped_;
+  double w_scale_;
   std::unique_ptr<RowPrefixSums> sums_;
 };
+
+ScatterMaker broken(bool flipped, double w_scale) {
+  return [=](const ScatterParams& p) -> std::unique_ptr<ScatterTechnique> {
+    return std::make_unique<BrokenPssMsm6>(p, flipped, w_scale);
+  };
+}
 
 TEST(VerifyScatter, MomentRowsMatchTheLpAtBothBetas) {
   ASSERT_EQ(tiny().frames.size(), 1u);
@@ -64,17 +78,28 @@ TEST(VerifyScatter, MomentRowsMatchTheLpAtBothBetas) {
 }
 
 TEST(VerifyScatter, AFlippedSignFails) {
-  const ScatterMaker flipped = [](const ScatterParams& p) -> std::unique_ptr<ScatterTechnique> {
-    return std::make_unique<FlippedPssMsm6>(p);
-  };
   for (const double beta : {0.0, 1.0}) {
     const ScatterVerifyRow row =
-        verify_scatter_row("pss_msm6", flipped, beta, tiny().frames, kResolution);
+        verify_scatter_row("pss_msm6", broken(true, 1), beta, tiny().frames, kResolution);
     std::printf("pss_msm6 with a flipped sign, beta %g: %zu of %zu rays beyond, largest dF %.3g\n",
                 beta, row.beyond, row.compared, row.largest);
     EXPECT_FALSE(row.passed()) << beta;
     EXPECT_GT(row.beyond, 10u) << beta;
   }
+}
+
+// The check at beta 1 is two-sided: an upper bound 1 % too far above the lower one fails (against
+// the LP's maximum on the grid, it passed as "never below"), while its lower bound still passes.
+TEST(VerifyScatter, AnUpperBoundTooHighFails) {
+  const ScatterVerifyRow lower =
+      verify_scatter_row("pss_msm6", broken(false, 1.01), 0, tiny().frames, kResolution);
+  EXPECT_TRUE(lower.passed()) << lower.beyond << " beyond, largest dF " << lower.largest;
+  const ScatterVerifyRow upper =
+      verify_scatter_row("pss_msm6", broken(false, 1.01), 1, tiny().frames, kResolution);
+  std::printf("pss_msm6 with w_1 1 %% too high, beta 1: %zu of %zu rays beyond, largest dF %.3g\n",
+              upper.beyond, upper.compared, upper.largest);
+  EXPECT_FALSE(upper.passed());
+  EXPECT_GT(upper.beyond, 10u);
 }
 
 TEST(VerifyScatter, OnlyTheRowsWithARecipe) {

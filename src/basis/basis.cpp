@@ -140,7 +140,17 @@ BasisFunction BasisFunction::parse(const std::string& text) {
   return f;
 }
 
+BasisFunction BasisFunction::reflected(const BasisFunction& f) {
+  BasisFunction g = f;
+  static const std::string kPrefix = "reflected(";
+  g.reflected_ = !f.reflected_;
+  g.name_ = g.reflected_ ? kPrefix + f.name_ + ")"
+                         : f.name_.substr(kPrefix.size(), f.name_.size() - kPrefix.size() - 1);
+  return g;
+}
+
 double BasisFunction::operator()(double z) const {
+  if (reflected_) z = -z;  // exact: f(-v) is f's own value at the negated point
   if (scalar_) return scalar_(z);
   std::lock_guard lock(expression_->mutex);
   expression_->z = z;
@@ -148,23 +158,29 @@ double BasisFunction::operator()(double z) const {
 }
 
 void BasisFunction::evaluate(std::span<const double> z, std::span<double> out) const {
+  const double sign = reflected_ ? -1.0 : 1.0;
   if (scalar_) {
-    for (size_t i = 0; i < z.size(); ++i) out[i] = scalar_(z[i]);
+    for (size_t i = 0; i < z.size(); ++i) out[i] = scalar_(sign * z[i]);
     return;
   }
   std::lock_guard lock(expression_->mutex);
   for (size_t i = 0; i < z.size(); ++i) {
-    expression_->z = z[i];
+    expression_->z = sign * z[i];
     out[i] = expression_->parser.Eval();
   }
 }
 
 void BasisFunction::derivatives(long double z, int order, long double* out) const {
-  form_derivatives(*analytic_, z, order, out);
+  if (!reflected_) return form_derivatives(*analytic_, z, order, out);
+  // d^k/dv^k f(-v) = (-1)^k f^(k)(-v).
+  form_derivatives(*analytic_, -z, order, out);
+  for (int k = 1; k <= order; k += 2) out[k] = -out[k];
 }
 
 long double BasisFunction::derivative_bound(int order, long double a, long double b) const {
-  return form_derivative_bound(*analytic_, order, a, b);
+  // |(-1)^k f^(k)(-v)| over v in [a, b] is |f^(k)| over [-b, -a].
+  return reflected_ ? form_derivative_bound(*analytic_, order, -b, -a)
+                    : form_derivative_bound(*analytic_, order, a, b);
 }
 
 Basis Basis::parse(const std::vector<std::string>& items) {
@@ -178,6 +194,12 @@ Basis Basis::parse(const std::vector<std::string>& items) {
     }
   }
   if (functions.empty()) throw InputError("basis: no functions given");
+  return Basis(std::move(functions));
+}
+
+Basis Basis::reflected() const {
+  std::vector<BasisFunction> functions;
+  for (const auto& f : functions_) functions.push_back(BasisFunction::reflected(f));
   return Basis(std::move(functions));
 }
 

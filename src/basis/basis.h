@@ -16,6 +16,12 @@ class BasisFunction {
   // A catalog name ("z^2", "exp(-4z)", "sin(2 pi z)"; spaces and '*' are ignored when matching)
   // or an expression in z ("z^2*exp(-z)", "sin(2*pi*z)"; `pi` is defined as std::numbers::pi).
   static BasisFunction parse(const std::string& name_or_expression);
+  // v -> f(-v): the basis of Problem 1 for the reflected depth v = -z (docs/reference.md §2, "The
+  // maximum": the least mass behind z_f is the least mass in front of -z_f of the reflected
+  // distribution, whose moments E f(-v) are the original ones). Named "reflected(<name>)";
+  // derivatives and their bounds follow by the chain rule, so a catalog function stays certified.
+  // Reflecting twice gives f back.
+  static BasisFunction reflected(const BasisFunction& f);
   const std::string& name() const { return name_; }
   void evaluate(std::span<const double> z, std::span<double> out) const;
   double operator()(double z) const;
@@ -28,6 +34,7 @@ class BasisFunction {
 
  private:
   std::string name_;
+  bool reflected_ = false;  // evaluated at -z
   const AnalyticForm* analytic_ = nullptr;
   std::function<double(double)> scalar_;
   std::shared_ptr<struct ExpressionEvaluator> expression_;
@@ -42,6 +49,8 @@ class Basis {
   size_t size() const { return functions_.size(); }
   const BasisFunction& operator[](size_t j) const { return functions_[j]; }
   std::vector<std::string> names() const;
+  // Every function reflected (BasisFunction::reflected): the basis of the reflected depths -z.
+  Basis reflected() const;
   // Rejects (InputError naming the function and a point) a function that is not finite or has a
   // pole on [lo, hi]: sampled densely, each sign change bisected and each local peak of |f|
   // narrowed; a value there far beyond every sampled one is a pole. Every command calls this

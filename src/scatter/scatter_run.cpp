@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -11,6 +12,7 @@
 #include "raster/render_camera.h"
 #include "raster/render_view.h"
 #include "scatter/scatter_frames.h"
+#include "techniques/lp_options.h"
 #include "techniques/registry.h"
 #include "util/error.h"
 #include "util/number_text.h"
@@ -158,6 +160,12 @@ ScatterParams scatter_params(const ScatterRunOptions& options) {
 std::vector<OptionSpec> scatter_run_option_specs() {
   std::vector<OptionSpec> specs = option_specs(scatter_run_options());
   for (auto& s : technique_option_specs({TechniqueFamily::Scattering})) specs.push_back(s);
+  // The lp.* keys pss_lp reads (its row's family options); the others keep their defaults.
+  const TechniqueRow& pss_lp = technique_row("pss_lp:", TechniqueFamily::Scattering);
+  for (auto& s : lp_option_specs())
+    if (std::find(pss_lp.family_options.begin(), pss_lp.family_options.end(), s.name) !=
+        pss_lp.family_options.end())
+      specs.push_back(s);
   return specs;
 }
 
@@ -165,6 +173,7 @@ ScatterRunOptions scatter_run_options_from(const Config& config) {
   ScatterRunOptions run;
   read_options(config, scatter_run_options(), run);
   read_technique_options(config, run.technique);
+  read_lp_params(config, run.technique);
   if (run.techniques.empty()) throw InputError("techniques: expected at least one technique");
   const ScatterParams params = scatter_params(run);  // the guard band's check
   for (const auto& name : run.techniques) make_scatter_technique(name, params);
@@ -180,12 +189,17 @@ bool sweep_reads(const std::string& key) {
          key != "scatter.reference";
 }
 
+// The sweep declares the lp.* keys itself (sweep/sweep_run.cpp, sweep_target_specs).
+bool is_lp_key(const std::string& key) {
+  return key.rfind("lp.", 0) == 0;
+}
+
 }  // namespace
 
 std::vector<OptionSpec> scatter_sweep_option_specs() {
   std::vector<OptionSpec> specs;
   for (auto& s : scatter_run_option_specs())
-    if (sweep_reads(s.name)) specs.push_back(s);
+    if (sweep_reads(s.name) && !is_lp_key(s.name)) specs.push_back(s);
   return specs;
 }
 
@@ -193,6 +207,7 @@ ScatterRunOptions scatter_sweep_options_from(const Config& config) {
   ScatterRunOptions run;
   read_declared_options(config, scatter_run_options(), run);
   read_technique_options(config, run.technique);
+  read_lp_params(config, run.technique);  // the candidates' LP (pss_lp's lp.* keys)
   run.techniques.clear();
   run.reference = "pss_exact";
   run.images = false;

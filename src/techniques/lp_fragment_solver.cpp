@@ -35,18 +35,37 @@ std::optional<LpMomentBox> lp_moment_box(const std::string& setting, const Basis
 
 namespace {
 
-// lp.beta blends towards the LP's maximum G+, which is solved on the grid only (docs/reference.md
-// §2, "The maximum"): the exchange method and the moment box answer the minimum alone, and a beta
-// they would ignore must not pass as measured. read_lp_params refuses it in a config; this refuses
-// it from every other caller (pss_lp sets its lp.beta from scatter.beta).
-double checked_beta(const TechniqueParams& p, const lp::ProblemFactory& factory) {
-  if (p.lp_beta > 0 && (factory.discretization().continuous || p.lp_moment_box != "none"))
+// lp.beta blends towards the LP's maximum G+ (docs/reference.md §2, "The maximum"): on the grid
+// as Problem::behind, on the continuous interval as the exchange method's minimum of the reflected
+// problem. The moment box answers the minimum alone, and a beta it would ignore must not pass as
+// measured. read_lp_params refuses it in a config; this refuses it from every other caller
+// (pss_lp sets its lp.beta from scatter.beta).
+double checked_beta(const TechniqueParams& p) {
+  if (p.lp_beta > 0 && p.lp_moment_box != "none")
     throw InputError("lp.beta: " + round_trip(p.lp_beta) +
-                     " blends towards the LP's maximum, which is solved on the grid only; "
-                     "expected lp.beta = 0 with lp.discretization = continuous (here: " +
-                     (factory.discretization().continuous ? "continuous" : "grid") +
-                     ") or lp.moment_box (here: " + p.lp_moment_box + ")");
+                     " blends towards the LP's maximum, which the moment box does not solve; "
+                     "expected lp.beta = 0 with lp.moment_box (here: " +
+                     p.lp_moment_box + "), or lp.moment_box = none");
   return p.lp_beta;
+}
+
+// The continuous maximum's problem (docs/reference.md §2, "The maximum"): the least mass strictly
+// behind z_f over distributions of z on [lo, hi] with moments E f_k(z) = b_k is the least mass
+// strictly in front of -z_f over distributions of v = -z on [-hi, -lo] with E f_k(-v) = b_k, a
+// minimum the exchange method certifies. The power basis is its own reflection up to signs
+// (span{(-v)^k} = span{v^k}, as continuous/local_box.cpp's local_box_upper uses): it stays the
+// power basis, so that the reflected problem keeps the local power path of its minimum
+// (continuous/local_power.h), with the odd moments negated.
+std::unique_ptr<lp::ProblemFactory> reflected_factory(const lp::ProblemFactory& factory,
+                                                      double beta) {
+  const Basis& basis = factory.basis();
+  const lp::Discretization& d = factory.discretization();
+  if (!(beta > 0) || !d.continuous) return nullptr;
+  lp::Discretization r = d;
+  r.lo = -d.hi, r.hi = -d.lo;
+  if (d.window_lo < d.window_hi) r.window_lo = -d.window_hi, r.window_hi = -d.window_lo;
+  return std::make_unique<lp::ProblemFactory>(
+      lp::power_basis_degree(basis) > 0 ? basis : basis.reflected(), r);
 }
 
 }  // namespace
@@ -56,9 +75,11 @@ LpFragmentSolver::LpFragmentSolver(const Basis& basis, const lp::ProblemFactory&
     : basis_(basis),
       factory_(factory),
       box_(lp_moment_box(p.lp_moment_box, basis)),
-      beta_(checked_beta(p, factory)),
+      beta_(checked_beta(p)),
       backend_(lp::make_backend(p.lp_backend)),
-      upper_backend_(beta_ > 0 ? lp::make_backend(p.lp_backend) : nullptr) {}
+      upper_backend_(beta_ > 0 ? lp::make_backend(p.lp_backend) : nullptr),
+      reflected_factory_(reflected_factory(factory, beta_)),
+      reflected_power_(lp::power_basis_degree(factory.basis()) > 0) {}
 
 const lp::Solution& LpFragmentSolver::solve(lp::Problem& problem, std::span<const double> depths,
                                             std::span<const double> weights, double zf,
@@ -72,6 +93,7 @@ const lp::Solution& LpFragmentSolver::solve(lp::Problem& problem, std::span<cons
     // the caller's problem stays as given (eval moves its z_f between fragments of one texel).
     work_ = problem;
     s_ = lp::solve_discretized(factory_, work_, *backend_, depths, weights).finite;
+    if (reflected_factory_) blend_with_reflected_minimum(problem, depths, weights);
     return s_;
   }
   backend_->solve_into(problem, warm, s_);
@@ -107,13 +129,44 @@ void LpFragmentSolver::blend_with_maximum(const lp::Problem& problem) {
   upper_problem_ = problem;
   upper_problem_.behind = true;
   upper_backend_->solve_into(upper_problem_, nullptr, upper_);
-  if (upper_.call != lp::CallStatus::Ok || upper_.status != lp::ProblemStatus::Optimal) {
+  blend_with(upper_);
+}
+
+void LpFragmentSolver::blend_with_reflected_minimum(const lp::Problem& problem,
+                                                    std::span<const double> depths,
+                                                    std::span<const double> weights) {
+  if (s_.call != lp::CallStatus::Ok || s_.status != lp::ProblemStatus::Optimal) return;
+  const lp::ProblemFactory& reflected = *reflected_factory_;
+  reflected_depths_.resize(depths.size());
+  for (size_t t = 0; t < depths.size(); ++t) reflected_depths_[t] = -depths[t];
+  if (!depths.empty()) {
+    // The reflected kernel: the same moments E f_k(-v) (E v^k = (-1)^k b_k for the power basis).
+    upper_problem_ = reflected.from_distribution(reflected_depths_, weights, -problem.zf);
+  } else {
+    reflected_moments_ = problem.moments;
+    if (reflected_power_)
+      for (size_t k = 0; k < reflected_moments_.size(); k += 2)
+        reflected_moments_[k] = -reflected_moments_[k];
+    upper_problem_ = reflected.from_moments(reflected_moments_, -problem.zf);
+  }
+  // The problem's own points beyond the kernel's (e.g. a closed form's nodes), reflected.
+  reflected_points_.clear();
+  for (double z : problem.extra.points) reflected_points_.push_back(-z);
+  reflected.add_points(upper_problem_, reflected_points_);
+  upper_ =
+      lp::solve_discretized(reflected, upper_problem_, *upper_backend_, reflected_depths_, weights)
+          .finite;
+  blend_with(upper_);
+}
+
+void LpFragmentSolver::blend_with(const lp::Solution& behind) {
+  if (behind.call != lp::CallStatus::Ok || behind.status != lp::ProblemStatus::Optimal) {
     s_.status =
-        upper_.status == lp::ProblemStatus::Optimal ? lp::ProblemStatus::Unstable : upper_.status;
+        behind.status == lp::ProblemStatus::Optimal ? lp::ProblemStatus::Unstable : behind.status;
     return;
   }
   const double lower = std::clamp(s_.G, 0.0, 1.0);
-  const double upper = std::clamp(1 - upper_.G, lower, 1.0);
+  const double upper = std::clamp(1 - behind.G, lower, 1.0);
   s_.G = lower + beta_ * (upper - lower);
 }
 

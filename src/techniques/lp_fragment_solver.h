@@ -3,9 +3,10 @@
 // distribution (docs/reference.md §2), on the grid (warm-started when the caller gives a start),
 // on all of [lp.lo, lp.hi] by the exchange method (lp.discretization continuous), or over the box
 // of moments a storage format's rounding leaves (lp.moment_box); with lp.beta the blend
-// G + beta (G+ - G) towards the LP's maximum. eval's views and the sweep's shadow target
-// (eval/lp_view_solver.h), lp:<basis> of every family (techniques/lp_technique.h, hence oit and
-// the sweep's transparency target) and msm_soft:lp:<basis> all answer through it.
+// G + beta (G+ - G) towards the LP's maximum (on the grid or the continuous interval, not with
+// a moment box). eval's views and the sweep's shadow target (eval/lp_view_solver.h), lp:<basis>
+// of every family (techniques/lp_technique.h, hence oit and the sweep's transparency target) and
+// msm_soft:lp:<basis> all answer through it.
 #include <memory>
 #include <optional>
 #include <span>
@@ -41,8 +42,8 @@ std::optional<LpMomentBox> lp_moment_box(const std::string& setting, const Basis
 class LpFragmentSolver {
  public:
   // `basis` and `factory` outlive the solver; `params` gives lp.backend, lp.moment_box, lp.beta.
-  // InputError for lp.beta > 0 with the continuous interval or a moment box: the maximum it
-  // blends towards is solved on the grid only.
+  // InputError for lp.beta > 0 with a moment box: the maximum it blends towards is solved on the
+  // grid and on the continuous interval only.
   LpFragmentSolver(const Basis& basis, const lp::ProblemFactory& factory,
                    const TechniqueParams& params);
   // Whether solve reads `problem` (the moment box needs only the distribution).
@@ -62,14 +63,25 @@ class LpFragmentSolver {
   // lp.beta: s_.G <- G + beta (G+ - G), G+ = 1 - (the least mass behind z_f), solved cold (warm
   // bases remember the minimum's problems).
   void blend_with_maximum(const lp::Problem& problem);
+  // The same on the continuous interval: the least mass behind z_f as the exchange method's
+  // minimum of the reflected problem (v = -z on [-hi, -lo], below -z_f; see reflected_factory_).
+  void blend_with_reflected_minimum(const lp::Problem& problem, std::span<const double> depths,
+                                    std::span<const double> weights);
+  // s_.G <- the blend with G+ = 1 - behind.G; a failed `behind` fails the fragment.
+  void blend_with(const lp::Solution& behind);
 
   const Basis& basis_;
   const lp::ProblemFactory& factory_;
   std::optional<LpMomentBox> box_;
   double beta_ = 0;
   std::unique_ptr<lp::Backend> backend_, upper_backend_;
+  // lp.beta > 0 on the continuous interval: Problem 1's factory for the reflected depths -z on
+  // [-hi, -lo] (the reflected basis, or the power basis itself), with the same settings.
+  std::unique_ptr<lp::ProblemFactory> reflected_factory_;
+  bool reflected_power_ = false;  // the basis is z, .., z^n: its reflection stays the power basis
   lp::Problem work_, upper_problem_;
   lp::Solution s_, upper_;  // reused: no allocation per LP
+  std::vector<double> reflected_depths_, reflected_moments_, reflected_points_;
 };
 
 }  // namespace mb

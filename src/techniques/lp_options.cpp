@@ -61,7 +61,8 @@ const std::vector<OptionRecord<LpOptions>>& lp_records() {
       {{"lp.beta", OptionType::Number, "0",
         "LP techniques: G + beta (G+ - G), G+ the LP's maximum of the mass at or in front of z_f "
         "(docs/reference.md §2): seed 004's blend of its closed forms' bounds, for any basis. 0 is "
-        "the sharp lower bound; above 0 an LP may over-darken. Grid discretisation only.",
+        "the sharp lower bound; above 0 an LP may over-darken. On the grid or the continuous "
+        "interval (the maximum by reflection); not with lp.moment_box.",
         0, 1},
        &LpOptions::lp_beta},
   };
@@ -72,7 +73,7 @@ const std::vector<OptionRecord<LpOptions>>& lp_records() {
 
 lp::Discretization lp_discretization_from(const Config& config) {
   LpOptions o{};
-  read_options(config, lp_records(), o);
+  read_declared_options(config, lp_records(), o);
   lp::Discretization d;
   d.grid = o.lp_grid;
   d.lo = o.lp_lo;
@@ -85,7 +86,7 @@ lp::Discretization lp_discretization_from(const Config& config) {
 
 std::string lp_backend_from(const Config& config) {
   LpOptions o{};
-  read_options(config, lp_records(), o);
+  read_declared_options(config, lp_records(), o);
   return o.lp_backend;
 }
 
@@ -95,16 +96,16 @@ std::vector<OptionSpec> lp_option_specs() {
 
 void read_lp_params(const Config& config, TechniqueParams& t) {
   LpOptions o{};
-  read_options(config, lp_records(), o);
+  read_declared_options(config, lp_records(), o);
   t.lp = lp_discretization_from(config);
   t.lp_backend = o.lp_backend;
   t.lp_moment_box = o.lp_moment_box;
   t.lp_beta = o.lp_beta;
-  if (t.lp_beta > 0 && (t.lp.continuous || t.lp_moment_box != "none"))
-    throw InputError(
-        "lp.beta: " + std::to_string(t.lp_beta) +
-        " needs the LP's maximum, which is solved on the grid only; expected lp.beta = 0 with "
-        "lp.discretization = continuous or an lp.moment_box");
+  if (t.lp_beta > 0 && t.lp_moment_box != "none")
+    throw InputError("lp.beta: " + std::to_string(t.lp_beta) +
+                     " needs the LP's maximum, which the moment box does not solve; expected "
+                     "lp.beta = 0 with lp.moment_box = " +
+                     t.lp_moment_box + ", or lp.moment_box = none");
 }
 
 }  // namespace mb

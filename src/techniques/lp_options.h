@@ -17,7 +17,8 @@ std::vector<OptionSpec> lp_option_specs();
 lp::Discretization lp_discretization_from(const Config& config);
 std::string lp_backend_from(const Config& config);
 // Every lp.* value of `config` into the LP fields of `params` (discretisation, backend, moment
-// box, beta), validated (InputError naming the key).
+// box, beta), validated (InputError naming the key). Keys `config` does not declare keep their
+// defaults (scatter declares only those pss_lp reads). The same for the two above.
 void read_lp_params(const Config& config, TechniqueParams& params);
 
 }  // namespace mb

@@ -23,10 +23,6 @@ double default_max_distance() {
   return run.max_distance;
 }
 
-// The LP of the rows' upper bounds: a grid over the rows' normalised depths [0, 1] and as far again
-// on either side, fine enough that the LP's maximum comes within ~1e-3 of Hamburger's.
-const lp::Discretization kUpperGrid{-1, 2, 512, false};
-
 // The rows verify judges answer through their rectified row (PrefilteredScatter::shadowed).
 const PrefilteredScatter& prefiltered(const ScatterTechnique& t) {
   const auto* p = dynamic_cast<const PrefilteredScatter*>(&t);
@@ -120,20 +116,14 @@ ScatterVerifyRow verify_scatter_row(const std::string& technique, const ScatterM
   // Hamburger's bounds themselves: no moment bias (as verify's hard-shadow rows, alpha = 0).
   for (const TechniqueOption* o : row_of.options)
     if (o->moment_bias) closed.technique.set(*o, 0);
+  // pss_lp at the same beta, continuous on the recipe's interval (the exchange method, certified):
+  // at beta 0 the sharp lower bound G, at 1 the maximum G+ by reflection (docs/reference.md §2,
+  // "The maximum"), both attained by Hamburger's canonical distribution where its nodes lie in
+  // the interval, so both must equal the closed form's.
   ScatterParams lp = closed;
-  row.kind = beta == 0 ? "equal" : "never below";
-  if (beta == 0) {
-    lp.technique.lp = lp::Discretization{recipe.lo, recipe.hi, 256, false};
-    lp.technique.lp.continuous = true;
-  } else {
-    // The LP fragment solver blends towards the LP's maximum on a grid only (its continuous
-    // exchange solves the lower bound alone). Every distribution on the grid and the ray's
-    // texels has the row's moments, so its mass at or in front of the ray's depth never exceeds
-    // Hamburger's supremum over R, G + w_1: the blend at beta > 0 is never above the closed form's,
-    // and close to it where the canonical nodes fall near grid points.
-    row.lo = kUpperGrid.lo, row.hi = kUpperGrid.hi;
-    lp.technique.lp = kUpperGrid;
-  }
+  row.kind = "equal";
+  lp.technique.lp = lp::Discretization{recipe.lo, recipe.hi, 256, false};
+  lp.technique.lp.continuous = true;
   const auto mine = make(closed);
   const auto reference = make_scatter_technique(recipe.lp_technique, lp);
   const PrefilteredScatter& m = prefiltered(*mine);
@@ -162,8 +152,7 @@ ScatterVerifyRow verify_scatter_row(const std::string& technique, const ScatterM
         continue;
       }
       ++row.compared;
-      const double d =
-          row.kind == "equal" ? std::abs(answer[i] - lp_answer[i]) : lp_answer[i] - answer[i];
+      const double d = std::abs(answer[i] - lp_answer[i]);
       row.beyond += !(d <= row.tolerance);  // NaN too
       if (d > row.largest) {
         row.largest = d;

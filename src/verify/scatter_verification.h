@@ -22,8 +22,8 @@ namespace mb {
 struct ScatterVerifyRow {
   std::string technique, lp_technique;  // lp_technique: the pss_lp: row it was compared with
   double beta = 0;                      // scatter.beta of both
-  // "equal" (beta 0: the continuous LP on the recipe's interval) or "never below" (beta > 0: the
-  // LP's maximum on a grid, see kUpperGrid in scatter_verification.cpp).
+  // The check: "equal", |F_closed - F_LP| within the tolerance against the continuous LP on the
+  // recipe's interval (its minimum at beta 0, its maximum by reflection at beta 1).
   std::string kind;
   double lo = 0, hi = 0;  // the LP's interval of normalised depth
   double tolerance = 0;   // in the shadowed fraction
@@ -32,7 +32,7 @@ struct ScatterVerifyRow {
   // prefix of one depth), or the LP gave no certified answer.
   size_t undefined = 0, lp_failures = 0;
   size_t compared = 0, beyond = 0;
-  // Over the compared rays: the largest |F_closed - F_LP| (equal) or F_LP - F_closed (never below).
+  // Over the compared rays: the largest |F_closed - F_LP|.
   double largest = 0;
   std::string worst;  // where it lies: scene/view/camera, pixel and ray length
   // Fails verify (exit 5): a compared ray beyond the tolerance, or no ray compared at all.

@@ -121,7 +121,7 @@ std::vector<TechniqueRow> rows() {
        .unproven_reason = "scatter.beta > 0 blends towards the upper bound, and pss_exact "
                           "itself is not the exact reference",
        .family_options = {"scatter.light_resolution", "scatter.guard_band", "scatter.resample",
-                          "scatter.beta", "lp.grid", "lp.backend"},
+                          "scatter.beta", "lp.grid", "lp.discretization", "lp.backend"},
        .default_run = true,
        .example = "pss_lp:power4",
        .solves_lp = true,
