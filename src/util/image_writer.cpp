@@ -16,6 +16,10 @@ void write_image(const std::string& file, int width, int height, int channels,
                           : sixteen_bit ? OIIO::TypeDesc::UINT16
                                         : OIIO::TypeDesc::UINT8;
   OIIO::ImageSpec spec(width, height, channels, format);
+  // OpenImageIO stamps the time of writing unless DateTime is given; empty, it writes none, so that
+  // a file is a function of its pixels (the same run gives the same bytes, whatever the thread
+  // count and the second it finishes in).
+  spec.attribute("DateTime", "");
   auto out = OIIO::ImageOutput::create(file);
   if (!out || !out->open(file, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, values.data()) ||
       !out->close())
