@@ -7,10 +7,12 @@
 // (techniques/lp_fragment_solver.h), through the lp:<basis> technique, with the ray's own
 // distribution as the kernel's: its depths join the grid, so the program is feasible by
 // construction and the answer is Problem 1 for exactly the moments a prefix sum holds.
+#include <algorithm>
 #include <atomic>
 #include <map>
 #include <mutex>
 #include <set>
+#include <utility>
 #include <vector>
 
 #include "techniques/lp_technique.h"
@@ -51,6 +53,7 @@ class PssLp : public PrefilteredScatter {
   double shadowed_fraction(const RectifiedRay& ray) const override {
     Scratch& scratch = this->scratch();
     ray_distribution(map(), ray, scratch.depths, scratch.weights);
+    merge_equal_depths(scratch);
     double total = 0;
     for (double w : scratch.weights) total += w;
     for (double& w : scratch.weights) w /= total;
@@ -74,7 +77,25 @@ class PssLp : public PrefilteredScatter {
   struct Scratch {
     std::unique_ptr<Technique> lp;
     std::vector<double> depths, weights;
+    std::vector<std::pair<double, double>> atoms;
   };
+  // The same distribution with each depth once (its weights summed) and no empty atoms. A row
+  // repeats depths by the hundred (texels of one surface, the clamped ends 0 and 1), and each
+  // copy is another equal column of the LP: degenerate programs the solver could fail to certify,
+  // answered lit (docs/scattering.md §3.2). Merging changes the problem not at all.
+  static void merge_equal_depths(Scratch& s) {
+    s.atoms.clear();
+    for (size_t i = 0; i < s.depths.size(); ++i)
+      if (s.weights[i] > 0) s.atoms.emplace_back(s.depths[i], s.weights[i]);
+    std::sort(s.atoms.begin(), s.atoms.end());
+    s.depths.clear(), s.weights.clear();
+    for (const auto& [depth, weight] : s.atoms) {
+      if (!s.depths.empty() && s.depths.back() == depth)
+        s.weights.back() += weight;
+      else
+        s.depths.push_back(depth), s.weights.push_back(weight);
+    }
+  }
   static uint64_t next_instance() {
     static std::atomic<uint64_t> count{0};
     return ++count;
