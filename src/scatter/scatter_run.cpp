@@ -80,9 +80,9 @@ const std::vector<OptionRecord<ScatterRunOptions>>& scatter_run_options() {
         "outside the range are clamped to its ends, and empty light rays lie at depth 1: too "
         "close to a ray's depth, a moment or Fourier reconstruction smears them across it. 64 "
         "(the rays fill the middle 7/8): on scattering_tiny, mean errors against exact of "
-        "pss_lp:power4, pss_msm6, pss_csm and pss_msm4 of 0.0067, 0.0055, 0.0077 and 0.075, "
-        "against 0.018, 0.027, 0.19 and 0.12 at 4 texels and 0.0099, 0.0060, 0.0050 and 0.047 "
-        "at 256 (pss_lp is best near 64).",
+        "pss_lp:power4, pss_msm6, pss_csm and pss_msm4 of 0.0065, 0.0053, 0.0077 and 0.021, "
+        "against 0.018, 0.027, 0.19 and 0.057 at 4 texels and 0.0096, 0.0060, 0.0050 and 0.010 "
+        "at 256 (pss_lp and pss_msm6 are best near 64, pss_csm and pss_msm4 wider).",
         0, 8192},
        &ScatterRunOptions::guard_band},
       {{"scatter.resample",
@@ -96,7 +96,7 @@ const std::vector<OptionRecord<ScatterRunOptions>>& scatter_run_options() {
         "map). `point` by default so that the pss rows' documented errors, all measured under "
         "it, stay true, although the seed and the measurements favour filtered: on the "
         "scattering house with the default 1024² maps it lowers pss_exact's mean error by 4 to "
-        "11 % and the per-pixel flicker of pss_exact and pss_msm4 over 8 camera turns of 0.1 "
+        "12 % and the per-pixel flicker of pss_exact and pss_msm4 over 8 camera turns of 0.1 "
         "degree by 8 to 37 % (41 to 58 % at 256²), at 3 to 4 times the map's build time "
         "(docs/scattering.md §3.3).",
         -std::numeric_limits<double>::infinity(),
@@ -122,8 +122,9 @@ const std::vector<OptionRecord<ScatterRunOptions>>& scatter_run_options() {
         "The moment rows' blend G + beta (G+ - G) of the sharp lower and upper bounds on a "
         "ray's shadowed fraction (pss_msm4, pss_msm6, pss_lp; docs/scattering.md §3.2): 0 the "
         "lower bound (never too dark), 1 the upper (never too bright). 0.5: seed 004 §2.4's "
-        "choice, the least worst-case error; on the scattering dataset also the least mean "
-        "error of every moment row (results/FINDINGS.md §12; 0.25 on the house alone).",
+        "choice, the midpoint of the bounds, whose worst error over all distributions with the "
+        "row's moments is least; on the scattering dataset also the least mean error of every "
+        "moment row (results/FINDINGS.md §12; 0.25 on the house alone).",
         0, 1},
        &ScatterRunOptions::beta},
       {measures_nothing({"images", OptionType::Boolean, "true",
