@@ -62,6 +62,20 @@ class PssLp : public PrefilteredScatter {
     const size_t before = scratch.lp->failures();
     const double g = scratch.lp->shadow(in);
     if (scratch.lp->failures() == before) return g;
+    // The same program once more in exact (rational) arithmetic: the rows' degenerate programs
+    // (one to three distinct depths, on the moment cone's boundary) that a floating-point
+    // backend cannot certify, it can, at about a hundred times the cost of one LP, paid by the
+    // few rays that need it (docs/scattering.md §3.2).
+    if (technique_.lp_backend != "exact") {
+      if (!scratch.exact_lp) {
+        TechniqueParams exact = technique_;
+        exact.lp_backend = "exact";
+        scratch.exact_lp = make_lp_technique(lp_name_, exact);
+      }
+      const size_t exact_before = scratch.exact_lp->failures();
+      const double exact_g = scratch.exact_lp->shadow(in);
+      if (scratch.exact_lp->failures() == exact_before) return exact_g;
+    }
     // No certified answer: counted, and answered as lit, as closed forms answer a NaN.
     std::lock_guard<std::mutex> lock(mutex_);
     ++failures_;
@@ -75,7 +89,7 @@ class PssLp : public PrefilteredScatter {
   // candidate: a thread frees what it made for instances since destroyed when it first serves a
   // new one, so that it holds LPs only for live instances.
   struct Scratch {
-    std::unique_ptr<Technique> lp;
+    std::unique_ptr<Technique> lp, exact_lp;  // exact_lp: made on a ray `lp` cannot certify
     std::vector<double> depths, weights;
     std::vector<std::pair<double, double>> atoms;
   };
