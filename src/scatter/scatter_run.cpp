@@ -249,9 +249,9 @@ std::vector<ScatterScene> scatter_scenes(const DatasetDesc& dataset) {
                        ": no medium (expected `medium: {extinction, albedo, phase, g}` in the "
                        "scene file or the dataset file)");
     if (!(medium->albedo > 0))
-      throw InputError(medium->where + ": medium of scene " + scene.name +
-                       ": albedo 0 scatters nothing (scatter measures errors relative to the "
-                       "in-scattering; expected albedo in (0, 1])");
+      throw InputError(medium->where + ": key 'medium.albedo' of scene " + scene.name +
+                       ": 0 scatters nothing (scatter measures errors relative to the "
+                       "in-scattering; expected albedo in (0, 1], docs/scattering.md §1)");
     out.push_back({std::move(scene), *medium});
   }
   if (out.empty())
