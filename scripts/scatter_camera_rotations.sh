@@ -14,7 +14,7 @@ out=${1:?usage: scatter_camera_rotations.sh OUT [MOMENTBENCH] [--set KEY=VALUE .
 shift
 mb=build/release/momentbench
 if [[ $# -gt 0 && $1 != --set ]]; then mb=$1; shift; fi
-techniques=${TECHNIQUES:-"[pss_exact, pss_msm4]"}
+techniques=${TECHNIQUES:-"[pss_exact, pss_msm4, pss_msm6]"}
 mkdir -p "$out/dataset"
 
 /usr/bin/python3 - "$out/dataset" <<'PY'

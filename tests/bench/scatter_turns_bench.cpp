@@ -92,7 +92,7 @@ int run(int light_resolution, double guard_band) {
     const auto reference = make_scatter_technique("exact", scatter_params(options));
     reference->prepare({&light, &house->scene, &view, &camera, camera.position, sigma, &rectify});
     const std::vector<double> exact = lit_lengths(*reference, rays);
-    for (const std::string technique : {"pss_exact", "pss_msm4"})
+    for (const std::string technique : {"pss_exact", "pss_msm4", "pss_msm6"})
       for (const std::string resample : {"point", "filtered"}) {
         options.resample = resample;
         const auto t = make_scatter_technique(technique, scatter_params(options));
