@@ -106,9 +106,10 @@ TEST(ScatterRun, FourMomentsAnswerRowsWithoutOccluders) {
   EXPECT_GT(one[0].stats[1].pixels, 0u);
 }
 
-// pss_lp merges a row's repeated depths before its LP (the same distribution): with every copy a
-// column of its own, the grid LP of four power moments left 4 of scattering_tiny's 1 536 rays
-// without a certified answer at scatter's defaults, answered lit (docs/scattering.md §3.2).
+// pss_lp merges a row's repeated depths before its LP (the same distribution) and solves a ray
+// its floating-point LP cannot certify once more exactly (docs/scattering.md §3.2): with every
+// copy a column of its own and no retry, the grid LP of four power moments left 4 of
+// scattering_tiny's 1 536 rays without a certified answer at scatter's defaults, answered lit.
 TEST(ScatterRun, TheLpCertifiesRowsThatRepeatTheirDepths) {
   ScatterRunOptions run;
   read_options(Config(option_specs(scatter_run_options())), scatter_run_options(), run);

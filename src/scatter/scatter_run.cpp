@@ -96,8 +96,8 @@ const std::vector<OptionRecord<ScatterRunOptions>>& scatter_run_options() {
         "map). `point` by default so that the pss rows' documented errors, all measured under "
         "it, stay true, although the seed and the measurements favour filtered: on the "
         "scattering house with the default 1024² maps it lowers pss_exact's mean error by 4 to "
-        "12 % and the per-pixel flicker of pss_exact and pss_msm4 over 8 camera turns of 0.1 "
-        "degree by 8 to 37 % (41 to 58 % at 256²), at 3 to 4 times the map's build time "
+        "11 % and the per-pixel flicker of pss_exact, pss_msm4 and pss_msm6 over 8 camera turns "
+        "of 0.1 degree by 10 to 37 % (42 to 58 % at 256²), at 3 to 4 times the map's build time "
         "(docs/scattering.md §3.3).",
         -std::numeric_limits<double>::infinity(),
         std::numeric_limits<double>::infinity(),

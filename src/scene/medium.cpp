@@ -43,7 +43,7 @@ std::optional<MediumDesc> parse_medium(YamlMap& parent) {
   if (m.has("g") && medium.phase == PhaseKind::Isotropic && medium.g != 0)
     m.fail("g", "g applies to phase henyey_greenstein only (phase is isotropic), got " +
                     round_trip(medium.g));
-  medium.where = m.file();
+  medium.where = m.where("albedo");
   m.finish();
   return medium;
 }

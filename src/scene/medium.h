@@ -16,7 +16,7 @@ struct MediumDesc {
   double albedo = 0;      // rho in [0, 1]: sigma_s = rho sigma_t
   PhaseKind phase = PhaseKind::Isotropic;
   double g = 0;       // Henyey-Greenstein's asymmetry in (-1, 1); > 0 scatters forward
-  std::string where;  // "file:line" of the `medium` map, for errors found later
+  std::string where;  // "file:line:column" of its albedo (or of the map), for errors found later
 
   double scattering() const { return albedo * extinction; }
   // The phase function, normalised over the sphere (1 / (4 pi) for isotropic), of the cosine

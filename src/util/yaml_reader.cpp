@@ -79,16 +79,30 @@ std::string YamlMap::describe(const std::string& key) const {
   return "key '" + (path_.empty() ? key : path_ + "." + key) + "'";
 }
 
-void YamlMap::fail(const std::string& key, const std::string& message) const {
-  YAML::Mark mark = node_.Mark();
-  if (!key.empty()) {
-    // The mark of the key itself, so the line number points at the offending key.
-    for (auto it = node_.begin(); it != node_.end(); ++it)
+namespace {
+
+// The mark of the key itself, so the line number points at the offending key; the map's own when
+// the key is absent or "".
+YAML::Mark mark_of(const YAML::Node& node, const std::string& key) {
+  YAML::Mark mark = node.Mark();
+  if (!key.empty())
+    for (auto it = node.begin(); it != node.end(); ++it)
       if (it->first.Scalar() == key) mark = it->first.Mark();
-  }
+  return mark;
+}
+
+}  // namespace
+
+void YamlMap::fail(const std::string& key, const std::string& message) const {
+  const YAML::Mark mark = mark_of(node_, key);
   std::string what =
       key.empty() ? (path_.empty() ? "" : "'" + path_ + "': ") : describe(key) + ": ";
   throw InputError(located(file_, mark.line + 1, mark.column + 1, what + message));
+}
+
+std::string YamlMap::where(const std::string& key) const {
+  const YAML::Mark mark = mark_of(node_, key);
+  return file_ + ":" + std::to_string(mark.line + 1) + ":" + std::to_string(mark.column + 1);
 }
 
 YAML::Node YamlMap::at(const std::string& key) {

@@ -50,6 +50,8 @@ class YamlMap {
   void finish() const;
   // An InputError located at `key` (or at the map itself when key is "").
   [[noreturn]] void fail(const std::string& key, const std::string& message) const;
+  // "file:line:column" of `key` (of the map itself when it is absent), for errors found later.
+  std::string where(const std::string& key) const;
 
  private:
   YAML::Node at(const std::string& key);

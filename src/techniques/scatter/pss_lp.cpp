@@ -64,7 +64,7 @@ class PssLp : public PrefilteredScatter {
     if (scratch.lp->failures() == before) return g;
     // The same program once more in exact (rational) arithmetic: the rows' degenerate programs
     // (one to three distinct depths, on the moment cone's boundary) that a floating-point
-    // backend cannot certify, it can, at about a hundred times the cost of one LP, paid by the
+    // backend cannot certify, it can, at about 300 times the cost of one LP, paid by the
     // few rays that need it (docs/scattering.md §3.2).
     if (technique_.lp_backend != "exact") {
       if (!scratch.exact_lp) {
