@@ -23,19 +23,8 @@ import sys
 
 import numpy as np
 
-try:
-    import OpenImageIO as oiio
-except ImportError:
-    sys.exit("scatter_dragon_enters.py: needs python3-openimageio (scripts/setup installs it)")
+from scatter_images import read_channel as read
 
-
-def read(path):
-    image = oiio.ImageInput.open(path)
-    if image is None:
-        sys.exit(f"scatter_dragon_enters.py: cannot read {path}: {oiio.geterror()}")
-    pixels = image.read_image(format="float")
-    image.close()
-    return np.asarray(pixels, dtype=np.float64)[:, :, 0]
 
 
 def techniques_of(images, base):

@@ -21,19 +21,8 @@ import sys
 
 import numpy as np
 
-try:
-    import OpenImageIO as oiio
-except ImportError:
-    sys.exit("scatter_window.py: needs python3-openimageio (scripts/setup installs it)")
+from scatter_images import read_channel as read
 
-
-def read(path, channel=0):
-    image = oiio.ImageInput.open(path)
-    if image is None:
-        sys.exit(f"scatter_window.py: cannot read {path}: {oiio.geterror()}")
-    pixels = np.asarray(image.read_image(format="float"), dtype=np.float64)
-    image.close()
-    return pixels[:, :, channel]
 
 
 def window_of(smax):
