@@ -52,8 +52,8 @@ double admissibility_violation(const Basis& basis, const QuantizationTransform& 
 // The search's answer: the best transform found and what certifies it from above.
 struct OptimizedTransform {
   QuantizationTransform transform;
-  double gain_bits = 0;  // entropy_gain_bits(transform)
-  int starts = 0;        // multistart count (m = 2: the exhaustive angle grid, 1)
+  double gain_bits = 0;     // entropy_gain_bits(transform)
+  int starts = 0;           // multistart count (m = 2: the exhaustive angle grid, 1)
   bool exhaustive = false;  // m = 2: every pair of row directions on a grid, refined
 };
 // Deterministic (fixed seeds): m = 2 searches both row angles exhaustively; larger m runs a
@@ -65,11 +65,11 @@ OptimizedTransform optimize_transform(const Basis& basis);
 // |det A| vol(D) <= 2^m (tighter: vol(D) >= 2^m vol(H) by Brunn-Minkowski). Volumes are those of
 // convex hulls of samples (Qhull), lower bounds of the true ones, so the bounds stay valid.
 struct GainBounds {
-  double hull_volume = 0;             // vol of hull(b(z_k)), a lower bound of vol(H)
-  double difference_volume = 0;       // vol of hull(b(z_k) - b(z_l)), a lower bound of vol(D)
-  double hull_bound_bits = 0;         // -log2(|det A_canonical| vol(H))
-  double difference_bound_bits = 0;   // -log2(|det A_canonical| vol(D) / 2^m)
-  double best_bits() const;           // the smaller of the two
+  double hull_volume = 0;            // vol of hull(b(z_k)), a lower bound of vol(H)
+  double difference_volume = 0;      // vol of hull(b(z_k) - b(z_l)), a lower bound of vol(D)
+  double hull_bound_bits = 0;        // -log2(|det A_canonical| vol(H))
+  double difference_bound_bits = 0;  // -log2(|det A_canonical| vol(D) / 2^m)
+  double best_bits() const;          // the smaller of the two
 };
 GainBounds gain_bounds(const Basis& basis);
 
