@@ -60,6 +60,10 @@ struct OptimizedTransform {
 // multistart BFGS ascent from whitened random rotations.
 OptimizedTransform optimize_transform(const Basis& basis);
 
+// theta_6: the search's answer for the power basis (z, ..., z^6), written out
+// (moments/power6_transform.cpp): 30.587 bits over the canonical storage; admissible.
+QuantizationTransform power6_optimized_transform();
+
 // Upper bounds of the gain (docs/reference.md §12). The transformed hull of b([0, 1]) fits in the
 // unit cube, so |det A| vol(H) <= 1; every row maps the difference body D = H - H into [-1, 1], so
 // |det A| vol(D) <= 2^m (tighter: vol(D) >= 2^m vol(H) by Brunn-Minkowski). Volumes are those of
