@@ -130,6 +130,12 @@ std::vector<double> function_magnitudes(const Basis& basis) {
 
 }  // namespace
 
+void check_quantizable(const Basis& basis) {
+  if (basis.size() == 0) throw InputError("basis: no functions given");
+  basis.check_independent(0, 1);  // first: a constant is degenerate whatever its form
+  require_derivatives(basis);
+}
+
 RowRange row_range(const Basis& basis, const Eigen::VectorXd& a) {
   require_derivatives(basis);
   const Maximum hi = certified_maximum(basis, a), lo = certified_maximum(basis, -a);
@@ -192,8 +198,7 @@ QuantizationTransform canonical_transform(const Basis& basis) {
 QuantizationTransform quantization_transform(const Basis& basis, const std::string& kind) {
   if (kind != "canonical" && kind != "seed" && kind != "optimized")
     throw InputError("transform: '" + kind + "' is unknown; expected canonical, seed or optimized");
-  require_derivatives(basis);
-  basis.check_independent(0, 1);
+  check_quantizable(basis);
   if (kind == "canonical") return canonical_transform(basis);
   if (kind == "seed") {
     // Seed 000 §4.3 prints theta_2 and theta_4 only (moments/storage.h holds them).

@@ -28,6 +28,10 @@ struct RowRange {
   double width() const { return max_upper - min_lower; }  // certified from above
 };
 
+// InputError when a function of `basis` has no closed-form derivatives (an expression), or when
+// the basis is degenerate on [0, 1] (Basis::check_independent: a constant, dependent functions).
+void check_quantizable(const Basis& basis);
+
 // InputError when a function of `basis` has no closed-form derivatives (an expression).
 RowRange row_range(const Basis& basis, const Eigen::VectorXd& a);
 
@@ -56,8 +60,8 @@ struct OptimizedTransform {
   int starts = 0;           // multistart count (m = 2: the exhaustive angle grid, 1)
   bool exhaustive = false;  // m = 2: every pair of row directions on a grid, refined
 };
-// Deterministic (fixed seeds): m = 2 searches both row angles exhaustively; larger m runs a
-// multistart BFGS ascent from whitened random rotations.
+// check_quantizable first. Deterministic (fixed seeds): m = 2 searches both row angles
+// exhaustively; larger m runs a multistart BFGS ascent from whitened random rotations.
 OptimizedTransform optimize_transform(const Basis& basis);
 
 // theta_6: the search's answer for the power basis (z, ..., z^6), written out

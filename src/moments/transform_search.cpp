@@ -236,8 +236,8 @@ Eigen::MatrixXd random_rotation(int m, std::mt19937_64& rng) {
 }  // namespace
 
 OptimizedTransform optimize_transform(const Basis& basis) {
+  check_quantizable(basis);
   const int m = int(basis.size());
-  if (m < 1) throw InputError("quantization transform: the basis is empty");
   // The coarse grid ranks the starts; the fine one refines the best few.
   const Curve coarse = sample_curve(basis, 1025), fine = sample_curve(basis, 8193, &coarse);
   OptimizedTransform out;
