@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """The m = 3 curve b(z) and its convex hull before and after a quantization transform, both in the
-unit cube, like seed 000 Figure 5 (docs/reference.md §12). Reads the JSON of
+unit cube, like seed 000 Figure 5 (docs/reference.md §8). Reads the JSON of
 
     momentbench storage --basis z,z^2,z^3 --transform optimized --curve-samples 400 > m3.json
     /usr/bin/python3 scripts/storage_hull_plot.py m3.json docs/images/storage_hull_m3

@@ -1,4 +1,4 @@
-// Quantization transforms (docs/reference.md §12; seed 000 §4.3, seed 004 §2.5): exact ranges,
+// Quantization transforms (docs/reference.md §8; seed 000 §4.3, seed 004 §2.5): exact ranges,
 // the seed's gains, the hull-volume bounds, the search and theta_6.
 #include <gtest/gtest.h>
 

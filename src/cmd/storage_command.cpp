@@ -1,4 +1,4 @@
-// `momentbench storage`: a basis's quantization transform (docs/reference.md §12; seed 000 §4.3)
+// `momentbench storage`: a basis's quantization transform (docs/reference.md §8; seed 000 §4.3)
 // with its entropy gain over the canonical storage, the hull volumes and the certified upper
 // bounds of the gain, as JSON.
 #include <chrono>

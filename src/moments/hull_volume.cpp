@@ -1,4 +1,4 @@
-// Upper bounds of the entropy gain from hull volumes (docs/reference.md §12), with Qhull's
+// Upper bounds of the entropy gain from hull volumes (docs/reference.md §8), with Qhull's
 // reentrant library computing the convex hulls of sampled points.
 #include <cmath>
 #include <cstdio>

@@ -1,4 +1,4 @@
-// theta_6: this project's optimized transform of the six power moments (docs/reference.md §12),
+// theta_6: this project's optimized transform of the six power moments (docs/reference.md §8),
 // the answer of optimize_transform for (z, ..., z^6) written out, so that a stored format uses it
 // without searching. Seed 004 §2.5 gains 30.5 bits with a transform it does not print; this one
 // gains 30.587 over the canonical (identity) storage, against the certified bound of 33.20 bits

@@ -22,7 +22,7 @@ void require_derivatives(const Basis& basis) {
       throw InputError("basis function '" + basis[j].name() +
                        "': a quantization transform needs the exact range of every row over [0, "
                        "1], proven from closed-form derivatives, and an expression has none; use "
-                       "catalog functions (docs/reference.md §5, §12)");
+                       "catalog functions (docs/reference.md §5, §8)");
 }
 
 // f(z) = a . b(z) with its first `order` derivatives, and the sum of its terms' magnitudes (the

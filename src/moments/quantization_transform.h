@@ -1,6 +1,6 @@
 #pragma once
 // Affine transforms that spread a basis's moment vectors over [0, 1]^m before they are quantized
-// (docs/reference.md §12; seed 000 §4.3, seed 004 §2.5). theta(b) = A b + c is admissible when
+// (docs/reference.md §8; seed 000 §4.3, seed 004 §2.5). theta(b) = A b + c is admissible when
 // theta(b(z)) lies in [0, 1]^m for every z in [0, 1]; an affine map raises the differential entropy
 // of the stored vectors by log2 |det A| (seed 000, Proposition 6), so the best transform maximises
 // log2 |det A| - sum_i log2 (max_z a_i . b(z) - min_z a_i . b(z)) over row directions a_i, each row
@@ -68,7 +68,7 @@ OptimizedTransform optimize_transform(const Basis& basis);
 // (moments/power6_transform.cpp): 30.587 bits over the canonical storage; admissible.
 QuantizationTransform power6_optimized_transform();
 
-// Upper bounds of the gain (docs/reference.md §12). The transformed hull of b([0, 1]) fits in the
+// Upper bounds of the gain (docs/reference.md §8). The transformed hull of b([0, 1]) fits in the
 // unit cube, so |det A| vol(H) <= 1; every row maps the difference body D = H - H into [-1, 1], so
 // |det A| vol(D) <= 2^m (tighter: vol(D) >= 2^m vol(H) by Brunn-Minkowski). Volumes are those of
 // convex hulls of samples (Qhull), lower bounds of the true ones, so the bounds stay valid.

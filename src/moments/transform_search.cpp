@@ -1,4 +1,4 @@
-// The search for the transform of largest entropy gain (docs/reference.md §12): maximise
+// The search for the transform of largest entropy gain (docs/reference.md §8): maximise
 // F(A) = log|det A| - sum_i log w(a_i), w(a) = max_z a . b(z) - min_z a . b(z), over the rows a_i.
 // F is invariant under scaling a row, and -log F's optimum is the smallest parallelepiped around
 // the hull of the curve b([0, 1]). The search runs on a dense grid of the curve with each extremum
