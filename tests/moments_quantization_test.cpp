@@ -132,7 +132,9 @@ TEST(QuantizationTransform, OptimizedThreeMatchesFigure5) {
 TEST(QuantizationTransform, OptimizedBeatsCanonicalOnCatalogCandidates) {
   for (const Basis& basis :
        {power(4), Basis::parse({"exp(-4z)", "sin(pi z)", "cos(2 pi z)", "log(1+4z)"}),
-        Basis::parse({"z", "exp(2z)", "1/(1+z)"})}) {
+        Basis::parse({"z", "exp(2z)", "1/(1+z)"}),
+        // Nearly dependent on [0, 1]: a thin hull, which Qhull sees in whitened coordinates.
+        Basis::parse({"z^3", "z^4", "z^5", "z^6"})}) {
     const OptimizedTransform o = optimize_transform(basis);
     const GainBounds g = gain_bounds(basis);
     EXPECT_GT(o.gain_bits, 0.0);  // canonical is 0 by definition

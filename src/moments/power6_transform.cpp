@@ -1,7 +1,7 @@
 // theta_6: this project's optimized transform of the six power moments (docs/reference.md §8),
 // the answer of optimize_transform for (z, ..., z^6) written out, so that a stored format uses it
 // without searching. Seed 004 §2.5 gains 30.5 bits with a transform it does not print; this one
-// gains 30.587 over the canonical (identity) storage, against the certified bound of 33.20 bits
+// gains 30.587 over the canonical (identity) storage, against the certified bound of 32.94 bits
 // from the difference body (tests/moments_quantization_test.cpp re-derives both, and checks that
 // q = A b(z) + c stays in [0, 1]^6 on all of [0, 1] with the exact row ranges).
 #include "moments/quantization_transform.h"
