@@ -50,10 +50,12 @@ QuantizationTransform quantization_transform(const Basis& basis, const std::stri
 double entropy_gain_bits(const Basis& basis, const QuantizationTransform& t);
 
 // The largest excursion of A b(z) + c outside [0, 1] over z in [0, 1], from the certified ranges
-// (<= 0 for an admissible transform; fit_rows gives 0 up to the rounding of A and c).
+// (<= 0 for an admissible transform; fit_rows's are slightly below 0, its ranges widened by a
+// rounding margin).
 double admissibility_violation(const Basis& basis, const QuantizationTransform& t);
 
-// The search's answer: the best transform found and what certifies it from above.
+// The search's answer: the best transform found, its gain and how it was searched (gain_bounds
+// gives the certified upper bounds to set beside the gain).
 struct OptimizedTransform {
   QuantizationTransform transform;
   double gain_bits = 0;     // entropy_gain_bits(transform)

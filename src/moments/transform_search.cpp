@@ -1,10 +1,11 @@
 // The search for the transform of largest entropy gain (docs/reference.md §8): maximise
 // F(A) = log|det A| - sum_i log w(a_i), w(a) = max_z a . b(z) - min_z a . b(z), over the rows a_i.
-// F is invariant under scaling a row, and -log F's optimum is the smallest parallelepiped around
-// the hull of the curve b([0, 1]). The search runs on a dense grid of the curve with each extremum
-// refined by cubic Hermite interpolation (values and derivatives), in whitened coordinates (the
-// curve's covariance made the identity, so that the rows start well conditioned); the answer's rows
-// are then fitted to their certified ranges (fit_rows), which is what the gain is measured with.
+// F is invariant under scaling a row, and exp(-F) is the volume of the parallelepiped the rows'
+// slabs cut around the hull of the curve b([0, 1]): the optimum is the smallest such one. The
+// search runs on a dense grid of the curve with each extremum refined by cubic Hermite
+// interpolation (values and derivatives), in whitened coordinates (the curve's covariance made the
+// identity, so that the rows start well conditioned); the answer's rows are then fitted to their
+// certified ranges (fit_rows), which is what the gain is measured with.
 #include <algorithm>
 #include <cmath>
 #include <limits>
