@@ -7,6 +7,7 @@
 
 #include "basis/basis.h"
 #include "moments/quantization_transform.h"
+#include "moments/storage.h"
 #include "util/error.h"
 
 namespace mb {
@@ -80,6 +81,12 @@ TEST(QuantizationTransform, SeedTransformsGainTwoAndTwelvePointThreeBits) {
   EXPECT_NEAR(bits, 12.2783, 1e-3);
   EXPECT_NEAR(std::round(bits * 10) / 10, 12.3, 1e-12);
   expect_admissible(power(4), t4);
+  // As printed (moments/storage.h, what the 16-bit map stores), theta_4's third row dips 6.5e-8
+  // below 0: far below a 16-bit step, and the store clamps; refitted, it dips nowhere.
+  const MomentStorage printed = unorm16_power4_storage();
+  const double dip = admissibility_violation(power(4), {printed.transform, printed.offset});
+  EXPECT_GT(dip, 6.4e-8);
+  EXPECT_LT(dip, 6.6e-8);
   // The canonical transform of power moments is the identity.
   const QuantizationTransform c4 = quantization_transform(power(4), "canonical");
   EXPECT_LT((c4.A - Eigen::MatrixXd::Identity(4, 4)).cwiseAbs().maxCoeff(), 1e-12);
