@@ -1,0 +1,149 @@
+// Upper bounds of the entropy gain from hull volumes (docs/reference.md §8), with Qhull's
+// reentrant library computing the convex hulls of sampled points.
+#include <cmath>
+#include <cstdio>
+#include <iterator>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "moments/quantization_transform.h"
+#include "util/error.h"
+
+extern "C" {
+#include <libqhull_r/qhull_ra.h>
+}
+
+namespace mb {
+
+namespace {
+
+// The volume of the convex hull of `points` (n x dim, row-major), from Qhull ("Qt": triangulated,
+// so that the volume is the facets' simplices summed exactly).
+double qhull_volume(std::vector<double> points, int dim) {
+  const int n = int(points.size()) / dim;
+  qhT context;
+  qhT* qh = &context;
+  FILE* errors = std::tmpfile();
+  qh_zero(qh, errors);
+  char flags[] = "qhull Qt";
+  const int exit = qh_new_qhull(qh, dim, n, points.data(), False, flags, nullptr, errors);
+  double volume = 0;
+  if (exit == 0) {
+    qh_getarea(qh, qh->facet_list);
+    volume = qh->totvol;
+  }
+  qh_freeqhull(qh, !qh_ALL);
+  int still_long = 0, total_long = 0;
+  qh_memfreeshort(qh, &still_long, &total_long);
+  std::string message;
+  if (errors) {
+    std::rewind(errors);
+    char line[256];
+    while (message.size() < 400 && std::fgets(line, sizeof line, errors)) message += line;
+    std::fclose(errors);
+  }
+  if (exit != 0)
+    throw InputError("hull volume: Qhull failed on " + std::to_string(n) +
+                     " points of the curve in " + std::to_string(dim) +
+                     " dimensions (a degenerate basis?): " + message);
+  return volume;
+}
+
+// Qhull's volume of `points`; where Qhull's precision fails (a nearly flat hull), of every other
+// point, then every fourth: a subset's hull is inside the set's, so it still bounds from below.
+double convex_hull_volume(std::vector<double> points, int dim) {
+  for (int attempt = 0;; ++attempt) {
+    try {
+      return qhull_volume(points, dim);
+    } catch (const InputError&) {
+      if (attempt == 2 || points.size() / dim < 4 * size_t(dim)) throw;
+    }
+    std::vector<double> half;
+    for (size_t k = 0; k < points.size() / dim; k += 2)
+      half.insert(half.end(), points.begin() + k * dim, points.begin() + (k + 1) * dim);
+    points = std::move(half);
+  }
+}
+
+// Samples of the curve and of its difference body: Chebyshev-spaced depths, denser where the
+// moment curves bend most (near 0 and 1). The counts keep Qhull's facets (about n^(m/2) for the
+// neighbourly power-moment curves) to a few hundred thousand.
+int curve_samples(int m) {
+  static const int kCounts[] = {0, 2, 4096, 1500, 300, 120, 64, 40, 28};
+  return m < int(std::size(kCounts)) ? kCounts[m] : 24;
+}
+int difference_samples(int m) {
+  static const int kCounts[] = {0, 2, 512, 200, 60, 28, 22, 12, 8};
+  return m < int(std::size(kCounts)) ? kCounts[m] : 8;
+}
+
+std::vector<double> depths(int n) {
+  std::vector<double> z(n);
+  for (int k = 0; k < n; ++k) z[k] = 0.5 - 0.5 * std::cos(std::numbers::pi * k / (n - 1));
+  return z;
+}
+
+}  // namespace
+
+double GainBounds::best_bits() const {
+  return std::min(hull_bound_bits, difference_bound_bits);
+}
+
+GainBounds gain_bounds(const Basis& basis) {
+  const int m = int(basis.size());
+  const QuantizationTransform canonical = quantization_transform(basis, "canonical");
+  const double canonical_det = std::abs(canonical.A.determinant());
+  auto stored = [&](const std::vector<double>& z) {
+    std::vector<Eigen::VectorXd> q;
+    Eigen::VectorXd b(m);
+    for (double x : z) {
+      for (int j = 0; j < m; ++j) b(j) = basis[j](x);
+      q.push_back(canonical.A * b + canonical.c);
+    }
+    return q;
+  };
+  GainBounds out;
+  if (m == 1) {
+    out.hull_volume = 1 / canonical_det, out.difference_volume = 2 / canonical_det;
+    return out;
+  }
+  // Hulls are taken in coordinates where the curve's samples have identity covariance (a curve of
+  // nearly dependent functions, e.g. z^3 ... z^6, is otherwise too thin for Qhull's arithmetic);
+  // volumes come back through |det W|.
+  const std::vector<Eigen::VectorXd> curve = stored(depths(curve_samples(m)));
+  Eigen::VectorXd mean = Eigen::VectorXd::Zero(m);
+  for (const auto& q : curve) mean += q / double(curve.size());
+  Eigen::MatrixXd covariance = Eigen::MatrixXd::Zero(m, m);
+  for (const auto& q : curve)
+    covariance += (q - mean) * (q - mean).transpose() / double(curve.size());
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(covariance);
+  if (!(eig.eigenvalues()(0) > 0))
+    throw InputError("hull volume: the basis's curve is degenerate on [0, 1]");
+  const Eigen::MatrixXd W = eig.eigenvectors() *
+                            eig.eigenvalues().cwiseSqrt().cwiseInverse().asDiagonal() *
+                            eig.eigenvectors().transpose();
+  const double det_W = std::abs(W.determinant());
+  std::vector<double> points;
+  for (const auto& q : curve) {
+    const Eigen::VectorXd y = W * (q - mean);
+    points.insert(points.end(), y.data(), y.data() + m);
+  }
+  const double hull = convex_hull_volume(points, m) / det_W;
+  const std::vector<Eigen::VectorXd> sparse = stored(depths(difference_samples(m)));
+  points.clear();
+  for (size_t i = 0; i < sparse.size(); ++i)
+    for (size_t k = 0; k < sparse.size(); ++k) {
+      if (i == k) continue;  // 0, inside D: n copies of it trouble Qhull
+      const Eigen::VectorXd d = sparse[i] - sparse[k];
+      points.insert(points.end(), d.data(), d.data() + m);
+    }
+  const double difference = convex_hull_volume(points, m);
+  out.hull_volume = hull / canonical_det;
+  out.difference_volume = difference / canonical_det;
+  out.hull_bound_bits = -std::log2(hull);
+  out.difference_bound_bits = m - std::log2(difference);
+  return out;
+}
+
+}  // namespace mb
