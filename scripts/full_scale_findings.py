@@ -68,7 +68,7 @@ def rank_with_interval(four, value, se):
 
 def basis_ranks(four):
     by_name = {r[1]: r for r in four}
-    print("| basis | mean % | exact | rank among all | rank interval (±2 SE) |")
+    print("| basis | mean % | mean is | rank among all | rank interval (±2 SE) |")
     print("|---|---|---|---|---|")
     for label, name in (("power moments", POWER4), ("trigonometric moments", TRIG4)):
         if name not in by_name:
@@ -76,7 +76,8 @@ def basis_ranks(four):
             continue
         _, _, mean, se, exact = by_name[name]
         point, lo, hi = rank_with_interval(four, mean, se)
-        print(f"| {label} | {pct(mean)} | {exact} | {point} of {len(four)} | {lo}–{hi} |")
+        print(f"| {label} | {pct(mean)} | {'exact' if exact else 'estimate'} | "
+              f"{point} of {len(four)} | {lo}–{hi} |")
 
 
 def plateau(four):

@@ -47,8 +47,10 @@ def draw(ax, rows, series, references):
             estimated = sum(counts) - sum(exact)
             if estimated:
                 label = f"{s['series']}: {estimated} screened estimates"
-            ax.bar(lo, [c - e for c, e in zip(counts, exact)], bottom=exact, width=width,
-                   align="edge", color="#7f9fbf", edgecolor="#4f6f8f", linewidth=0.4, label=label)
+            # Without estimates every bar is exact: drawn whole, not as zero-height tops.
+            light = [c - e for c, e in zip(counts, exact)] if estimated else counts
+            ax.bar(lo, light, bottom=exact if estimated else 0, width=width, align="edge",
+                   color="#7f9fbf", edgecolor="#4f6f8f", linewidth=0.4, label=label)
             if estimated and sum(exact):
                 ax.bar(lo, exact, width=width, align="edge", color="#1f3f5f", edgecolor="#1f3f5f",
                        linewidth=0.4, label=f"{sum(exact)} exact means")
