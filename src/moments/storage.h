@@ -40,6 +40,9 @@ MomentStorage unorm_storage(int bits, Eigen::MatrixXd transform, Eigen::VectorXd
 MomentStorage unorm16_power4_storage();
 // theta_2 for VSM's b = (z, z^2): q = (z, 4z - 4z^2).
 MomentStorage unorm16_power2_storage();
+// 10 bits with this project's theta_6 for b = (z, .., z^6) (docs/reference.md §12): seed 004 §2.5
+// stores six moments at 10 bits a channel with a transform it does not print.
+MomentStorage unorm10_power6_storage();
 
 // b -> what the texel holds (rounded), in place.
 void store_moments(const MomentStorage& storage, std::span<double> b);

@@ -54,7 +54,7 @@ class PowerMomentTechnique : public ClosedFormTechnique {
     return closed_form_bound(alpha_, beta_);
   }
   std::string darkening_reason() const override {
-    if (solver_ == PowerSolver::Hamburger6 && beta_ == 0)
+    if (solver_ == PowerSolver::Hamburger6 && beta_ == 0 && storage().kind == StorageKind::Double)
       return "not proven: six power moments rounded to double leave a narrow kernel's moment set "
              "by more than alpha pulls them back (docs/reference.md §4)";
     return closed_form_reason(beta_);
@@ -89,6 +89,12 @@ const TechniqueOption kHausdorff416bitAlpha{
     .spec = {"hausdorff4_16bit.alpha", OptionType::Number, "3e-5",
              "Moment bias of Hausdorff 4MSM from 16-bit maps with theta_4. 3e-5, "
              "hamburger4_16bit's (seed 000 §4.3), so that the two rows differ by the solver alone.",
+             0, 1},
+    .moment_bias = true};
+const TechniqueOption kHamburger610bitAlpha{
+    .spec = {"hamburger6_10bit.alpha", OptionType::Number, "4e-3",
+             "Moment bias of six-moment Hamburger MSM from 10-bit maps with theta_6 "
+             "(docs/reference.md §12). 4e-3: seed 004 §2.5's for six moments at 10 bits.",
              0, 1},
     .moment_bias = true};
 const TechniqueOption kHausdorff4Alpha{
@@ -199,9 +205,18 @@ std::vector<TechniqueRow> rows() {
                               .on_r = true,
                               .hamburger_moments = 6},
        .verify_place = 6,
-       .sweep_references = {
-           {.expectation = "six moments: better than every four-function candidate (seed 004)",
-            .place = 6}}}};
+       .sweep_references =
+           {{.expectation = "six moments: better than every four-function candidate (seed 004)",
+             .place = 6}}},
+      {.name = "hamburger6_10bit",
+       .rank = 175,
+       .summary = "six power moments on R from 10-bit maps with the transform theta_6 "
+                  "(seed 004 §2.5)",
+       .storage = "unorm10",
+       .bound = std::string(kNotProven) + ": 10-bit rounding of the moments",
+       .options = {&kHamburger610bitAlpha, &kHamburgerBeta},
+       .make = make<PowerSolver::Hamburger6, unorm10_power6_storage, &kHamburger610bitAlpha>,
+       .verify = storage_box(fixed_lp_basis<kPower6>, -2, 3, true, &kHamburger610bitAlpha)}};
 }
 
 const TechniqueRegistration kRegistered(rows);
