@@ -91,14 +91,18 @@ TEST(StoredTechniques, ClosedFormsStayBelowTheLpOfTheirFormat) {
     std::printf("%s: above the LP of its format in %d of %d kernels\n", row->name.c_str(), above,
                 n);
     // Without a transform the rounding of the raw powers leaves the closed form claiming more
-    // than the stored values allow in half of the kernels; theta_4 and theta_2 keep it rare.
-    const bool canonical = technique->storage().transform.isIdentity();
-    if (canonical)
+    // than the stored values allow in half of the kernels; theta_4 and theta_2 keep it rare at
+    // 16 bits. Six moments at 10 bits claim more in a fifth of them even at seed 004's
+    // alpha 4e-3 ("a serious problem for hard shadows", seed 004 §2.5).
+    if (technique->storage().transform.isIdentity())
       EXPECT_GE(above, n / 4) << row->name;
-    else
+    else if (technique->storage().bits == 16)
       EXPECT_LE(above, n / 20) << row->name;
+    else
+      EXPECT_LE(above, n / 3) << row->name;
   }
-  EXPECT_GE(rows, 4);  // hamburger4_16bit, its canonical twin, hausdorff4_16bit, vsm_16bit
+  EXPECT_GE(rows, 5);  // hamburger4_16bit and its canonical twin, hausdorff4_16bit, vsm_16bit,
+                       // hamburger6_10bit
 }
 
 // Seed 000 §4.3: 16 bits of the raw powers give "unacceptable artifacts", theta_4 makes them
