@@ -82,7 +82,8 @@ std::unique_ptr<Technique> stored_technique(const std::string& name, const Techn
   if (!t || t->storage().kind == StorageKind::Double) {
     std::string valid;
     for (const TechniqueRow* r : family_rows(TechniqueFamily::HardShadow))
-      if (!r->prefix() && !r->solves_lp && r->make && r->storage != "double")
+      if (!r->prefix() && !r->solves_lp && r->make &&
+          r->make(r->name, p)->storage().kind != StorageKind::Double)
         valid += (valid.empty() ? "" : ", ") + r->name;
     throw InputError("technique '" + name +
                      "': expected lp_stored:<a hard-shadow technique with a stored format>, one "
