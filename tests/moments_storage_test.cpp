@@ -1,4 +1,4 @@
-// k-bit unorm storage with any affine transform (moments/storage.h, docs/reference.md §12): a
+// k-bit unorm storage with any affine transform (moments/storage.h, docs/reference.md §8): a
 // texel's round trip stays within half a step mapped back through the inverse transform, a
 // filtered map's stored values within storage_tolerance of the exact moments', and the format
 // refuses bit depths and transforms a map cannot hold.

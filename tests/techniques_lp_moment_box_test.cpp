@@ -1,4 +1,4 @@
-// lp.moment_box for any basis (techniques/lp_fragment_solver.h, docs/reference.md §12): a unorm
+// lp.moment_box for any basis (techniques/lp_fragment_solver.h, docs/reference.md §8): a unorm
 // box after lp.moment_transform. `seed` keeps what unorm16 meant before the transforms could be
 // chosen (seed 000's theta_4 verbatim), `canonical` is the identity for power moments, `optimized`
 // the basis's own search; the choice is part of a sweep's identity.

@@ -1,4 +1,4 @@
-// The stored techniques (docs/reference.md §12) beside lp_stored:<technique>, Problem 1 over the
+// The stored techniques (docs/reference.md §8) beside lp_stored:<technique>, Problem 1 over the
 // moment box of the same format: the LP's answer is the sharpest lower bound the stored values
 // allow, so a closed form reading the map should not claim more shadow, and where it does the
 // format (not the LP) is to blame. The transform is what keeps a 16-bit map usable (seed 000

@@ -18,6 +18,7 @@ void register_verify_command(CLI::App& app, std::function<int()>& action);
 void register_bounds_command(CLI::App& app, std::function<int()>& action);
 void register_oit_command(CLI::App& app, std::function<int()>& action);
 void register_scatter_command(CLI::App& app, std::function<int()>& action);
+void register_storage_command(CLI::App& app, std::function<int()>& action);
 // `momentbench options`: every command's option table as Markdown (the README's lists).
 void register_options_command(CLI::App& app, std::function<int()>& action);
 
@@ -32,5 +33,6 @@ std::vector<OptionSpec> verify_specs();
 std::vector<OptionSpec> bounds_specs();
 std::vector<OptionSpec> oit_specs();
 std::vector<OptionSpec> scatter_specs();
+std::vector<OptionSpec> storage_specs();
 
 }  // namespace mb

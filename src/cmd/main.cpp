@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
   mb::register_bounds_command(app, action);
   mb::register_oit_command(app, action);
   mb::register_scatter_command(app, action);
+  mb::register_storage_command(app, action);
   mb::register_options_command(app, action);
   try {
     app.parse(argc, argv);

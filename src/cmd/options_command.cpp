@@ -15,10 +15,10 @@ namespace mb {
 namespace {
 
 std::vector<std::pair<std::string, std::vector<OptionSpec>>> command_option_tables() {
-  return {{"render", render_specs()},  {"eval", eval_specs()},     {"solve", solve_specs()},
-          {"sweep", sweep_specs()},    {"merge", merge_specs()},   {"report", report_specs()},
-          {"verify", verify_specs()},  {"bounds", bounds_specs()}, {"oit", oit_specs()},
-          {"scatter", scatter_specs()}};
+  return {{"render", render_specs()},   {"eval", eval_specs()},      {"solve", solve_specs()},
+          {"sweep", sweep_specs()},     {"merge", merge_specs()},    {"report", report_specs()},
+          {"verify", verify_specs()},   {"bounds", bounds_specs()},  {"oit", oit_specs()},
+          {"scatter", scatter_specs()}, {"storage", storage_specs()}};
 }
 
 int run_options(const std::string& only) {

@@ -1,4 +1,4 @@
-// Upper bounds of the entropy gain from hull volumes (docs/reference.md §12), with Qhull's
+// Upper bounds of the entropy gain from hull volumes (docs/reference.md §8), with Qhull's
 // reentrant library computing the convex hulls of sampled points.
 #include <cmath>
 #include <cstdio>
@@ -20,7 +20,7 @@ namespace {
 
 // The volume of the convex hull of `points` (n x dim, row-major), from Qhull ("Qt": triangulated,
 // so that the volume is the facets' simplices summed exactly).
-double convex_hull_volume(std::vector<double> points, int dim) {
+double qhull_volume(std::vector<double> points, int dim) {
   const int n = int(points.size()) / dim;
   qhT context;
   qhT* qh = &context;
@@ -50,6 +50,22 @@ double convex_hull_volume(std::vector<double> points, int dim) {
   return volume;
 }
 
+// Qhull's volume of `points`; where Qhull's precision fails (a nearly flat hull), of every other
+// point, then every fourth: a subset's hull is inside the set's, so it still bounds from below.
+double convex_hull_volume(std::vector<double> points, int dim) {
+  for (int attempt = 0;; ++attempt) {
+    try {
+      return qhull_volume(points, dim);
+    } catch (const InputError&) {
+      if (attempt == 2 || points.size() / dim < 4 * size_t(dim)) throw;
+    }
+    std::vector<double> half;
+    for (size_t k = 0; k < points.size() / dim; k += 2)
+      half.insert(half.end(), points.begin() + k * dim, points.begin() + (k + 1) * dim);
+    points = std::move(half);
+  }
+}
+
 // Samples of the curve and of its difference body: Chebyshev-spaced depths, denser where the
 // moment curves bend most (near 0 and 1). The counts keep Qhull's facets (about n^(m/2) for the
 // neighbourly power-moment curves) to a few hundred thousand.
@@ -58,7 +74,7 @@ int curve_samples(int m) {
   return m < int(std::size(kCounts)) ? kCounts[m] : 24;
 }
 int difference_samples(int m) {
-  static const int kCounts[] = {0, 2, 512, 120, 40, 20, 14, 10, 8};
+  static const int kCounts[] = {0, 2, 512, 200, 60, 28, 22, 12, 8};
   return m < int(std::size(kCounts)) ? kCounts[m] : 8;
 }
 
@@ -92,15 +108,34 @@ GainBounds gain_bounds(const Basis& basis) {
     out.hull_volume = 1 / canonical_det, out.difference_volume = 2 / canonical_det;
     return out;
   }
+  // Hulls are taken in coordinates where the curve's samples have identity covariance (a curve of
+  // nearly dependent functions, e.g. z^3 ... z^6, is otherwise too thin for Qhull's arithmetic);
+  // volumes come back through |det W|.
   const std::vector<Eigen::VectorXd> curve = stored(depths(curve_samples(m)));
+  Eigen::VectorXd mean = Eigen::VectorXd::Zero(m);
+  for (const auto& q : curve) mean += q / double(curve.size());
+  Eigen::MatrixXd covariance = Eigen::MatrixXd::Zero(m, m);
+  for (const auto& q : curve)
+    covariance += (q - mean) * (q - mean).transpose() / double(curve.size());
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(covariance);
+  if (!(eig.eigenvalues()(0) > 0))
+    throw InputError("hull volume: the basis's curve is degenerate on [0, 1]");
+  const Eigen::MatrixXd W = eig.eigenvectors() *
+                            eig.eigenvalues().cwiseSqrt().cwiseInverse().asDiagonal() *
+                            eig.eigenvectors().transpose();
+  const double det_W = std::abs(W.determinant());
   std::vector<double> points;
-  for (const auto& q : curve) points.insert(points.end(), q.data(), q.data() + m);
-  const double hull = convex_hull_volume(points, m);
+  for (const auto& q : curve) {
+    const Eigen::VectorXd y = W * (q - mean);
+    points.insert(points.end(), y.data(), y.data() + m);
+  }
+  const double hull = convex_hull_volume(points, m) / det_W;
   const std::vector<Eigen::VectorXd> sparse = stored(depths(difference_samples(m)));
   points.clear();
-  for (const auto& p : sparse)
-    for (const auto& q : sparse) {
-      const Eigen::VectorXd d = p - q;
+  for (size_t i = 0; i < sparse.size(); ++i)
+    for (size_t k = 0; k < sparse.size(); ++k) {
+      if (i == k) continue;  // 0, inside D: n copies of it trouble Qhull
+      const Eigen::VectorXd d = sparse[i] - sparse[k];
       points.insert(points.end(), d.data(), d.data() + m);
     }
   const double difference = convex_hull_volume(points, m);

@@ -22,7 +22,7 @@ void require_derivatives(const Basis& basis) {
       throw InputError("basis function '" + basis[j].name() +
                        "': a quantization transform needs the exact range of every row over [0, "
                        "1], proven from closed-form derivatives, and an expression has none; use "
-                       "catalog functions (docs/reference.md §5, §12)");
+                       "catalog functions (docs/reference.md §5, §8)");
 }
 
 // f(z) = a . b(z) with its first `order` derivatives, and the sum of its terms' magnitudes (the
@@ -56,6 +56,7 @@ struct Maximum {
 Maximum certified_maximum(const Basis& basis, const Eigen::VectorXd& a) {
   constexpr int kCells = 64;
   constexpr int kMaxDepth = 48;
+  constexpr int kMaxCells = 200000;  // beyond, every cell left is bounded as it is (still valid)
   long double best = -std::numeric_limits<long double>::infinity(), best_at = 0, scale = 0;
   long double lowest = std::numeric_limits<long double>::infinity();
   auto consider = [&](long double z) {
@@ -75,8 +76,10 @@ Maximum certified_maximum(const Basis& basis, const Eigen::VectorXd& a) {
     consider(z);
   }
   const long double spread = std::max(best - lowest, scale * 1e-12L);
-  const long double tolerance = 1e-12L * spread;
   const long double rounding = 64 * kLongEps;
+  // No bisection removes the rounding allowance: a tolerance below it would split the cells around
+  // the maximum down to kMaxDepth.
+  const long double tolerance = std::max(1e-12L * spread, 4 * rounding * scale);
   long double upper = best;
   struct Cell {
     long double lo, hi;
@@ -85,7 +88,7 @@ Maximum certified_maximum(const Basis& basis, const Eigen::VectorXd& a) {
   std::vector<Cell> cells;
   for (int i = 0; i < kCells; ++i)
     cells.push_back({(long double)(i) / kCells, (long double)(i + 1) / kCells, 0});
-  while (!cells.empty()) {
+  for (int visited = 0; !cells.empty(); ++visited) {
     const Cell cell = cells.back();
     cells.pop_back();
     const long double x = (cell.lo + cell.hi) / 2, r = (cell.hi - cell.lo) / 2;
@@ -99,7 +102,7 @@ Maximum certified_maximum(const Basis& basis, const Eigen::VectorXd& a) {
         v.d[0] + std::abs(v.d[1]) * r + curvature * r * r / 2 + rounding * (v.magnitude + scale);
     if (!std::isfinite(bound))
       throw InputError("basis: a row's range is unbounded near z = " + round_trip(double(x)));
-    if (bound <= best + tolerance || cell.depth >= kMaxDepth) {
+    if (bound <= best + tolerance || cell.depth >= kMaxDepth || visited >= kMaxCells) {
       upper = std::max(upper, bound);
       continue;
     }
@@ -129,6 +132,12 @@ std::vector<double> function_magnitudes(const Basis& basis) {
 }
 
 }  // namespace
+
+void check_quantizable(const Basis& basis) {
+  if (basis.size() == 0) throw InputError("basis: no functions given");
+  basis.check_independent(0, 1);  // first: a constant is degenerate whatever its form
+  require_derivatives(basis);
+}
 
 RowRange row_range(const Basis& basis, const Eigen::VectorXd& a) {
   require_derivatives(basis);
@@ -192,8 +201,7 @@ QuantizationTransform canonical_transform(const Basis& basis) {
 QuantizationTransform quantization_transform(const Basis& basis, const std::string& kind) {
   if (kind != "canonical" && kind != "seed" && kind != "optimized")
     throw InputError("transform: '" + kind + "' is unknown; expected canonical, seed or optimized");
-  require_derivatives(basis);
-  basis.check_independent(0, 1);
+  check_quantizable(basis);
   if (kind == "canonical") return canonical_transform(basis);
   if (kind == "seed") {
     // Seed 000 §4.3 prints theta_2 and theta_4 only (moments/storage.h holds them).

@@ -1,6 +1,6 @@
 #pragma once
 // Affine transforms that spread a basis's moment vectors over [0, 1]^m before they are quantized
-// (docs/reference.md §12; seed 000 §4.3, seed 004 §2.5). theta(b) = A b + c is admissible when
+// (docs/reference.md §8; seed 000 §4.3, seed 004 §2.5). theta(b) = A b + c is admissible when
 // theta(b(z)) lies in [0, 1]^m for every z in [0, 1]; an affine map raises the differential entropy
 // of the stored vectors by log2 |det A| (seed 000, Proposition 6), so the best transform maximises
 // log2 |det A| - sum_i log2 (max_z a_i . b(z) - min_z a_i . b(z)) over row directions a_i, each row
@@ -28,6 +28,10 @@ struct RowRange {
   double width() const { return max_upper - min_lower; }  // certified from above
 };
 
+// InputError when a function of `basis` has no closed-form derivatives (an expression), or when
+// the basis is degenerate on [0, 1] (Basis::check_independent: a constant, dependent functions).
+void check_quantizable(const Basis& basis);
+
 // InputError when a function of `basis` has no closed-form derivatives (an expression).
 RowRange row_range(const Basis& basis, const Eigen::VectorXd& a);
 
@@ -46,21 +50,27 @@ QuantizationTransform quantization_transform(const Basis& basis, const std::stri
 double entropy_gain_bits(const Basis& basis, const QuantizationTransform& t);
 
 // The largest excursion of A b(z) + c outside [0, 1] over z in [0, 1], from the certified ranges
-// (<= 0 for an admissible transform; fit_rows gives 0 up to the rounding of A and c).
+// (<= 0 for an admissible transform; fit_rows's are slightly below 0, its ranges widened by a
+// rounding margin).
 double admissibility_violation(const Basis& basis, const QuantizationTransform& t);
 
-// The search's answer: the best transform found and what certifies it from above.
+// The search's answer: the best transform found, its gain and how it was searched (gain_bounds
+// gives the certified upper bounds to set beside the gain).
 struct OptimizedTransform {
   QuantizationTransform transform;
   double gain_bits = 0;     // entropy_gain_bits(transform)
   int starts = 0;           // multistart count (m = 2: the exhaustive angle grid, 1)
   bool exhaustive = false;  // m = 2: every pair of row directions on a grid, refined
 };
-// Deterministic (fixed seeds): m = 2 searches both row angles exhaustively; larger m runs a
-// multistart BFGS ascent from whitened random rotations.
+// check_quantizable first. Deterministic (fixed seeds): m = 2 searches both row angles
+// exhaustively; larger m runs a multistart BFGS ascent from whitened random rotations.
 OptimizedTransform optimize_transform(const Basis& basis);
 
-// Upper bounds of the gain (docs/reference.md §12). The transformed hull of b([0, 1]) fits in the
+// theta_6: the search's answer for the power basis (z, ..., z^6), written out
+// (moments/power6_transform.cpp): 30.587 bits over the canonical storage; admissible.
+QuantizationTransform power6_optimized_transform();
+
+// Upper bounds of the gain (docs/reference.md §8). The transformed hull of b([0, 1]) fits in the
 // unit cube, so |det A| vol(H) <= 1; every row maps the difference body D = H - H into [-1, 1], so
 // |det A| vol(D) <= 2^m (tighter: vol(D) >= 2^m vol(H) by Brunn-Minkowski). Volumes are those of
 // convex hulls of samples (Qhull), lower bounds of the true ones, so the bounds stay valid.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "moments/quantization_transform.h"
 #include "util/error.h"
 
 namespace mb {
@@ -40,7 +41,7 @@ MomentStorage unorm_storage(int bits, Eigen::MatrixXd transform, Eigen::VectorXd
     for (int d : depths) valid += (valid.empty() ? "" : ", ") + std::to_string(d);
     throw InputError(what + ": unorm with " + std::to_string(bits) +
                      " bits a channel; expected one of " + valid +
-                     " (the GPU unorm formats, docs/reference.md §12)");
+                     " (the GPU unorm formats, docs/reference.md §8)");
   }
   const Eigen::Index m = transform.rows();
   if (m == 0 || transform.cols() != m || offset.size() != m)
@@ -73,26 +74,8 @@ MomentStorage unorm16_power2_storage() {
 }
 
 MomentStorage unorm10_power6_storage() {
-  // optimize_transform of (z, .., z^6) (moments/quantization_transform.h), printed to 17 digits:
-  // 30.586 bits over the raw powers (seed 004 §2.5's: 30.5), admissible with its rows' certified
-  // ranges (tests/techniques_stored_test.cpp).
-  Eigen::MatrixXd a(6, 6);
-  a << -1.7336957351113096, 35.234039058509246, -230.31041875811607, 536.82918923026546,
-      -533.85835802716804, 193.83925038214116,  //
-      27.206971514251059, -246.5313766751876, 880.66045137331503, -1545.359281526115,
-      1326.0348344304055, -442.0115986899529,  //
-      -2.353902731453942, -99.896787245765537, 714.76200537026045, -1728.5264263663644,
-      1751.3811935890108, -636.36608240130136,  //
-      18.968248057168438, -135.76030801199585, 462.62068614244862, -791.72678951191335,
-      645.77925546086828, -199.88111785559292,  //
-      3.3946815907212762, -75.147389800452402, 266.85641087434971, -347.18161379968433,
-      168.95937052301718, -17.803858850903524,  //
-      -33.678834541485479, 367.58555783878478, -1467.2423715099449, 2647.2340243964154,
-      -2201.3777957655025, 686.48034357197514;
-  Eigen::VectorXd c(6);
-  c << 0.99999384947605174, 8.3585154043377109e-12, 0.99999999999049261, 2.5719021691803178e-05,
-      0.95800193414067958, 0.99999999998614564;
-  return unorm_storage(10, std::move(a), std::move(c));
+  QuantizationTransform t = power6_optimized_transform();
+  return unorm_storage(10, std::move(t.A), std::move(t.c));
 }
 
 void round_stored(const MomentStorage& storage, std::span<double> q) {

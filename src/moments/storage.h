@@ -24,7 +24,7 @@ struct MomentStorage {
 };
 
 // The unorm channel widths a GPU render target offers and a map may use: 8 (RGBA8_UNORM), 10
-// (RGB10A2_UNORM's colour channels) and 16 (RGBA16_UNORM) (docs/reference.md §12).
+// (RGB10A2_UNORM's colour channels) and 16 (RGBA16_UNORM) (docs/reference.md §8).
 const std::vector<int>& unorm_bit_depths();
 
 MomentStorage double_storage();
@@ -40,7 +40,7 @@ MomentStorage unorm_storage(int bits, Eigen::MatrixXd transform, Eigen::VectorXd
 MomentStorage unorm16_power4_storage();
 // theta_2 for VSM's b = (z, z^2): q = (z, 4z - 4z^2).
 MomentStorage unorm16_power2_storage();
-// 10 bits with this project's theta_6 for b = (z, .., z^6) (docs/reference.md §12): seed 004 §2.5
+// 10 bits with this project's theta_6 for b = (z, .., z^6) (docs/reference.md §8): seed 004 §2.5
 // stores six moments at 10 bits a channel with a transform it does not print.
 MomentStorage unorm10_power6_storage();
 

@@ -242,7 +242,7 @@ SweepSettings sweep_settings_from(const Config& config, int threads) {
                      "an area light's (docs/soft-shadows.md), expected 0 (eval takes light.angle "
                      "> 0)");
   // A sweep's candidates are catalog bases, for which seed 000 prints no transform: refused here
-  // rather than every candidate failing (docs/reference.md §12).
+  // rather than every candidate failing (docs/reference.md §8).
   if (s.eval.technique.lp_moment_box.rfind("unorm", 0) == 0 &&
       s.eval.technique.lp_moment_transform == "seed")
     throw InputError(

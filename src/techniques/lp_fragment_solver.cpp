@@ -20,7 +20,7 @@ std::string listed(const std::vector<std::string>& names) {
   return out;
 }
 
-// The transform of a unorm box (docs/reference.md §12). `seed` is seed 000's theta_4 or theta_2 as
+// The transform of a unorm box (docs/reference.md §8). `seed` is seed 000's theta_4 or theta_2 as
 // hamburger4_16bit stores it (verbatim, so that unorm16 keeps the answers it gave before the
 // transforms could be chosen); `canonical` and `optimized` come from quantization_transform.
 // The optimized search runs once per basis and process: every thread's solver of every view

@@ -35,7 +35,7 @@ struct LpMomentBox {
   MomentStorage storage;
   std::vector<double> tolerance;  // per stored value (moments/storage.h, storage_tolerance)
 };
-// lp.moment_box and lp.moment_transform (docs/reference.md §12): "none" -> no box; "double",
+// lp.moment_box and lp.moment_transform (docs/reference.md §8): "none" -> no box; "double",
 // "float32"; "unorm8", "unorm10", "unorm16" after the transform `transform` ("seed": seed 000's
 // theta_4 or theta_2 verbatim, power4 and power2 only; "canonical"; "optimized": the basis's own,
 // searched once per basis and process). InputError naming the key otherwise.

@@ -62,7 +62,7 @@ const std::vector<OptionRecord<LpOptions>>& lp_records() {
         OptionType::String,
         "seed",
         "LP techniques with a unorm lp.moment_box: the affine transform q = A b + c applied "
-        "before rounding (docs/reference.md §12). seed: seed 000's theta_4 or theta_2, for power4 "
+        "before rounding (docs/reference.md §8). seed: seed 000's theta_4 or theta_2, for power4 "
         "and power2 only (the default, so that unorm16 keeps the meaning it had before the other "
         "two existed); canonical: each channel scaled to its own range (the identity for power "
         "moments); optimized: the basis's own transform of the largest entropy gain, found once "

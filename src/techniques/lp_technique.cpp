@@ -113,7 +113,7 @@ std::vector<TechniqueRow> rows() {
        .rank = 210,
        .summary = "Problem 1 as an LP over the moment box of a stored technique's own format "
                   "(its basis, transform and bits), e.g. lp_stored:hamburger4_16bit: the "
-                  "least a closed form reading that map can lose (docs/reference.md §12)",
+                  "least a closed form reading that map can lose (docs/reference.md §8)",
        .storage = "the named technique's",
        .bound = "the LP's certified tolerance: the kernel's own moments lie in the box",
        .family_options = {"lp.grid", "lp.lo", "lp.hi", "lp.discretization"},

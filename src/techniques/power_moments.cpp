@@ -94,7 +94,7 @@ const TechniqueOption kHausdorff416bitAlpha{
 const TechniqueOption kHamburger610bitAlpha{
     .spec = {"hamburger6_10bit.alpha", OptionType::Number, "4e-3",
              "Moment bias of six-moment Hamburger MSM from 10-bit maps with theta_6 "
-             "(docs/reference.md §12). 4e-3: seed 004 §2.5's for six moments at 10 bits.",
+             "(docs/reference.md §8). 4e-3: seed 004 §2.5's for six moments at 10 bits.",
              0, 1},
     .moment_bias = true};
 const TechniqueOption kHausdorff4Alpha{
