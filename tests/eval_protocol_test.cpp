@@ -69,7 +69,14 @@ TEST(Protocol, LonePlaneAtAnySlopeIsLitByEveryTechnique) {
                 can_over_darken(make_technique(name, settings.technique)->darkening_bound()));
             continue;
           }
-          const double bound = make_technique(name, settings.technique)->darkening_bound();
+          // Six moments at 10 bits a channel shadow a lit plane by up to 0.02 through rounding
+          // alone: "a serious problem for hard shadows" (seed 004 §2.5), admitted by its bound.
+          const auto made = make_technique(name, settings.technique);
+          if (made->storage().kind == StorageKind::Unorm && made->storage().bits < 16) {
+            EXPECT_TRUE(can_over_darken(made->darkening_bound()));
+            continue;
+          }
+          const double bound = made->darkening_bound();
           // Float and 16-bit maps round the moments: allow their bias alpha's order, no more.
           const double tolerance = can_over_darken(bound) ? 1e-4 : 1e-9;
           const TechniqueResult r = evaluate_technique(view, name, settings, nullptr);

@@ -201,6 +201,8 @@ std::string describe_settings(const EvalSettings& s) {
       s.technique.lp_moment_box == "none" ? "" : "; LP moment box of ",
       s.technique.lp_moment_box == "none" ? "" : s.technique.lp_moment_box.c_str());
   std::string text = buffer;
+  if (s.technique.lp_moment_box.rfind("unorm", 0) == 0)
+    text += " after the " + s.technique.lp_moment_transform + " transform";
   if (s.technique.lp_beta > 0)
     text += "; LP answers G + " + round_trip(s.technique.lp_beta) + " (G+ - G)";
   if (s.blend == BlendOrder::Submission)

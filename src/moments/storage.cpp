@@ -4,6 +4,9 @@
 #include <cmath>
 #include <limits>
 
+#include "moments/quantization_transform.h"
+#include "util/error.h"
+
 namespace mb {
 
 std::string MomentStorage::name() const {
@@ -12,34 +15,67 @@ std::string MomentStorage::name() const {
       return "double";
     case StorageKind::Float32:
       return "float32";
-    case StorageKind::Unorm16:
-      return "unorm16";
+    case StorageKind::Unorm:
+      return "unorm" + std::to_string(bits);
   }
   return "?";
+}
+
+const std::vector<int>& unorm_bit_depths() {
+  static const std::vector<int> depths{8, 10, 16};
+  return depths;
 }
 
 MomentStorage double_storage() {
   return {};
 }
 MomentStorage float32_storage() {
-  return {StorageKind::Float32, {}, {}};
+  return {StorageKind::Float32, 0, {}, {}};
+}
+
+MomentStorage unorm_storage(int bits, Eigen::MatrixXd transform, Eigen::VectorXd offset,
+                            const std::string& what) {
+  const std::vector<int>& depths = unorm_bit_depths();
+  if (std::find(depths.begin(), depths.end(), bits) == depths.end()) {
+    std::string valid;
+    for (int d : depths) valid += (valid.empty() ? "" : ", ") + std::to_string(d);
+    throw InputError(what + ": unorm with " + std::to_string(bits) +
+                     " bits a channel; expected one of " + valid +
+                     " (the GPU unorm formats, docs/reference.md §8)");
+  }
+  const Eigen::Index m = transform.rows();
+  if (m == 0 || transform.cols() != m || offset.size() != m)
+    throw InputError(what +
+                     ": the transform must be a square m x m matrix with an offset of m "
+                     "values; got " +
+                     std::to_string(transform.rows()) + " x " + std::to_string(transform.cols()) +
+                     " and " + std::to_string(offset.size()));
+  if (!(std::abs(transform.determinant()) > 0))
+    throw InputError(what + ": the transform is singular (a stored map could not be read back)");
+  return {StorageKind::Unorm, bits, std::move(transform), std::move(offset)};
 }
 
 MomentStorage unorm16_power4_storage() {
-  MomentStorage s{StorageKind::Unorm16, Eigen::MatrixXd(4, 4), Eigen::VectorXd::Zero(4)};
+  Eigen::MatrixXd a(4, 4);
   // docs/reference.md §4 (seed 000, Section 4.3): maps [0,1] into [0,1]^4, gaining ~12.3 bits.
-  s.transform << -2.07224649, 32.23703778, -68.571074599, 39.3703274134,  //
-      13.7948857237, -59.4683975703, 82.0359750338, -35.364903257,        //
-      0.105877704, -1.9077466311, 9.3496555107, -6.6543490743,            //
+  a << -2.07224649, 32.23703778, -68.571074599, 39.3703274134,      //
+      13.7948857237, -59.4683975703, 82.0359750338, -35.364903257,  //
+      0.105877704, -1.9077466311, 9.3496555107, -6.6543490743,      //
       9.7924062118, -33.7652110555, 47.9456096605, -23.9728048165;
-  s.offset(0) = 0.035955884801;
-  return s;
+  Eigen::VectorXd c = Eigen::VectorXd::Zero(4);
+  c(0) = 0.035955884801;
+  return unorm_storage(16, std::move(a), std::move(c));
 }
 
 MomentStorage unorm16_power2_storage() {
-  MomentStorage s{StorageKind::Unorm16, Eigen::MatrixXd(2, 2), Eigen::VectorXd::Zero(2)};
-  s.transform << 1, 0, 4, -4;
-  return s;
+  Eigen::MatrixXd a(2, 2);
+  a << 1, 0, 4, -4;
+  return unorm_storage(16, std::move(a), Eigen::VectorXd::Zero(2));
+}
+
+MomentStorage unorm10_power6_storage() {
+  QuantizationTransform t = power6_optimized_transform();
+  return unorm_storage(10, std::move(t.A), std::move(t.c));
 }
 
 void round_stored(const MomentStorage& storage, std::span<double> q) {
@@ -49,14 +85,16 @@ void round_stored(const MomentStorage& storage, std::span<double> q) {
     case StorageKind::Float32:
       for (double& v : q) v = double(float(v));
       return;
-    case StorageKind::Unorm16:
-      for (double& v : q) v = std::round(std::clamp(v, 0.0, 1.0) * 65535.0) / 65535.0;
+    case StorageKind::Unorm: {
+      const double steps = std::ldexp(1.0, storage.bits) - 1;  // exact: 65535 for 16 bits
+      for (double& v : q) v = std::round(std::clamp(v, 0.0, 1.0) * steps) / steps;
       return;
+    }
   }
 }
 
 void store_moments(const MomentStorage& storage, std::span<double> b) {
-  if (storage.kind == StorageKind::Unorm16) {
+  if (storage.kind == StorageKind::Unorm) {
     Eigen::Map<Eigen::VectorXd> v(b.data(), Eigen::Index(b.size()));
     v = storage.transform * v + storage.offset;
   }
@@ -70,7 +108,7 @@ void blend_stored(const MomentStorage& storage, std::span<double> dst, std::span
 }
 
 void load_moments(const MomentStorage& storage, std::span<double> q) {
-  if (storage.kind != StorageKind::Unorm16) return;
+  if (storage.kind != StorageKind::Unorm) return;
   Eigen::Map<Eigen::VectorXd> v(q.data(), Eigen::Index(q.size()));
   Eigen::VectorXd b = storage.transform.partialPivLu().solve(v - storage.offset);
   v = b;
@@ -91,7 +129,7 @@ std::vector<double> filtered_stored_values(const MomentStorage& storage, const B
 
 std::vector<double> stored_values(const MomentStorage& storage, std::span<const double> moments) {
   std::vector<double> q(moments.begin(), moments.end());
-  if (storage.kind != StorageKind::Unorm16) return q;
+  if (storage.kind != StorageKind::Unorm) return q;
   Eigen::Map<Eigen::VectorXd> v(q.data(), Eigen::Index(q.size()));
   v = storage.transform * v + storage.offset;
   return q;
@@ -125,8 +163,8 @@ std::vector<double> storage_tolerance(const MomentStorage& storage, const Basis&
       case StorageKind::Float32:
         eps[j] = std::ldexp(scale[j], -24) + 8 * kUlp * scale[j];
         break;
-      case StorageKind::Unorm16:
-        eps[j] = 0.5 / 65535.0 + 8 * kUlp;  // q lies in [0, 1]
+      case StorageKind::Unorm:
+        eps[j] = 0.5 / (std::ldexp(1.0, storage.bits) - 1) + 8 * kUlp;  // q lies in [0, 1]
         break;
     }
   }

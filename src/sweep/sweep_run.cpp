@@ -241,6 +241,15 @@ SweepSettings sweep_settings_from(const Config& config, int threads) {
                      "; a shadow sweep ranks bases by Problem 1's bound on the hard shadow, not "
                      "an area light's (docs/soft-shadows.md), expected 0 (eval takes light.angle "
                      "> 0)");
+  // A sweep's candidates are catalog bases, for which seed 000 prints no transform: refused here
+  // rather than every candidate failing (docs/reference.md §8).
+  if (s.eval.technique.lp_moment_box.rfind("unorm", 0) == 0 &&
+      s.eval.technique.lp_moment_transform == "seed")
+    throw InputError(
+        "lp.moment_transform: seed exists for power4 and power2 only (seed 000 "
+        "§4.3), not for a sweep's candidates; expected canonical or optimized with "
+        "lp.moment_box = " +
+        s.eval.technique.lp_moment_box);
   read_options(config, screen_options(), s.screen);
   refuse_unread_options(config, s.target);
   s.oit = oit_params_from(config);

@@ -1,35 +1,79 @@
 #include "techniques/lp_fragment_solver.h"
 
 #include <algorithm>
+#include <map>
+#include <mutex>
 
 #include "continuous/discretized.h"
 #include "continuous/moment_box.h"
+#include "moments/quantization_transform.h"
 #include "util/error.h"
 #include "util/number_text.h"
 
 namespace mb {
 
-std::optional<LpMomentBox> lp_moment_box(const std::string& setting, const Basis& basis) {
+namespace {
+
+std::string listed(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+// The transform of a unorm box (docs/reference.md §8). `seed` is seed 000's theta_4 or theta_2 as
+// hamburger4_16bit stores it (verbatim, so that unorm16 keeps the answers it gave before the
+// transforms could be chosen); `canonical` and `optimized` come from quantization_transform.
+// The optimized search runs once per basis and process: every thread's solver of every view
+// reads the same answer, and a sweep's candidate pays for it inside its first view's time.
+QuantizationTransform box_transform(const std::string& kind, const Basis& basis) {
+  const std::vector<std::string> names = basis.names();
+  if (kind == "seed") {
+    MomentStorage seed;
+    if (names == named_basis_set("power4"))
+      seed = unorm16_power4_storage();
+    else if (names == named_basis_set("power2"))
+      seed = unorm16_power2_storage();
+    else
+      throw InputError(
+          "lp.moment_transform: seed exists for the bases power4 (theta_4) and power2 (theta_2) "
+          "only (seed 000 §4.3); expected canonical or optimized for the basis {" +
+          listed(names) + "}");
+    return {seed.transform, seed.offset};
+  }
+  if (kind != "optimized") return quantization_transform(basis, kind);
+  static std::mutex mutex;
+  static std::map<std::vector<std::string>, QuantizationTransform> found;
+  const std::lock_guard<std::mutex> lock(mutex);
+  const auto it = found.find(names);
+  if (it != found.end()) return it->second;
+  return found.emplace(names, quantization_transform(basis, kind)).first->second;
+}
+
+}  // namespace
+
+std::optional<LpMomentBox> lp_moment_box(const std::string& setting, const std::string& transform,
+                                         const Basis& basis) {
   if (setting == "none") return std::nullopt;
   MomentStorage storage;
   if (setting == "double") {
     storage = double_storage();
   } else if (setting == "float32") {
     storage = float32_storage();
-  } else if (setting == "unorm16") {
-    const std::vector<std::string> names = basis.names();
-    if (names == named_basis_set("power4"))
-      storage = unorm16_power4_storage();
-    else if (names == named_basis_set("power2"))
-      storage = unorm16_power2_storage();
-    else
-      throw InputError(
-          "lp.moment_box: unorm16 needs the basis power4 (theta_4) or power2 "
-          "(theta_2) of docs/reference.md §4");
+  } else if (setting.rfind("unorm", 0) == 0 && setting.size() > 5 &&
+             setting.find_first_not_of("0123456789", 5) == std::string::npos &&
+             setting.size() < 9) {
+    QuantizationTransform t = box_transform(transform, basis);
+    storage = unorm_storage(std::stoi(setting.substr(5)), std::move(t.A), std::move(t.c),
+                            "lp.moment_box");
   } else {
-    throw InputError("lp.moment_box: expected one of none, double, float32, unorm16; got '" +
-                     setting + "'");
+    throw InputError(
+        "lp.moment_box: expected one of none, double, float32, unorm8, unorm10, unorm16; got '" +
+        setting + "'");
   }
+  return LpMomentBox{storage, storage_tolerance(storage, basis)};
+}
+
+LpMomentBox lp_moment_box(const MomentStorage& storage, const Basis& basis) {
   return LpMomentBox{storage, storage_tolerance(storage, basis)};
 }
 
@@ -40,12 +84,12 @@ namespace {
 // problem. The moment box answers the minimum alone, and a beta it would ignore must not pass as
 // measured. read_lp_params refuses it in a config; this refuses it from every other caller
 // (pss_lp sets its lp.beta from scatter.beta).
-double checked_beta(const TechniqueParams& p) {
-  if (p.lp_beta > 0 && p.lp_moment_box != "none")
+double checked_beta(const TechniqueParams& p, const std::optional<LpMomentBox>& box) {
+  if (p.lp_beta > 0 && box)
     throw InputError("lp.beta: " + round_trip(p.lp_beta) +
                      " blends towards the LP's maximum, which the moment box does not solve; "
-                     "expected lp.beta = 0 with lp.moment_box (here: " +
-                     p.lp_moment_box + "), or lp.moment_box = none");
+                     "expected lp.beta = 0 with a moment box (here: " +
+                     box->storage.name() + "), or lp.moment_box = none");
   return p.lp_beta;
 }
 
@@ -72,10 +116,15 @@ std::unique_ptr<lp::ProblemFactory> reflected_factory(const lp::ProblemFactory& 
 
 LpFragmentSolver::LpFragmentSolver(const Basis& basis, const lp::ProblemFactory& factory,
                                    const TechniqueParams& p)
+    : LpFragmentSolver(basis, factory, p,
+                       lp_moment_box(p.lp_moment_box, p.lp_moment_transform, basis)) {}
+
+LpFragmentSolver::LpFragmentSolver(const Basis& basis, const lp::ProblemFactory& factory,
+                                   const TechniqueParams& p, std::optional<LpMomentBox> box)
     : basis_(basis),
       factory_(factory),
-      box_(lp_moment_box(p.lp_moment_box, basis)),
-      beta_(checked_beta(p)),
+      box_(std::move(box)),
+      beta_(checked_beta(p, box_)),
       backend_(lp::make_backend(p.lp_backend)),
       upper_backend_(beta_ > 0 ? lp::make_backend(p.lp_backend) : nullptr),
       reflected_factory_(reflected_factory(factory, beta_)),

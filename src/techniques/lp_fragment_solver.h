@@ -35,8 +35,14 @@ struct LpMomentBox {
   MomentStorage storage;
   std::vector<double> tolerance;  // per stored value (moments/storage.h, storage_tolerance)
 };
-// "none" -> no box; "double", "float32", "unorm16" (theta_4 or theta_2: power4 and power2 only).
-std::optional<LpMomentBox> lp_moment_box(const std::string& setting, const Basis& basis);
+// lp.moment_box and lp.moment_transform (docs/reference.md §8): "none" -> no box; "double",
+// "float32"; "unorm8", "unorm10", "unorm16" after the transform `transform` ("seed": seed 000's
+// theta_4 or theta_2 verbatim, power4 and power2 only; "canonical"; "optimized": the basis's own,
+// searched once per basis and process). InputError naming the key otherwise.
+std::optional<LpMomentBox> lp_moment_box(const std::string& setting, const std::string& transform,
+                                         const Basis& basis);
+// The box of a given format (a stored technique's own, lp_stored:<technique>).
+LpMomentBox lp_moment_box(const MomentStorage& storage, const Basis& basis);
 
 // Not thread-safe (its backends keep state): one per thread.
 class LpFragmentSolver {
@@ -46,6 +52,9 @@ class LpFragmentSolver {
   // grid and on the continuous interval only.
   LpFragmentSolver(const Basis& basis, const lp::ProblemFactory& factory,
                    const TechniqueParams& params);
+  // The same over `box` instead of the one lp.moment_box names (none: no box).
+  LpFragmentSolver(const Basis& basis, const lp::ProblemFactory& factory,
+                   const TechniqueParams& params, std::optional<LpMomentBox> box);
   // Whether solve reads `problem` (the moment box needs only the distribution).
   bool reads_problem() const { return !box_; }
   // The fragment's answer: `problem` is Problem 1 for the distribution (depths, weights) at z_f,

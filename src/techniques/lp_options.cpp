@@ -18,7 +18,7 @@ struct LpOptions {
   double lp_lo, lp_hi;
   std::string lp_discretization;
   bool lp_quantize;
-  std::string lp_backend, lp_moment_box;
+  std::string lp_backend, lp_moment_box, lp_moment_transform;
   double lp_beta;
 };
 
@@ -51,13 +51,27 @@ const std::vector<OptionRecord<LpOptions>>& lp_records() {
         OptionType::String,
         "none",
         "LP techniques: none (the kernel's exact moments) or a storage format (double, float32, "
-        "unorm16 for power4/power2): Problem 1 over every distribution whose stored moments lie "
-        "within that format's rounding of the kernel's (docs/reference.md §2; GLPK, no warm "
-        "start).",
+        "unorm8, unorm10, unorm16 after lp.moment_transform): Problem 1 over every distribution "
+        "whose stored moments lie within that format's rounding of the kernel's "
+        "(docs/reference.md §2, §12; GLPK, no warm start).",
         -kInf,
         kInf,
-        {"none", "double", "float32", "unorm16"}},
+        {"none", "double", "float32", "unorm8", "unorm10", "unorm16"}},
        &LpOptions::lp_moment_box},
+      {{"lp.moment_transform",
+        OptionType::String,
+        "seed",
+        "LP techniques with a unorm lp.moment_box: the affine transform q = A b + c applied "
+        "before rounding (docs/reference.md §8). seed: seed 000's theta_4 or theta_2, for power4 "
+        "and power2 only (the default, so that unorm16 keeps the meaning it had before the other "
+        "two existed); canonical: each channel scaled to its own range (the identity for power "
+        "moments); optimized: the basis's own transform of the largest entropy gain, found once "
+        "per basis (in a sweep, within the candidate's time). Only seed with none, double, "
+        "float32.",
+        -kInf,
+        kInf,
+        {"seed", "canonical", "optimized"}},
+       &LpOptions::lp_moment_transform},
       {{"lp.beta", OptionType::Number, "0",
         "LP techniques: G + beta (G+ - G), G+ the LP's maximum of the mass at or in front of z_f "
         "(docs/reference.md §2): seed 004's blend of its closed forms' bounds, for any basis. 0 is "
@@ -100,7 +114,14 @@ void read_lp_params(const Config& config, TechniqueParams& t) {
   t.lp = lp_discretization_from(config);
   t.lp_backend = o.lp_backend;
   t.lp_moment_box = o.lp_moment_box;
+  t.lp_moment_transform = o.lp_moment_transform;
   t.lp_beta = o.lp_beta;
+  if (t.lp_moment_transform != "seed" && t.lp_moment_box.rfind("unorm", 0) != 0)
+    throw InputError(
+        "lp.moment_transform: " + t.lp_moment_transform +
+        " transforms a unorm format's stored values, and lp.moment_box = " + t.lp_moment_box +
+        " has none; expected lp.moment_box = unorm8, unorm10 or unorm16, or "
+        "lp.moment_transform = seed");
   if (t.lp_beta > 0 && t.lp_moment_box != "none")
     throw InputError("lp.beta: " + std::to_string(t.lp_beta) +
                      " needs the LP's maximum, which the moment box does not solve; expected "

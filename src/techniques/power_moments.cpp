@@ -1,5 +1,6 @@
-// Moment shadow mapping with power moments: Hamburger 4MSM in double, float32 and 16 bits,
-// Hausdorff 4MSM, six-moment Hamburger (docs/reference.md §4).
+// Moment shadow mapping with power moments: Hamburger 4MSM in double, float32 and 16 bits (with
+// theta_4 or the canonical transform), Hausdorff 4MSM in double and 16 bits, six-moment Hamburger
+// (docs/reference.md §4, §12).
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -53,7 +54,7 @@ class PowerMomentTechnique : public ClosedFormTechnique {
     return closed_form_bound(alpha_, beta_);
   }
   std::string darkening_reason() const override {
-    if (solver_ == PowerSolver::Hamburger6 && beta_ == 0)
+    if (solver_ == PowerSolver::Hamburger6 && beta_ == 0 && storage().kind == StorageKind::Double)
       return "not proven: six power moments rounded to double leave a narrow kernel's moment set "
              "by more than alpha pulls them back (docs/reference.md §4)";
     return closed_form_reason(beta_);
@@ -77,6 +78,25 @@ const TechniqueOption kHamburger416bitAlpha{
     .spec = {"hamburger4_16bit.alpha", OptionType::Number, "3e-5",
              "Moment bias of Hamburger 4MSM from 16-bit maps."},
     .moment_bias = true};
+const TechniqueOption kHamburger416bitCanonicalAlpha{
+    .spec = {"hamburger4_16bit_canonical.alpha", OptionType::Number, "3e-5",
+             "Moment bias of Hamburger 4MSM from 16-bit maps of the raw powers (no transform). "
+             "3e-5, hamburger4_16bit's (seed 000 §4.3), so that the two rows differ by the "
+             "transform alone.",
+             0, 1},
+    .moment_bias = true};
+const TechniqueOption kHausdorff416bitAlpha{
+    .spec = {"hausdorff4_16bit.alpha", OptionType::Number, "3e-5",
+             "Moment bias of Hausdorff 4MSM from 16-bit maps with theta_4. 3e-5, "
+             "hamburger4_16bit's (seed 000 §4.3), so that the two rows differ by the solver alone.",
+             0, 1},
+    .moment_bias = true};
+const TechniqueOption kHamburger610bitAlpha{
+    .spec = {"hamburger6_10bit.alpha", OptionType::Number, "4e-3",
+             "Moment bias of six-moment Hamburger MSM from 10-bit maps with theta_6 "
+             "(docs/reference.md §8). 4e-3: seed 004 §2.5's for six moments at 10 bits.",
+             0, 1},
+    .moment_bias = true};
 const TechniqueOption kHausdorff4Alpha{
     .spec = {"hausdorff4.alpha", OptionType::Number, "1e-10", "Moment bias of Hausdorff 4MSM."},
     .moment_bias = true};
@@ -88,6 +108,12 @@ const TechniqueOption kHamburger6Alpha{
          "moments); measured over-darkening: up to 0.23 at 1e-10, none beyond alpha at 1e-8, which "
          "costs 0.33 pp of mean error on the default dataset (FINDINGS §7d)."},
     .moment_bias = true};
+
+// 16 bits a channel of the raw powers: the canonical transform of the power moments (each z^k
+// already spans [0, 1]), which seed 000 §4.3 calls unacceptable.
+MomentStorage unorm16_power4_canonical_storage() {
+  return unorm_storage(16, Eigen::MatrixXd::Identity(4, 4), Eigen::VectorXd::Zero(4));
+}
 
 // A row's technique: its solver, storage and moment bias.
 template <PowerSolver kSolver, MomentStorage (*kStorage)(), const TechniqueOption* kAlpha>
@@ -133,6 +159,16 @@ std::vector<TechniqueRow> rows() {
        .make = make<PowerSolver::Hamburger4, unorm16_power4_storage, &kHamburger416bitAlpha>,
        .verify = storage_box(fixed_lp_basis<kPower4>, -4, 5, true, &kHamburger416bitAlpha),
        .verify_place = 8},
+      {.name = "hamburger4_16bit_canonical",
+       .rank = 155,
+       .summary = "4MSM on R from 16-bit maps of the raw powers (canonical transform)",
+       .storage = "unorm16",
+       .bound = std::string(kNotProven) + ": 16-bit rounding of the moments",
+       .options = {&kHamburger416bitCanonicalAlpha, &kHamburgerBeta},
+       .make = make<PowerSolver::Hamburger4, unorm16_power4_canonical_storage,
+                    &kHamburger416bitCanonicalAlpha>,
+       .verify =
+           storage_box(fixed_lp_basis<kPower4>, -4, 5, true, &kHamburger416bitCanonicalAlpha)},
       {.name = "hausdorff4",
        .rank = 160,
        .summary = "4MSM on [0, 1] (Hausdorff), double",
@@ -146,6 +182,14 @@ std::vector<TechniqueRow> rows() {
        .sweep_references = {{.expectation = "the power moments' closed form on [0, 1]: equal to "
                                             "lp:power4 up to the LP's grid",
                              .place = 4}}},
+      {.name = "hausdorff4_16bit",
+       .rank = 165,
+       .summary = "4MSM on [0, 1] (Hausdorff) from 16-bit maps with the transform theta_4",
+       .storage = "unorm16",
+       .bound = std::string(kNotProven) + ": 16-bit rounding of the moments",
+       .options = {&kHausdorff416bitAlpha, &kHamburgerBeta},
+       .make = make<PowerSolver::Hausdorff4, unorm16_power4_storage, &kHausdorff416bitAlpha>,
+       .verify = storage_box(fixed_lp_basis<kPower4>, 0, 1, false, &kHausdorff416bitAlpha)},
       {.name = "hamburger6",
        .rank = 170,
        .summary = "six power moments on R, double",
@@ -161,9 +205,18 @@ std::vector<TechniqueRow> rows() {
                               .on_r = true,
                               .hamburger_moments = 6},
        .verify_place = 6,
-       .sweep_references = {
-           {.expectation = "six moments: better than every four-function candidate (seed 004)",
-            .place = 6}}}};
+       .sweep_references =
+           {{.expectation = "six moments: better than every four-function candidate (seed 004)",
+             .place = 6}}},
+      {.name = "hamburger6_10bit",
+       .rank = 175,
+       .summary = "six power moments on R from 10-bit maps with the transform theta_6 "
+                  "(seed 004 §2.5)",
+       .storage = "unorm10",
+       .bound = std::string(kNotProven) + ": 10-bit rounding of the moments",
+       .options = {&kHamburger610bitAlpha, &kHamburgerBeta},
+       .make = make<PowerSolver::Hamburger6, unorm10_power6_storage, &kHamburger610bitAlpha>,
+       .verify = storage_box(fixed_lp_basis<kPower6>, -2, 3, true, &kHamburger610bitAlpha)}};
 }
 
 const TechniqueRegistration kRegistered(rows);

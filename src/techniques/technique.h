@@ -53,8 +53,9 @@ class TechniqueParams {
 
   lp::Discretization lp;
   std::string lp_backend;
-  std::string lp_moment_box;  // lp_fragment_solver.h, lp_moment_box
-  double lp_beta;             // G + lp_beta (G+ - G), G+ the LP's maximum (lp.beta)
+  std::string lp_moment_box;        // lp_fragment_solver.h, lp_moment_box
+  std::string lp_moment_transform;  // its transform before a unorm format's rounding
+  double lp_beta;                   // G + lp_beta (G+ - G), G+ the LP's maximum (lp.beta)
 
  private:
   struct Defaults {};

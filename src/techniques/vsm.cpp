@@ -1,7 +1,9 @@
-// Variance shadow maps and layered VSM: Cantelli's inequality on the depth, or on the depth
-// clamped into the receiver's layer (docs/reference.md §4).
+// Variance shadow maps (in double and from 16-bit maps with seed 000's theta_2) and layered VSM:
+// Cantelli's inequality on the depth, or on the depth clamped into the receiver's layer
+// (docs/reference.md §4, §12).
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "moments/chebyshev.h"
 #include "techniques/hard_rows.h"
@@ -12,10 +14,21 @@ namespace {
 
 class VsmTechnique : public Technique {
  public:
-  explicit VsmTechnique(double min_variance)
-      : Technique("vsm", Basis::parse({"power2"}), double_storage()), min_variance_(min_variance) {}
+  VsmTechnique(const std::string& name, MomentStorage storage, double min_variance)
+      : Technique(name, Basis::parse({"power2"}), std::move(storage)),
+        min_variance_(min_variance) {}
   double shadow(const FragmentInput& in) override {
     return vsm_bound(in.moments.data(), in.zf, min_variance_);
+  }
+  // Rounded stored moments may lie off the kernel's moment set: no bound then.
+  double darkening_bound() const override {
+    return storage().kind == StorageKind::Double ? 0 : std::numeric_limits<double>::infinity();
+  }
+  std::string darkening_reason() const override {
+    return storage().kind == StorageKind::Double
+               ? ""
+               : "moments stored in " + storage().name() +
+                     " are rounded off the kernel's moment set, which Cantelli assumes";
   }
 
  private:
@@ -64,37 +77,50 @@ const TechniqueOption kLvsmLayers{
      "LVSM depth layers: [0, 1] split evenly, a VSM per layer on the depth clamped to it.", 1, 8}};
 
 std::vector<TechniqueRow> rows() {
-  return {{.name = "vsm",
-           .rank = 20,
-           .summary = "variance shadow maps: Cantelli",
-           .storage = "double",
-           .bound = kProvenBound,
-           .options = {&kVsmMinVariance},
-           .default_run = true,
-           .make = [](const std::string&, const P& p) -> std::unique_ptr<Technique> {
-             return std::make_unique<VsmTechnique>(p.number(kVsmMinVariance));
-           },
-           // Cantelli's second point mu - sigma^2 / (z_f - mu) runs far out when z_f ~ mu, hence
-           // the wide interval (docs/reference.md §6).
-           .verify = VerifyRecipe{.lp_basis = fixed_lp_basis<kPower2>,
-                                  .lo = -20,
-                                  .hi = 21,
-                                  .on_r = true,
-                                  .cantelli_support = true},
-           .verify_place = 4,
-           .sweep_references = {{.expectation = "two moments: far behind every four-function "
-                                                "candidate (seed 000 Figure 4)",
-                                 .place = 1}}},
-          {.name = "lvsm",
-           .rank = 100,
-           .summary = "layered VSM: Cantelli on the depth clamped to z_f's layer",
-           .storage = "double",
-           .bound = kProvenBound,
-           .options = {&kLvsmLayers, &kVsmMinVariance},
-           .make = [](const std::string&, const P& p) -> std::unique_ptr<Technique> {
-             return std::make_unique<LvsmTechnique>(p.integer(kLvsmLayers),
-                                                    p.number(kVsmMinVariance));
-           }}};
+  return {
+      {.name = "vsm",
+       .rank = 20,
+       .summary = "variance shadow maps: Cantelli",
+       .storage = "double",
+       .bound = kProvenBound,
+       .options = {&kVsmMinVariance},
+       .default_run = true,
+       .make = [](const std::string&, const P& p) -> std::unique_ptr<Technique> {
+         return std::make_unique<VsmTechnique>("vsm", double_storage(), p.number(kVsmMinVariance));
+       },
+       // Cantelli's second point mu - sigma^2 / (z_f - mu) runs far out when z_f ~ mu, hence
+       // the wide interval (docs/reference.md §6).
+       .verify = VerifyRecipe{.lp_basis = fixed_lp_basis<kPower2>,
+                              .lo = -20,
+                              .hi = 21,
+                              .on_r = true,
+                              .cantelli_support = true},
+       .verify_place = 4,
+       .sweep_references = {{.expectation = "two moments: far behind every four-function "
+                                            "candidate (seed 000 Figure 4)",
+                             .place = 1}}},
+      {.name = "vsm_16bit",
+       .rank = 25,
+       .summary = "VSM from 16-bit maps with the transform theta_2 = (z, 4z - 4z^2)",
+       .storage = "unorm16",
+       // The stored variance's rounding can make it negative or shrink it, and Cantelli then
+       // claims more shadow than the kernel holds; vsm.min_variance clamps it as in double.
+       .bound = std::string(kNotProven) + ": 16-bit rounding of the moments",
+       .options = {&kVsmMinVariance},
+       .make = [](const std::string&, const P& p) -> std::unique_ptr<Technique> {
+         return std::make_unique<VsmTechnique>("vsm_16bit", unorm16_power2_storage(),
+                                               p.number(kVsmMinVariance));
+       },
+       .verify = storage_box(fixed_lp_basis<kPower2>, -20, 21, true, nullptr)},
+      {.name = "lvsm",
+       .rank = 100,
+       .summary = "layered VSM: Cantelli on the depth clamped to z_f's layer",
+       .storage = "double",
+       .bound = kProvenBound,
+       .options = {&kLvsmLayers, &kVsmMinVariance},
+       .make = [](const std::string&, const P& p) -> std::unique_ptr<Technique> {
+         return std::make_unique<LvsmTechnique>(p.integer(kLvsmLayers), p.number(kVsmMinVariance));
+       }}};
 }
 
 const TechniqueRegistration kRegistered(rows);

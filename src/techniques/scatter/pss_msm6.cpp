@@ -1,5 +1,7 @@
-// pss_msm6 (docs/scattering.md §3.2; seed 004 §2.5): prefiltered single scattering with six power
-// moments in double. A rectified row stretches through the whole scene, so its depth distribution
+// pss_msm6 and pss_msm6_10bit (docs/scattering.md §3.2; seed 004 §2.5): prefiltered single
+// scattering with six power moments in double, or stored as seed 004 stores them: 10 bits a
+// channel after a transform (this project's theta_6, moments/storage.h), read back through its
+// inverse. A rectified row stretches through the whole scene, so its depth distribution
 // rarely has the two atoms four moments reconstruct exactly; six moments' canonical distribution
 // through the ray's depth (moments/hamburger.h, hamburger6) has three more. scatter.beta blends its
 // lower bound G and upper bound G + w_1, as for four moments.
@@ -9,6 +11,7 @@
 
 #include "moments/canonical.h"
 #include "moments/hamburger.h"
+#include "moments/storage.h"
 #include "techniques/registry.h"
 #include "techniques/scatter/prefiltered_scatter.h"
 
@@ -24,6 +27,12 @@ const TechniqueOption kPssMsm6Alpha{
              "004 §2.5 uses 4e-3 for its 10-bit storage; results/FINDINGS.md §12 measures both.",
              0, 1},
     .moment_bias = true};
+const TechniqueOption kPssMsm610bitAlpha{
+    .spec = {"pss_msm6_10bit.alpha", OptionType::Number, "4e-3",
+             "Moment bias of pss_msm6_10bit (docs/scattering.md §3.2). 4e-3: seed 004 §2.5's for "
+             "its six moments at 10 bits a channel.",
+             0, 1},
+    .moment_bias = true};
 
 void power6(double z, double* out) {
   out[0] = z;
@@ -32,14 +41,17 @@ void power6(double z, double* out) {
 
 class PssMsm6 : public PrefilteredScatter {
  public:
-  PssMsm6(const std::string& name, const ScatterParams& params)
+  PssMsm6(const std::string& name, const ScatterParams& params, MomentStorage storage, double alpha)
       : PrefilteredScatter(name, params),
-        alpha_(params.technique.number(kPssMsm6Alpha)),
+        storage_(std::move(storage)),
+        alpha_(alpha),
         beta_(params.beta) {}
   size_t failures() const override { return failures_; }
   // verify (docs/scattering.md §6): as pss_msm4, on MBOIT's interval for six power moments
   // (techniques/oit/mboit_power.cpp), whose sixth powers keep their digits there.
+  // The 10-bit row's moments are rounded: no LP on them is sharp.
   std::optional<ScatterVerifyRecipe> verify_recipe() const override {
+    if (storage_.kind != StorageKind::Double) return std::nullopt;
     return ScatterVerifyRecipe{
         .lp_technique = "pss_lp:power6", .lo = -20, .hi = 21, .tolerance = 1e-5};
   }
@@ -47,6 +59,16 @@ class PssMsm6 : public PrefilteredScatter {
  protected:
   void prefilter(const RectifiedMap& map) override {
     sums_ = std::make_unique<RowPrefixSums>(map, 6, power6);
+    if (storage_.kind == StorageKind::Double) return;
+    // What a 10-bit target holds of each normalised prefix sum, read back as moments (as
+    // pss_msm4_16bit: the transform is affine, so interpolating values or moments is the same).
+    const auto round_trip = [&](std::span<double> b) {
+      store_moments(storage_, b);
+      load_moments(storage_, b);
+    };
+    for (int v = 0; v < map.height(); ++v)
+      for (int k = 0; k <= map.width(); ++k) round_trip(sums_->at(v, k));
+    round_trip(sums_->lit());
   }
   double shadowed_fraction(const RectifiedRay& ray) const override {
     double b[6];
@@ -62,13 +84,21 @@ class PssMsm6 : public PrefilteredScatter {
   }
 
  private:
+  MomentStorage storage_;
   double alpha_, beta_;
   std::unique_ptr<RowPrefixSums> sums_;
   mutable std::mutex mutex_;
   mutable size_t failures_ = 0;
 };
 
+template <MomentStorage (*kStorage)(), const TechniqueOption* kAlpha>
+std::unique_ptr<ScatterTechnique> make(const std::string& name, const ScatterParams& params) {
+  return std::make_unique<PssMsm6>(name, params, kStorage(), params.technique.number(*kAlpha));
+}
+
 std::vector<TechniqueRow> rows() {
+  const std::vector<std::string> family{"scatter.light_resolution", "scatter.guard_band",
+                                        "scatter.resample", "scatter.beta"};
   return {{.name = "pss_msm6",
            .family = TechniqueFamily::Scattering,
            .rank = 50,
@@ -78,13 +108,20 @@ std::vector<TechniqueRow> rows() {
            .bound = "not proven: six moments rounded to double (docs/reference.md §4)",
            .unproven_reason = "six moments rounded to double, and scatter.beta",
            .options = {&kPssMsm6Alpha},
-           .family_options = {"scatter.light_resolution", "scatter.guard_band", "scatter.resample",
-                              "scatter.beta"},
+           .family_options = family,
            .default_run = true,
-           .make_scatter = [](const std::string& name,
-                              const ScatterParams& params) -> std::unique_ptr<ScatterTechnique> {
-             return std::make_unique<PssMsm6>(name, params);
-           }}};
+           .make_scatter = make<double_storage, &kPssMsm6Alpha>},
+          {.name = "pss_msm6_10bit",
+           .family = TechniqueFamily::Scattering,
+           .rank = 55,
+           .summary = "pss_msm6 from prefix sums stored with this project's theta_6 at 10 bits a "
+                      "channel, as seed 004 §2.5 stores six moments",
+           .storage = "rectified map, prefix sums of theta_6 at 10 bits",
+           .bound = "not proven: 10-bit rounding of the moments",
+           .unproven_reason = "10-bit rounding of the moments and scatter.beta",
+           .options = {&kPssMsm610bitAlpha},
+           .family_options = family,
+           .make_scatter = make<unorm10_power6_storage, &kPssMsm610bitAlpha>}};
 }
 
 const TechniqueRegistration kRegistered(rows);
