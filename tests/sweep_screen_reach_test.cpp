@@ -96,5 +96,37 @@ TEST(ScreenReach, ShardsDropMergeScreensAgainOnlyWhatItCannotProve) {
   std::filesystem::remove(path);
 }
 
+// A translucent shard's unit errors (270 units, 2 KB a candidate) fit inside their table pages:
+// dropping them frees no page, and the database must still shrink to what is kept.
+TEST(ScreenReach, DroppingSmallUnitErrorsShrinksTheDatabase) {
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("momentbench_screen_small_" +
+                     std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + ".sqlite");
+  std::filesystem::remove(path);
+  const size_t count = 2000, units = 270;
+  std::vector<EstimateRow> rows(count);
+  {
+    ResultsStore store = ResultsStore::create(path.string(), {{"config", "x"}});
+    store.batch([&] {
+      for (size_t c = 0; c < count; ++c) {
+        rows[c].id = c;
+        rows[c].name = "candidate " + std::to_string(c);
+        rows[c].run_errors.assign(units, 0.001 * double(c % 97));
+        store.put_estimate(rows[c]);
+      }
+    });
+    const auto before = std::filesystem::file_size(path);
+    std::vector<EstimateRow> out(rows.begin() + 10, rows.end());
+    store.screen_out(1, out);
+    const auto after = std::filesystem::file_size(path);
+    EXPECT_GT(before, count * units * sizeof(double));
+    // What is left: 10 candidates' unit errors and 2 000 small rows.
+    EXPECT_LT(after, before / 8) << before << " -> " << after << " bytes";
+    EXPECT_EQ(store.run_errors(3, 1).size(), units);
+    EXPECT_TRUE(store.run_errors(30, 1).empty());
+  }
+  std::filesystem::remove(path);
+}
+
 }  // namespace
 }  // namespace mb

@@ -163,9 +163,17 @@ std::vector<double> storage_tolerance(const MomentStorage& storage, const Basis&
       case StorageKind::Float32:
         eps[j] = std::ldexp(scale[j], -24) + 8 * kUlp * scale[j];
         break;
-      case StorageKind::Unorm:
-        eps[j] = 0.5 / (std::ldexp(1.0, storage.bits) - 1) + 8 * kUlp;  // q lies in [0, 1]
+      case StorageKind::Unorm: {
+        // Half a step of the stored value, plus the double rounding of q_j = a_j . b + c_j, off by
+        // about m ulps of sum_i |A_ji| |b_i| (theta_6's rows sum to thousands: docs/reference.md
+        // §8), plus 8 ulps of q in [0, 1].
+        double row = 0;
+        for (size_t i = 0; i < basis.size(); ++i)
+          row += std::abs(storage.transform(Eigen::Index(j), Eigen::Index(i))) * scale[i];
+        eps[j] =
+            0.5 / (std::ldexp(1.0, storage.bits) - 1) + 8 * kUlp * (1 + double(basis.size()) * row);
         break;
+      }
     }
   }
   return eps;

@@ -74,7 +74,8 @@ std::vector<double> stored_values(const MomentStorage& storage, std::span<const 
 // is clamped); a translucent
 // texel blended step by step (blend_stored) is off by up to one such rounding per step, which this
 // tolerance does not cover: the LP's moment box rounds the kernel's atoms itself. Both plus 8
-// double ulps of the value's scale for the filter's own sums and the transform's round trip. The
+// double ulps of the value's scale for the filter's own sums and the transform's round trip (for
+// unorm, of q's computation: m ulps of sum_i |A_ji| max |b_i|, large for theta_6). The
 // largest |b_j| is proven for catalog functions (samples plus half a spacing times the bound of
 // b_j'); sampled with a 1 % margin for expressions.
 std::vector<double> storage_tolerance(const MomentStorage& storage, const Basis& basis);

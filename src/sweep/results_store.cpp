@@ -318,14 +318,16 @@ void ResultsStore::screen_out(int stage, const std::vector<EstimateRow>& rows) {
                            sqlite3_errmsg(db_));
       }
     });
-  // The dropped unit errors' pages go back to the file system, also when a kill came between the
-  // commit above and the end of an earlier VACUUM (which is atomic).
+  // The dropped unit errors' space goes back to the file system, also when a kill came between the
+  // commit above and the end of an earlier VACUUM (which is atomic). Unit errors of a few hundred
+  // units fit inside their table pages: dropping them leaves those pages sparse without freeing
+  // any, so anything dropped here is reason enough to VACUUM, not only free pages.
   int64_t free = 0;
   {  // finalized before VACUUM, which refuses to run beside an open statement
     Statement pages(db_, "PRAGMA freelist_count", path_);
     if (sqlite3_step(pages.s) == SQLITE_ROW) free = sqlite3_column_int64(pages.s, 0);
   }
-  if (free > 0) exec("VACUUM");
+  if (free > 0 || !rows.empty()) exec("VACUUM");
 }
 
 std::string results_database_path(const std::string& given) {
