@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "eval/eval_config.h"
 #include "moments/quantization_transform.h"
@@ -44,6 +46,23 @@ TEST(LpMomentBox, SeedKeepsTheta4AndOtherTransformsReachAnyBasis) {
 
   EXPECT_FALSE(lp_moment_box("none", "seed", candidate));
   EXPECT_EQ(lp_moment_box("float32", "seed", candidate)->storage.name(), "float32");
+}
+
+// Threads of a sweep ask for the optimized boxes of different bases at once: each gets its own
+// basis's search (the cache's slots are per basis), the same as a search of its own.
+TEST(LpMomentBox, ConcurrentOptimizedBoxesKeepTheirOwnBasis) {
+  const std::vector<Basis> bases{Basis::parse({"z", "exp(-z)", "cos(pi z)"}),
+                                 Basis::parse({"z^2", "sin(pi z)", "log(1+z)"})};
+  std::vector<Eigen::MatrixXd> got(4);
+  std::vector<std::thread> threads;
+  for (size_t i = 0; i < got.size(); ++i)
+    threads.emplace_back([&, i] {
+      got[i] = lp_moment_box("unorm16", "optimized", bases[i % 2])->storage.transform;
+    });
+  for (auto& t : threads) t.join();
+  for (size_t i = 0; i < got.size(); ++i)
+    EXPECT_EQ(got[i], quantization_transform(bases[i % 2], "optimized").A) << i;
+  EXPECT_NE(got[0], got[1]);
 }
 
 TEST(LpMomentBox, RefusesSeedWithoutATransformAndUnknownFormats) {

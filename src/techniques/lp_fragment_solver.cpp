@@ -1,6 +1,8 @@
 #include "techniques/lp_fragment_solver.h"
 
 #include <algorithm>
+#include <exception>
+#include <future>
 #include <map>
 #include <mutex>
 
@@ -41,12 +43,27 @@ QuantizationTransform box_transform(const std::string& kind, const Basis& basis)
     return {seed.transform, seed.offset};
   }
   if (kind != "optimized") return quantization_transform(basis, kind);
+  // One slot per basis: the thread that claims it searches outside the lock, so a search holds
+  // up only the solvers of its own basis (the same candidate), never another candidate's.
   static std::mutex mutex;
-  static std::map<std::vector<std::string>, QuantizationTransform> found;
-  const std::lock_guard<std::mutex> lock(mutex);
-  const auto it = found.find(names);
-  if (it != found.end()) return it->second;
-  return found.emplace(names, quantization_transform(basis, kind)).first->second;
+  static std::map<std::vector<std::string>, std::shared_future<QuantizationTransform>> found;
+  std::promise<QuantizationTransform> promise;
+  std::shared_future<QuantizationTransform> answer;
+  bool mine = false;
+  {
+    const std::lock_guard<std::mutex> lock(mutex);
+    const auto it = found.find(names);
+    mine = it == found.end();
+    answer = mine ? found.emplace(names, promise.get_future().share()).first->second : it->second;
+  }
+  if (mine) {
+    try {
+      promise.set_value(quantization_transform(basis, kind));
+    } catch (...) {
+      promise.set_exception(std::current_exception());
+    }
+  }
+  return answer.get();
 }
 
 }  // namespace
