@@ -106,7 +106,8 @@ double checked_beta(const TechniqueParams& p, const std::optional<LpMomentBox>& 
     throw InputError("lp.beta: " + round_trip(p.lp_beta) +
                      " blends towards the LP's maximum, which the moment box does not solve; "
                      "expected lp.beta = 0 with a moment box (here: " +
-                     box->storage.name() + "), or lp.moment_box = none");
+                     box->storage.name() +
+                     ", from lp.moment_box or an lp_stored: row), or lp.moment_box = none");
   return p.lp_beta;
 }
 
