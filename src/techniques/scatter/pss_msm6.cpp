@@ -59,16 +59,8 @@ class PssMsm6 : public PrefilteredScatter {
  protected:
   void prefilter(const RectifiedMap& map) override {
     sums_ = std::make_unique<RowPrefixSums>(map, 6, power6);
-    if (storage_.kind == StorageKind::Double) return;
-    // What a 10-bit target holds of each normalised prefix sum, read back as moments (as
-    // pss_msm4_16bit: the transform is affine, so interpolating values or moments is the same).
-    const auto round_trip = [&](std::span<double> b) {
-      store_moments(storage_, b);
-      load_moments(storage_, b);
-    };
-    for (int v = 0; v < map.height(); ++v)
-      for (int k = 0; k <= map.width(); ++k) round_trip(sums_->at(v, k));
-    round_trip(sums_->lit());
+    // What a 10-bit target holds of each normalised prefix sum, read back as moments.
+    if (storage_.kind != StorageKind::Double) sums_->round_through(storage_);
   }
   double shadowed_fraction(const RectifiedRay& ray) const override {
     double b[6];

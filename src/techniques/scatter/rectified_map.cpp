@@ -175,6 +175,16 @@ double RectifiedMap::weight_sum(int v, double x) const {
   return prefix_weight(v, width_) + transmittance_integral(width_ * delta, x * delta, sigma_);
 }
 
+void RowPrefixSums::round_through(const MomentStorage& storage) {
+  const auto round_trip = [&](std::span<double> b) {
+    store_moments(storage, b);
+    load_moments(storage, b);
+  };
+  for (size_t at = 0; at < values_.size(); at += size_t(channels_))
+    round_trip({values_.data() + at, size_t(channels_)});
+  round_trip(lit_);
+}
+
 RowPrefixSums::RowPrefixSums(const RectifiedMap& map, int channels, const Function& b)
     : map_(map), width_(map.width()), channels_(channels) {
   values_.resize(size_t(map.height()) * (width_ + 1) * channels_);

@@ -16,6 +16,7 @@
 #include <span>
 #include <vector>
 
+#include "moments/storage.h"
 #include "scene/camera.h"
 #include "techniques/scatter/moment_resample.h"
 #include "techniques/scatter/scatter_technique.h"
@@ -115,21 +116,23 @@ class RowPrefixSums {
   using Function = std::function<void(double depth, double* out)>;
   RowPrefixSums(const RectifiedMap& map, int channels, const Function& b);
   int channels() const { return channels_; }
-  // b̄ at boundary k of row v (mutable: a storage format rounds it in place).
-  std::span<double> at(int v, int k) {
-    return {values_.data() + (size_t(v) * (width_ + 1) + k) * channels_, size_t(channels_)};
-  }
+  // b̄ at boundary k of row v.
   std::span<const double> at(int v, int k) const {
     return {values_.data() + (size_t(v) * (width_ + 1) + k) * channels_, size_t(channels_)};
   }
-  std::span<double> lit() { return lit_; }  // b(1), the empty light ray's vector
+  // What a stored target holds of every b̄ and of b(1), read back as moments (store_moments then
+  // load_moments): the transforms are affine, so interpolating values or moments is the same.
+  void round_through(const MomentStorage& storage);
   // The mean of b over the ray's part of row `ray.row` (out has channels() values).
   void mean(const RectifiedRay& ray, double* out) const;
 
  private:
+  std::span<double> at(int v, int k) {  // filled by the constructor
+    return {values_.data() + (size_t(v) * (width_ + 1) + k) * channels_, size_t(channels_)};
+  }
   const RectifiedMap& map_;
   int width_ = 0, channels_ = 0;
-  std::vector<double> values_, lit_;
+  std::vector<double> values_, lit_;  // lit_: b(1), the empty light ray's vector
 };
 
 // The row's own weighted distribution along a view ray (pss_exact, pss_lp): the depths of the
