@@ -18,6 +18,8 @@ import sys
 
 import numpy as np
 
+from compare_sweeps import pearson, ranks  # ranks average ties
+
 POWER4 = "z; z^2; z^3; z^4"
 TRIG4 = "sin(2 pi z); cos(2 pi z); sin(4 pi z); cos(4 pi z)"
 MARGINS_PP = (0.01, 0.05, 0.1)
@@ -102,22 +104,7 @@ def references_table(four, refs):
 
 
 def spearman(a, b):
-    def ranks(x):
-        order = np.argsort(x, kind="stable")
-        r = np.empty(len(x))
-        r[order] = np.arange(len(x))
-        # average the ranks of ties
-        values = np.asarray(x)[order]
-        i = 0
-        while i < len(values):
-            j = i
-            while j + 1 < len(values) and values[j + 1] == values[i]:
-                j += 1
-            r[order[i:j + 1]] = (i + j) / 2
-            i = j + 1
-        return r
-    ra, rb = ranks(np.asarray(a)), ranks(np.asarray(b))
-    return float(np.corrcoef(ra, rb)[0, 1])
+    return pearson(ranks(a), ranks(b))
 
 
 def read_exact_sample(path):
