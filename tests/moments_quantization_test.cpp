@@ -158,6 +158,34 @@ TEST(QuantizationTransform, OptimizedBeatsCanonicalOnCatalogCandidates) {
             entropy_gain_bits(power(4), quantization_transform(power(4), "seed")) - 1e-4);
 }
 
+TEST(QuantizationTransform, JoggledHullBoundsTheSampledHullFromBelow) {
+  // Qhull's joggle ("QJ", gain_bounds's fallback) moves the points; the margin subtracted keeps the
+  // volume below the exact hull of the same samples, which "Qt" computes here.
+  std::vector<double> points;
+  for (int k = 0; k < 300; ++k) {
+    const double z = 0.5 - 0.5 * std::cos(M_PI * k / 299);
+    for (int j = 1; j <= 4; ++j) points.push_back(std::pow(z, j));
+  }
+  const double exact = sampled_hull_volume(points, 4, false);
+  const double joggled = sampled_hull_volume(points, 4, true);
+  EXPECT_NEAR(exact, 1.0 / 25200, 1e-3 / 25200);
+  EXPECT_LT(joggled, exact);
+  EXPECT_GT(joggled, exact * (1 - 1e-3));
+}
+
+TEST(QuantizationTransform, EightTrigonometricMomentsHaveBounds) {
+  // Eight moments (MBOIT's trig4 information on [0, 1]): 28 curve samples in 8 dimensions, and a
+  // difference body of enough samples to span them (the differences of n points span n - 1). The
+  // same 28 Chebyshev depths' hull by scipy.spatial.ConvexHull ("Qt", Qhull 2019.1, whitened as
+  // here) has volume 1.7238517529588445e-05 in the functions' own coordinates.
+  const Basis basis = Basis::parse({"cos(pi z)", "cos(2 pi z)", "cos(3 pi z)", "cos(4 pi z)",
+                                    "sin(pi z)", "sin(2 pi z)", "sin(3 pi z)", "sin(4 pi z)"});
+  const GainBounds g = gain_bounds(basis);
+  EXPECT_NEAR(g.hull_volume, 1.7238517529588445e-05, 1e-9 * 1.7238517529588445e-05);
+  EXPECT_GT(g.difference_volume, 0.0);
+  EXPECT_LE(g.difference_bound_bits, g.hull_bound_bits);
+}
+
 TEST(QuantizationTransform, Theta6GainsBeyondSeed004) {
   // Seed 004 §2.5: 30.5 bits for six moments; this project's theta_6 re-derived from exact ranges.
   const Basis basis = power(6);

@@ -6,10 +6,12 @@
 #include <cstdio>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "cmd/command_common.h"
 #include "cmd/commands.h"
 #include "moments/quantization_transform.h"
+#include "util/error.h"
 #include "util/option_record.h"
 
 namespace mb {
@@ -17,6 +19,7 @@ namespace mb {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr int kMaxStorageFunctions = 8;
 
 struct StorageSettings {
   std::vector<std::string> basis;
@@ -68,6 +71,12 @@ int run_storage(const CLI::App& command, const CommonOptions& common,
   StorageSettings o;
   read_options(cmd->config(), storage_options(), o);
   const Basis basis = Basis::parse(o.basis);
+  // The search's starts and the hulls' sample counts grow with m (docs/reference.md §8); eight
+  // moments are the most any technique here stores (MBOIT's power8 and trig4).
+  if (basis.size() > size_t(kMaxStorageFunctions))
+    throw InputError("storage.basis: " + std::to_string(basis.size()) +
+                     " functions; expected at most " + std::to_string(kMaxStorageFunctions) +
+                     " (the most moments a technique stores, docs/reference.md §8)");
   check_quantizable(basis);
   const auto start = std::chrono::steady_clock::now();
   nlohmann::ordered_json search;
@@ -81,7 +90,15 @@ int run_storage(const CLI::App& command, const CommonOptions& common,
   }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const GainBounds bounds = gain_bounds(basis);
+  // The bounds are a certificate beside the transform: where Qhull cannot take a hull the
+  // transform and its gain are still printed, with the reason in place of the bounds.
+  std::optional<GainBounds> bounds;
+  std::string bounds_error;
+  try {
+    bounds = gain_bounds(basis);
+  } catch (const InputError& e) {
+    bounds_error = e.what();
+  }
   const QuantizationTransform canonical = quantization_transform(basis, "canonical");
   const double det = std::abs(t.A.determinant()),
                canonical_det = std::abs(canonical.A.determinant());
@@ -92,19 +109,24 @@ int run_storage(const CLI::App& command, const CommonOptions& common,
       {"entropy_gain_bits", entropy_gain_bits(basis, t)},
       {"log2_det_A", std::log2(det)},
       {"admissibility_violation", admissibility_violation(basis, t)},
-      {"hull_volume", bounds.hull_volume},
-      {"canonical_hull_volume", canonical_det * bounds.hull_volume},
-      {"transformed_hull_volume", det * bounds.hull_volume},
+      {"hull_volume", nullptr},
+      {"canonical_hull_volume", nullptr},
+      {"transformed_hull_volume", nullptr},
       {"volume_ratio", det / canonical_det},
-      {"bounds",
-       {{"hull_bits", bounds.hull_bound_bits},
-        {"difference_body_bits", bounds.difference_bound_bits},
-        {"best_bits", bounds.best_bits()},
-        {"difference_body_volume", bounds.difference_volume},
-        {"note",
-         "certified upper bounds of entropy_gain_bits: the volumes are those of hulls of "
-         "sampled points (Qhull), lower bounds of the true volumes"}}},
+      {"bounds", {{"error", bounds_error}}},
       {"seconds", seconds}};
+  if (bounds) {
+    out["hull_volume"] = bounds->hull_volume;
+    out["canonical_hull_volume"] = canonical_det * bounds->hull_volume;
+    out["transformed_hull_volume"] = det * bounds->hull_volume;
+    out["bounds"] = {{"hull_bits", bounds->hull_bound_bits},
+                     {"difference_body_bits", bounds->difference_bound_bits},
+                     {"best_bits", bounds->best_bits()},
+                     {"difference_body_volume", bounds->difference_volume},
+                     {"note",
+                      "certified upper bounds of entropy_gain_bits: the volumes are those of "
+                      "hulls of sampled points (Qhull), lower bounds of the true volumes"}};
+  }
   if (!search.is_null()) out["search"] = search;
   if (o.samples > 0) {
     nlohmann::ordered_json z = nlohmann::ordered_json::array(), b = nlohmann::ordered_json::array(),

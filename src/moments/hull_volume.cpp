@@ -18,51 +18,13 @@ namespace mb {
 
 namespace {
 
-// The volume of the convex hull of `points` (n x dim, row-major), from Qhull ("Qt": triangulated,
-// so that the volume is the facets' simplices summed exactly).
-double qhull_volume(std::vector<double> points, int dim) {
-  const int n = int(points.size()) / dim;
-  qhT context;
-  qhT* qh = &context;
-  FILE* errors = std::tmpfile();
-  qh_zero(qh, errors);
-  char flags[] = "qhull Qt";
-  const int exit = qh_new_qhull(qh, dim, n, points.data(), False, flags, nullptr, errors);
-  double volume = 0;
-  if (exit == 0) {
-    qh_getarea(qh, qh->facet_list);
-    volume = qh->totvol;
-  }
-  qh_freeqhull(qh, !qh_ALL);
-  int still_long = 0, total_long = 0;
-  qh_memfreeshort(qh, &still_long, &total_long);
-  std::string message;
-  if (errors) {
-    std::rewind(errors);
-    char line[256];
-    while (message.size() < 400 && std::fgets(line, sizeof line, errors)) message += line;
-    std::fclose(errors);
-  }
-  if (exit != 0)
-    throw InputError("hull volume: Qhull failed on " + std::to_string(n) +
-                     " points of the curve in " + std::to_string(dim) +
-                     " dimensions (a degenerate basis?): " + message);
-  return volume;
-}
-
-// Qhull's volume of `points`; where Qhull's precision fails (a nearly flat hull), of every other
-// point, then every fourth: a subset's hull is inside the set's, so it still bounds from below.
-double convex_hull_volume(std::vector<double> points, int dim) {
-  for (int attempt = 0;; ++attempt) {
-    try {
-      return qhull_volume(points, dim);
-    } catch (const InputError&) {
-      if (attempt == 2 || points.size() / dim < 4 * size_t(dim)) throw;
-    }
-    std::vector<double> half;
-    for (size_t k = 0; k < points.size() / dim; k += 2)
-      half.insert(half.end(), points.begin() + k * dim, points.begin() + (k + 1) * dim);
-    points = std::move(half);
+// Qhull's volume of `points`; where its precision fails (a nearly flat hull), of the joggled
+// points, bounded from below as sampled_hull_volume says.
+double convex_hull_volume(const std::vector<double>& points, int dim) {
+  try {
+    return sampled_hull_volume(points, dim, false);
+  } catch (const InputError&) {
+    return sampled_hull_volume(points, dim, true);
   }
 }
 
@@ -73,9 +35,10 @@ int curve_samples(int m) {
   static const int kCounts[] = {0, 2, 4096, 1500, 300, 120, 64, 40, 28};
   return m < int(std::size(kCounts)) ? kCounts[m] : 24;
 }
+// At least m + 2 points: the differences of n points span only n - 1 dimensions.
 int difference_samples(int m) {
-  static const int kCounts[] = {0, 2, 512, 200, 60, 28, 22, 12, 8};
-  return m < int(std::size(kCounts)) ? kCounts[m] : 8;
+  static const int kCounts[] = {0, 2, 512, 200, 60, 28, 22, 12, 10};
+  return m < int(std::size(kCounts)) ? kCounts[m] : m + 2;
 }
 
 std::vector<double> depths(int n) {
@@ -85,6 +48,40 @@ std::vector<double> depths(int n) {
 }
 
 }  // namespace
+
+double sampled_hull_volume(std::vector<double> points, int dim, bool joggle) {
+  const int n = int(points.size()) / dim;
+  qhT context;
+  qhT* qh = &context;
+  // Qhull's messages go to a scratch file, quoted in the error below; without one (no writable
+  // temporary directory) they go to stderr and the error says so.
+  FILE* errors = std::tmpfile();
+  qh_zero(qh, errors ? errors : stderr);
+  char plain[] = "qhull Qt", joggled[] = "qhull QJ";
+  const int exit = qh_new_qhull(qh, dim, n, points.data(), False, joggle ? joggled : plain, nullptr,
+                                errors ? errors : stderr);
+  double volume = 0;
+  if (exit == 0) {
+    qh_getarea(qh, qh->facet_list);
+    volume = qh->totvol;
+    if (joggle) volume -= 2 * std::sqrt(double(dim)) * qh->JOGGLEmax * qh->totarea;
+  }
+  qh_freeqhull(qh, !qh_ALL);
+  int still_long = 0, total_long = 0;
+  qh_memfreeshort(qh, &still_long, &total_long);
+  std::string message = errors ? "" : "(Qhull's messages are on stderr)";
+  if (errors) {
+    std::rewind(errors);
+    char line[256];
+    while (message.size() < 400 && std::fgets(line, sizeof line, errors)) message += line;
+    std::fclose(errors);
+  }
+  if (exit != 0 || !(volume > 0))
+    throw InputError("hull volume: Qhull failed on " + std::to_string(n) +
+                     " points of the curve in " + std::to_string(dim) +
+                     " dimensions (a degenerate basis?): " + message);
+  return volume;
+}
 
 double GainBounds::best_bits() const {
   return std::min(hull_bound_bits, difference_bound_bits);
@@ -130,15 +127,16 @@ GainBounds gain_bounds(const Basis& basis) {
     points.insert(points.end(), y.data(), y.data() + m);
   }
   const double hull = convex_hull_volume(points, m) / det_W;
+  // The difference body in the same whitened coordinates: W (q_i - q_k) = y_i - y_k.
   const std::vector<Eigen::VectorXd> sparse = stored(depths(difference_samples(m)));
   points.clear();
   for (size_t i = 0; i < sparse.size(); ++i)
     for (size_t k = 0; k < sparse.size(); ++k) {
       if (i == k) continue;  // 0, inside D: n copies of it trouble Qhull
-      const Eigen::VectorXd d = sparse[i] - sparse[k];
+      const Eigen::VectorXd d = W * (sparse[i] - sparse[k]);
       points.insert(points.end(), d.data(), d.data() + m);
     }
-  const double difference = convex_hull_volume(points, m);
+  const double difference = convex_hull_volume(points, m) / det_W;
   out.hull_volume = hull / canonical_det;
   out.difference_volume = difference / canonical_det;
   out.hull_bound_bits = -std::log2(hull);

@@ -8,6 +8,7 @@
 // functions' closed-form derivatives; an expression without them is refused (InputError), since
 // sampling understates a range and a transform fitted to samples can leave [0, 1]^m.
 #include <string>
+#include <vector>
 
 #include "basis/basis.h"
 #include "util/eigen.h"
@@ -82,5 +83,13 @@ struct GainBounds {
   double best_bits() const;          // the smaller of the two
 };
 GainBounds gain_bounds(const Basis& basis);
+
+// The volume of the convex hull of `points` (n x dim, row-major) from Qhull, triangulated ("Qt")
+// so that it is the facets' simplices summed. With `joggle` ("QJ", Qhull's remedy for its
+// precision errors, the fallback gain_bounds takes) every point moves by at most JOGGLEmax a
+// coordinate, so the joggled hull lies within eps = sqrt(dim) JOGGLEmax of the sampled one and
+// exceeds it by at most about eps times its surface: twice that is subtracted, and the result
+// stays below the sampled hull's volume. InputError when Qhull fails.
+double sampled_hull_volume(std::vector<double> points, int dim, bool joggle);
 
 }  // namespace mb

@@ -308,6 +308,16 @@ void check_plan(const SweepPlan& plan, const EvalSettings& eval) {
   std::vector<BasisFunction> functions;
   for (const auto& name : plan.catalog) functions.push_back(BasisFunction::parse(name));
   Basis(functions).check_admissible(eval.technique.lp.lo, eval.technique.lp.hi);
+  // A unorm box is fitted to each candidate's certified ranges (docs/reference.md §8), which an
+  // expression has no derivatives to prove: refused here rather than in every candidate with it.
+  if (eval.technique.lp_moment_box.rfind("unorm", 0) == 0)
+    for (const BasisFunction& f : functions)
+      if (!f.has_derivatives())
+        throw InputError("catalog: '" + f.name() +
+                         "' is an expression, and lp.moment_box = " + eval.technique.lp_moment_box +
+                         " needs certified ranges of every candidate's functions (catalog "
+                         "functions have them, docs/reference.md §8); expected catalog functions "
+                         "or lp.moment_box none, double or float32");
   lp::check_backend_rows(eval.technique.lp_backend, plan.size, "combination_size");
 }
 

@@ -101,7 +101,7 @@ std::vector<TechniqueRow> rows() {
        .storage = "double",
        .bound = "the LP's certified tolerance (lp::kCertifiedError)",
        .family_options = {"lp.grid", "lp.lo", "lp.hi", "lp.discretization", "lp.quantize",
-                          "lp.backend", "lp.moment_box", "lp.beta"},
+                          "lp.backend", "lp.moment_box", "lp.moment_transform", "lp.beta"},
        .solves_lp = true,
        .make = make_lp_technique,
        // The seed paper's two bases (seed 000 §3.2: 2.19 % and 1.93 %, the best).
