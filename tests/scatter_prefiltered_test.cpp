@@ -8,6 +8,7 @@
 #include "scatter/scatter_run.h"
 #include "techniques/lp_options.h"
 #include "test_support.h"
+#include "util/error.h"
 
 namespace mb {
 namespace {
@@ -74,6 +75,30 @@ TEST(ScatterPrefiltered, LpAtBetaZeroIsNeverTooDarkAgainstPssExact) {
       EXPECT_GT(brighter, 0u);  // not pss_exact itself: the moments lose something
     }
   }
+}
+
+// pss_lp_stored:<row> (docs/scattering.md §3.2): Problem 1 over the moment box of the row's
+// stored map holds the ray's own moments, so its shadowed fraction is at most pss_lp's on the same
+// basis (more in-scattering at every pixel, for the LP's tolerance), still never too dark against
+// pss_exact; the 16-bit box loses something somewhere. A row stored in double has no box.
+TEST(ScatterPrefiltered, StoredLpBoundsBelowTheLpOfItsBasis) {
+  ScatterRunOptions run = defaults({"pss_lp:power4", "pss_lp_stored:pss_msm4_16bit"});
+  run.reference = "pss_exact", run.beta = 0;
+  const auto frames = run_on(tiny(), run, 2);
+  ASSERT_EQ(frames.size(), 1u);
+  const ScatterFrameResult& r = frames[0];
+  size_t brighter = 0;
+  for (size_t p = 0; p < r.reference.size(); ++p) {
+    EXPECT_GE(r.inscatter[1][p], r.inscatter[0][p] - 1e-8 * r.s_max[p]) << p;
+    EXPECT_GE(r.inscatter[1][p], r.reference[p] - 1e-8 * r.s_max[p]) << p;
+    brighter += r.inscatter[1][p] > r.inscatter[0][p] * (1 + 1e-9);
+  }
+  EXPECT_GT(brighter, 0u);
+  EXPECT_LT(r.stats[1].too_dark(), 1e-9);
+  EXPECT_GT(r.stats[1].mean_error(), r.stats[0].mean_error());
+
+  run.techniques = {"pss_lp_stored:pss_msm6"};
+  EXPECT_THROW(run_on(tiny(), run, 1), InputError);
 }
 
 // Rectification's error shrinks as the light map and the rectified map grow; in a thin medium

@@ -14,6 +14,8 @@
 #include "sweep/run_identity.h"
 #include "sweep/sweep_run.h"
 #include "techniques/lp_fragment_solver.h"
+#include "techniques/lp_technique.h"
+#include "techniques/technique.h"
 #include "util/error.h"
 
 namespace mb {
@@ -40,9 +42,11 @@ TEST(LpMomentBox, SeedKeepsTheta4AndOtherTransformsReachAnyBasis) {
   const QuantizationTransform t{optimized->storage.transform, optimized->storage.offset};
   EXPECT_LE(admissibility_violation(candidate, t), 1e-9);
   EXPECT_GT(entropy_gain_bits(candidate, t), 1.0);
-  // Searched once per basis: a second box reads the same transform.
+  // Searched once per basis: a second box reads the first one's transform without a search.
+  const size_t searched = optimized_transform_searches();
   EXPECT_EQ(lp_moment_box("unorm16", "optimized", candidate)->storage.transform,
             optimized->storage.transform);
+  EXPECT_EQ(optimized_transform_searches(), searched);
 
   EXPECT_FALSE(lp_moment_box("none", "seed", candidate));
   EXPECT_EQ(lp_moment_box("float32", "seed", candidate)->storage.name(), "float32");
@@ -54,15 +58,50 @@ TEST(LpMomentBox, ConcurrentOptimizedBoxesKeepTheirOwnBasis) {
   const std::vector<Basis> bases{Basis::parse({"z", "exp(-z)", "cos(pi z)"}),
                                  Basis::parse({"z^2", "sin(pi z)", "log(1+z)"})};
   std::vector<Eigen::MatrixXd> got(4);
+  const size_t before = optimized_transform_searches();
   std::vector<std::thread> threads;
   for (size_t i = 0; i < got.size(); ++i)
     threads.emplace_back([&, i] {
       got[i] = lp_moment_box("unorm16", "optimized", bases[i % 2])->storage.transform;
     });
   for (auto& t : threads) t.join();
+  EXPECT_EQ(optimized_transform_searches(), before + 2);  // one search per basis, not per thread
   for (size_t i = 0; i < got.size(); ++i)
     EXPECT_EQ(got[i], quantization_transform(bases[i % 2], "optimized").A) << i;
   EXPECT_NE(got[0], got[1]);
+}
+
+// A stored map's box centres on what the map holds for the fragment (FragmentInput::
+// stored_values, pss_lp_stored's rounded prefix means) when given: the kernel's own stored values
+// give about the bound of its texels' box, another distribution's values that distribution's.
+TEST(LpMomentBox, StoredValuesCentreTheBox) {
+  const Basis power4 = Basis::parse({"power4"});
+  const MomentStorage storage = unorm16_power4_storage();
+  TechniqueParams p;
+  const auto lp = make_lp_technique("lp:power4", power4, storage, p);
+  const std::vector<double> depths{0.3, 0.6}, weights{0.5, 0.5};
+  std::vector<double> b(4, 0.0);
+  for (size_t k = 0; k < depths.size(); ++k)
+    for (int j = 0; j < 4; ++j) b[size_t(j)] += weights[k] * power4[size_t(j)](depths[k]);
+  std::vector<double> q = stored_values(storage, b);
+  FragmentInput in;
+  in.kernel_depths = depths, in.kernel_weights = weights, in.zf = 0.5;
+  const double texels = lp->shadow(in);  // the atoms stored one by one, then filtered
+  in.stored_values = q;
+  const double centred = lp->shadow(in);
+  EXPECT_NEAR(centred, texels, 1e-3);  // two atoms' rounding moves the centre by half steps
+  EXPECT_GT(centred, 0.3);             // half the mass lies in front of z_f
+  EXPECT_LE(centred, 0.5 + 1e-9);
+  // The stored values of another distribution (more mass in front of z_f): the bound follows
+  // the centre, not the kernel.
+  std::vector<double> other(4, 0.0);
+  for (size_t k = 0; k < depths.size(); ++k)
+    for (int j = 0; j < 4; ++j)
+      other[size_t(j)] += (k == 0 ? 0.8 : 0.2) * power4[size_t(j)](depths[k]);
+  const std::vector<double> moved = stored_values(storage, other);
+  in.stored_values = moved;
+  EXPECT_GT(lp->shadow(in), centred + 0.2);
+  EXPECT_EQ(lp->failures(), 0u);
 }
 
 TEST(LpMomentBox, RefusesSeedWithoutATransformAndUnknownFormats) {

@@ -1,10 +1,13 @@
 #include "techniques/lp_fragment_solver.h"
 
 #include <algorithm>
+#include <atomic>
 #include <exception>
 #include <future>
 #include <map>
 #include <mutex>
+#include <stdexcept>
+#include <string>
 
 #include "continuous/discretized.h"
 #include "continuous/moment_box.h"
@@ -27,6 +30,8 @@ std::string listed(const std::vector<std::string>& names) {
 // transforms could be chosen); `canonical` and `optimized` come from quantization_transform.
 // The optimized search runs once per basis and process: every thread's solver of every view
 // reads the same answer, and a sweep's candidate pays for it inside its first view's time.
+std::atomic<size_t> searches{0};
+
 QuantizationTransform box_transform(const std::string& kind, const Basis& basis) {
   const std::vector<std::string> names = basis.names();
   if (kind == "seed") {
@@ -57,6 +62,7 @@ QuantizationTransform box_transform(const std::string& kind, const Basis& basis)
     answer = mine ? found.emplace(names, promise.get_future().share()).first->second : it->second;
   }
   if (mine) {
+    ++searches;
     try {
       promise.set_value(quantization_transform(basis, kind));
     } catch (...) {
@@ -67,6 +73,10 @@ QuantizationTransform box_transform(const std::string& kind, const Basis& basis)
 }
 
 }  // namespace
+
+size_t optimized_transform_searches() {
+  return searches.load();
+}
 
 std::optional<LpMomentBox> lp_moment_box(const std::string& setting, const std::string& transform,
                                          const Basis& basis) {
@@ -152,7 +162,7 @@ const lp::Solution& LpFragmentSolver::solve(lp::Problem& problem, std::span<cons
                                             std::span<const double> weights, double zf,
                                             const lp::WarmStart* warm) {
   if (box_) {
-    solve_box(depths, weights, zf);
+    solve_box(filtered_stored_values(box_->storage, basis_, depths, weights), depths, zf);
     return s_;
   }
   if (factory_.discretization().continuous) {
@@ -168,13 +178,23 @@ const lp::Solution& LpFragmentSolver::solve(lp::Problem& problem, std::span<cons
   return s_;
 }
 
-void LpFragmentSolver::solve_box(std::span<const double> depths, std::span<const double> weights,
+const lp::Solution& LpFragmentSolver::solve_stored(std::span<const double> stored,
+                                                   std::span<const double> depths, double zf) {
+  if (!box_ || stored.size() != basis_.size())
+    throw std::logic_error("LpFragmentSolver::solve_stored: no box, or " +
+                           std::to_string(stored.size()) + " stored values for " +
+                           std::to_string(basis_.size()) + " functions");
+  solve_box({stored.begin(), stored.end()}, depths, zf);
+  return s_;
+}
+
+void LpFragmentSolver::solve_box(std::vector<double> centre, std::span<const double> depths,
                                  double zf) {
   // Each fragment's box problem from scratch (GLPK; no warm start).
   s_.call = lp::CallStatus::Ok;
   const lp::Discretization& disc = factory_.discretization();
-  const lp::MomentBox moment_box{filtered_stored_values(box_->storage, basis_, depths, weights),
-                                 box_->tolerance, box_->storage.transform, box_->storage.offset};
+  const lp::MomentBox moment_box{std::move(centre), box_->tolerance, box_->storage.transform,
+                                 box_->storage.offset};
   std::vector<double> points(depths.begin(), depths.end());
   const int grid = disc.continuous ? std::min(disc.grid, lp::kContinuousSeedGrid) : disc.grid;
   for (int k = 0; k < grid; ++k) points.push_back(disc.lo + (disc.hi - disc.lo) * k / (grid - 1));

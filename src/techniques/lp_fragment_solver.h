@@ -41,6 +41,9 @@ struct LpMomentBox {
 // searched once per basis and process). InputError naming the key otherwise.
 std::optional<LpMomentBox> lp_moment_box(const std::string& setting, const std::string& transform,
                                          const Basis& basis);
+// How many optimized transforms this process has searched: one per basis, however many solvers
+// and threads ask (the cost a sweep's candidate pays once).
+size_t optimized_transform_searches();
 // The box of a given format (a stored technique's own, lp_stored:<technique>).
 LpMomentBox lp_moment_box(const MomentStorage& storage, const Basis& basis);
 
@@ -64,11 +67,16 @@ class LpFragmentSolver {
   const lp::Solution& solve(lp::Problem& problem, std::span<const double> depths,
                             std::span<const double> weights, double zf,
                             const lp::WarmStart* warm = nullptr);
+  // With a box: the box problem centred on `stored`, the values the map holds for this fragment
+  // as a shader reads them, instead of the kernel's atoms stored one by one (FragmentInput::
+  // stored_values); the kernel's depths join the grid.
+  const lp::Solution& solve_stored(std::span<const double> stored, std::span<const double> depths,
+                                   double zf);
 
  private:
-  // G of the box problem around the kernel's stored moments, on the grid and the kernel's depths
-  // or (continuous) on all of [lo, hi] by the exchange method (continuous/moment_box.h).
-  void solve_box(std::span<const double> depths, std::span<const double> weights, double zf);
+  // G of the box problem around `centre` (stored values), on the grid and the kernel's depths or
+  // (continuous) on all of [lo, hi] by the exchange method (continuous/moment_box.h).
+  void solve_box(std::vector<double> centre, std::span<const double> depths, double zf);
   // lp.beta: s_.G <- G + beta (G+ - G), G+ = 1 - (the least mass behind z_f), solved cold (warm
   // bases remember the minimum's problems).
   void blend_with_maximum(const lp::Problem& problem);

@@ -53,7 +53,7 @@ const std::vector<OptionRecord<LpOptions>>& lp_records() {
         "LP techniques: none (the kernel's exact moments) or a storage format (double, float32, "
         "unorm8, unorm10, unorm16 after lp.moment_transform): Problem 1 over every distribution "
         "whose stored moments lie within that format's rounding of the kernel's "
-        "(docs/reference.md §2, §12; GLPK, no warm start).",
+        "(docs/reference.md §2, §8; GLPK, no warm start).",
         -kInf,
         kInf,
         {"none", "double", "float32", "unorm8", "unorm10", "unorm16"}},

@@ -23,13 +23,14 @@ class LpTechnique : public Technique {
                  p.lp),
         solver_(this->basis(), factory_, p),
         beta_(p.lp_beta) {}
-  // lp_stored:<technique>: the stored technique's basis over its own format's box, whatever
-  // lp.moment_box says. Each fragment's box LP is solved from scratch by GLPK (no warm start), so
-  // eval answers it fragment by fragment (no lp_factory) as it does a closed form.
-  LpTechnique(const std::string& name, const Technique& stored, const TechniqueParams& p)
-      : Technique(name, stored.basis(), stored.storage()),
-        factory_((stored.basis().check_independent(p.lp.lo, p.lp.hi), stored.basis()), p.lp),
-        solver_(this->basis(), factory_, p, lp_moment_box(stored.storage(), stored.basis())),
+  // lp_stored:<technique> (and pss_lp_stored:): a stored map's basis over its own format's box,
+  // whatever lp.moment_box says. Each fragment's box LP is solved from scratch by GLPK (no warm
+  // start), so eval answers it fragment by fragment (no lp_factory) as it does a closed form.
+  LpTechnique(const std::string& name, Basis basis, const MomentStorage& storage,
+              const TechniqueParams& p)
+      : Technique(name, std::move(basis), storage),
+        factory_((this->basis().check_independent(p.lp.lo, p.lp.hi), this->basis()), p.lp),
+        solver_(this->basis(), factory_, p, lp_moment_box(storage, this->basis())),
         beta_(p.lp_beta),
         own_box_(true) {}
   bool needs_distribution() const override { return true; }
@@ -52,7 +53,10 @@ class LpTechnique : public Technique {
     // instead (eval/lp_view_solver.h), through the same solver, to the same certified answers.
     if (solver_.reads_problem())
       problem_ = factory_.from_distribution(in.kernel_depths, in.kernel_weights, in.zf);
-    const lp::Solution& s = solver_.solve(problem_, in.kernel_depths, in.kernel_weights, in.zf);
+    const lp::Solution& s =
+        own_box_ && !in.stored_values.empty()
+            ? solver_.solve_stored(in.stored_values, in.kernel_depths, in.zf)
+            : solver_.solve(problem_, in.kernel_depths, in.kernel_weights, in.zf);
     if (s.call != lp::CallStatus::Ok || s.status != lp::ProblemStatus::Optimal) {
       ++failures_;
       return 0;
@@ -120,7 +124,8 @@ std::vector<TechniqueRow> rows() {
        .example = "lp_stored:hamburger4_16bit",
        .solves_lp = true,
        .make = [](const std::string& name, const TechniqueParams& p) -> std::unique_ptr<Technique> {
-         return std::make_unique<LpTechnique>(name, *stored_technique(name, p), p);
+         const std::unique_ptr<Technique> stored = stored_technique(name, p);
+         return std::make_unique<LpTechnique>(name, stored->basis(), stored->storage(), p);
        },
        .check = [](const std::string& name,
                    const TechniqueParams& p) { stored_technique(name, p); },
@@ -130,6 +135,12 @@ std::vector<TechniqueRow> rows() {
 const TechniqueRegistration kRegistered(rows);
 
 }  // namespace
+
+std::unique_ptr<Technique> make_lp_technique(const std::string& name, const Basis& basis,
+                                             const MomentStorage& storage,
+                                             const TechniqueParams& p) {
+  return std::make_unique<LpTechnique>(name, basis, storage, p);
+}
 
 std::vector<std::string> lp_technique_basis(const std::string& name) {
   std::string spec = name.substr(3);

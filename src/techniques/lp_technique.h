@@ -18,6 +18,13 @@ constexpr double kLpDarkeningBound = lp::kCertifiedError;
 // `name` = "lp:" + a named set (power4, trig4, ...) or functions separated by ';' or ','.
 std::unique_ptr<Technique> make_lp_technique(const std::string& name, const TechniqueParams& p);
 
+// Problem 1 for `basis` over the moment box of a map stored as `storage` (lp_stored:, and
+// pss_lp_stored: for the scattering rows' maps), whatever lp.moment_box says: every distribution
+// whose stored moments lie within the format's rounding of the kernel's (docs/reference.md §8).
+std::unique_ptr<Technique> make_lp_technique(const std::string& name, const Basis& basis,
+                                             const MomentStorage& storage,
+                                             const TechniqueParams& p);
+
 // The functions of an `lp:` name.
 std::vector<std::string> lp_technique_basis(const std::string& name);
 // The `lp:` name of a basis given as in `lp:` ("power4", "z; z^2").

@@ -1,6 +1,6 @@
 // Moment shadow mapping with power moments: Hamburger 4MSM in double, float32 and 16 bits (with
 // theta_4 or the canonical transform), Hausdorff 4MSM in double and 16 bits, six-moment Hamburger
-// (docs/reference.md §4, §12).
+// (docs/reference.md §4, §8).
 #include <algorithm>
 #include <cmath>
 #include <limits>

@@ -28,6 +28,11 @@ struct FragmentInput {
   std::span<const double> kernel_depths, kernel_weights;
   std::span<const uint32_t> tap_offsets;
   std::span<const double> kernel_alpha;  // each atom's opacity (shadow/fragments.h, kernel_atoms)
+  // What a stored map holds for this fragment, as a shader reads it (after the format's
+  // transform): the centre of an LP's moment box. Empty: the kernel's atoms stored one by one as
+  // texels and filtered (filtered_stored_values); pss_lp_stored: the ray's mean of rounded prefix
+  // sums.
+  std::span<const double> stored_values;
 };
 
 struct TechniqueOption;

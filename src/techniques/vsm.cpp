@@ -1,6 +1,6 @@
 // Variance shadow maps (in double and from 16-bit maps with seed 000's theta_2) and layered VSM:
 // Cantelli's inequality on the depth, or on the depth clamped into the receiver's layer
-// (docs/reference.md §4, §12).
+// (docs/reference.md §4, §8).
 #include <algorithm>
 #include <cmath>
 #include <limits>

@@ -11,34 +11,46 @@
 #include <atomic>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <utility>
 #include <vector>
 
+#include "moments/storage.h"
 #include "techniques/lp_technique.h"
 #include "techniques/registry.h"
 #include "techniques/scatter/prefiltered_scatter.h"
 #include "util/error.h"
+#include "util/number_text.h"
 
 namespace mb {
 
 namespace {
 
-constexpr std::string_view kPrefix = "pss_lp:";
+constexpr std::string_view kPrefix = "pss_lp:", kStoredPrefix = "pss_lp_stored:";
 
 std::string lp_name_of(const std::string& name) {
   return "lp:" + name.substr(kPrefix.size());
 }
 
+std::string joined(const std::vector<std::string>& names) {
+  std::string out;
+  for (const std::string& n : names) out += (out.empty() ? "" : "; ") + n;
+  return out;
+}
+
 class PssLp : public PrefilteredScatter {
  public:
-  PssLp(const std::string& name, const ScatterParams& params)
+  // `stored`: pss_lp_stored:<row>, the LP over the moment box of that row's stored map.
+  PssLp(const std::string& name, const ScatterParams& params,
+        std::optional<StoredFormat> stored = std::nullopt)
       : PrefilteredScatter(name, params),
-        lp_name_(lp_name_of(name)),
+        lp_name_(stored ? lp_technique_name(joined(stored->basis)) : lp_name_of(name)),
+        stored_(std::move(stored)),
         instance_(next_instance()),
         technique_(params.technique) {
-    technique_.lp_beta = params.beta;         // scatter.beta is the one beta of the family
-    make_lp_technique(lp_name_, technique_);  // a bad basis fails here, before any work
+    technique_.lp_beta = params.beta;  // scatter.beta is the one beta of the family
+    make_lp(technique_);               // a bad basis, or a beta the box cannot take, fails here
     std::lock_guard<std::mutex> lock(live_mutex());
     live().insert(instance_);
   }
@@ -49,7 +61,17 @@ class PssLp : public PrefilteredScatter {
   size_t failures() const override { return failures_; }
 
  protected:
-  void prefilter(const RectifiedMap&) override {}
+  // pss_lp_stored: what the stored map holds, the rows' prefix sums of the basis rounded through
+  // the format (as the stored row's own prefilter keeps them), whose mean along a ray centres the
+  // ray's box (docs/scattering.md §3.2).
+  void prefilter(const RectifiedMap& map) override {
+    if (!stored_) return;
+    const Basis basis = Basis::parse(stored_->basis);
+    sums_ = std::make_unique<RowPrefixSums>(map, int(basis.size()), [basis](double z, double* out) {
+      for (size_t j = 0; j < basis.size(); ++j) out[j] = basis[j](z);
+    });
+    sums_->round_through(stored_->storage);
+  }
   double shadowed_fraction(const RectifiedRay& ray) const override {
     Scratch& scratch = this->scratch();
     ray_distribution(map(), ray, scratch.depths, scratch.weights);
@@ -59,6 +81,12 @@ class PssLp : public PrefilteredScatter {
     for (double& w : scratch.weights) w /= total;
     FragmentInput in;
     in.kernel_depths = scratch.depths, in.kernel_weights = scratch.weights, in.zf = ray.depth;
+    if (sums_) {
+      scratch.mean.resize(size_t(sums_->channels()));
+      sums_->mean(ray, scratch.mean.data());
+      scratch.stored = stored_values(stored_->storage, scratch.mean);
+      in.stored_values = scratch.stored;
+    }
     const size_t before = scratch.lp->failures();
     const double g = scratch.lp->shadow(in);
     if (scratch.lp->failures() == before) return g;
@@ -66,11 +94,11 @@ class PssLp : public PrefilteredScatter {
     // (one to three distinct depths, on the moment cone's boundary) that a floating-point
     // backend cannot certify, it can, at about 300 times the cost of one LP, paid by the
     // few rays that need it (docs/scattering.md §3.2).
-    if (technique_.lp_backend != "exact") {
+    if (technique_.lp_backend != "exact" && !stored_) {
       if (!scratch.exact_lp) {
         TechniqueParams exact = technique_;
         exact.lp_backend = "exact";
-        scratch.exact_lp = make_lp_technique(lp_name_, exact);
+        scratch.exact_lp = make_lp(exact);
       }
       const size_t exact_before = scratch.exact_lp->failures();
       const double exact_g = scratch.exact_lp->shadow(in);
@@ -92,6 +120,7 @@ class PssLp : public PrefilteredScatter {
     std::unique_ptr<Technique> lp, exact_lp;  // exact_lp: made on a ray `lp` cannot certify
     std::vector<double> depths, weights;
     std::vector<std::pair<double, double>> atoms;
+    std::vector<double> mean, stored;  // pss_lp_stored: the ray's rounded mean, as stored
   };
   // The same distribution with each depth once (its weights summed) and no empty atoms. A row
   // repeats depths by the hundred (texels of one surface, the clamped ends 0 and 1), and each
@@ -131,16 +160,50 @@ class PssLp : public PrefilteredScatter {
       std::erase_if(per_instance, [](const auto& entry) { return !live().count(entry.first); });
     }
     Scratch& s = per_instance[instance_];
-    s.lp = make_lp_technique(lp_name_, technique_);
+    s.lp = make_lp(technique_);
     return s;
+  }
+  std::unique_ptr<Technique> make_lp(const TechniqueParams& p) const {
+    if (!stored_) return make_lp_technique(lp_name_, p);
+    return make_lp_technique(lp_name_, Basis::parse(stored_->basis), stored_->storage, p);
   }
 
   std::string lp_name_;
+  std::optional<StoredFormat> stored_;
+  std::unique_ptr<RowPrefixSums> sums_;  // pss_lp_stored: the stored map's prefix sums
   uint64_t instance_;
   TechniqueParams technique_;  // the LP's settings (lp.*) with lp.beta = scatter.beta
   mutable std::mutex mutex_;
   mutable size_t failures_ = 0;
 };
+
+// pss_lp_stored:<row>: the row's stored format (a scattering row of its own whose map is not
+// double), made with the same parameters.
+std::unique_ptr<ScatterTechnique> make_stored(const std::string& name,
+                                              const ScatterParams& params) {
+  const std::string inner = name.substr(kStoredPrefix.size());
+  const TechniqueRow* row = find_technique(inner, TechniqueFamily::Scattering);
+  std::optional<ScatterTechnique::StoredFormat> format;
+  if (row && !row->prefix() && !row->solves_lp && row->make_scatter)
+    format = row->make_scatter(inner, params)->stored_format();
+  if (!format) {
+    std::string valid;
+    for (const TechniqueRow* r : family_rows(TechniqueFamily::Scattering))
+      if (!r->prefix() && !r->solves_lp && r->make_scatter &&
+          r->make_scatter(r->name, params)->stored_format())
+        valid += (valid.empty() ? "" : ", ") + r->name;
+    throw InputError("technique '" + name +
+                     "': expected pss_lp_stored:<a scattering row with a stored format>, one of " +
+                     valid);
+  }
+  // The box answers the sharp lower bound alone (docs/reference.md §2): a blend towards an upper
+  // bound it does not solve must not pass as measured.
+  if (params.beta != 0)
+    throw InputError("technique '" + name + "': scatter.beta = " + round_trip(params.beta) +
+                     ", but the moment box answers the sharp lower bound only; expected "
+                     "scatter.beta = 0 (its default, 0.5, blends towards the upper bound)");
+  return std::make_unique<PssLp>(name, params, std::move(format));
+}
 
 std::vector<TechniqueRow> rows() {
   return {
@@ -161,7 +224,23 @@ std::vector<TechniqueRow> rows() {
        .example = "pss_lp:power4",
        .solves_lp = true,
        .make_scatter = [](const std::string& name, const ScatterParams& params)
-           -> std::unique_ptr<ScatterTechnique> { return std::make_unique<PssLp>(name, params); }}};
+           -> std::unique_ptr<ScatterTechnique> { return std::make_unique<PssLp>(name, params); }},
+      {.name = std::string(kStoredPrefix),
+       .family = TechniqueFamily::Scattering,
+       .rank = 62,
+       .summary = "Problem 1 on the rectified row's prefix sums over the moment box of a stored "
+                  "row's own map (its basis, transform and bits), e.g. "
+                  "pss_lp_stored:pss_msm6_10bit: the least a reconstruction reading that map can "
+                  "lose (docs/scattering.md §3.2)",
+       .storage = "the named row's",
+       .bound = "at scatter.beta 0 never too dark against pss_exact: the ray's own moments lie "
+                "in the box",
+       .family_options = {"scatter.light_resolution", "scatter.guard_band", "scatter.resample",
+                          "lp.grid", "lp.discretization"},
+       .example = "pss_lp_stored:pss_msm6_10bit",
+       .solves_lp = true,
+       .make_scatter = make_stored,
+       .parameter = "<technique>"}};
 }
 
 const TechniqueRegistration kRegistered(rows);

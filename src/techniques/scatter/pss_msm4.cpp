@@ -49,6 +49,10 @@ class PssMsm4 : public PrefilteredScatter {
         alpha_(alpha),
         beta_(params.beta) {}
   size_t failures() const override { return failures_; }
+  std::optional<StoredFormat> stored_format() const override {
+    if (storage_.kind == StorageKind::Double) return std::nullopt;
+    return StoredFormat{named_basis_set("power4"), storage_};
+  }
   // verify (docs/scattering.md §6): in double, Hamburger's bounds on R equal the continuous LP's
   // on an interval holding the canonical nodes; MBOIT's four power moments are judged on the same
   // interval (techniques/oit/mboit_power.cpp), wide because near-singular moments put a node far

@@ -47,6 +47,10 @@ class PssMsm6 : public PrefilteredScatter {
         alpha_(alpha),
         beta_(params.beta) {}
   size_t failures() const override { return failures_; }
+  std::optional<StoredFormat> stored_format() const override {
+    if (storage_.kind == StorageKind::Double) return std::nullopt;
+    return StoredFormat{named_basis_set("power6"), storage_};
+  }
   // verify (docs/scattering.md §6): as pss_msm4, on MBOIT's interval for six power moments
   // (techniques/oit/mboit_power.cpp), whose sixth powers keep their digits there.
   // The 10-bit row's moments are rounded: no LP on them is sharp.

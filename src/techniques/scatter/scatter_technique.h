@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -97,6 +98,13 @@ class ScatterTechnique {
   // Rays answered by a fall-back because the technique's own answer failed (an LP without a
   // certified answer), since it was made.
   virtual size_t failures() const { return 0; }
+  // The basis and format its moment map is stored in when that is not double (pss_msm4_16bit,
+  // pss_msm6_10bit): pss_lp_stored:<name> solves Problem 1 over that format's moment box.
+  struct StoredFormat {
+    std::vector<std::string> basis;
+    MomentStorage storage;
+  };
+  virtual std::optional<StoredFormat> stored_format() const { return std::nullopt; }
 
  protected:
   explicit ScatterTechnique(std::string name) : name_(std::move(name)) {}
