@@ -14,6 +14,7 @@
 #include "basis/basis.h"
 #include "basis/basis_derivatives.h"
 #include "test_support.h"
+#include "util/error.h"
 
 namespace mb {
 namespace {
@@ -133,6 +134,12 @@ TEST(Basis, NamedSetsExpandToTheirFunctionsInOrder) {
   // Sets and single functions mix, in the order given.
   EXPECT_EQ(Basis::parse({"exp(-z)", "power2", "z^2*exp(-z)"}).names(),
             (Names{"exp(-z)", "z", "z^2", "z^2*exp(-z)"}));
+  // A candidate as a sweep prints it ("a; b; c"), alone or beside other items.
+  EXPECT_EQ(Basis::parse({"z^3; cos(pi z); 1/(1+z^2); exp(-z^2)"}).names(),
+            (Names{"z^3", "cos(pi z)", "1/(1+z^2)", "exp(-z^2)"}));
+  EXPECT_EQ(Basis::parse({"exp(-z); power2", "z^3"}).names(),
+            (Names{"exp(-z)", "z", "z^2", "z^3"}));
+  EXPECT_THROW(Basis::parse({" ; "}), InputError);
   // CSM's channels: cos and sin of (2k - 1) pi z, k = 1..M, for M = 1..7 only, written with the
   // parser's `pi` (std::numbers::pi, not muparser's `_pi`, which GCC builds of muparser define as
   // 3.141592653589, 2.5e-13 relative below pi).

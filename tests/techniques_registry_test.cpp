@@ -245,6 +245,14 @@ TEST(TechniqueRegistry, MomentBiasReplacesEveryAlphaAndIsChecked) {
   EXPECT_EQ(params.number("esm.c"), TechniqueParams().number("esm.c"));  // not an alpha
   params.set("hamburger6.alpha", 1);
   EXPECT_THROW(make_technique("vsm", params), InputError);
+  // Each alpha's record declares the range the check enforces, so that `options` and the user
+  // guide print it.
+  for (const TechniqueRow& row : technique_registry())
+    for (const TechniqueOption* o : row.options)
+      if (o->moment_bias) {
+        EXPECT_EQ(o->spec.min, 0) << o->spec.name;
+        EXPECT_EQ(o->spec.max, 1) << o->spec.name;
+      }
 }
 
 // A 9x9 kernel of equal weights: every tap at `far` but the 2x2 block the custom PCF reads.

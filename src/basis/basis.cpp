@@ -10,6 +10,7 @@
 #include "basis/basis_derivatives.h"
 #include "util/eigen.h"
 #include "util/error.h"
+#include "util/name_list.h"
 #include "util/number_text.h"
 
 namespace mb {
@@ -185,12 +186,17 @@ long double BasisFunction::derivative_bound(int order, long double a, long doubl
 
 Basis Basis::parse(const std::vector<std::string>& items) {
   std::vector<BasisFunction> functions;
-  for (const auto& item : items) {
-    auto set = named_basis_set(item);
-    if (!set.empty()) {
-      for (const auto& name : set) functions.push_back(BasisFunction::parse(name));
-    } else {
-      functions.push_back(BasisFunction::parse(item));
+  // An item may be a whole candidate as a sweep prints it ("z; z^2; z^3; z^4").
+  for (const auto& given : items) {
+    std::vector<std::string> listed = split_list(given, ";");
+    if (listed.empty()) listed = {given};  // "" or " ; ": refused below, naming the item
+    for (const std::string& item : listed) {
+      auto set = named_basis_set(item);
+      if (!set.empty()) {
+        for (const auto& name : set) functions.push_back(BasisFunction::parse(name));
+      } else {
+        functions.push_back(BasisFunction::parse(item));
+      }
     }
   }
   if (functions.empty()) throw InputError("basis: no functions given");

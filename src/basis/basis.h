@@ -44,7 +44,8 @@ class Basis {
  public:
   Basis() = default;
   explicit Basis(std::vector<BasisFunction> functions) : functions_(std::move(functions)) {}
-  // Comma-separated names/expressions, or a named set: power4, trig4, power2 (VSM), power6.
+  // Names/expressions, named sets (power4, trig4, power2 (VSM), power6), or a candidate as a sweep
+  // prints it ("z; z^2; z^3; z^4"): each item may hold several, separated by ';'.
   static Basis parse(const std::vector<std::string>& items);
   size_t size() const { return functions_.size(); }
   const BasisFunction& operator[](size_t j) const { return functions_[j]; }

@@ -30,8 +30,8 @@ struct StorageSettings {
 const std::vector<OptionRecord<StorageSettings>>& storage_options() {
   static const std::vector<OptionRecord<StorageSettings>> records{
       {{"storage.basis", OptionType::StringList, "[z, z^2, z^3]",
-        "The basis on [0, 1]: catalog functions or named sets (power4, ...); expressions have no "
-        "certified range and are refused."},
+        "The basis on [0, 1]: catalog functions, named sets (power4, ...) or a sweep's candidate "
+        "(\"z; z^2; cos(pi z); exp(-z^2)\"); expressions have no certified range and are refused."},
        &StorageSettings::basis},
       {{"storage.transform",
         OptionType::String,

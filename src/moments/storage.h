@@ -1,5 +1,5 @@
 #pragma once
-// How a moment map is stored on a GPU, emulated (docs/reference.md §4, §12): exact double, float32,
+// How a moment map is stored on a GPU, emulated (docs/reference.md §4, §8): exact double, float32,
 // or k-bit unorm after an affine transform q = A b + c (seed 000's theta_4 for the power moments,
 // theta_2 for VSM, or any admissible transform, moments/quantization_transform.h) that spreads the
 // moments over [0,1]^m before rounding and is inverted after filtering.

@@ -8,6 +8,7 @@
 #include "sweep/run_identity.h"
 #include "sweep/sweep_run.h"
 #include "util/error.h"
+#include "util/name_list.h"
 
 namespace mb {
 
@@ -26,12 +27,6 @@ std::vector<OptionSpec> compared_specs(const Meta& a, const Meta& b,
                                        const std::vector<OptionSpec>& specs) {
   const std::string target = measurement_value(a, "target", specs);
   return target == measurement_value(b, "target", specs) ? sweep_target_specs(target) : specs;
-}
-
-std::string joined(const std::vector<std::string>& items, const std::string& separator) {
-  std::string text;
-  for (const auto& item : items) text += (text.empty() ? "" : separator) + item;
-  return text;
 }
 
 }  // namespace

@@ -18,6 +18,7 @@
 #include "techniques/lp_technique.h"
 #include "techniques/registry.h"
 #include "util/error.h"
+#include "util/name_list.h"
 #include "util/number_text.h"
 
 namespace mb {
@@ -41,12 +42,6 @@ const ResultRow* find_row(const std::vector<ResultRow>& rows, const std::string&
 
 std::string pct(double fraction) {
   return percent_text(fraction) + " %";
-}
-
-std::string joined(const std::vector<std::string>& items) {
-  std::string text;
-  for (const auto& item : items) text += (text.empty() ? "" : ", ") + item;
-  return text;
 }
 
 uint64_t planned_total(const SweepSeries& s) {
@@ -460,7 +455,7 @@ std::string sweep_report_markdown(const std::vector<SweepSeries>& series,
                                                   : "every other measurement option at its default")
                : (s.own_values.empty() ? "measurement options off their defaults: "
                                        : "other measurement options off their defaults: ") +
-                     joined(s.off_default))
+                     joined(s.off_default, ", "))
        << "\n";
   }
   auto meta = main.meta;

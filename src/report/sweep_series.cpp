@@ -6,6 +6,7 @@
 
 #include "report/series_identity.h"
 #include "util/error.h"
+#include "util/name_list.h"
 #include "util/number_text.h"
 
 namespace mb {
@@ -96,18 +97,8 @@ const SweepSeries& main_series(const std::vector<SweepSeries>& series) {
 }
 
 std::set<std::string> candidate_functions(const std::string& candidate) {
-  std::set<std::string> out;
-  size_t at = 0;
-  while (at <= candidate.size()) {
-    size_t end = candidate.find(';', at);
-    if (end == std::string::npos) end = candidate.size();
-    std::string f = candidate.substr(at, end - at);
-    f.erase(0, f.find_first_not_of(' '));
-    f.erase(f.find_last_not_of(' ') + 1);
-    if (!f.empty()) out.insert(f);
-    at = end + 1;
-  }
-  return out;
+  const std::vector<std::string> items = split_list(candidate, ";");
+  return {items.begin(), items.end()};
 }
 
 const ResultRow* find_candidate(const SweepSeries& s, const std::set<std::string>& functions) {

@@ -8,6 +8,7 @@
 
 #include "techniques/lp_technique.h"
 #include "techniques/registry.h"
+#include "util/name_list.h"
 #include "util/parallel_errors.h"
 
 namespace mb {
@@ -47,9 +48,7 @@ constexpr const char* kRoundingReason =
 
 // The candidate's technique name: the LP of its functions.
 std::string lp_name(const Basis& basis) {
-  std::string functions;
-  for (const std::string& f : basis.names()) functions += (functions.empty() ? "" : "; ") + f;
-  return lp_technique_name(functions);
+  return lp_technique_name(joined(basis.names(), "; "));
 }
 
 class OitTarget : public SweepTarget {

@@ -7,6 +7,7 @@
 
 #include "lp/solution.h"
 #include "techniques/registry.h"
+#include "util/name_list.h"
 #include "util/parallel_errors.h"
 
 namespace mb {
@@ -220,9 +221,7 @@ class ScatterTarget : public SweepTarget {
 }  // namespace
 
 std::string scatter_candidate_name(const Basis& basis) {
-  std::string functions;
-  for (const std::string& f : basis.names()) functions += (functions.empty() ? "" : "; ") + f;
-  return "pss_lp:" + functions;
+  return "pss_lp:" + joined(basis.names(), "; ");
 }
 
 std::unique_ptr<SweepTarget> make_scatter_target(const std::vector<ScatterFrame>& frames,

@@ -4,9 +4,12 @@
 #include <set>
 
 #include "basis/basis.h"
+#include "lp/solution.h"
 #include "scene/procedural.h"
 #include "sweep/candidates.h"
+#include "techniques/technique.h"
 #include "util/error.h"
+#include "util/name_list.h"
 
 namespace mb {
 
@@ -21,9 +24,7 @@ std::vector<std::string> SweepPlan::functions(uint64_t id) const {
 }
 
 std::string SweepPlan::name(uint64_t id) const {
-  std::string out;
-  for (const auto& f : functions(id)) out += (out.empty() ? "" : "; ") + f;
-  return out;
+  return joined(functions(id), "; ");
 }
 
 SweepPlan make_sweep_plan(const std::vector<std::string>& catalog, int size,
@@ -45,20 +46,13 @@ SweepPlan make_sweep_plan(const std::vector<std::string>& catalog, int size,
   const uint64_t total = plan.total();
   for (const auto& text : explicit_candidates) {
     std::vector<int> indices;
-    size_t start = 0;
-    for (size_t i = 0; i <= text.size(); ++i)
-      if (i == text.size() || text[i] == ';') {
-        std::string item = text.substr(start, i - start);
-        start = i + 1;
-        item.erase(0, item.find_first_not_of(' '));
-        item.erase(item.find_last_not_of(' ') + 1);
-        if (item.empty()) continue;
-        std::string canonical = BasisFunction::parse(item).name();
-        auto it = std::find(plan.catalog.begin(), plan.catalog.end(), canonical);
-        if (it == plan.catalog.end())
-          throw InputError("candidates: '" + item + "' in '" + text + "' is not in the catalog");
-        indices.push_back(int(it - plan.catalog.begin()));
-      }
+    for (const std::string& item : split_list(text, ";")) {
+      std::string canonical = BasisFunction::parse(item).name();
+      auto it = std::find(plan.catalog.begin(), plan.catalog.end(), canonical);
+      if (it == plan.catalog.end())
+        throw InputError("candidates: '" + item + "' in '" + text + "' is not in the catalog");
+      indices.push_back(int(it - plan.catalog.begin()));
+    }
     std::sort(indices.begin(), indices.end());
     if (int(indices.size()) != size ||
         std::adjacent_find(indices.begin(), indices.end()) != indices.end())
@@ -104,6 +98,23 @@ std::pair<int, int> parse_shard(const std::string& text) {
       k < 1 || k > n)
     throw InputError("--shard: expected K/N with 1 <= K <= N, got '" + text + "'");
   return {k, n};
+}
+
+void check_plan(const SweepPlan& plan, const TechniqueParams& technique) {
+  std::vector<BasisFunction> functions;
+  for (const auto& name : plan.catalog) functions.push_back(BasisFunction::parse(name));
+  Basis(functions).check_admissible(technique.lp.lo, technique.lp.hi);
+  // A unorm box is fitted to each candidate's certified ranges (docs/reference.md §8), which an
+  // expression has no derivatives to prove: refused here rather than in every candidate with it.
+  if (technique.lp_moment_box.rfind("unorm", 0) == 0)
+    for (const BasisFunction& f : functions)
+      if (!f.has_derivatives())
+        throw InputError("catalog: '" + f.name() +
+                         "' is an expression, and lp.moment_box = " + technique.lp_moment_box +
+                         " needs certified ranges of every candidate's functions (catalog "
+                         "functions have them, docs/reference.md §8); expected catalog functions "
+                         "or lp.moment_box none, double or float32");
+  lp::check_backend_rows(technique.lp_backend, plan.size, "combination_size");
 }
 
 }  // namespace mb

@@ -7,6 +7,8 @@
 
 namespace mb {
 
+class TechniqueParams;
+
 struct SweepPlan {
   std::vector<std::string> catalog;  // function names, in catalog order (ranks use this order)
   int size = 4;
@@ -22,6 +24,11 @@ struct SweepPlan {
 SweepPlan make_sweep_plan(const std::vector<std::string>& catalog, int size,
                           const std::vector<std::string>& explicit_candidates, uint64_t sample,
                           uint64_t seed);
+// Before any work, InputError when a candidate of the plan could not be evaluated: a catalog
+// function not admissible on [lp.lo, lp.hi] (a pole would fail every candidate it is in), an
+// expression under a unorm lp.moment_box (which needs certified ranges), or more functions than
+// lp.backend takes.
+void check_plan(const SweepPlan& plan, const TechniqueParams& technique);
 // Shard k of n (1-based): every n-th candidate of the plan, starting at the (k-1)-th.
 std::vector<uint64_t> shard_ids(const SweepPlan& plan, int k, int n);
 // "K/N" -> (K, N), InputError otherwise.

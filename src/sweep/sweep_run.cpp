@@ -302,25 +302,6 @@ void for_each_candidate(const std::vector<uint64_t>& ids, const char* what, bool
   bar.finish();
 }
 
-// Every catalog function on the admissible interval, and the candidates' size against the
-// backend, before any work: a function with a pole would fail every candidate it is in.
-void check_plan(const SweepPlan& plan, const EvalSettings& eval) {
-  std::vector<BasisFunction> functions;
-  for (const auto& name : plan.catalog) functions.push_back(BasisFunction::parse(name));
-  Basis(functions).check_admissible(eval.technique.lp.lo, eval.technique.lp.hi);
-  // A unorm box is fitted to each candidate's certified ranges (docs/reference.md §8), which an
-  // expression has no derivatives to prove: refused here rather than in every candidate with it.
-  if (eval.technique.lp_moment_box.rfind("unorm", 0) == 0)
-    for (const BasisFunction& f : functions)
-      if (!f.has_derivatives())
-        throw InputError("catalog: '" + f.name() +
-                         "' is an expression, and lp.moment_box = " + eval.technique.lp_moment_box +
-                         " needs certified ranges of every candidate's functions (catalog "
-                         "functions have them, docs/reference.md §8); expected catalog functions "
-                         "or lp.moment_box none, double or float32");
-  lp::check_backend_rows(eval.technique.lp_backend, plan.size, "combination_size");
-}
-
 // One sweep's state: its plan, views, database and evaluator.
 class SweepRun {
  public:
@@ -566,7 +547,7 @@ void SweepRun::screen_and_confirm(const std::vector<uint64_t>& mine) {
 void run_sweep(const SweepSettings& s, const SweepJob& job) {
   const SweepPlan plan =
       make_sweep_plan(s.catalog, s.combination_size, s.candidates, s.sample, s.sample_seed);
-  check_plan(plan, s.eval);
+  check_plan(plan, s.eval.technique);
   if (s.target == "shadows")  // names checked before rendering
     for (const auto& name : s.references) make_technique(name, s.eval.technique);
   const DatasetDesc dataset = load_dataset(s.dataset);

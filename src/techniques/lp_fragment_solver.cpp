@@ -13,17 +13,12 @@
 #include "continuous/moment_box.h"
 #include "moments/quantization_transform.h"
 #include "util/error.h"
+#include "util/name_list.h"
 #include "util/number_text.h"
 
 namespace mb {
 
 namespace {
-
-std::string listed(const std::vector<std::string>& names) {
-  std::string out;
-  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
-  return out;
-}
 
 // The transform of a unorm box (docs/reference.md §8). `seed` is seed 000's theta_4 or theta_2 as
 // hamburger4_16bit stores it (verbatim, so that unorm16 keeps the answers it gave before the
@@ -44,7 +39,7 @@ QuantizationTransform box_transform(const std::string& kind, const Basis& basis)
       throw InputError(
           "lp.moment_transform: seed exists for the bases power4 (theta_4) and power2 (theta_2) "
           "only (seed 000 §4.3); expected canonical or optimized for the basis {" +
-          listed(names) + "}");
+          joined(names, ", ") + "}");
     return {seed.transform, seed.offset};
   }
   if (kind != "optimized") return quantization_transform(basis, kind);

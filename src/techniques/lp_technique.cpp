@@ -8,6 +8,7 @@
 #include "techniques/lp_fragment_solver.h"
 #include "techniques/registry.h"
 #include "util/error.h"
+#include "util/name_list.h"
 
 namespace mb {
 
@@ -84,15 +85,15 @@ std::unique_ptr<Technique> stored_technique(const std::string& name, const Techn
   std::unique_ptr<Technique> t =
       row && !row->prefix() && !row->solves_lp && row->make ? row->make(inner, p) : nullptr;
   if (!t || t->storage().kind == StorageKind::Double) {
-    std::string valid;
+    std::vector<std::string> valid;
     for (const TechniqueRow* r : family_rows(TechniqueFamily::HardShadow))
       if (!r->prefix() && !r->solves_lp && r->make &&
           r->make(r->name, p)->storage().kind != StorageKind::Double)
-        valid += (valid.empty() ? "" : ", ") + r->name;
+        valid.push_back(r->name);
     throw InputError("technique '" + name +
                      "': expected lp_stored:<a hard-shadow technique with a stored format>, one "
                      "of " +
-                     valid);
+                     joined(valid, ", "));
   }
   return t;
 }
@@ -143,17 +144,7 @@ std::unique_ptr<Technique> make_lp_technique(const std::string& name, const Basi
 }
 
 std::vector<std::string> lp_technique_basis(const std::string& name) {
-  std::string spec = name.substr(3);
-  std::vector<std::string> items;
-  size_t start = 0;
-  for (size_t i = 0; i <= spec.size(); ++i)
-    if (i == spec.size() || spec[i] == ';' || spec[i] == ',') {
-      std::string item = spec.substr(start, i - start);
-      item.erase(0, item.find_first_not_of(' '));
-      item.erase(item.find_last_not_of(' ') + 1);
-      if (!item.empty()) items.push_back(item);
-      start = i + 1;
-    }
+  const std::vector<std::string> items = split_list(std::string_view(name).substr(3), ";,");
   if (items.empty())
     throw InputError("technique '" + name + "': expected lp:<basis>, e.g. lp:power4");
   return items;

@@ -68,15 +68,15 @@ class PowerMomentTechnique : public ClosedFormTechnique {
 using P = TechniqueParams;
 
 const TechniqueOption kHamburger4Alpha{.spec = {"hamburger4.alpha", OptionType::Number, "1e-10",
-                                                "Moment bias of Hamburger 4MSM in double."},
+                                                "Moment bias of Hamburger 4MSM in double.", 0, 1},
                                        .moment_bias = true};
 const TechniqueOption kHamburger4FloatAlpha{
     .spec = {"hamburger4_float.alpha", OptionType::Number, "5e-6",
-             "Moment bias of Hamburger 4MSM in float32."},
+             "Moment bias of Hamburger 4MSM in float32.", 0, 1},
     .moment_bias = true};
 const TechniqueOption kHamburger416bitAlpha{
     .spec = {"hamburger4_16bit.alpha", OptionType::Number, "3e-5",
-             "Moment bias of Hamburger 4MSM from 16-bit maps."},
+             "Moment bias of Hamburger 4MSM from 16-bit maps.", 0, 1},
     .moment_bias = true};
 const TechniqueOption kHamburger416bitCanonicalAlpha{
     .spec = {"hamburger4_16bit_canonical.alpha", OptionType::Number, "3e-5",
@@ -97,16 +97,16 @@ const TechniqueOption kHamburger610bitAlpha{
              "(docs/reference.md §8). 4e-3: seed 004 §2.5's for six moments at 10 bits.",
              0, 1},
     .moment_bias = true};
-const TechniqueOption kHausdorff4Alpha{
-    .spec = {"hausdorff4.alpha", OptionType::Number, "1e-10", "Moment bias of Hausdorff 4MSM."},
-    .moment_bias = true};
+const TechniqueOption kHausdorff4Alpha{.spec = {"hausdorff4.alpha", OptionType::Number, "1e-10",
+                                                "Moment bias of Hausdorff 4MSM.", 0, 1},
+                                       .moment_bias = true};
 const TechniqueOption kHamburger6Alpha{
     .spec =
         {"hamburger6.alpha", OptionType::Number, "1e-10",
          "Moment bias of six-moment Hamburger MSM. Not a proven bound at any alpha (rounding of "
-         "six "
-         "moments); measured over-darkening: up to 0.23 at 1e-10, none beyond alpha at 1e-8, which "
-         "costs 0.33 pp of mean error on the default dataset (FINDINGS §7d)."},
+         "six moments); measured over-darkening: up to 0.23 at 1e-10, none beyond alpha at 1e-8, "
+         "which costs 0.33 pp of mean error on the default dataset (FINDINGS §7d).",
+         0, 1},
     .moment_bias = true};
 
 // 16 bits a channel of the raw powers: the canonical transform of the power moments (each z^k

@@ -45,11 +45,11 @@ using P = TechniqueParams;
 
 const TechniqueOption kTmsmAlpha{
     .spec = {"tmsm.alpha", OptionType::Number, "1e-10",
-             "Moment bias of trigonometric MSM in double (towards 0)."},
+             "Moment bias of trigonometric MSM in double (towards 0).", 0, 1},
     .moment_bias = true};
 const TechniqueOption kTmsmFloatAlpha{
     .spec = {"tmsm_float.alpha", OptionType::Number, "5e-5",
-             "Moment bias of trigonometric MSM in float32 (measured: tmsm.md §6)."},
+             "Moment bias of trigonometric MSM in float32 (measured: tmsm.md §6).", 0, 1},
     .moment_bias = true};
 
 std::vector<TechniqueRow> rows() {

@@ -7,7 +7,7 @@ set -euo pipefail
 cd "${1:-$(dirname "$0")/../..}"
 roots=(src tests scripts README.md results docs)
 status=0
-stray=$(grep -rnE '(^|[^/a-z])(REFERENCE|DESIGN)\.md' "${roots[@]}" | grep -v '^tests/cli/check_citations.sh' || true)
+stray=$(grep -rnIE '(^|[^/a-z])(REFERENCE|DESIGN)\.md' "${roots[@]}" | grep -v '^tests/cli/check_citations.sh' || true)
 if [ -n "$stray" ]; then echo "cites a file that is not in the repository:"; echo "$stray"; status=1; fi
 checked=0
 while IFS= read -r hit; do
@@ -20,8 +20,8 @@ while IFS= read -r hit; do
   if [ ! -f "$page" ]; then echo "$where: $page does not exist"; status=1; continue; fi
   if [[ $section =~ ^[0-9]+$ ]]; then pattern="^#+ $section\\. "; else pattern="^#+ $section"; fi
   grep -qE "$pattern" "$page" || { echo "$where: $page has no section §$section"; status=1; }
-done < <(grep -rnoE 'docs/[a-z0-9_-]+\.md §[0-9A-Za-z]+' "${roots[@]}" | grep -v '^tests/cli/check_citations.sh')
-for page in $(grep -rhoE 'docs/[a-z0-9_/-]+\.md' "${roots[@]}" | sort -u); do
+done < <(grep -rnoIE 'docs/[a-z0-9_-]+\.md §[0-9A-Za-z]+' "${roots[@]}" | grep -v '^tests/cli/check_citations.sh')
+for page in $(grep -rhoIE 'docs/[a-z0-9_/-]+\.md' "${roots[@]}" | sort -u); do
   [ -f "$page" ] || { echo "cited page $page does not exist"; status=1; }
 done
 echo "$checked section citations checked"

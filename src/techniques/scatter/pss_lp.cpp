@@ -21,6 +21,7 @@
 #include "techniques/registry.h"
 #include "techniques/scatter/prefiltered_scatter.h"
 #include "util/error.h"
+#include "util/name_list.h"
 #include "util/number_text.h"
 
 namespace mb {
@@ -33,19 +34,13 @@ std::string lp_name_of(const std::string& name) {
   return "lp:" + name.substr(kPrefix.size());
 }
 
-std::string joined(const std::vector<std::string>& names) {
-  std::string out;
-  for (const std::string& n : names) out += (out.empty() ? "" : "; ") + n;
-  return out;
-}
-
 class PssLp : public PrefilteredScatter {
  public:
   // `stored`: pss_lp_stored:<row>, the LP over the moment box of that row's stored map.
   PssLp(const std::string& name, const ScatterParams& params,
         std::optional<StoredFormat> stored = std::nullopt)
       : PrefilteredScatter(name, params),
-        lp_name_(stored ? lp_technique_name(joined(stored->basis)) : lp_name_of(name)),
+        lp_name_(stored ? lp_technique_name(joined(stored->basis, "; ")) : lp_name_of(name)),
         stored_(std::move(stored)),
         instance_(next_instance()),
         technique_(params.technique) {
@@ -178,7 +173,7 @@ class PssLp : public PrefilteredScatter {
 };
 
 // pss_lp_stored:<row>: the row's stored format (a scattering row of its own whose map is not
-// double), made with the same parameters.
+// double), made with the same parameters, as lp_stored: reads a hard-shadow row's storage().
 std::unique_ptr<ScatterTechnique> make_stored(const std::string& name,
                                               const ScatterParams& params) {
   const std::string inner = name.substr(kStoredPrefix.size());
@@ -187,14 +182,14 @@ std::unique_ptr<ScatterTechnique> make_stored(const std::string& name,
   if (row && !row->prefix() && !row->solves_lp && row->make_scatter)
     format = row->make_scatter(inner, params)->stored_format();
   if (!format) {
-    std::string valid;
+    std::vector<std::string> valid;
     for (const TechniqueRow* r : family_rows(TechniqueFamily::Scattering))
       if (!r->prefix() && !r->solves_lp && r->make_scatter &&
           r->make_scatter(r->name, params)->stored_format())
-        valid += (valid.empty() ? "" : ", ") + r->name;
+        valid.push_back(r->name);
     throw InputError("technique '" + name +
                      "': expected pss_lp_stored:<a scattering row with a stored format>, one of " +
-                     valid);
+                     joined(valid, ", "));
   }
   // The box answers the sharp lower bound alone (docs/reference.md §2): a blend towards an upper
   // bound it does not solve must not pass as measured.
