@@ -128,5 +128,47 @@ TEST(ScreenReach, DroppingSmallUnitErrorsShrinksTheDatabase) {
   std::filesystem::remove(path);
 }
 
+// A confirmation leaves a tie unconfirmed; exact means above their estimates put it first
+// (results/FINDINGS.md §13): it is named, by its latest stage's estimate, and nothing else is.
+TEST(ScreenReach, EstimatesAheadOfTheBestExactMeanAreNamed) {
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("momentbench_ahead_" +
+                     std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + ".sqlite");
+  std::filesystem::remove(path);
+  ResultsStore store = ResultsStore::create(path.string(), {{"config", "x"}});
+  auto estimate = [&](uint64_t id, int stage, double mean) {
+    EstimateRow e;
+    e.id = id, e.stage = stage, e.name = "c" + std::to_string(id), e.mean = mean, e.se = 1e-4;
+    store.put_estimate(e);
+  };
+  auto exact = [&](uint64_t id, double mean) {
+    ResultRow r;
+    r.id = id, r.name = "c" + std::to_string(id), r.mean = mean;
+    store.put_candidate(r);
+  };
+  // Nothing exact yet: nothing to rank against.
+  estimate(1, 1, 0.010);
+  EXPECT_TRUE(estimates_ahead_of_best_exact(store, {1}).empty());
+  exact(2, 0.0113);  // confirmed: its estimate (below) was lower than its exact mean
+  estimate(2, 1, 0.0110);
+  estimate(3, 1, 0.0112);  // a tie left unconfirmed, now below the best exact mean
+  estimate(4, 1, 0.0114);  // above it
+  estimate(5, 1, 0.0109);  // below at stage 1, above after refining: the report shows stage 2
+  estimate(5, 2, 0.0115);
+  estimate(6, 1, 0.0116);  // refined below it
+  estimate(6, 2, 0.0111);
+  estimate(7, 1, 0.0100);  // below, but not a candidate of this plan
+  EXPECT_EQ(estimates_ahead_of_best_exact(store, {1, 2, 3, 4, 5, 6}),
+            (std::vector<uint64_t>{1, 3, 6}));
+  // A lower exact mean moves the bar: only 1 (0.0100) and 6 (0.0111) lie below 0.01115.
+  exact(4, 0.01115);
+  EXPECT_EQ(estimates_ahead_of_best_exact(store, {1, 2, 3, 4, 5, 6}),
+            (std::vector<uint64_t>{1, 6}));
+  // Once they are exact, none is ahead.
+  exact(1, 0.0120), exact(6, 0.0117);
+  EXPECT_TRUE(estimates_ahead_of_best_exact(store, {1, 2, 3, 4, 5, 6}).empty());
+  std::filesystem::remove(path);
+}
+
 }  // namespace
 }  // namespace mb

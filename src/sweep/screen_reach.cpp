@@ -1,6 +1,7 @@
 #include "sweep/screen_reach.h"
 
 #include <algorithm>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <set>
@@ -107,6 +108,23 @@ std::vector<uint64_t> unproven_screened_out(const ResultsStore& store, int stage
   }
   std::sort(out.begin(), out.end());
   return out;
+}
+
+std::vector<uint64_t> estimates_ahead_of_best_exact(const ResultsStore& store,
+                                                    const std::vector<uint64_t>& ids) {
+  const std::set<uint64_t> planned(ids.begin(), ids.end());
+  std::set<uint64_t> exact;
+  double best = std::numeric_limits<double>::infinity();
+  for (const ResultRow& row : store.candidates())
+    if (planned.count(row.id)) exact.insert(row.id), best = std::min(best, row.mean);
+  if (exact.empty()) return {};
+  std::map<uint64_t, double> reported;  // the latest stage's estimate, as the report shows it
+  for (int stage : {1, 2})
+    for (const EstimateRow& e : store.estimates(stage, false)) reported[e.id] = e.mean;
+  std::vector<uint64_t> ahead;
+  for (const auto& [id, mean] : reported)
+    if (planned.count(id) && !exact.count(id) && mean < best) ahead.push_back(id);
+  return ahead;
 }
 
 }  // namespace mb

@@ -31,4 +31,13 @@ std::vector<uint64_t> unproven_screened_out(const ResultsStore& store, int stage
                                             const std::vector<uint64_t>& ids,
                                             const ScreenSample& sample, const ScreenRule& rule);
 
+// The candidates of `ids` (ascending) without an exact row in `store` whose reported estimate
+// (their latest stage's) lies below the best exact mean among `ids`, ascending; empty when none is
+// exact. A confirmation that declares ties (screen.margin < 0) leaves estimates within the margin
+// of the K-th best unconfirmed; when the confirmed candidates' exact means come out above their
+// estimates (chosen for low estimates, they are the lucky ones), such a tie would head the table
+// as an estimate (results/FINDINGS.md §13). The sweep evaluates these exactly, until none is left.
+std::vector<uint64_t> estimates_ahead_of_best_exact(const ResultsStore& store,
+                                                    const std::vector<uint64_t>& ids);
+
 }  // namespace mb

@@ -540,6 +540,15 @@ void SweepRun::screen_and_confirm(const std::vector<uint64_t>& mine) {
     ids = reaching(2, refine, ids);
   }
   evaluate_exactly(not_done(ids, store_.candidate_ids()), "confirm");
+  // The best row is exact: ties left unconfirmed that now rank above the best exact mean are
+  // evaluated too (sweep/screen_reach.h). Each round makes them exact and can only lower the best
+  // exact mean, so the rounds end.
+  for (std::vector<uint64_t> ahead;
+       !(ahead = estimates_ahead_of_best_exact(store_, plan_.ids)).empty();) {
+    log("sweep: %zu unconfirmed estimates below the best exact mean, evaluated exactly\n",
+        ahead.size());
+    evaluate_exactly(ahead, "confirm");
+  }
 }
 
 }  // namespace
