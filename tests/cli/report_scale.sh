@@ -45,6 +45,7 @@ seconds = time.monotonic() - start
 peak_mb = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024
 print(f"report of 66045 candidates: {seconds:.1f} s, peak resident {peak_mb:.0f} MB")
 assert peak_mb < 2048, peak_mb
+assert seconds < 60, seconds  # issue 60: a report of every candidate within a minute
 PY
 rows=$(($(wc -l < "$work/report/candidates.csv") - 1))
 [ "$rows" -eq 66045 ] || { echo "report_scale: candidates.csv has $rows rows, expected 66045"; exit 1; }
