@@ -8,6 +8,7 @@
 #include "techniques/oit/oit_technique.h"
 #include "techniques/registry.h"
 #include "util/error.h"
+#include "util/name_list.h"
 #include "util/number_text.h"
 
 namespace mb {
@@ -44,10 +45,8 @@ std::vector<std::string> oit_verify_names() {
 void check_oit_verify_technique(const std::string& technique) {
   const auto names = oit_verify_names();
   if (std::find(names.begin(), names.end(), technique) != names.end()) return;
-  std::string valid;
-  for (const auto& n : names) valid += (valid.empty() ? "" : ", ") + n;
-  throw InputError("verify.oit_techniques: '" + technique + "': expected one of " + valid +
-                   " (the certified LP engine takes up to seven functions)");
+  throw InputError("verify.oit_techniques: '" + technique + "': expected one of " +
+                   joined(names, ", ") + " (the certified LP engine takes up to seven functions)");
 }
 
 OitVerifyRow verify_mboit(const std::string& technique, int pixels, uint64_t seed) {

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "util/name_list.h"
 #include "util/number_text.h"
 
 namespace mb {
@@ -39,9 +40,7 @@ BoundsReport render_bounds_report(const BoundCurveRequest& request, const BoundC
      << "| basis | m | functions | mean gap | max gap | LPs not optimal "
         "|\n|---|---|---|---|---|---|\n";
   for (const auto& s : curves.series) {
-    std::string functions;
-    for (const auto& f : s.functions) functions += (functions.empty() ? "" : ", ") + f;
-    md << "| " << s.basis << " | " << s.m << " | " << functions << " | "
+    md << "| " << s.basis << " | " << s.m << " | " << joined(s.functions, ", ") << " | "
        << format_number(s.mean_gap, "%.5f") << " | " << format_number(s.max_gap, "%.5f") << " | "
        << s.failures << " |\n";
   }

@@ -54,11 +54,8 @@ std::vector<SweepSeries> load_sweep_series(const std::vector<std::string>& datab
     // Screened candidates without an exact row join as estimates.
     std::set<uint64_t> exact;
     for (const auto& r : s.ranked) exact.insert(r.id);
-    const std::vector<EstimateRow> estimates = store.estimates(0, false);  // by id, then stage
-    for (size_t i = 0; i < estimates.size(); ++i) {
-      const EstimateRow& e = estimates[i];
-      // The most precise estimate of each: its last stage.
-      if (exact.count(e.id) || (i + 1 < estimates.size() && estimates[i + 1].id == e.id)) continue;
+    for (const EstimateRow& e : store.latest_estimates()) {
+      if (exact.count(e.id)) continue;
       ResultRow r;
       r.id = e.id;
       r.name = e.name;

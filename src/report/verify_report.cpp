@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <sstream>
 
+#include "util/name_list.h"
 #include "util/number_text.h"
 
 namespace mb {
@@ -184,8 +185,7 @@ bool write_summary(std::ostream& md, std::ostream& csv, const VerifyReportContex
          "above_lp,exact,passed\n";
   bool all_passed = true;
   for (const auto& r : results) {
-    std::string basis;
-    for (const auto& b : r.target.lp_basis) basis += (basis.empty() ? "" : ",") + b;
+    const std::string basis = mb::joined(r.target.lp_basis, ",");
     md << "| " << r.target.technique << " | " << basis << " | [" << num(r.target.lo) << ", "
        << num(r.target.hi) << "]" << (r.box_judged ? "; box [0, 1]" : "") << " | " << r.instances
        << " | " << r.undefined << " |";
@@ -273,8 +273,7 @@ void write_worst_cases(std::ostream& md, std::ostream& worst, const VerifyReport
       for (double g : c.lp) worst << "," << full(g);
       worst << "," << full(c.lp_exact) << ",,,,\n";
     }
-    std::string basis;
-    for (const auto& b : r.target.lp_basis) basis += (basis.empty() ? "" : ",") + b;
+    const std::string basis = mb::joined(r.target.lp_basis, ",");
     const VerifyCase& c = cases.front();
     const VerifyInstance& inst = instances[c.instance];
     md << "\n```\nmomentbench solve --technique " << r.target.technique

@@ -9,6 +9,7 @@
 #include "scene/procedural.h"
 #include "util/eigen.h"
 #include "util/error.h"
+#include "util/name_list.h"
 #include "util/number_text.h"
 #include "util/yaml_reader.h"
 
@@ -110,9 +111,7 @@ PartDesc parse_part(YamlMap map, const std::filesystem::path& base_dir) {
     map.also_suggest(kinds);
     map.also_suggest({"transform", "two_sided", "fit", "opacity", "opacity_pattern", "color"});
     map.finish();  // reports a misspelled generator name first
-    std::string all;
-    for (const auto& k : kinds) all += (all.empty() ? "" : ", ") + k;
-    map.fail("", "a part needs one of: " + all);
+    map.fail("", "a part needs one of: " + joined(kinds, ", "));
   }
   if (part.kind == "mesh") {
     std::filesystem::path file = *map.string("mesh");

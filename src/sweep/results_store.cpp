@@ -290,6 +290,14 @@ std::vector<EstimateRow> ResultsStore::estimates(int stage, bool run_errors) con
   return out;
 }
 
+std::vector<EstimateRow> ResultsStore::latest_estimates() const {
+  std::vector<EstimateRow> all = estimates(0, false);  // by id, then stage
+  std::vector<EstimateRow> out;
+  for (size_t i = 0; i < all.size(); ++i)
+    if (i + 1 == all.size() || all[i + 1].id != all[i].id) out.push_back(std::move(all[i]));
+  return out;
+}
+
 std::vector<double> ResultsStore::run_errors(uint64_t id, int stage) const {
   Statement st(db_, "SELECT run_errors FROM estimates WHERE id = ? AND stage = ?", path_);
   sqlite3_bind_int64(st.s, 1, int64_t(id));

@@ -71,6 +71,9 @@ class ResultsStore {
   // By id; stage 0: every stage. Without `run_errors`, the rows' run_errors stay empty: a report
   // of 66 045 screened candidates reads a few MB, not the unit errors.
   std::vector<EstimateRow> estimates(int stage, bool run_errors = true) const;
+  // Each candidate's most precise estimate (its last stage), by id, without run errors: what a
+  // report shows for a candidate without an exact row, and what the confirmation compares.
+  std::vector<EstimateRow> latest_estimates() const;
   // One candidate's run errors at `stage` (empty when screened out).
   std::vector<double> run_errors(uint64_t id, int stage) const;
   // Drops the run errors of `rows` (their id, reach_lower and reach_against) at `stage`, in one

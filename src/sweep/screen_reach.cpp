@@ -118,12 +118,9 @@ std::vector<uint64_t> estimates_ahead_of_best_exact(const ResultsStore& store,
   for (const ResultRow& row : store.candidates())
     if (planned.count(row.id)) exact.insert(row.id), best = std::min(best, row.mean);
   if (exact.empty()) return {};
-  std::map<uint64_t, double> reported;  // the latest stage's estimate, as the report shows it
-  for (int stage : {1, 2})
-    for (const EstimateRow& e : store.estimates(stage, false)) reported[e.id] = e.mean;
-  std::vector<uint64_t> ahead;
-  for (const auto& [id, mean] : reported)
-    if (planned.count(id) && !exact.count(id) && mean < best) ahead.push_back(id);
+  std::vector<uint64_t> ahead;  // by the latest stage's estimate, as the report shows it
+  for (const EstimateRow& e : store.latest_estimates())
+    if (planned.count(e.id) && !exact.count(e.id) && e.mean < best) ahead.push_back(e.id);
   return ahead;
 }
 

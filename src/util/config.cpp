@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "util/error.h"
+#include "util/name_list.h"
 #include "util/number_text.h"
 #include "util/yaml_reader.h"
 
@@ -155,8 +156,7 @@ void Config::assign(const std::string& name, const YAML::Node& node, const std::
     if (s.choices.empty()) return;
     for (const auto& c : s.choices)
       if (c == v) return;
-    std::string all;
-    for (const auto& c : s.choices) all += (all.empty() ? "" : ", ") + c;
+    const std::string all = joined(s.choices, ", ");
     std::string hint = closest_match(v, s.choices);
     throw InputError(origin + ": key '" + name + "': unknown value '" + v + "'" +
                      (hint.empty() ? "" : " (did you mean '" + hint + "'?)") + "; valid: " + all);

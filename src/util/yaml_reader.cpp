@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "util/error.h"
+#include "util/name_list.h"
 
 namespace mb {
 
@@ -221,8 +222,7 @@ void YamlMap::finish() const {
     std::string hint = closest_match(key, known);
     std::string message = "unknown key '" + (path_.empty() ? key : path_ + "." + key) + "'";
     if (!hint.empty()) message += " (did you mean '" + hint + "'?)";
-    std::string all;
-    for (const auto& k : known) all += (all.empty() ? "" : ", ") + k;
+    const std::string all = joined(known, ", ");
     if (!all.empty()) message += "; valid keys here: " + all;
     YAML::Mark mark = it->first.Mark();
     throw InputError(located(file_, mark.line + 1, mark.column + 1, message));
