@@ -126,6 +126,14 @@ int run_storage(const CLI::App& command, const CommonOptions& common,
                      {"note",
                       "certified upper bounds of entropy_gain_bits: the volumes are those of "
                       "hulls of sampled points (Qhull), lower bounds of the true volumes"}};
+    // Two functions: both row angles searched exhaustively, the optimum certified within the
+    // grid's slack (moments/angle_grid_bound.cpp).
+    if (basis.size() == 2) {
+      out["bounds"]["angle_grid_bits"] = bounds->angle_grid_bits;
+      out["bounds"]["angle_grid_note"] =
+          "every pair of row angles: a grid of 4096 on [0, pi) for each row, each cell's widths "
+          "bounded from below by its centre's attained extrema";
+    }
   }
   if (!search.is_null()) out["search"] = search;
   if (o.samples > 0) {

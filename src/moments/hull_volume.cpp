@@ -1,5 +1,6 @@
 // Upper bounds of the entropy gain from hull volumes (docs/reference.md §8), with Qhull's
 // reentrant library computing the convex hulls of sampled points.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iterator>
@@ -84,7 +85,7 @@ double sampled_hull_volume(std::vector<double> points, int dim, bool joggle) {
 }
 
 double GainBounds::best_bits() const {
-  return std::min(hull_bound_bits, difference_bound_bits);
+  return std::min({hull_bound_bits, difference_bound_bits, angle_grid_bits});
 }
 
 GainBounds gain_bounds(const Basis& basis) {
@@ -141,6 +142,7 @@ GainBounds gain_bounds(const Basis& basis) {
   out.difference_volume = difference / canonical_det;
   out.hull_bound_bits = -std::log2(hull);
   out.difference_bound_bits = m - std::log2(difference);
+  if (m == 2) out.angle_grid_bits = two_row_gain_bound_bits(basis, 4096);
   return out;
 }
 

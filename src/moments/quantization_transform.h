@@ -7,6 +7,7 @@
 // then scaled and shifted onto its exact range. Ranges are certified enclosures from the catalog
 // functions' closed-form derivatives; an expression without them is refused (InputError), since
 // sampling understates a range and a transform fitted to samples can leave [0, 1]^m.
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -61,7 +62,7 @@ struct OptimizedTransform {
   QuantizationTransform transform;
   double gain_bits = 0;     // entropy_gain_bits(transform)
   int starts = 0;           // multistart count (m = 2: the exhaustive angle grid, 1)
-  bool exhaustive = false;  // m = 2: every pair of row directions on a grid, refined
+  bool exhaustive = false;  // m = 1; m = 2: every pair of row directions on a grid, refined
 };
 // check_quantizable first. Deterministic (fixed seeds): m = 2 searches both row angles
 // exhaustively; larger m runs a multistart BFGS ascent from whitened random rotations.
@@ -80,9 +81,18 @@ struct GainBounds {
   double difference_volume = 0;      // vol of hull(b(z_k) - b(z_l)), a lower bound of vol(D)
   double hull_bound_bits = 0;        // -log2(|det A_canonical| vol(H))
   double difference_bound_bits = 0;  // -log2(|det A_canonical| vol(D) / 2^m)
-  double best_bits() const;          // the smaller of the two
+  // m = 2: two_row_gain_bound_bits over 1024 angles; infinite (no bound) for other m.
+  double angle_grid_bits = std::numeric_limits<double>::infinity();
+  double best_bits() const;  // the smallest of them
 };
 GainBounds gain_bounds(const Basis& basis);
+
+// m = 2: the largest gain of any admissible transform, bounded from above over a grid of
+// `angles` row directions on [0, pi) for each row, every cell's width bounded from below by the
+// attained extrema of its centre (moments/angle_grid_bound.cpp): an exhaustive search of both row
+// angles, certified; its slack is first order in pi / angles. InputError for other m, or when
+// `angles` is too coarse for the basis.
+double two_row_gain_bound_bits(const Basis& basis, int angles);
 
 // The volume of the convex hull of `points` (n x dim, row-major) from Qhull, triangulated ("Qt")
 // so that it is the facets' simplices summed. With `joggle` ("QJ", Qhull's remedy for its

@@ -201,8 +201,8 @@ Eigen::MatrixXd ascend(const Curve& c, Eigen::MatrixXd A, int iterations) {
 // m = 2: F(theta_1, theta_2) = log|sin(theta_2 - theta_1)| - log w(theta_1) - log w(theta_2) over
 // unit rows (cos theta, sin theta); every pair of angles on a grid of kAngles over [0, pi) (w is
 // even in the row's sign), the best pair then refined by BFGS. Exhaustive: the grid covers the
-// whole two-dimensional domain, and F is Lipschitz in each angle away from theta_1 = theta_2 (where
-// it tends to -inf), so no optimum lies between grid points by more than the refinement recovers.
+// whole two-dimensional domain; two_row_gain_bound_bits bounds F over every cell between grid
+// points (a Lipschitz bound of the widths), which certifies how close the answer is to the optimum.
 Eigen::MatrixXd exhaustive_two(const Curve& c) {
   constexpr int kAngles = 4096;
   std::vector<double> lw(kAngles);
@@ -244,7 +244,8 @@ OptimizedTransform optimize_transform(const Basis& basis) {
   OptimizedTransform out;
   Eigen::MatrixXd best;
   if (m == 1) {
-    best = Eigen::MatrixXd::Identity(1, 1);
+    best = Eigen::MatrixXd::Identity(1, 1);  // one row: every direction is the same transform
+    out.exhaustive = true;
   } else if (m == 2) {
     best = ascend(fine, exhaustive_two(coarse), 200);
     out.exhaustive = true;
