@@ -1,5 +1,5 @@
 // The certified optimum of a two-function basis's transform (docs/reference.md §8): for m = 2 the
-// gain is a function of the two row angles alone, and a grid over both with a Lipschitz bound of
+// gain is a function of the two row angles alone, and a grid over both with a bound of
 // each cell is an exhaustive search whose answer is an upper bound, not a guess.
 #include <algorithm>
 #include <cmath>
@@ -27,21 +27,17 @@ double largest_abs_sin(double lo, double hi) {
 struct Frame {
   const Basis& basis;
   Eigen::Matrix2d to_y;  // W A_can
-  double lipschitz = 0;  // an upper bound of the curve's diameter in y
 
   // A certified lower bound of the width w(theta') over |theta' - theta| <= half.
   double least_width(double theta, double half) const {
     const Eigen::Vector2d u(std::cos(theta), std::sin(theta)), normal(-u(1), u(0));
     const RowRange r = row_range(basis, (u.transpose() * to_y).transpose());
-    // w(theta') >= u(theta') . v for the pair v = y(argmax) - y(argmin) of the centre, and
-    // u(theta') . v >= cos(half) u . v - sin(half) |normal . v|; or, coarser, the centre's width
-    // less the Lipschitz slack. Either holds: the larger is taken.
+    // w(theta') >= u(theta') . v for the pair v = y(argmax) - y(argmin) of the centre (two points
+    // of the curve), and u(theta') = cos(t) u + sin(t) normal with |t| <= half, u . v >= 0.
     const Eigen::Vector2d v = to_y * Eigen::Vector2d(basis[0](r.argmax) - basis[0](r.argmin),
                                                      basis[1](r.argmax) - basis[1](r.argmin));
     const double margin = 1e-12 * v.norm();
-    const double by_pair = std::cos(half) * u.dot(v) - std::sin(half) * std::abs(normal.dot(v));
-    const double by_lipschitz = (r.max - r.min) * (1 - 1e-12) - lipschitz * half;
-    return std::max(by_pair, by_lipschitz) - margin;
+    return std::cos(half) * u.dot(v) - std::sin(half) * std::abs(normal.dot(v)) - margin;
   }
 };
 
@@ -71,10 +67,7 @@ double two_row_gain_bound_bits(const Basis& basis, int angles) {
   const Eigen::Matrix2d W = eig.eigenvectors() *
                             eig.eigenvalues().cwiseSqrt().cwiseInverse().asDiagonal() *
                             eig.eigenvectors().transpose();
-  // w(theta) is a maximum over pairs of points of u(theta) . (y - y'), each |d/dtheta| <= |y - y'|:
-  // Lipschitz with the curve's diameter, at most ||W|| sqrt(2) (q in the unit square).
-  const Frame frame{basis, W * canonical.A,
-                    (1 + 1e-9) * std::sqrt(2.0) / std::sqrt(eig.eigenvalues()(0))};
+  const Frame frame{basis, W * canonical.A};
   const double step = std::numbers::pi / angles;
   // -log of the least width over each angle's cell [theta_k - step / 2, theta_k + step / 2].
   std::vector<double> minus_log_least(static_cast<size_t>(angles));

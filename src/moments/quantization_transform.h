@@ -81,7 +81,7 @@ struct GainBounds {
   double difference_volume = 0;      // vol of hull(b(z_k) - b(z_l)), a lower bound of vol(D)
   double hull_bound_bits = 0;        // -log2(|det A_canonical| vol(H))
   double difference_bound_bits = 0;  // -log2(|det A_canonical| vol(D) / 2^m)
-  // m = 2: two_row_gain_bound_bits over 1024 angles; infinite (no bound) for other m.
+  // m = 2: two_row_gain_bound_bits over 4096 angles; infinite (no bound) for other m.
   double angle_grid_bits = std::numeric_limits<double>::infinity();
   double best_bits() const;  // the smallest of them
 };

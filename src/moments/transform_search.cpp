@@ -202,7 +202,7 @@ Eigen::MatrixXd ascend(const Curve& c, Eigen::MatrixXd A, int iterations) {
 // unit rows (cos theta, sin theta); every pair of angles on a grid of kAngles over [0, pi) (w is
 // even in the row's sign), the best pair then refined by BFGS. Exhaustive: the grid covers the
 // whole two-dimensional domain; two_row_gain_bound_bits bounds F over every cell between grid
-// points (a Lipschitz bound of the widths), which certifies how close the answer is to the optimum.
+// points (each cell's widths from below), which certifies how close the answer is to the optimum.
 Eigen::MatrixXd exhaustive_two(const Curve& c) {
   constexpr int kAngles = 4096;
   std::vector<double> lw(kAngles);
