@@ -35,6 +35,12 @@ def spearman(a, b):
     return pearson(ranks(a), ranks(b))  # ties take their average rank
 
 
+def rank_by_mean(rows, ids):
+    """Rank (1 = least mean error) of each of `ids` among `ids`, by rows[id]'s mean error."""
+    order = sorted(ids, key=lambda i: float(rows[i]["mean_error"]))
+    return {i: k + 1 for k, i in enumerate(order)}
+
+
 def transforms(mb, storage, path):
     done = {}
     if os.path.exists(path):
@@ -80,10 +86,9 @@ def main():
     s = [float(storage[i]["mean_error"]) for i in ids]
     d = [float(double[i]["mean_error"]) for i in ids]
     cost = [a - b for a, b in zip(s, d)]
-    s_rank = {i: k + 1 for k, i in enumerate(sorted(ids, key=lambda i: s[ids.index(i)]))}
-    d_rank = {i: k + 1 for k, i in enumerate(sorted(ids, key=lambda i: d[ids.index(i)]))}
-    all_rank = {i: k + 1 for k, i in enumerate(sorted(double, key=lambda i: float(
-        double[i]["mean_error"])))}
+    s_rank = rank_by_mean(storage, ids)
+    d_rank = rank_by_mean(double, ids)
+    all_rank = rank_by_mean(double, double)
     md = [f"# The storage sweep against double precision ({len(ids)} candidates)", "",
           f"`scripts/storage_sweep_compare.py` on `{storage_csv}` and `{double_csv}`. Mean error %;",
           "≈ marks a screened estimate ± its standard error. Ranks: among these candidates, and for",
@@ -100,7 +105,8 @@ def main():
     best = min(in_sweep, key=lambda i: s_rank[i]) if in_sweep else None
     n = len(ids)
     md += ["", f"- Spearman's rank correlation of the two errors: {spearman(s, d):.3f} over all "
-           f"{n}; of the storage cost with the double error: {spearman(cost, d):.3f}.",
+           f"{n}; of the storage cost with the double error: {spearman(cost, d):.3f} (the cost is "
+           "the 16-bit minus the double error: mostly the subtraction, results/FINDINGS.md §14).",
            f"- Storage cost (16-bit minus double): {100 * min(cost):.4f} to "
            f"{100 * max(cost):.4f} pp, median {100 * sorted(cost)[n // 2]:.4f} pp.",
            f"- The double top 20 in this sweep: {len(in_sweep)} of them; the best of them ranks "

@@ -131,8 +131,9 @@ int run_storage(const CLI::App& command, const CommonOptions& common,
     if (basis.size() == 2) {
       out["bounds"]["angle_grid_bits"] = bounds->angle_grid_bits;
       out["bounds"]["angle_grid_note"] =
-          "every pair of row angles: a grid of 4096 on [0, pi) for each row, each cell's widths "
-          "bounded from below by its centre's attained extrema";
+          "every pair of row angles: a grid of " + std::to_string(kAngleGridAngles) +
+          " on [0, pi) for each row, each cell's widths bounded from below by its centre's "
+          "attained extrema";
     }
   }
   if (!search.is_null()) out["search"] = search;

@@ -61,12 +61,8 @@ double two_row_gain_bound_bits(const Basis& basis, int angles) {
     q.row(k) = (canonical.A * Eigen::Vector2d(basis[0](z), basis[1](z)) + canonical.c).transpose();
   }
   const Eigen::MatrixXd centred = q.rowwise() - q.colwise().mean();
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(centred.transpose() * centred / kSamples);
-  if (!(eig.eigenvalues()(0) > 0))
-    throw InputError("the angle-grid bound: the basis's curve is degenerate on [0, 1]");
-  const Eigen::Matrix2d W = eig.eigenvectors() *
-                            eig.eigenvalues().cwiseSqrt().cwiseInverse().asDiagonal() *
-                            eig.eigenvectors().transpose();
+  const Eigen::Matrix2d W =
+      whitening(centred.transpose() * centred / kSamples, "the angle-grid bound");
   const Frame frame{basis, W * canonical.A};
   const double step = std::numbers::pi / angles;
   // -log of the least width over each angle's cell [theta_k - step / 2, theta_k + step / 2].

@@ -84,6 +84,14 @@ double sampled_hull_volume(std::vector<double> points, int dim, bool joggle) {
   return volume;
 }
 
+Eigen::MatrixXd whitening(const Eigen::MatrixXd& covariance, const std::string& what) {
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(covariance);
+  if (!(eig.eigenvalues()(0) > 0))
+    throw InputError(what + ": the basis's curve is degenerate on [0, 1]");
+  return eig.eigenvectors() * eig.eigenvalues().cwiseSqrt().cwiseInverse().asDiagonal() *
+         eig.eigenvectors().transpose();
+}
+
 double GainBounds::best_bits() const {
   return std::min({hull_bound_bits, difference_bound_bits, angle_grid_bits});
 }
@@ -115,12 +123,7 @@ GainBounds gain_bounds(const Basis& basis) {
   Eigen::MatrixXd covariance = Eigen::MatrixXd::Zero(m, m);
   for (const auto& q : curve)
     covariance += (q - mean) * (q - mean).transpose() / double(curve.size());
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(covariance);
-  if (!(eig.eigenvalues()(0) > 0))
-    throw InputError("hull volume: the basis's curve is degenerate on [0, 1]");
-  const Eigen::MatrixXd W = eig.eigenvectors() *
-                            eig.eigenvalues().cwiseSqrt().cwiseInverse().asDiagonal() *
-                            eig.eigenvectors().transpose();
+  const Eigen::MatrixXd W = whitening(covariance, "hull volume");
   const double det_W = std::abs(W.determinant());
   std::vector<double> points;
   for (const auto& q : curve) {
@@ -142,7 +145,7 @@ GainBounds gain_bounds(const Basis& basis) {
   out.difference_volume = difference / canonical_det;
   out.hull_bound_bits = -std::log2(hull);
   out.difference_bound_bits = m - std::log2(difference);
-  if (m == 2) out.angle_grid_bits = two_row_gain_bound_bits(basis, 4096);
+  if (m == 2) out.angle_grid_bits = two_row_gain_bound_bits(basis, kAngleGridAngles);
   return out;
 }
 

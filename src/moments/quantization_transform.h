@@ -76,12 +76,14 @@ QuantizationTransform power6_optimized_transform();
 // unit cube, so |det A| vol(H) <= 1; every row maps the difference body D = H - H into [-1, 1], so
 // |det A| vol(D) <= 2^m (tighter: vol(D) >= 2^m vol(H) by Brunn-Minkowski). Volumes are those of
 // convex hulls of samples (Qhull), lower bounds of the true ones, so the bounds stay valid.
+// The angles of each row that gain_bounds' two-function bound grids [0, pi) into.
+constexpr int kAngleGridAngles = 4096;
 struct GainBounds {
   double hull_volume = 0;            // vol of hull(b(z_k)), a lower bound of vol(H)
   double difference_volume = 0;      // vol of hull(b(z_k) - b(z_l)), a lower bound of vol(D)
   double hull_bound_bits = 0;        // -log2(|det A_canonical| vol(H))
   double difference_bound_bits = 0;  // -log2(|det A_canonical| vol(D) / 2^m)
-  // m = 2: two_row_gain_bound_bits over 4096 angles; infinite (no bound) for other m.
+  // m = 2: two_row_gain_bound_bits over kAngleGridAngles; infinite (no bound) for other m.
   double angle_grid_bits = std::numeric_limits<double>::infinity();
   double best_bits() const;  // the smallest of them
 };
@@ -93,6 +95,11 @@ GainBounds gain_bounds(const Basis& basis);
 // angles, certified; its slack is first order in pi / angles. InputError for other m, or when
 // `angles` is too coarse for the basis.
 double two_row_gain_bound_bits(const Basis& basis, int angles);
+
+// W = V diag(lambda)^(-1/2) V^T for a covariance V diag(lambda) V^T: the coordinates in which a
+// curve's samples have identity covariance, where the bounds take their hulls and angles.
+// InputError "`what`: the basis's curve is degenerate on [0, 1]" when an eigenvalue is not > 0.
+Eigen::MatrixXd whitening(const Eigen::MatrixXd& covariance, const std::string& what);
 
 // The volume of the convex hull of `points` (n x dim, row-major) from Qhull, triangulated ("Qt")
 // so that it is the facets' simplices summed. With `joggle` ("QJ", Qhull's remedy for its
